@@ -1,0 +1,112 @@
+// grotto bench WORLD: load and mesh times, per-pass GPU time (median after
+// warm-up), frame wall time, quads and memory, printed and optionally as JSON.
+#include "app/commands.h"
+#include "app/options.h"
+#include "common/atomic_file.h"
+#include "engine/renderer.h"
+#include "voxel/world.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+namespace grotto::app {
+namespace {
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const size_t m = v.size() / 2;
+    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+double msSince(std::chrono::steady_clock::time_point t) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app) {
+    struct Args {
+        std::string world, camera, size = "1280x720", json;
+        int frames = 30, warmup = 5;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("bench", "Measure load, mesh and per-pass GPU cost of a world");
+    cmd->add_option("world", args->world, "World .json or .vdb")->required();
+    cmd->add_option("--camera", args->camera, "Named camera (default: the world's default)");
+    cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
+    cmd->add_option("--frames", args->frames, "Measured frames")->capture_default_str()->check(CLI::Range(1, 100000));
+    cmd->add_option("--warmup", args->warmup, "Frames rendered before measuring")->capture_default_str()->check(CLI::Range(0, 100000));
+    cmd->add_option("--json", args->json, "Also write the figures to this JSON file");
+    cmd->callback([args] {
+        const Size size = parseSize(args->size);
+        if (!args->json.empty()) requireWritableDirectory(args->json);
+        auto t = std::chrono::steady_clock::now();
+        const voxel::World world = voxel::World::load(args->world);
+        const double loadMs = msSince(t);
+        t = std::chrono::steady_clock::now();
+        voxel::Mesh mesh = world.mesh();
+        const double meshMs = msSince(t);
+        const voxel::WorldStats stats = world.stats();
+        const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+
+        vk::Context ctx;
+        GpuScene scene = uploadScene(ctx, mesh, world.desc());
+        const size_t quadCount = mesh.quads.size();
+        mesh = {};  // the GPU holds the quads now
+        std::map<std::string, std::vector<double>> passMs;
+        std::vector<double> wallMs, frameGpuMs;
+        uint64_t drawn = 0;
+        size_t targetBytes = 0;
+        {
+            Renderer renderer(ctx, scene, world.desc().lighting, size.width, size.height);
+            targetBytes = renderer.targetBytes();
+            for (int i = 0; i < args->warmup + args->frames; ++i) {
+                const FrameStats f = renderer.render(camera);
+                if (i < args->warmup) continue;
+                double gpu = 0;
+                for (auto& [name, ms] : f.passMs) passMs[name].push_back(ms), gpu += ms;
+                frameGpuMs.push_back(gpu);
+                wallMs.push_back(f.wallMs);
+                drawn = f.quadsDrawn;
+            }
+        }
+        const size_t hostBytes = stats.hostBytes + scene.hostBytes();
+        const size_t gpuBytes = scene.gpuBytes();
+        destroy(ctx, scene);
+        requireNoValidationMessages(ctx);
+
+        nlohmann::json j = {
+            {"world", args->world}, {"device", ctx.deviceName()},
+            {"size", {size.width, size.height}}, {"frames", args->frames}, {"warmup", args->warmup},
+            {"load_ms", loadMs}, {"mesh_ms", meshMs}, {"active_voxels", stats.solidVoxels},
+            {"bricks", stats.bricks}, {"quads", quadCount}, {"quads_drawn", drawn},
+            {"frame_gpu_ms_median", median(frameGpuMs)}, {"frame_wall_ms_median", median(wallMs)},
+            {"memory", {{"grid_memusage_bytes", stats.sourceGridBytes}, {"host_bytes", hostBytes},
+                        {"gpu_scene_bytes", gpuBytes}, {"gpu_target_bytes", targetBytes},
+                        {"world_to_grid_ratio", double(hostBytes + gpuBytes) / double(std::max<size_t>(1, stats.sourceGridBytes))}}}};
+        std::printf("%s on %s, %ux%u, median of %d frames after %d warm-up\n", args->world.c_str(),
+                    ctx.deviceName().c_str(), size.width, size.height, args->frames, args->warmup);
+        std::printf("  load %.1f ms, mesh %.1f ms, %llu active voxels, %zu quads (%llu drawn)\n", loadMs, meshMs,
+                    (unsigned long long)stats.solidVoxels, quadCount, (unsigned long long)drawn);
+        for (auto& [name, v] : passMs) {
+            j["pass_ms_median"][name] = median(v);
+            std::printf("  %-10s %8.3f ms GPU\n", name.c_str(), median(v));
+        }
+        std::printf("  frame      %8.3f ms GPU, %.3f ms wall\n", median(frameGpuMs), median(wallMs));
+        std::printf("  memory: grid memUsage %zu B; world host %zu B + GPU %zu B = %.2fx; targets %zu B\n",
+                    stats.sourceGridBytes, hostBytes, gpuBytes,
+                    j["memory"]["world_to_grid_ratio"].get<double>(), targetBytes);
+        if (!args->json.empty())
+            writeAtomically(args->json, [&](const std::filesystem::path& tmp) {
+                std::ofstream(tmp) << j.dump(2) << "\n";
+            });
+    });
+}
+
+}  // namespace grotto::app

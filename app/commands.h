@@ -1,0 +1,13 @@
+#pragma once
+// One function per subcommand, each in its own file; main() wires them up.
+#include <CLI/CLI.hpp>
+
+namespace grotto::app {
+
+void addRenderCommand(CLI::App& app);
+void addInfoCommand(CLI::App& app);
+void addMkworldCommand(CLI::App& app);
+void addExportMeshCommand(CLI::App& app);
+void addBenchCommand(CLI::App& app);
+
+}  // namespace grotto::app

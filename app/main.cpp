@@ -1,0 +1,30 @@
+// grotto: the command line. Exit codes: 0 success, 2 bad input or usage,
+// 1 internal failure; errors are one line, never a raw exception trace.
+#include "app/commands.h"
+#include "common/error.h"
+
+#include <cstdio>
+#include <exception>
+
+int main(int argc, char** argv) {
+    CLI::App app{"grotto: voxel deferred renderer with temporal GTAO"};
+    app.require_subcommand(1);
+    grotto::app::addRenderCommand(app);
+    grotto::app::addInfoCommand(app);
+    grotto::app::addMkworldCommand(app);
+    grotto::app::addExportMeshCommand(app);
+    grotto::app::addBenchCommand(app);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : 2;
+    } catch (const grotto::Error& e) {
+        std::fprintf(stderr, "grotto: error: %s\n", e.what());
+        return e.exitCode();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "grotto: internal error: %s\n", e.what());
+        return 1;
+    }
+    return 0;
+}

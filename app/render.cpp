@@ -1,0 +1,48 @@
+// grotto render WORLD [--camera NAME] [--size WxH] [--aov] -o FILE
+#include "app/commands.h"
+#include "app/options.h"
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "engine/image_output.h"
+#include "engine/renderer.h"
+#include "voxel/world.h"
+
+#include <cstdio>
+
+namespace grotto::app {
+
+void addRenderCommand(CLI::App& app) {
+    struct Args {
+        std::string world, camera, size = "1280x720", output;
+        bool aov = false;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("render", "Render one frame of a world to a PNG or EXR");
+    cmd->add_option("world", args->world, "World .json or .vdb")->required();
+    cmd->add_option("--camera", args->camera, "Named camera from the world file (default: its default)");
+    cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
+    cmd->add_flag("--aov", args->aov, "EXR only: also write Z, N.xyz and albedo.RGB channels");
+    cmd->add_option("-o,--output", args->output, "Output .png or .exr")->required();
+    cmd->callback([args] {
+        const Size size = parseSize(args->size);
+        const std::filesystem::path out = args->output;
+        // Check everything about the output before any work, so bad input writes nothing.
+        if (imageFormatFor(out) != ImageFormat::Exr && args->aov)
+            throw Error(out.string(), "--aov needs an .exr output", "PNG holds colour only");
+        requireWritableDirectory(out);
+        const voxel::World world = voxel::World::load(args->world);
+        const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        vk::Context ctx;
+        GpuScene scene = uploadScene(ctx, world.mesh(), world.desc());
+        {
+            Renderer renderer(ctx, scene, world.desc().lighting, size.width, size.height);
+            renderer.render(camera);
+            writeFrame(out, renderer.readback(camera, args->aov), camera, args->aov);
+        }
+        destroy(ctx, scene);
+        requireNoValidationMessages(ctx);
+        std::printf("wrote %s (%ux%u, %s)\n", out.c_str(), size.width, size.height, ctx.deviceName().c_str());
+    });
+}
+
+}  // namespace grotto::app

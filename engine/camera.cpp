@@ -1,0 +1,65 @@
+#include "engine/camera.h"
+
+#include <cmath>
+#include <limits>
+
+namespace grotto {
+
+Camera makeCamera(const voxel::CameraDesc& d, uint32_t width, uint32_t height) {
+    Camera c;
+    c.position = d.position;
+    const glm::dvec3 back = glm::normalize(d.position - d.target);
+    // Straight up or down: any horizontal right vector will do.
+    glm::dvec3 up(0.0, 1.0, 0.0);
+    if (std::abs(glm::dot(back, up)) > 0.999999) up = glm::dvec3(0.0, 0.0, -1.0);
+    const glm::dvec3 right = glm::normalize(glm::cross(up, back));
+    c.basis = glm::dmat3(right, glm::cross(back, right), back);
+    c.fovY = glm::radians(d.fovDegrees);
+    c.nearPlane = d.nearPlane;
+    c.farPlane = d.farPlane;
+    c.width = width;
+    c.height = height;
+    return c;
+}
+
+glm::dmat4 Camera::viewFromWorld() const {
+    const glm::dmat3 r = glm::transpose(basis);
+    glm::dmat4 m(r);
+    m[3] = glm::dvec4(-(r * position), 1.0);
+    return m;
+}
+
+glm::dmat4 Camera::projection(bool flipY) const {
+    const double f = 1.0 / std::tan(fovY * 0.5);
+    glm::dmat4 p(0.0);
+    p[0][0] = f / aspect();
+    p[1][1] = flipY ? -f : f;
+    p[2][3] = -1.0;  // clip w = -z_view
+    if (farPlane > 0.0) {
+        p[2][2] = nearPlane / (farPlane - nearPlane);
+        p[3][2] = nearPlane * farPlane / (farPlane - nearPlane);
+    } else {
+        p[2][2] = 0.0;
+        p[3][2] = nearPlane;
+    }
+    return p;
+}
+
+glm::mat4 Camera::viewProjRelative() const {
+    return glm::mat4(projection() * glm::dmat4(glm::transpose(basis)));
+}
+
+double Camera::linearDepth(double depth) const {
+    const glm::dmat4 p = projection();
+    const double denom = depth + p[2][2];
+    return denom > 0.0 ? p[3][2] / denom : std::numeric_limits<double>::infinity();
+}
+
+glm::dvec3 Camera::rayDirection(double px, double py) const {
+    const double t = std::tan(fovY * 0.5);
+    const double x = (2.0 * px / width - 1.0) * t * aspect();
+    const double y = (1.0 - 2.0 * py / height) * t;
+    return glm::normalize(basis * glm::dvec3(x, y, -1.0));
+}
+
+}  // namespace grotto

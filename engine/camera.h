@@ -1,0 +1,31 @@
+#pragma once
+// A pinhole camera in double precision. Rendering uses camera-relative matrices
+// (the camera at the origin); depth is reverse-Z, infinite far plane by default.
+#include "voxel/world_desc.h"
+
+#include <glm/glm.hpp>
+
+namespace grotto {
+
+struct Camera {
+    glm::dvec3 position{0.0};
+    glm::dmat3 basis{1.0};      // columns: right, up, back (view looks down -Z)
+    double fovY = glm::radians(60.0);
+    double nearPlane = 0.05;
+    double farPlane = 0.0;      // 0 = infinite
+    uint32_t width = 1, height = 1;
+
+    double aspect() const { return double(width) / double(height); }
+    glm::dmat4 viewFromWorld() const;                 // absolute, for file metadata
+    glm::dmat4 projection(bool flipY = true) const;  // reverse-Z; Vulkan's y points down
+    glm::mat4 viewProjRelative() const;              // camera-relative world -> clip
+    // Positive distance along the view axis for a depth-buffer value (inf for 0 with
+    // an infinite far plane); read from the projection matrix, never a constant.
+    double linearDepth(double depth) const;
+    // World-space direction through a pixel position (pixel centres at +0.5).
+    glm::dvec3 rayDirection(double px, double py) const;
+};
+
+Camera makeCamera(const voxel::CameraDesc& desc, uint32_t width, uint32_t height);
+
+}  // namespace grotto

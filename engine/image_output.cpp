@@ -1,0 +1,87 @@
+#include "engine/image_output.h"
+
+#include "common/atomic_file.h"
+#include "common/error.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace grotto {
+namespace OIIO = OIIO_NAMESPACE;
+
+ImageFormat imageFormatFor(const std::filesystem::path& path) {
+    const std::string ext = path.extension().string();
+    if (ext == ".png") return ImageFormat::Png;
+    if (ext == ".exr") return ImageFormat::Exr;
+    throw Error(path.string(), "unsupported image extension '" + ext + "'", "use .png or .exr");
+}
+
+uint8_t toSrgb8(float v) {
+    if (!(v > 0.0f)) return 0;
+    if (v >= 1.0f) return 255;
+    const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+    return uint8_t(std::lround(s * 255.0f));
+}
+
+namespace {
+
+void addCamera(OIIO::ImageSpec& spec, const Camera& camera) {
+    // Imath (row-vector) matrices share their memory layout with glm's column-major ones.
+    const glm::mat4 worldToCamera(camera.viewFromWorld());
+    const glm::mat4 worldToScreen(camera.projection(false) * camera.viewFromWorld());
+    spec.attribute("worldtocamera", OIIO::TypeMatrix44, &worldToCamera[0][0]);
+    spec.attribute("worldtoscreen", OIIO::TypeMatrix44, &worldToScreen[0][0]);
+    spec.attribute("Software", "grotto");
+}
+
+void write(const std::filesystem::path& target, const std::filesystem::path& tmp, const OIIO::ImageSpec& spec,
+           const void* pixels, OIIO::TypeDesc type) {
+    auto out = OIIO::ImageOutput::create(tmp.string());
+    if (!out || !out->open(tmp.string(), spec) || !out->write_image(type, pixels) || !out->close())
+        throw Error(target.string(), "cannot be written: " + (out ? out->geterror() : OIIO::geterror()));
+}
+
+}  // namespace
+
+void writeFrame(const std::filesystem::path& path, const FrameImages& f, const Camera& camera, bool aovs) {
+    const ImageFormat format = imageFormatFor(path);
+    const size_t n = size_t(f.width) * f.height;
+    writeAtomically(path, [&](const std::filesystem::path& tmp) {
+        if (format == ImageFormat::Png) {
+            OIIO::ImageSpec spec(int(f.width), int(f.height), 3, OIIO::TypeDesc::UINT8);
+            spec.attribute("oiio:ColorSpace", "sRGB");
+            addCamera(spec, camera);
+            std::vector<uint8_t> px(3 * n);
+            for (size_t i = 0; i < n; ++i)
+                for (int c = 0; c < 3; ++c) px[3 * i + c] = toSrgb8(f.color[4 * i + c]);
+            write(path, tmp, spec, px.data(), OIIO::TypeDesc::UINT8);
+            return;
+        }
+        std::vector<std::string> names = {"R", "G", "B", "A"};
+        if (aovs) names.insert(names.end(), {"Z", "N.x", "N.y", "N.z", "albedo.R", "albedo.G", "albedo.B"});
+        const int channels = int(names.size());
+        OIIO::ImageSpec spec(int(f.width), int(f.height), channels, OIIO::TypeDesc::FLOAT);
+        spec.channelnames = names;
+        spec.alpha_channel = 3;
+        if (aovs) spec.z_channel = 4;
+        spec.attribute("oiio:ColorSpace", "Linear");
+        spec.attribute("compression", "zip");
+        addCamera(spec, camera);
+        std::vector<float> px(size_t(channels) * n);
+        for (size_t i = 0; i < n; ++i) {
+            float* p = &px[size_t(channels) * i];
+            for (int c = 0; c < 4; ++c) p[c] = f.color[4 * i + c];
+            if (!aovs) continue;
+            // EXR readers expect a finite Z; sky gets the largest float.
+            p[4] = std::isfinite(f.depth[i]) ? f.depth[i] : std::numeric_limits<float>::max();
+            for (int c = 0; c < 3; ++c) p[5 + c] = f.normal[3 * i + c];
+            for (int c = 0; c < 3; ++c) p[8 + c] = f.albedo[3 * i + c];
+        }
+        write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT);
+    });
+}
+
+}  // namespace grotto

@@ -1,0 +1,176 @@
+#include "engine/passes/gbuffer_pass.h"
+
+#include "engine/vk/pipeline.h"
+#include "shaders/shared/frame.h"
+
+#include <algorithm>
+
+namespace grotto {
+namespace {
+
+VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, VkFormat normalFormat, VkFormat albedoFormat) {
+    VkShaderModule vs = vk::loadShader(ctx, "gbuffer.vert");
+    VkShaderModule fs = vk::loadShader(ctx, "gbuffer.frag");
+    VkPipelineShaderStageCreateInfo stages[2] = {
+        {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, .stage = VK_SHADER_STAGE_VERTEX_BIT,
+         .module = vs, .pName = "main"},
+        {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
+         .module = fs, .pName = "main"}};
+    VkPipelineVertexInputStateCreateInfo vertexInput{.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkPipelineInputAssemblyStateCreateInfo assembly{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
+        .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
+    VkPipelineViewportStateCreateInfo viewport{.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO,
+                                               .viewportCount = 1, .scissorCount = 1};
+    // Counter-clockwise about the outward normal is front-facing (checked against the CPU ray cast).
+    VkPipelineRasterizationStateCreateInfo raster{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO,
+        .polygonMode = VK_POLYGON_MODE_FILL,
+        .cullMode = VK_CULL_MODE_BACK_BIT,
+        .frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE,
+        .lineWidth = 1.0f};
+    VkPipelineMultisampleStateCreateInfo multisample{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO,
+        .rasterizationSamples = VK_SAMPLE_COUNT_1_BIT};
+    VkPipelineDepthStencilStateCreateInfo depth{
+        .sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO,
+        .depthTestEnable = VK_TRUE,
+        .depthWriteEnable = VK_TRUE,
+        .depthCompareOp = VK_COMPARE_OP_GREATER};  // reverse-Z: nearer is larger
+    VkPipelineColorBlendAttachmentState blendOff{.colorWriteMask = 0xf};
+    VkPipelineColorBlendAttachmentState blends[2] = {blendOff, blendOff};
+    VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
+                                              .attachmentCount = 2, .pAttachments = blends};
+    VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    VkPipelineDynamicStateCreateInfo dynamic{.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
+                                             .dynamicStateCount = 2, .pDynamicStates = dynamicStates};
+    VkFormat colorFormats[2] = {normalFormat, albedoFormat};
+    VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
+                                            .colorAttachmentCount = 2,
+                                            .pColorAttachmentFormats = colorFormats,
+                                            .depthAttachmentFormat = VK_FORMAT_D32_SFLOAT};
+    VkGraphicsPipelineCreateInfo ci{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
+                                    .pNext = &rendering,
+                                    .stageCount = 2,
+                                    .pStages = stages,
+                                    .pVertexInputState = &vertexInput,
+                                    .pInputAssemblyState = &assembly,
+                                    .pViewportState = &viewport,
+                                    .pRasterizationState = &raster,
+                                    .pMultisampleState = &multisample,
+                                    .pDepthStencilState = &depth,
+                                    .pColorBlendState = &blend,
+                                    .pDynamicState = &dynamic,
+                                    .layout = layout};
+    VkPipeline pipeline;
+    VK_CHECK(vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline));
+    vkDestroyShaderModule(ctx.device, vs, nullptr);
+    vkDestroyShaderModule(ctx.device, fs, nullptr);
+    return pipeline;
+}
+
+// Side planes and the near plane of the frustum in camera-relative world space
+// (from the rows of the view-projection matrix; the far plane is tested only when finite).
+struct Frustum {
+    glm::vec4 planes[6];
+    int count = 5;
+    explicit Frustum(const Camera& camera) {
+        const glm::mat4 m = glm::transpose(camera.viewProjRelative());  // m[i] = row i
+        planes[0] = m[3] + m[0];
+        planes[1] = m[3] - m[0];
+        planes[2] = m[3] + m[1];
+        planes[3] = m[3] - m[1];
+        planes[4] = m[3] - m[2];  // reverse-Z: depth <= 1 in front of the near plane
+        if (camera.farPlane > 0.0) planes[count++] = m[2];  // depth >= 0
+    }
+    bool outside(const glm::vec3& lo, const glm::vec3& hi) const {
+        for (int i = 0; i < count; ++i) {
+            const glm::vec4& p = planes[i];
+            const glm::vec3 corner(p.x >= 0 ? hi.x : lo.x, p.y >= 0 ? hi.y : lo.y, p.z >= 0 ? hi.z : lo.z);
+            if (glm::dot(glm::vec3(p), corner) + p.w < 0.0f) return true;
+        }
+        return false;
+    }
+};
+
+}  // namespace
+
+GBufferPass::GBufferPass(vk::Context& ctx, VkFormat normalFormat, VkFormat albedoFormat) : ctx_(ctx) {
+    setLayout_ = vk::pushDescriptorLayout(ctx, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                                                VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                          VK_SHADER_STAGE_VERTEX_BIT);
+    layout_ = vk::pipelineLayout(ctx, setLayout_, sizeof(gpu::ChunkPush), VK_SHADER_STAGE_VERTEX_BIT);
+    pipeline_ = createPipeline(ctx, layout_, normalFormat, albedoFormat);
+}
+
+GBufferPass::~GBufferPass() {
+    vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
+    vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
+    vkDestroyDescriptorSetLayout(ctx_.device, setLayout_, nullptr);
+}
+
+uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const GpuScene& scene,
+                             const vk::Buffer& frame, const Camera& camera) {
+    const VkExtent2D extent = t.depth.extent;
+    auto attachment = [](const vk::Image& img, VkClearValue clear) {
+        return VkRenderingAttachmentInfo{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
+                                         .imageView = img.view,
+                                         .imageLayout = img.aspect == VK_IMAGE_ASPECT_DEPTH_BIT
+                                                            ? VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL
+                                                            : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
+                                         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                         .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
+                                         .clearValue = clear};
+    };
+    VkRenderingAttachmentInfo colors[2] = {attachment(t.normal, {}), attachment(t.albedo, {})};
+    VkRenderingAttachmentInfo depth = attachment(t.depth, {.depthStencil = {0.0f, 0}});
+    VkRenderingInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
+                         .renderArea = {{0, 0}, extent},
+                         .layerCount = 1,
+                         .colorAttachmentCount = 2,
+                         .pColorAttachments = colors,
+                         .pDepthAttachment = &depth};
+    ctx_.cmdBeginRendering(cmd, &info);
+    VkViewport viewport{0, 0, float(extent.width), float(extent.height), 0.0f, 1.0f};
+    VkRect2D scissor{{0, 0}, extent};
+    vkCmdSetViewport(cmd, 0, 1, &viewport);
+    vkCmdSetScissor(cmd, 0, 1, &scissor);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
+    vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_,
+                     {vk::storageBuffer(frame.buffer), vk::storageBuffer(scene.quads.buffer),
+                      vk::storageBuffer(scene.palette.buffer)});
+
+    // Visible chunks, camera-relative, nearest first so early depth tests reject more.
+    const Frustum frustum(camera);
+    struct Visible { size_t index; glm::vec3 offset; float distance; };
+    std::vector<Visible> visible;
+    for (size_t i = 0; i < scene.chunks.size(); ++i) {
+        const GpuChunk& c = scene.chunks[i];
+        const glm::vec3 offset(c.origin - camera.position);
+        if (frustum.outside(offset + c.lo, offset + c.hi)) continue;
+        const glm::vec3 centre = offset + 0.5f * (c.lo + c.hi);
+        visible.push_back({i, offset, glm::dot(centre, centre)});
+    }
+    std::sort(visible.begin(), visible.end(), [](const Visible& a, const Visible& b) { return a.distance < b.distance; });
+
+    uint64_t drawn = 0;
+    for (const Visible& v : visible) {
+        const GpuChunk& c = scene.chunks[v.index];
+        const gpu::ChunkPush push{glm::vec4(v.offset, float(scene.voxelSize))};
+        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+        const glm::vec3 lo = v.offset + c.lo, hi = v.offset + c.hi;
+        for (int f = 0; f < 6; ++f) {
+            if (!c.faceCount[f]) continue;
+            // A +axis face is seen only from above its plane: skip when the camera
+            // (at the origin) is below the lowest one, and likewise for -axis faces.
+            const int axis = f / 2;
+            if ((f % 2 == 0) ? lo[axis] >= 0.0f : hi[axis] <= 0.0f) continue;
+            vkCmdDraw(cmd, 6 * c.faceCount[f], 1, 6 * c.faceFirst[f], 0);
+            drawn += c.faceCount[f];
+        }
+    }
+    ctx_.cmdEndRendering(cmd);
+    return drawn;
+}
+
+}  // namespace grotto

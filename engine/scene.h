@@ -1,0 +1,33 @@
+#pragma once
+// The GPU copy of a voxel world: quads, chunk table and material palette.
+// scene.cpp is the one bridge between voxel/ and engine/vk/.
+#include "engine/vk/resources.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <vector>
+
+namespace grotto {
+namespace voxel { struct Mesh; struct WorldDesc; }
+
+struct GpuChunk {
+    glm::dvec3 origin;            // world position of the chunk's corner
+    glm::vec3 lo, hi;             // tight bounds of its quads, relative to origin
+    std::array<uint32_t, 6> faceFirst{}, faceCount{};  // quad ranges per face
+};
+
+struct GpuScene {
+    vk::Buffer quads;
+    vk::Buffer palette;
+    std::vector<GpuChunk> chunks;
+    double voxelSize = 1.0;
+    uint64_t quadCount = 0;
+    size_t gpuBytes() const { return size_t(quads.size + palette.size); }
+    size_t hostBytes() const { return chunks.size() * sizeof(GpuChunk); }
+};
+
+GpuScene uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc);
+void destroy(vk::Context& ctx, GpuScene& scene);
+
+}  // namespace grotto

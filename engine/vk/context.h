@@ -1,0 +1,57 @@
+#pragma once
+// The Vulkan instance, one device and its queue: headless, lavapipe by default.
+// GROTTO_DEVICE=<substring> picks another device by name; GROTTO_VALIDATION=1
+// (always set by the tests) turns the Khronos validation layer on, and every
+// message it reports is printed and counted.
+#include "engine/vk/check.h"
+#include "engine/vk/memory.h"
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <string>
+
+namespace grotto::vk {
+
+struct ContextOptions {
+    bool validation = false;   // also on when GROTTO_VALIDATION=1
+    std::string deviceName;    // substring; empty = GROTTO_DEVICE, else lavapipe, else the first
+};
+
+class Context {
+public:
+    explicit Context(ContextOptions options = {});
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+    VkCommandPool commandPool = VK_NULL_HANDLE;
+    VkPhysicalDeviceProperties properties{};
+    std::unique_ptr<Allocator> allocator;
+
+    PFN_vkCmdBeginRendering cmdBeginRendering = nullptr;
+    PFN_vkCmdEndRendering cmdEndRendering = nullptr;
+    PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+
+    std::string deviceName() const { return properties.deviceName; }
+    bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }
+    // Validation messages (warnings and errors) reported since creation.
+    int validationMessages() const { return validationMessages_.load(); }
+
+    // Records with record(cmd), submits and waits.
+    void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
+
+private:
+    static VkBool32 VKAPI_PTR onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
+                                        VkDebugUtilsMessageTypeFlagsEXT,
+                                        const VkDebugUtilsMessengerCallbackDataEXT*, void*);
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    std::atomic<int> validationMessages_{0};
+};
+
+}  // namespace grotto::vk

@@ -1,0 +1,92 @@
+#include "engine/vk/pipeline.h"
+
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+
+namespace grotto::vk {
+
+VkShaderModule loadShader(Context& ctx, const std::string& name) {
+    const char* env = std::getenv("GROTTO_SHADER_DIR");
+    const std::string path = std::string(env && *env ? env : GROTTO_SHADER_DIR_DEFAULT) + "/" + name + ".spv";
+    std::ifstream in(path, std::ios::binary);
+    if (!in)
+        throw Error::internal(path, "compiled shader not found",
+                              "build the project, or point GROTTO_SHADER_DIR at the .spv files");
+    std::vector<char> code((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    VkShaderModuleCreateInfo ci{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
+                                .codeSize = code.size(),
+                                .pCode = reinterpret_cast<const uint32_t*>(code.data())};
+    VkShaderModule module;
+    VK_CHECK(vkCreateShaderModule(ctx.device, &ci, nullptr, &module));
+    return module;
+}
+
+VkDescriptorSetLayout pushDescriptorLayout(Context& ctx, const std::vector<VkDescriptorType>& types,
+                                           VkShaderStageFlags stages) {
+    std::vector<VkDescriptorSetLayoutBinding> bindings;
+    for (uint32_t i = 0; i < types.size(); ++i)
+        bindings.push_back({.binding = i, .descriptorType = types[i], .descriptorCount = 1, .stageFlags = stages});
+    VkDescriptorSetLayoutCreateInfo ci{.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO,
+                                       .flags = VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR,
+                                       .bindingCount = uint32_t(bindings.size()),
+                                       .pBindings = bindings.data()};
+    VkDescriptorSetLayout layout;
+    VK_CHECK(vkCreateDescriptorSetLayout(ctx.device, &ci, nullptr, &layout));
+    return layout;
+}
+
+VkPipelineLayout pipelineLayout(Context& ctx, VkDescriptorSetLayout set, uint32_t pushConstantBytes,
+                                VkShaderStageFlags pushStages) {
+    VkPushConstantRange range{.stageFlags = pushStages, .offset = 0, .size = pushConstantBytes};
+    VkPipelineLayoutCreateInfo ci{.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO,
+                                  .setLayoutCount = 1,
+                                  .pSetLayouts = &set,
+                                  .pushConstantRangeCount = pushConstantBytes ? 1u : 0u,
+                                  .pPushConstantRanges = &range};
+    VkPipelineLayout layout;
+    VK_CHECK(vkCreatePipelineLayout(ctx.device, &ci, nullptr, &layout));
+    return layout;
+}
+
+VkPipeline computePipeline(Context& ctx, VkPipelineLayout layout, const std::string& shader) {
+    VkShaderModule module = loadShader(ctx, shader);
+    VkComputePipelineCreateInfo ci{.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
+                                   .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
+                                             .stage = VK_SHADER_STAGE_COMPUTE_BIT,
+                                             .module = module,
+                                             .pName = "main"},
+                                   .layout = layout};
+    VkPipeline pipeline;
+    VK_CHECK(vkCreateComputePipelines(ctx.device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline));
+    vkDestroyShaderModule(ctx.device, module, nullptr);
+    return pipeline;
+}
+
+Binding sampledImage(VkSampler sampler, VkImageView view, VkImageLayout layout) {
+    return {.type = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, .image = {sampler, view, layout}};
+}
+Binding storageImage(VkImageView view) {
+    return {.type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, .image = {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL}};
+}
+Binding storageBuffer(VkBuffer buffer, VkDeviceSize size) {
+    return {.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, .buffer = {buffer, 0, size}};
+}
+
+void pushBindings(Context& ctx, VkCommandBuffer cmd, VkPipelineBindPoint point, VkPipelineLayout layout,
+                  const std::vector<Binding>& bindings) {
+    std::vector<VkWriteDescriptorSet> writes;
+    for (uint32_t i = 0; i < bindings.size(); ++i) {
+        const Binding& b = bindings[i];
+        const bool image = b.type != VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        writes.push_back({.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
+                          .dstBinding = i,
+                          .descriptorCount = 1,
+                          .descriptorType = b.type,
+                          .pImageInfo = image ? &b.image : nullptr,
+                          .pBufferInfo = image ? nullptr : &b.buffer});
+    }
+    ctx.cmdPushDescriptorSet(cmd, point, layout, 0, uint32_t(writes.size()), writes.data());
+}
+
+}  // namespace grotto::vk

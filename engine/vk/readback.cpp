@@ -1,0 +1,26 @@
+#include "engine/vk/readback.h"
+
+#include <cstring>
+
+namespace grotto::vk {
+
+std::vector<uint8_t> readImage(Context& ctx, const Image& image, VkImageLayout layout, uint32_t bytesPerPixel) {
+    const VkDeviceSize size = VkDeviceSize(image.extent.width) * image.extent.height * bytesPerPixel;
+    Buffer staging = createBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        const VkPipelineStageFlags all = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+        transition(cmd, image, layout, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, all, VK_ACCESS_MEMORY_WRITE_BIT,
+                   VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        VkBufferImageCopy region{.imageSubresource = {image.aspect, 0, 0, 1},
+                                 .imageExtent = {image.extent.width, image.extent.height, 1}};
+        vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1, &region);
+        transition(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                   VK_ACCESS_TRANSFER_READ_BIT, all, VK_ACCESS_MEMORY_READ_BIT);
+    });
+    std::vector<uint8_t> out(size);
+    std::memcpy(out.data(), staging.mapped(), size);
+    destroy(ctx, staging);
+    return out;
+}
+
+}  // namespace grotto::vk

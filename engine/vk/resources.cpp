@@ -1,0 +1,100 @@
+#include "engine/vk/resources.h"
+
+#include <cstring>
+
+namespace grotto::vk {
+
+Buffer createBuffer(Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible) {
+    Buffer b;
+    b.size = size;
+    VkBufferCreateInfo ci{.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO,
+                          .size = std::max<VkDeviceSize>(size, 16),
+                          .usage = usage,
+                          .sharingMode = VK_SHARING_MODE_EXCLUSIVE};
+    VK_CHECK(vkCreateBuffer(ctx.device, &ci, nullptr, &b.buffer));
+    VkMemoryRequirements req;
+    vkGetBufferMemoryRequirements(ctx.device, b.buffer, &req);
+    b.memory = ctx.allocator->allocate(req, hostVisible);
+    VK_CHECK(vkBindBufferMemory(ctx.device, b.buffer, b.memory.memory, b.memory.offset));
+    return b;
+}
+
+void destroy(Context& ctx, Buffer& b) {
+    if (b.buffer) vkDestroyBuffer(ctx.device, b.buffer, nullptr);
+    ctx.allocator->free(b.memory);
+    b = {};
+}
+
+Image createImage(Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage) {
+    Image img;
+    img.format = format;
+    img.extent = extent;
+    const bool depth = format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM;
+    img.aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
+    VkImageCreateInfo ci{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+                         .imageType = VK_IMAGE_TYPE_2D,
+                         .format = format,
+                         .extent = {extent.width, extent.height, 1},
+                         .mipLevels = 1,
+                         .arrayLayers = 1,
+                         .samples = VK_SAMPLE_COUNT_1_BIT,
+                         .tiling = VK_IMAGE_TILING_OPTIMAL,
+                         .usage = usage,
+                         .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+                         .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
+    VK_CHECK(vkCreateImage(ctx.device, &ci, nullptr, &img.image));
+    VkMemoryRequirements req;
+    vkGetImageMemoryRequirements(ctx.device, img.image, &req);
+    img.memory = ctx.allocator->allocate(req, false);
+    VK_CHECK(vkBindImageMemory(ctx.device, img.image, img.memory.memory, img.memory.offset));
+    VkImageViewCreateInfo vi{.sType = VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO,
+                             .image = img.image,
+                             .viewType = VK_IMAGE_VIEW_TYPE_2D,
+                             .format = format,
+                             .subresourceRange = {img.aspect, 0, 1, 0, 1}};
+    VK_CHECK(vkCreateImageView(ctx.device, &vi, nullptr, &img.view));
+    return img;
+}
+
+void destroy(Context& ctx, Image& i) {
+    if (i.view) vkDestroyImageView(ctx.device, i.view, nullptr);
+    if (i.image) vkDestroyImage(ctx.device, i.image, nullptr);
+    ctx.allocator->free(i.memory);
+    i = {};
+}
+
+Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage) {
+    Buffer dst = createBuffer(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
+    if (size == 0) return dst;
+    Buffer staging = createBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+    std::memcpy(staging.mapped(), data, size);
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        VkBufferCopy region{.size = size};
+        vkCmdCopyBuffer(cmd, staging.buffer, dst.buffer, 1, &region);
+    });
+    destroy(ctx, staging);
+    return dst;
+}
+
+bool supportsFormat(Context& ctx, VkFormat format, VkFormatFeatureFlags features) {
+    VkFormatProperties p;
+    vkGetPhysicalDeviceFormatProperties(ctx.physical, format, &p);
+    return (p.optimalTilingFeatures & features) == features;
+}
+
+void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
+                VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
+                VkAccessFlags dstAccess) {
+    VkImageMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
+                           .srcAccessMask = srcAccess,
+                           .dstAccessMask = dstAccess,
+                           .oldLayout = from,
+                           .newLayout = to,
+                           .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                           .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
+                           .image = image.image,
+                           .subresourceRange = {image.aspect, 0, 1, 0, 1}};
+    vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+}  // namespace grotto::vk

@@ -1,0 +1,42 @@
+#pragma once
+// Buffers and images with their memory, plus upload and layout transitions.
+#include "engine/vk/context.h"
+
+#include <cstddef>
+
+namespace grotto::vk {
+
+struct Buffer {
+    VkBuffer buffer = VK_NULL_HANDLE;
+    Allocation memory;
+    VkDeviceSize size = 0;
+    void* mapped() const { return memory.mapped; }
+};
+
+struct Image {
+    VkImage image = VK_NULL_HANDLE;
+    VkImageView view = VK_NULL_HANDLE;
+    Allocation memory;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent{};
+    VkImageAspectFlags aspect = VK_IMAGE_ASPECT_COLOR_BIT;
+};
+
+Buffer createBuffer(Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible);
+void destroy(Context& ctx, Buffer& b);
+
+Image createImage(Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage);
+void destroy(Context& ctx, Image& i);
+
+// Device-local buffer filled from host data through a staging buffer.
+Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
+
+// Whether the device can use format for the given optimal-tiling features.
+bool supportsFormat(Context& ctx, VkFormat format, VkFormatFeatureFlags features);
+
+// One image memory barrier (whole image) between two layouts and stages.
+void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
+                VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+
+}  // namespace grotto::vk

@@ -1,0 +1,42 @@
+#include "engine/vk/timestamps.h"
+
+namespace grotto::vk {
+
+Timestamps::Timestamps(Context& ctx, uint32_t maxPasses) : ctx_(ctx), max_(maxPasses) {
+    VkQueryPoolCreateInfo ci{.sType = VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO,
+                             .queryType = VK_QUERY_TYPE_TIMESTAMP,
+                             .queryCount = 2 * maxPasses};
+    VK_CHECK(vkCreateQueryPool(ctx.device, &ci, nullptr, &pool_));
+}
+
+Timestamps::~Timestamps() { vkDestroyQueryPool(ctx_.device, pool_, nullptr); }
+
+void Timestamps::reset(VkCommandBuffer cmd) {
+    vkCmdResetQueryPool(cmd, pool_, 0, 2 * max_);
+    names_.clear();
+}
+
+void Timestamps::begin(VkCommandBuffer cmd, const std::string& pass) {
+    if (names_.size() >= max_) throw Error::internal("timestamps", "more passes than query slots");
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, pool_, 2 * uint32_t(names_.size()));
+    names_.push_back(pass);
+}
+
+void Timestamps::end(VkCommandBuffer cmd) {
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, 2 * uint32_t(names_.size()) - 1);
+}
+
+std::vector<std::pair<std::string, double>> Timestamps::read() {
+    std::vector<std::pair<std::string, double>> out;
+    if (names_.empty()) return out;
+    std::vector<uint64_t> ticks(2 * names_.size());
+    VK_CHECK(vkGetQueryPoolResults(ctx_.device, pool_, 0, uint32_t(ticks.size()), ticks.size() * sizeof(uint64_t),
+                                   ticks.data(), sizeof(uint64_t),
+                                   VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT));
+    const double msPerTick = double(ctx_.properties.limits.timestampPeriod) * 1e-6;
+    for (size_t i = 0; i < names_.size(); ++i)
+        out.emplace_back(names_[i], double(ticks[2 * i + 1] - ticks[2 * i]) * msPerTick);
+    return out;
+}
+
+}  // namespace grotto::vk

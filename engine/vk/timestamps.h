@@ -1,0 +1,29 @@
+#pragma once
+// GPU timestamps around named passes: begin/end per pass, read after the frame.
+#include "engine/vk/context.h"
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace grotto::vk {
+
+class Timestamps {
+public:
+    Timestamps(Context& ctx, uint32_t maxPasses);
+    ~Timestamps();
+
+    void reset(VkCommandBuffer cmd);  // at the start of a frame
+    void begin(VkCommandBuffer cmd, const std::string& pass);
+    void end(VkCommandBuffer cmd);
+    // Milliseconds per pass of the last completed frame, in recording order.
+    std::vector<std::pair<std::string, double>> read();
+
+private:
+    Context& ctx_;
+    VkQueryPool pool_ = VK_NULL_HANDLE;
+    uint32_t max_;
+    std::vector<std::string> names_;
+};
+
+}  // namespace grotto::vk

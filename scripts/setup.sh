@@ -1,0 +1,28 @@
+#!/usr/bin/env bash
+# Installs exactly the Debian 12 packages Grotto builds, runs and tests with.
+# Idempotent: prints nothing and touches nothing when all are present.
+set -euo pipefail
+
+packages=(
+  cmake ninja-build g++ pkg-config
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
+  libglm-dev
+  libopenvdb-dev libboost-dev libboost-iostreams-dev libtbb-dev   # for OpenVDB headers and its CMake module
+  libopenimageio-dev
+  libgtest-dev libcli11-dev nlohmann-json3-dev
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+
+if [ "$(id -u)" -ne 0 ]; then
+  echo "setup: missing packages: ${missing[*]}; run this script as root (or install them with apt-get)" >&2
+  exit 2
+fi
+echo "setup: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

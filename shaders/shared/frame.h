@@ -1,0 +1,32 @@
+// Per-frame constants read by the G-buffer and composite passes. Positions are
+// camera-relative (the camera sits at the origin) so precision does not depend
+// on where in the world the camera is.
+#ifndef GROTTO_SHARED_FRAME_H
+#define GROTTO_SHARED_FRAME_H
+#include "common.h"
+
+GROTTO_NAMESPACE_BEGIN
+
+struct FrameUniforms {
+    mat4 viewProj;       // camera-relative world -> clip (reverse-Z)
+    mat4 invViewProj;    // clip -> camera-relative world
+    vec4 sunDirection;   // xyz: unit vector toward the sun
+    vec4 sunRadiance;    // rgb: colour x intensity
+    vec4 ambient;        // rgb: colour x intensity
+    vec4 skyZenith;      // rgb
+    vec4 skyHorizon;     // rgb
+    uvec2 size;          // full-resolution width, height
+    uvec2 pad;
+};
+GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 2 * 64 + 5 * 16 + 16);
+
+// G-buffer push constants: one chunk's corner, camera-relative, and the voxel size.
+struct ChunkPush {
+    vec4 offsetAndVoxelSize;
+};
+GROTTO_STATIC_ASSERT(sizeof(ChunkPush) == 16);
+
+#define GROTTO_COMPOSITE_GROUP 8u
+
+GROTTO_NAMESPACE_END
+#endif

@@ -1,0 +1,40 @@
+#pragma once
+// Face-culled, greedy-merged quads grouped in 32^3 chunks, each chunk's quads
+// sorted by face so a renderer can skip faces turned away from the camera.
+#include "shaders/shared/quad.h"
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace grotto::voxel {
+
+struct MeshOptions {
+    bool greedy = true;  // false: one quad per exposed face
+};
+
+struct MeshChunk {
+    glm::ivec3 origin;                  // voxel index of the chunk's minimum corner
+    uint32_t firstQuad = 0;
+    std::array<uint32_t, 6> faceCount{};  // quads per face, stored in face order
+    uint32_t quadCount() const {
+        uint32_t n = 0;
+        for (uint32_t c : faceCount) n += c;
+        return n;
+    }
+};
+
+struct Mesh {
+    std::vector<gpu::PackedQuad> quads;
+    std::vector<MeshChunk> chunks;
+    glm::dvec3 origin{0.0};  // world position of voxel corner (0, 0, 0)
+    double voxelSize = 1.0;
+
+    // The 4 corners of quad q of chunk c, in voxel-corner index units (CCW about the normal).
+    std::array<glm::ivec3, 4> corners(const MeshChunk& c, const gpu::PackedQuad& q) const;
+    size_t bytes() const { return quads.size() * sizeof(gpu::PackedQuad) + chunks.size() * sizeof(MeshChunk); }
+};
+
+}  // namespace grotto::voxel

@@ -1,0 +1,32 @@
+#pragma once
+// Internal to voxel/: the OpenVDB side of a World.
+#include "voxel/world.h"
+
+#include <openvdb/openvdb.h>
+
+namespace grotto::voxel {
+
+struct World::Impl {
+    WorldDesc desc;
+    openvdb::MaskGrid::Ptr solid;            // active = solid; tiles kept as tiles
+    openvdb::Int32Grid::ConstPtr materials;  // int32 worlds only: per-voxel material id
+    int uniformMaterial = 1;                 // every other world
+    double voxelSize = 1.0;
+    glm::dvec3 origin{0.0};
+    size_t sourceGridBytes = 0;
+};
+
+// Opens desc.gridFile and reads the named grid (or the first). Checks the voxel
+// transform and the memory budget before reading voxels. Throws grotto::Error.
+openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc);
+
+// Applies the solid rule; fills impl.solid, impl.materials, impl.uniformMaterial.
+void buildSolid(const openvdb::GridBase::Ptr& grid, World::Impl& impl);
+
+// Voxel size and corner origin from a uniform, axis-aligned transform (else Error).
+void readTransform(const openvdb::GridBase& grid, const std::string& file, World::Impl& impl);
+
+// A World around an in-memory grid (tests and generators).
+World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc);
+
+}  // namespace grotto::voxel

@@ -1,0 +1,110 @@
+#include "common/error.h"
+#include "voxel/solid.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace grotto::voxel {
+
+World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
+    auto impl = std::make_shared<World::Impl>();
+    impl->desc = std::move(desc);
+    const std::string file = impl->desc.gridFile.empty() ? "<memory>" : impl->desc.gridFile.string();
+    readTransform(*grid, file, *impl);
+    impl->sourceGridBytes = grid->memUsage();
+    buildSolid(grid, *impl);
+    return World(std::move(impl));
+}
+
+World World::load(const std::filesystem::path& path) {
+    WorldDesc desc = loadWorldDesc(path);
+    openvdb::GridBase::Ptr grid = loadGrid(desc);
+    return makeWorld(grid, std::move(desc));
+}
+
+const WorldDesc& World::desc() const { return impl_->desc; }
+double World::voxelSize() const { return impl_->voxelSize; }
+glm::dvec3 World::origin() const { return impl_->origin; }
+
+IndexBox World::bounds() const {
+    openvdb::CoordBBox box;
+    if (!impl_->solid->tree().evalActiveVoxelBoundingBox(box)) return {};
+    return {{box.min().x(), box.min().y(), box.min().z()}, {box.max().x(), box.max().y(), box.max().z()}};
+}
+
+WorldStats World::stats() const {
+    WorldStats s;
+    const auto& tree = impl_->solid->tree();
+    s.solidVoxels = tree.activeVoxelCount();
+    s.bricks = tree.leafCount();
+    for (auto it = tree.cbeginValueOn(); it; ++it)
+        if (it.isTileValue()) s.bricks += it.getVoxelCount() / 512;
+    s.hostBytes = impl_->solid->memUsage() + (impl_->materials ? impl_->materials->memUsage() : 0);
+    s.sourceGridBytes = impl_->sourceGridBytes;
+    return s;
+}
+
+std::vector<Brick> World::bricks() const {
+    std::vector<Brick> out;
+    const auto& tree = impl_->solid->tree();
+    out.reserve(tree.leafCount());
+    for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) {
+        Brick b;
+        const openvdb::Coord o = leaf->origin();
+        b.origin = {o.x(), o.y(), o.z()};
+        const auto& mask = leaf->getValueMask();
+        for (int w = 0; w < 8; ++w) b.occupancy[w] = mask.template getWord<uint64_t>(w);
+        out.push_back(b);
+    }
+    // Active tiles stand for whole blocks of full bricks.
+    for (auto it = tree.cbeginValueOn(); it; ++it) {
+        if (!it.isTileValue()) continue;
+        openvdb::CoordBBox box;
+        it.getBoundingBox(box);
+        for (int x = box.min().x(); x <= box.max().x(); x += 8)
+            for (int y = box.min().y(); y <= box.max().y(); y += 8)
+                for (int z = box.min().z(); z <= box.max().z(); z += 8) {
+                    Brick b{{x, y, z}, {}};
+                    for (auto& w : b.occupancy) w = ~uint64_t(0);
+                    out.push_back(b);
+                }
+    }
+    return out;
+}
+
+bool World::solid(glm::ivec3 v) const {
+    return impl_->solid->tree().isValueOn(openvdb::Coord(v.x, v.y, v.z));
+}
+
+CameraDesc World::camera(const std::string& name) const {
+    const WorldDesc& d = impl_->desc;
+    const std::string& pick = name.empty() ? d.defaultCamera : name;
+    if (!pick.empty()) {
+        auto it = d.cameras.find(pick);
+        if (it == d.cameras.end()) {
+            std::string known;
+            for (auto& [n, c] : d.cameras) known += (known.empty() ? "" : ", ") + n;
+            throw Error(d.source.string(), "has no camera named '" + pick + "'",
+                        known.empty() ? "the world defines no cameras" : "cameras: " + known);
+        }
+        return it->second;
+    }
+    // Frame the bounds from above and to the side.
+    CameraDesc c;
+    IndexBox b = bounds();
+    if (b.empty()) b = {glm::ivec3(0), glm::ivec3(0)};
+    const glm::dvec3 lo = impl_->origin + glm::dvec3(b.min) * impl_->voxelSize;
+    const glm::dvec3 hi = impl_->origin + glm::dvec3(b.max + 1) * impl_->voxelSize;
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double radius = 0.5 * glm::length(hi - lo);
+    const double distance = radius / std::sin(glm::radians(c.fovDegrees) * 0.5);
+    c.target = centre;
+    c.position = centre + glm::normalize(glm::dvec3(0.8, 0.7, 1.0)) * distance;
+    c.nearPlane = std::clamp(distance * 1e-3, 1e-4, 10.0);
+    return c;
+}
+
+}  // namespace grotto::voxel

@@ -1,0 +1,72 @@
+#pragma once
+// A loaded voxel world: solid occupancy, materials and everything its file says.
+// OpenVDB stays behind this interface, so the engine can use it without OpenVDB.
+#include "voxel/mesh.h"
+#include "voxel/world_desc.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace grotto::voxel {
+
+// Inclusive range of solid voxel indices; empty() when the world has none.
+struct IndexBox {
+    glm::ivec3 min{0}, max{-1};
+    bool empty() const { return max.x < min.x; }
+};
+
+// An 8^3 brick: one OpenVDB leaf node (or one block of an active tile) with its
+// occupancy as 512 bits, bit x*64 + y*8 + z as OpenVDB orders leaf voxels.
+struct Brick {
+    glm::ivec3 origin;
+    uint64_t occupancy[8];
+};
+
+struct RayHit {
+    double distance;      // world units along the (normalised) ray
+    glm::ivec3 voxel;     // the solid voxel hit
+    int face;             // face entered through: 0..5 = +X -X +Y -Y +Z -Z
+};
+
+struct WorldStats {
+    uint64_t solidVoxels = 0;
+    uint64_t bricks = 0;
+    size_t hostBytes = 0;        // our solid + material grids
+    size_t sourceGridBytes = 0;  // OpenVDB's memUsage() of the grid as loaded
+};
+
+class World {
+public:
+    // Loads a world .json or a bare .vdb. Throws grotto::Error (input) on bad input.
+    static World load(const std::filesystem::path& path);
+
+    const WorldDesc& desc() const;
+    double voxelSize() const;
+    glm::dvec3 origin() const;   // world position of voxel corner (0, 0, 0)
+    IndexBox bounds() const;
+    WorldStats stats() const;
+
+    std::vector<Brick> bricks() const;  // tiles split into full bricks
+    Mesh mesh(const MeshOptions& options = {}) const;
+
+    // Solid-voxel test and exact voxel traversal (DDA) in world units.
+    bool solid(glm::ivec3 voxel) const;
+    std::optional<RayHit> raycast(glm::dvec3 origin, glm::dvec3 direction, double maxDistance) const;
+
+    // A named camera, or the default one framed from the bounds when name is empty.
+    CameraDesc camera(const std::string& name) const;
+
+    struct Impl;
+    explicit World(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+    const Impl& impl() const { return *impl_; }
+
+private:
+    std::shared_ptr<const Impl> impl_;
+};
+
+}  // namespace grotto::voxel

@@ -1,0 +1,237 @@
+#include "voxel/world_desc.h"
+
+#include "common/error.h"
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <set>
+
+namespace grotto::voxel {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+const char* solidRuleName(SolidRule rule) {
+    switch (rule) {
+        case SolidRule::Auto: return "auto";
+        case SolidRule::LevelSet: return "level_set";
+        case SolidRule::Fog: return "fog";
+        case SolidRule::Mask: return "mask";
+        case SolidRule::Int32: return "int32";
+    }
+    return "?";
+}
+
+std::vector<Material> defaultMaterials() {
+    return {{"stone", {0.55f, 0.55f, 0.52f}}, {"grass", {0.30f, 0.55f, 0.22f}},
+            {"wood", {0.55f, 0.38f, 0.22f}},  {"brick", {0.62f, 0.30f, 0.24f}},
+            {"sand", {0.80f, 0.72f, 0.52f}},  {"plaster", {0.85f, 0.83f, 0.78f}},
+            {"slate", {0.32f, 0.34f, 0.38f}}, {"moss", {0.42f, 0.50f, 0.30f}}};
+}
+
+namespace {
+
+// Reads one JSON object strictly: every field is checked, unknown ones refused.
+class Reader {
+public:
+    Reader(const fs::path& file, const json& object, std::string path)
+        : file_(file), obj_(object), path_(std::move(path)) {
+        if (!obj_.is_object()) fail("", "expected an object");
+    }
+    ~Reader() noexcept(false) {
+        if (std::uncaught_exceptions()) return;
+        for (auto& [key, value] : obj_.items())
+            if (!seen_.count(key))
+                fail(key, "unknown field", "known fields: " + known());
+    }
+
+    bool has(const std::string& key) {
+        seen_.insert(key);
+        return obj_.contains(key);
+    }
+    const json& at(const std::string& key) { return obj_.at(key); }
+
+    double number(const std::string& key, double fallback, double lo, double hi) {
+        if (!has(key)) return fallback;
+        const json& v = obj_.at(key);
+        if (!v.is_number() || !std::isfinite(v.get<double>()))
+            fail(key, "expected a finite number");
+        double d = v.get<double>();
+        if (d < lo || d > hi)
+            fail(key, "value " + v.dump() + " is out of range",
+                 "accepted: " + fmt(lo) + " to " + fmt(hi));
+        return d;
+    }
+    std::string string(const std::string& key, std::string fallback) {
+        if (!has(key)) return fallback;
+        if (!obj_.at(key).is_string()) fail(key, "expected a string");
+        return obj_.at(key).get<std::string>();
+    }
+    glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback, double lo = -1e12,
+                    double hi = 1e12) {
+        if (!has(key)) return fallback;
+        const json& v = obj_.at(key);
+        if (!v.is_array() || v.size() != 3) fail(key, "expected an array of 3 numbers");
+        glm::dvec3 r;
+        for (int i = 0; i < 3; ++i) {
+            if (!v[i].is_number() || !std::isfinite(v[i].get<double>()))
+                fail(key, "expected an array of 3 finite numbers");
+            r[i] = v[i].get<double>();
+            if (r[i] < lo || r[i] > hi)
+                fail(key, "component " + v[i].dump() + " is out of range",
+                     "accepted: " + fmt(lo) + " to " + fmt(hi));
+        }
+        return r;
+    }
+    Reader child(const std::string& key) { return Reader(file_, obj_.at(key), field(key)); }
+
+    [[noreturn]] void fail(const std::string& key, const std::string& what,
+                           const std::string& hint = {}) const {
+        std::string f = field(key);
+        throw Error(file_.string(), (f.empty() ? "" : "field '" + f + "': ") + what, hint);
+    }
+    std::string field(const std::string& key) const {
+        return path_.empty() ? key : key.empty() ? path_ : path_ + "." + key;
+    }
+
+private:
+    static std::string fmt(double d) {
+        char buf[32];
+        snprintf(buf, sizeof buf, "%g", d);
+        return buf;
+    }
+    std::string known() const {
+        std::string s;
+        for (auto& k : seen_) s += (s.empty() ? "" : ", ") + k;
+        return s;
+    }
+    const fs::path& file_;
+    const json& obj_;
+    std::string path_;
+    std::set<std::string> seen_;
+};
+
+SolidRule parseRule(Reader& r, const std::string& key) {
+    std::string s = r.string(key, "auto");
+    for (SolidRule rule : {SolidRule::Auto, SolidRule::LevelSet, SolidRule::Fog, SolidRule::Mask,
+                           SolidRule::Int32})
+        if (s == solidRuleName(rule)) return rule;
+    r.fail(key, "unknown solid rule '" + s + "'", "accepted: auto, level_set, fog, mask, int32");
+}
+
+glm::vec3 color(Reader& r, const std::string& key, glm::vec3 fallback) {
+    return glm::vec3(r.vec3(key, glm::dvec3(fallback), 0.0, 1e3));
+}
+
+CameraDesc parseCamera(Reader r) {
+    CameraDesc c;
+    c.position = r.vec3("position", c.position);
+    c.target = r.vec3("target", c.target);
+    c.fovDegrees = r.number("fov", c.fovDegrees, 1.0, 170.0);
+    c.nearPlane = r.number("near", c.nearPlane, 1e-4, 10.0);
+    c.farPlane = r.number("far", c.farPlane, 0.0, 1e7);
+    if (!r.has("position")) r.fail("position", "missing");
+    if (!r.has("target")) r.fail("target", "missing");
+    if (glm::length(c.target - c.position) < 1e-9)
+        r.fail("target", "equals position", "a camera must look somewhere");
+    if (c.farPlane != 0.0 && c.farPlane <= c.nearPlane)
+        r.fail("far", "must exceed 'near' (or be 0 for an infinite far plane)");
+    return c;
+}
+
+void parseLighting(Reader r, Lighting& l) {
+    if (r.has("sun")) {
+        Reader s = r.child("sun");
+        glm::dvec3 d = s.vec3("direction", glm::dvec3(l.sunDirection));
+        if (glm::length(d) < 1e-9) s.fail("direction", "must not be zero");
+        l.sunDirection = glm::vec3(glm::normalize(d));
+        l.sunColor = color(s, "color", l.sunColor);
+        l.sunIntensity = float(s.number("intensity", l.sunIntensity, 0.0, 1e3));
+    }
+    if (r.has("ambient")) {
+        Reader a = r.child("ambient");
+        l.ambientColor = color(a, "color", l.ambientColor);
+        l.ambientIntensity = float(a.number("intensity", l.ambientIntensity, 0.0, 1e3));
+    }
+    if (r.has("sky")) {
+        Reader s = r.child("sky");
+        l.skyZenith = color(s, "zenith", l.skyZenith);
+        l.skyHorizon = color(s, "horizon", l.skyHorizon);
+    }
+}
+
+WorldDesc parseWorld(const fs::path& file, const json& doc) {
+    WorldDesc w;
+    w.source = file;
+    w.materials = defaultMaterials();
+    Reader r(file, doc, "");
+    if (!r.has("grid")) r.fail("grid", "missing", "name the .vdb file: \"grid\": {\"file\": ...}");
+    {
+        Reader g = r.child("grid");
+        if (!g.has("file")) g.fail("file", "missing");
+        std::string f = g.string("file", "");
+        if (f.empty()) g.fail("file", "must not be empty");
+        w.gridFile = fs::path(f).is_absolute() ? fs::path(f) : file.parent_path() / f;
+        w.gridName = g.string("name", "");
+        w.rule = parseRule(g, "rule");
+        w.threshold = g.number("threshold", w.threshold, -1e30, 1e30);
+        w.material = int(g.number("material", w.material, 1, 255));
+    }
+    if (r.has("materials")) {
+        const json& m = r.at("materials");
+        if (!m.is_array() || m.empty() || m.size() > 255)
+            r.fail("materials", "expected an array of 1 to 255 materials");
+        w.materials.clear();
+        for (size_t i = 0; i < m.size(); ++i) {
+            Reader mr(file, m[i], "materials[" + std::to_string(i) + "]");
+            Material mat;
+            mat.name = mr.string("name", "material" + std::to_string(i + 1));
+            mat.albedo = glm::vec3(mr.vec3("albedo", glm::dvec3(mat.albedo), 0.0, 1.0));
+            w.materials.push_back(mat);
+        }
+    }
+    if (r.has("lighting")) parseLighting(r.child("lighting"), w.lighting);
+    if (r.has("cameras")) {
+        const json& cams = r.at("cameras");
+        if (!cams.is_object()) r.fail("cameras", "expected an object of named cameras");
+        for (auto& [name, cam] : cams.items())
+            w.cameras[name] = parseCamera(Reader(file, cam, "cameras." + name));
+    }
+    w.defaultCamera = r.string("default_camera", w.cameras.empty() ? "" : w.cameras.begin()->first);
+    if (!w.defaultCamera.empty() && !w.cameras.count(w.defaultCamera))
+        r.fail("default_camera", "names no camera '" + w.defaultCamera + "'");
+    double budgetMiB = r.number("memory_budget_mib", double(w.memoryBudgetBytes >> 20), 1, 1 << 20);
+    w.memoryBudgetBytes = size_t(budgetMiB) << 20;
+    return w;
+}
+
+}  // namespace
+
+WorldDesc loadWorldDesc(const fs::path& path) {
+    std::error_code ec;
+    if (!fs::exists(path, ec))
+        throw Error(path.string(), "no such file", "give a world .json or a .vdb grid file");
+    if (path.extension() == ".vdb") {
+        WorldDesc w;
+        w.source = path;
+        w.gridFile = path;
+        w.materials = defaultMaterials();
+        return w;
+    }
+    std::ifstream in(path);
+    if (!in) throw Error(path.string(), "cannot be read");
+    json doc;
+    try {
+        doc = json::parse(in);
+    } catch (const json::parse_error& e) {
+        std::string msg = e.what();
+        auto colon = msg.find("parse error");
+        throw Error(path.string(), "malformed JSON: " + msg.substr(colon == std::string::npos ? 0 : colon),
+                    "a world file is a JSON object with at least \"grid\": {\"file\": ...}");
+    }
+    return parseWorld(path, doc);
+}
+
+}  // namespace grotto::voxel

@@ -1,0 +1,67 @@
+#pragma once
+// What a world file says, as plain data: which grid, how it becomes solid, the
+// material palette, the light and the named cameras. OpenVDB-free.
+#include <glm/vec3.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace grotto::voxel {
+
+// How grid values become solid voxels; chosen from the grid class/type by default.
+enum class SolidRule {
+    Auto,      // from the grid: level set, fog volume, bool/mask or int32
+    LevelSet,  // solid where value < 0, interior tiles included
+    Fog,       // solid where density >= threshold
+    Mask,      // solid where active (bool and mask grids)
+    Int32,     // solid where active and value != 0; the value is the material id
+};
+const char* solidRuleName(SolidRule rule);
+
+struct Material {
+    std::string name;
+    glm::vec3 albedo{0.7f};  // linear RGB in [0, 1]
+};
+
+struct CameraDesc {
+    glm::dvec3 position{0.0};
+    glm::dvec3 target{0.0, 0.0, -1.0};  // looked-at point, world units
+    double fovDegrees = 60.0;           // vertical field of view
+    double nearPlane = 0.05;            // world units
+    double farPlane = 0.0;              // 0 = infinite (reverse-Z)
+};
+
+struct Lighting {
+    glm::vec3 sunDirection = glm::vec3(0.45f, 0.8f, 0.3f);  // toward the sun, normalised on load
+    glm::vec3 sunColor{1.0f, 0.96f, 0.88f};
+    float sunIntensity = 2.6f;
+    glm::vec3 ambientColor{0.55f, 0.65f, 0.85f};
+    float ambientIntensity = 0.6f;
+    glm::vec3 skyZenith{0.28f, 0.45f, 0.78f};
+    glm::vec3 skyHorizon{0.75f, 0.82f, 0.92f};
+};
+
+struct WorldDesc {
+    std::filesystem::path source;      // the .json or .vdb the user named
+    std::filesystem::path gridFile;    // resolved .vdb path
+    std::string gridName;              // empty = the file's first grid
+    SolidRule rule = SolidRule::Auto;
+    double threshold = 0.5;            // fog volumes only
+    int material = 1;                  // material id of every voxel for non-int32 grids
+    std::vector<Material> materials;   // id k uses materials[k - 1]
+    Lighting lighting;
+    std::map<std::string, CameraDesc> cameras;
+    std::string defaultCamera;         // empty = framed from the world's bounds
+    size_t memoryBudgetBytes = size_t(8) << 30;  // grids estimated above this are refused
+};
+
+// Reads a world .json, or describes a bare .vdb with defaults. Throws grotto::Error
+// (input) naming the file and field for anything malformed or unknown.
+WorldDesc loadWorldDesc(const std::filesystem::path& path);
+
+// The palette used when a world names none: stone, grass, wood, brick, ...
+std::vector<Material> defaultMaterials();
+
+}  // namespace grotto::voxel
