@@ -9,5 +9,6 @@ void addInfoCommand(CLI::App& app);
 void addMkworldCommand(CLI::App& app);
 void addExportMeshCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
+void addFlythroughCommand(CLI::App& app);
 
 }  // namespace grotto::app

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
     grotto::app::addMkworldCommand(app);
     grotto::app::addExportMeshCommand(app);
     grotto::app::addBenchCommand(app);
+    grotto::app::addFlythroughCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -103,9 +103,9 @@ struct KindCase {
     const char* gridType;
 };
 
-class Deterministic : public ::testing::TestWithParam<KindCase> {};
+class GeneratorDeterminism : public ::testing::TestWithParam<KindCase> {};
 
-TEST_P(Deterministic, SameSeedSameGrid) {
+TEST_P(GeneratorDeterminism, SameSeedSameGrid) {
     const KindCase& k = GetParam();
     const auto a = generateWorld(k.kind, sized(k.size, 7));
     const auto b = generateWorld(k.kind, sized(k.size, 7));
@@ -118,7 +118,7 @@ TEST_P(Deterministic, SameSeedSameGrid) {
     EXPECT_EQ(sa.checksum, sb.checksum);
 }
 
-INSTANTIATE_TEST_SUITE_P(Kinds, Deterministic,
+INSTANTIATE_TEST_SUITE_P(Kinds, GeneratorDeterminism,
                          ::testing::Values(KindCase{"rooms", 64, "material", "Tree_int32_5_4_3"},
                                            KindCase{"caves", 64, "material", "Tree_int32_5_4_3"},
                                            KindCase{"thin", 64, "solid", "Tree_bool_5_4_3"},
@@ -183,10 +183,11 @@ TEST(Generators, MeshCubeIsASolidLevelSet) {
     EXPECT_GT(tree.getValue(openvdb::Coord(0, 8, 11)), 0.0f);
 
     // The same cube as negative indices, and as an ASCII PLY, gives the same grid.
-    o.meshFile = dir.write("neg.obj",
-                           "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
-                           "f -8 -5 -6 -7\nf -4 -3 -2 -1\nf -8 -7 -3 -4\nf -5 -1 -2 -6\n"
-                           "f -8 -4 -1 -5\nf -7 -6 -2 -3\n");
+    o.meshFile =
+        dir.write("neg.obj",
+                  "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                  "f -8 -5 -6 -7\nf -4 -3 -2 -1\nf -8 -7 -3 -4\nf -5 -1 -2 -6\n"
+                  "f -8 -4 -1 -5\nf -7 -6 -2 -3\n");
     EXPECT_EQ(summarize(generateWorld("mesh", o)).active, grid->activeVoxelCount());
     o.meshFile = dir.write("cube.ply",
                            "ply\nformat ascii 1.0\ncomment a cube\nelement vertex 8\n"

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <vector>
 
 namespace grotto::voxel {
 namespace {
@@ -21,10 +22,10 @@ enum Material : int32_t { Rock = 1, Dirt = 2, Grass = 3 };
 using LeafT = openvdb::Int32Tree::LeafNodeType;
 constexpr int kDim = int(LeafT::DIM);  // 8
 
-constexpr int kTop = 96;          // world height in voxels
-constexpr float kCrust = 24.0f;   // solid depth below the height field
+constexpr int kTop = 96;            // world height in voxels
+constexpr float kCrust = 24.0f;     // solid depth below the height field
 constexpr float kOverhang = 30.0f;  // how far the 3D noise moves the surface
-constexpr int kDirt = 3;           // dirt layer thickness
+constexpr int kDirt = 3;            // dirt layer thickness
 constexpr float kTunnel = 0.006f;   // squared radius of tunnels in noise units
 
 class Terrain {

@@ -58,7 +58,8 @@ void cityBlock(openvdb::Int32Grid& grid, Rng& rng, int x0, int z0, int size) {
     switch (rng.range(0, 2)) {
         case 0: {  // one tower, sometimes set back from the kerb
             const int m = 8 * rng.range(0, 1);
-            building(grid, rng, x0 + a + m, z0 + a + m, x0 + b - m, z0 + b - m, pickHeight(rng, 120));
+            building(grid, rng, x0 + a + m, z0 + a + m, x0 + b - m, z0 + b - m,
+                     pickHeight(rng, 120));
             break;
         }
         case 1:  // four lots
@@ -66,7 +67,8 @@ void cityBlock(openvdb::Int32Grid& grid, Rng& rng, int x0, int z0, int size) {
                 for (int j = 0; j < 2; ++j) {
                     const int lx0 = i == 0 ? a : split + gap, lx1 = i == 0 ? split : b;
                     const int lz0 = j == 0 ? a : split + gap, lz1 = j == 0 ? split : b;
-                    building(grid, rng, x0 + lx0, z0 + lz0, x0 + lx1, z0 + lz1, pickHeight(rng, 60));
+                    building(grid, rng, x0 + lx0, z0 + lz0, x0 + lx1, z0 + lz1,
+                             pickHeight(rng, 60));
                 }
             break;
         default: {  // two slabs split along x or z

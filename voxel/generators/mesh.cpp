@@ -70,14 +70,16 @@ bool parse(std::string_view token, T& value) {
 
 float coordinate(LineReader& r, std::string_view token) {
     float v = 0;
-    if (!parse(token, v) || !std::isfinite(v)) r.fail("bad vertex coordinate '" + std::string(token) + "'");
+    if (!parse(token, v) || !std::isfinite(v))
+        r.fail("bad vertex coordinate '" + std::string(token) + "'");
     return v;
 }
 
 // Polygons become triangle fans around their first vertex.
 void addPolygon(LineReader& r, Mesh& mesh, const std::vector<uint32_t>& poly) {
     if (poly.size() < 3) r.fail("a face needs at least 3 vertices");
-    for (size_t i = 1; i + 1 < poly.size(); ++i) mesh.triangles.emplace_back(poly[0], poly[i], poly[i + 1]);
+    for (size_t i = 1; i + 1 < poly.size(); ++i)
+        mesh.triangles.emplace_back(poly[0], poly[i], poly[i + 1]);
 }
 
 void readObj(LineReader& r, Mesh& mesh) {
@@ -105,17 +107,23 @@ void readObj(LineReader& r, Mesh& mesh) {
     }
 }
 
+struct PlyProperty {
+    std::string name;
+    bool list = false;
+    int axis = -1;  // 0, 1, 2 for x, y, z
+};
+
 struct PlyElement {
     std::string name;
     long count = 0;
-    std::vector<std::pair<std::string, bool>> properties;  // name, is a list
+    std::vector<PlyProperty> properties;
 };
 
-void readPly(LineReader& r, Mesh& mesh) {
+std::vector<PlyElement> readPlyHeader(LineReader& r) {
     std::string line;
     std::vector<PlyElement> elements;
-    bool ascii = false, ended = false;
-    while (!ended && r.next(line)) {
+    bool ascii = false;
+    while (r.next(line)) {
         const auto t = split(line);
         if (t.empty() || t[0] == "comment" || t[0] == "obj_info" || t[0] == "ply") continue;
         if (t[0] == "format") {
@@ -123,59 +131,67 @@ void readPly(LineReader& r, Mesh& mesh) {
                 r.fail("only ASCII PLY is supported", "convert the mesh to ASCII PLY or OBJ");
             ascii = true;
         } else if (t[0] == "element") {
-            PlyElement e;
+            PlyElement e{std::string(t.size() > 1 ? t[1] : ""), 0, {}};
             if (t.size() != 3 || !parse(t[2], e.count) || e.count < 0) r.fail("bad element line");
-            e.name = std::string(t[1]);
             elements.push_back(e);
         } else if (t[0] == "property") {
-            if (elements.empty() || t.size() < 3) r.fail("bad property line");
-            const bool list = t[1] == "list";
-            if (list && t.size() != 5) r.fail("bad list property line");
-            elements.back().properties.emplace_back(std::string(t.back()), list);
+            const bool list = t.size() > 1 && t[1] == "list";
+            if (elements.empty() || t.size() != (list ? 5u : 3u)) r.fail("bad property line");
+            const std::string_view n = t.back();
+            const int axis = n == "x" ? 0 : n == "y" ? 1 : n == "z" ? 2 : -1;
+            elements.back().properties.push_back({std::string(n), list, list ? -1 : axis});
         } else if (t[0] == "end_header") {
-            ended = true;
+            if (!ascii) r.fail("PLY header has no format line", "expected 'format ascii 1.0'");
+            for (const PlyElement& e : elements)
+                if (e.name == "vertex" &&
+                    std::count_if(e.properties.begin(), e.properties.end(),
+                                  [](const auto& p) { return p.axis >= 0; }) != 3)
+                    r.fail("PLY vertices need x, y and z properties");
+            return elements;
         } else {
             r.fail("unknown PLY header line '" + line + "'");
         }
     }
-    if (!ended || !ascii) r.fail("incomplete PLY header", "needs 'format ascii 1.0' and 'end_header'");
+    r.fail("PLY header ends without 'end_header'");
+}
 
+void readPlyData(LineReader& r, const std::vector<PlyElement>& elements, Mesh& mesh) {
+    std::string line;
     std::vector<uint32_t> poly;
     for (const PlyElement& e : elements) {
         const bool vertex = e.name == "vertex", face = e.name == "face";
-        int ix = -1, iy = -1, iz = -1;
-        for (int p = 0; p < int(e.properties.size()); ++p) {
-            const auto& name = e.properties[size_t(p)].first;
-            if (name == "x") ix = p;
-            if (name == "y") iy = p;
-            if (name == "z") iz = p;
-        }
-        if (vertex && (ix < 0 || iy < 0 || iz < 0)) r.fail("PLY vertex element lacks x, y or z");
         for (long n = 0; n < e.count; ++n) {
-            if (!r.next(line)) r.fail("PLY data ends early: expected " + std::to_string(e.count) + " " + e.name + " lines");
-            if (!vertex && !face) continue;
+            if (!r.next(line))
+                r.fail("PLY data ends early", "the header promises " + std::to_string(e.count) +
+                                                  " '" + e.name + "' lines");
+            if (!vertex && !face) continue;  // edges, materials, ...: not needed
             const auto t = split(line);
-            size_t at = 0;
+            size_t at = 0;  // the next value on the line
             float xyz[3] = {0, 0, 0};
-            for (int p = 0; p < int(e.properties.size()); ++p) {
-                if (at >= t.size()) r.fail("too few values on a " + e.name + " line");
-                if (!e.properties[size_t(p)].second) {
-                    if (p == ix || p == iy || p == iz) xyz[p == ix ? 0 : p == iy ? 1 : 2] = coordinate(r, t[at]);
+            for (const PlyProperty& p : e.properties) {
+                if (at >= t.size()) r.fail("too few values for a '" + e.name + "'");
+                if (!p.list) {
+                    if (vertex && p.axis >= 0) xyz[p.axis] = coordinate(r, t[at]);
                     ++at;
                     continue;
                 }
                 long k = 0;
-                if (!parse(t[at++], k) || k < 0 || at + size_t(k) > t.size()) r.fail("bad list on a " + e.name + " line");
-                const bool indices = face && (e.properties[size_t(p)].first == "vertex_indices" ||
-                                              e.properties[size_t(p)].first == "vertex_index");
-                poly.clear();
-                for (long j = 0; j < k; ++j, ++at) {
-                    long idx = 0;
-                    if (indices && (!parse(t[at], idx) || idx < 0 || idx >= long(mesh.points.size())))
-                        r.fail("bad face index '" + std::string(t[at]) + "'", "vertices must come before faces");
-                    poly.push_back(uint32_t(idx));
+                if (!parse(t[at++], k) || k < 0 || at + size_t(k) > t.size())
+                    r.fail("bad list for a '" + e.name + "'");
+                if (face && (p.name == "vertex_indices" || p.name == "vertex_index")) {
+                    poly.clear();
+                    for (size_t j = at; j < at + size_t(k); ++j) {
+                        long idx = -1;
+                        if (!parse(t[j], idx) || idx < 0 || idx >= long(mesh.points.size()))
+                            r.fail("bad face index '" + std::string(t[j]) + "'",
+                                   "indices run 0.." +
+                                       std::to_string(long(mesh.points.size()) - 1) +
+                                       "; vertices must come before faces");
+                        poly.push_back(uint32_t(idx));
+                    }
+                    addPolygon(r, mesh, poly);
                 }
-                if (indices) addPolygon(r, mesh, poly);
+                at += size_t(k);
             }
             if (vertex) mesh.points.emplace_back(xyz[0], xyz[1], xyz[2]);
         }
@@ -187,10 +203,11 @@ Mesh readMesh(const fs::path& file) {
     Mesh mesh;
     std::string first;
     std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     const bool hasLine = r.next(first);
     if (hasLine && split(first).size() == 1 && split(first)[0] == "ply") {
-        readPly(r, mesh);
+        readPlyData(r, readPlyHeader(r), mesh);
     } else if (ext == ".obj") {
         LineReader again(file);  // the first line is data too
         readObj(again, mesh);
@@ -216,7 +233,8 @@ openvdb::GridBase::Ptr generateMesh(const GeneratorOptions& options) {
     const openvdb::Vec3s extent = hi - lo;
     const float largest = std::max({extent.x(), extent.y(), extent.z()});
     if (!(largest > 0.0f))
-        throw Error(options.meshFile, "the mesh has zero extent", "all its vertices are at one point");
+        throw Error(options.meshFile, "the mesh has zero extent",
+                    "all its vertices are at one point");
 
     // World units: centre x and z on 0, rest the lowest point on y = 0.
     const float scale = float(options.size * options.voxelSize) / largest;
@@ -224,7 +242,8 @@ openvdb::GridBase::Ptr generateMesh(const GeneratorOptions& options) {
     for (auto& p : mesh.points) p = (p - shift) * scale;
 
     const auto xform = openvdb::math::Transform::createLinearTransform(options.voxelSize);
-    auto grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*xform, mesh.points, mesh.triangles, 3.0f);
+    auto grid = openvdb::tools::meshToLevelSet<openvdb::FloatGrid>(*xform, mesh.points,
+                                                                   mesh.triangles, 3.0f);
     grid->setName("surface");
     return grid;
 }

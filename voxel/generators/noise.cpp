@@ -20,22 +20,14 @@ float fade(float t) { return t * t * t * (t * (t * 6.0f - 15.0f) + 10.0f); }
 
 float lerp(float a, float b, float t) { return a + (b - a) * t; }
 
-// Dot product of the offset with one of the 12 cube-edge directions.
+// The 12 cube-edge directions (Perlin's improved noise): no axis is favoured.
+constexpr float kGradients[12][3] = {{1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0},
+                                     {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+                                     {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}};
+
 float gradDot(uint32_t h, float dx, float dy, float dz) {
-    switch (h % 12u) {
-        case 0: return dx + dy;
-        case 1: return -dx + dy;
-        case 2: return dx - dy;
-        case 3: return -dx - dy;
-        case 4: return dx + dz;
-        case 5: return -dx + dz;
-        case 6: return dx - dz;
-        case 7: return -dx - dz;
-        case 8: return dy + dz;
-        case 9: return -dy + dz;
-        case 10: return dy - dz;
-        default: return -dy - dz;
-    }
+    const float* g = kGradients[h % 12u];
+    return g[0] * dx + g[1] * dy + g[2] * dz;
 }
 
 }  // namespace

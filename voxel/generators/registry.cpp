@@ -58,8 +58,8 @@ GeneratorOptions resolve(const Kind& kind, GeneratorOptions options) {
     if (options.size == 0) options.size = kind.defaultSize;
     if (options.size < 8 || options.size > kind.maxSize)
         throw Error("--size", std::to_string(options.size) + " is out of range for " + kind.name,
-                    "accepted: 8.." + std::to_string(kind.maxSize) + " voxels, or 0 for the default " +
-                        std::to_string(kind.defaultSize));
+                    "accepted: 8.." + std::to_string(kind.maxSize) +
+                        " voxels, or 0 for the default " + std::to_string(kind.defaultSize));
     if (!std::isfinite(options.voxelSize) || options.voxelSize <= 0.0)
         throw Error("--voxel-size", "voxel size must be a positive number",
                     "e.g. 1.0 or 0.25 world units per voxel");
@@ -98,7 +98,8 @@ openvdb::GridBase::Ptr generateWorld(const std::string& kindName, const Generato
 void makeWorldFile(const std::string& kind, const GeneratorOptions& options,
                    const std::filesystem::path& out) {
     std::string ext = out.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     if (ext != ".vdb")
         throw Error(out.string(), "the output of mkworld is an OpenVDB file", "name it with .vdb");
     requireWritableDirectory(out);  // fail before a long generation, not after

@@ -45,8 +45,8 @@ openvdb::GridBase::Ptr generateRooms(const GeneratorOptions& options) {
 
     const int S = options.size;
     const int lo = -S / 2, hi = lo + S;
-    const int T = 3;                       // wall thickness
-    const int H = std::max(12, S / 2);     // wall height; no ceiling, so the sun gets in
+    const int T = 3;                    // wall thickness
+    const int H = std::max(12, S / 2);  // wall height; no ceiling, so the sun gets in
     const int door = 4, doorH = 10;
     Builder b(*grid, lo, hi);
 

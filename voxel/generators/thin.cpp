@@ -48,7 +48,8 @@ openvdb::GridBase::Ptr generateThin(const GeneratorOptions& options) {
     // Grate raised 8 voxels on four legs: bars along x with gaps of 1 and 2
     // voxels in turn, held by two cross bars along z.
     const int gx0 = lo + 8, gx1 = lo + 28, gz0 = lo + 18, gz1 = lo + 38, gy = 8;
-    for (int z = gz0, i = 0; z < gz1; z += (i++ % 2 == 0) ? 2 : 3) box(gx0, gy, z, gx1, gy + 1, z + 1);
+    for (int z = gz0, i = 0; z < gz1; z += (i++ % 2 == 0) ? 2 : 3)
+        box(gx0, gy, z, gx1, gy + 1, z + 1);
     box(gx0, gy, gz0, gx0 + 1, gy + 1, gz1);
     box(gx1 - 1, gy, gz0, gx1, gy + 1, gz1);
     for (int x : {gx0, gx1 - 1})

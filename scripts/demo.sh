@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# Sets up, builds, and renders the default world's flythrough into out/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/setup.sh
+cmake --preset release >/dev/null
+cmake --build --preset release
+build/grotto flythrough worlds/rooms.json --frames 24 --size 640x360 -o out/rooms

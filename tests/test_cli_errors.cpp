@@ -1,0 +1,153 @@
+// Bad input gets one clear line naming the file and field, exit code 2 and no
+// output file; the CLI runs with the validation layer on.
+#include "tests/test_util.h"
+
+#include <gtest/gtest.h>
+#include <openvdb/openvdb.h>
+
+#include <fstream>
+#include <random>
+
+namespace grotto {
+namespace {
+
+namespace fs = std::filesystem;
+using test::runGrotto;
+
+class CliErrors : public ::testing::Test {
+protected:
+    void SetUp() override {
+        openvdb::initialize();
+        auto grid = openvdb::BoolGrid::create(false);
+        grid->setName("solid");
+        for (int x = 0; x < 16; ++x)
+            for (int z = 0; z < 16; ++z) grid->tree().setValueOn(openvdb::Coord(x, 0, z), true);
+        good_ = dir_ / "good.vdb";
+        writeGrids(good_, {grid});
+    }
+
+    static void writeGrids(const fs::path& p, openvdb::GridPtrVec grids) { openvdb::io::File(p.string()).write(grids); }
+
+    fs::path writeText(const std::string& name, const std::string& text) {
+        std::ofstream(dir_ / name) << text;
+        return dir_ / name;
+    }
+
+    // Exit code 2, a single stderr line naming `mention`, and no output written.
+    void expectRefused(const std::string& args, const std::string& mention, const fs::path& output) {
+        const test::RunResult r = runGrotto(args);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(mention), std::string::npos) << "expected '" << mention << "' in: " << r.err;
+        EXPECT_EQ(r.err.find("terminate"), std::string::npos);
+        EXPECT_FALSE(fs::exists(output)) << output;
+        for (auto& e : fs::directory_iterator(dir_.path))
+            EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "left behind: " << e.path();
+    }
+
+    std::string render(const fs::path& world) { return "render " + world.string() + " --size 32x16 -o " + out().string(); }
+    fs::path out() const { return dir_ / "out.png"; }
+
+    test::ScratchDir dir_;
+    fs::path good_;
+};
+
+TEST_F(CliErrors, GoodWorldRenders) {
+    const test::RunResult r = runGrotto(render(good_));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out()));
+}
+
+TEST_F(CliErrors, MissingVdb) { expectRefused(render(dir_ / "nope.vdb"), "nope.vdb", out()); }
+
+TEST_F(CliErrors, TruncatedVdb) {
+    const auto size = fs::file_size(good_);
+    fs::copy_file(good_, dir_ / "cut.vdb");
+    fs::resize_file(dir_ / "cut.vdb", size / 2);
+    expectRefused(render(dir_ / "cut.vdb"), "cut.vdb", out());
+}
+
+TEST_F(CliErrors, RandomBytesVdb) {
+    std::mt19937 rng(5);
+    std::string bytes(4096, '\0');
+    for (char& c : bytes) c = char(rng());
+    expectRefused(render(writeText("noise.vdb", bytes)), "noise.vdb", out());
+}
+
+TEST_F(CliErrors, VdbWithoutGrids) {
+    writeGrids(dir_ / "empty.vdb", {});
+    expectRefused(render(dir_ / "empty.vdb"), "no grids", out());
+}
+
+TEST_F(CliErrors, WrongGridName) {
+    const auto world = writeText("w.json", R"({"grid": {"file": "good.vdb", "name": "density"}})");
+    expectRefused(render(world), "no grid named 'density'", out());
+}
+
+TEST_F(CliErrors, UnsupportedGridType) {
+    auto vec = openvdb::Vec3SGrid::create();
+    vec->setName("velocity");
+    vec->tree().setValueOn(openvdb::Coord(0), openvdb::Vec3s(1));
+    writeGrids(dir_ / "vec.vdb", {vec});
+    expectRefused(render(dir_ / "vec.vdb"), "unsupported grid type", out());
+}
+
+TEST_F(CliErrors, NonUniformTransform) {
+    auto grid = openvdb::BoolGrid::create(false);
+    grid->setName("solid");
+    grid->tree().setValueOn(openvdb::Coord(0), true);
+    grid->setTransform(openvdb::math::Transform::createLinearTransform(openvdb::Mat4R(
+        2, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1)));
+    writeGrids(dir_ / "stretched.vdb", {grid});
+    expectRefused(render(dir_ / "stretched.vdb"), "non-uniform voxel size", out());
+}
+
+TEST_F(CliErrors, GridOverMemoryBudget) {
+    auto big = openvdb::FloatGrid::create(0.0f);
+    big->setName("density");
+    big->setGridClass(openvdb::GRID_FOG_VOLUME);
+    big->denseFill(openvdb::CoordBBox(openvdb::Coord(0), openvdb::Coord(127)), 1.0f, true);
+    writeGrids(dir_ / "big.vdb", {big});
+    const auto world = writeText("b.json", R"({"grid": {"file": "big.vdb"}, "memory_budget_mib": 1})");
+    expectRefused(render(world), "memory budget", out());
+}
+
+TEST_F(CliErrors, MalformedJson) {
+    expectRefused(render(writeText("bad.json", R"({"grid": {"file": "good.vdb"},)")), "malformed JSON", out());
+}
+
+TEST_F(CliErrors, UnknownField) {
+    const auto world = writeText("u.json", R"({"grid": {"file": "good.vdb", "rule": "mask"}, "lighting": {"sun": {"colour": [1,1,1]}}})");
+    expectRefused(render(world), "lighting.sun.colour", out());
+}
+
+TEST_F(CliErrors, WrongFieldType) {
+    const auto world = writeText("t.json", R"({"grid": {"file": "good.vdb"}, "cameras": {"a": {"position": [0, 1], "target": [0, 0, 0]}}})");
+    expectRefused(render(world), "cameras.a.position", out());
+}
+
+TEST_F(CliErrors, UnwritableOutput) {
+    expectRefused("render " + good_.string() + " --size 8x8 -o " + (dir_ / "missing-dir" / "x.png").string(),
+                  "missing-dir", dir_ / "missing-dir" / "x.png");
+    writeText("file", "not a directory");
+    expectRefused("render " + good_.string() + " --size 8x8 -o " + (dir_ / "file" / "x.png").string(), "file",
+                  dir_ / "x.png");
+}
+
+TEST_F(CliErrors, NonsenseSettings) {
+    expectRefused("render " + good_.string() + " --size 0x16 -o " + out().string(), "--size", out());
+    expectRefused("render " + good_.string() + " --size 8x8 -o " + (dir_ / "out.tga").string(), ".tga",
+                  dir_ / "out.tga");
+    expectRefused("mkworld nonsense -o " + (dir_ / "n.vdb").string(), "nonsense", dir_ / "n.vdb");
+}
+
+TEST_F(CliErrors, ExportMeshWritesExactlyThePly) {
+    const test::RunResult r = runGrotto("export-mesh " + good_.string() + " -o " + (dir_ / "m.ply").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir_ / "m.ply"));
+    expectRefused("export-mesh " + (dir_ / "gone.vdb").string() + " -o " + (dir_ / "n.ply").string(), "gone.vdb",
+                  dir_ / "n.ply");
+}
+
+}  // namespace
+}  // namespace grotto
