@@ -3,8 +3,7 @@
 
 #include "engine/vk/readback.h"
 #include "shaders/shared/frame.h"
-
-#include <glm/gtc/packing.hpp>
+#include "shaders/shared/quad.h"
 
 #include <chrono>
 #include <cmath>
@@ -14,15 +13,7 @@
 namespace grotto {
 namespace {
 
-constexpr VkFormat kAlbedoFormat = VK_FORMAT_R8G8B8A8_SRGB;
 constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-
-VkFormat normalFormat(vk::Context& ctx) {
-    const VkFormatFeatureFlags need = VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
-    // Axis normals are exact in 8-bit snorm; half floats are the universal fallback.
-    return vk::supportsFormat(ctx, VK_FORMAT_R8G8B8A8_SNORM, need) ? VK_FORMAT_R8G8B8A8_SNORM
-                                                                   : VK_FORMAT_R16G16B16A16_SFLOAT;
-}
 
 gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l) {
     gpu::FrameUniforms u{};
@@ -33,6 +24,14 @@ gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l)
     u.ambient = glm::vec4(l.ambientColor * l.ambientIntensity, 0.0f);
     u.skyZenith = glm::vec4(l.skyZenith, 0.0f);
     u.skyHorizon = glm::vec4(l.skyHorizon, 0.0f);
+    // rayDirection() is linear in the pixel position before normalising.
+    const double t = std::tan(camera.fovY * 0.5);
+    const glm::dvec3 right = camera.basis[0] * (2.0 * t * camera.aspect() / camera.width);
+    const glm::dvec3 down = -camera.basis[1] * (2.0 * t / camera.height);
+    const glm::dvec3 corner = -camera.basis[2] - camera.basis[0] * (t * camera.aspect()) + camera.basis[1] * t;
+    u.rayOrigin = glm::vec4(glm::vec3(corner), 0.0f);
+    u.rayStepX = glm::vec4(glm::vec3(right), 0.0f);
+    u.rayStepY = glm::vec4(glm::vec3(down), 0.0f);
     u.size = {camera.width, camera.height};
     return u;
 }
@@ -45,11 +44,10 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
     const VkExtent2D extent{width, height};
     const VkImageUsageFlags read = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     gbuffer_.depth = vk::createImage(ctx, extent, VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | read);
-    gbuffer_.normal = vk::createImage(ctx, extent, normalFormat(ctx), VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
-    gbuffer_.albedo = vk::createImage(ctx, extent, kAlbedoFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
+    gbuffer_.surface = vk::createImage(ctx, extent, kSurfaceFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
     color_ = vk::createImage(ctx, extent, kColorFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-    frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
-    gbufferPass_ = std::make_unique<GBufferPass>(ctx, gbuffer_.normal.format, kAlbedoFormat);
+    frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    gbufferPass_ = std::make_unique<GBufferPass>(ctx);
     compositePass_ = std::make_unique<CompositePass>(ctx);
 
     VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
@@ -67,13 +65,13 @@ Renderer::~Renderer() {
     vkFreeCommandBuffers(ctx_.device, ctx_.commandPool, 1, &cmd_);
     gbufferPass_.reset();
     compositePass_.reset();
-    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.normal, &gbuffer_.albedo, &color_}) vk::destroy(ctx_, *i);
+    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_}) vk::destroy(ctx_, *i);
     vk::destroy(ctx_, frame_);
 }
 
 size_t Renderer::targetBytes() const {
     size_t n = 0;
-    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.normal, &gbuffer_.albedo, &color_}) n += i->memory.size;
+    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_}) n += i->memory.size;
     return n;
 }
 
@@ -99,9 +97,8 @@ FrameStats Renderer::render(const Camera& camera) {
     // G-buffer: previous contents are not needed (cleared), so start from UNDEFINED.
     vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, top, 0,
                    fragmentTests, depthWrite);
-    for (vk::Image* img : {&gbuffer_.normal, &gbuffer_.albedo})
-        vk::transition(cmd, *img, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
-                       colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
+                   colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     timestamps_.begin(cmd, "gbuffer");
     FrameStats stats;
     stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera);
@@ -110,13 +107,12 @@ FrameStats Renderer::render(const Camera& camera) {
     // Composite reads the G-buffer and overwrites all of the colour target.
     vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, readOnly, fragmentTests,
                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
-    for (vk::Image* img : {&gbuffer_.normal, &gbuffer_.albedo})
-        vk::transition(cmd, *img, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
-                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
+    vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
+                   VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     vk::transition(cmd, color_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, top, 0, compute,
                    VK_ACCESS_SHADER_WRITE_BIT);
     timestamps_.begin(cmd, "composite");
-    compositePass_->record(cmd, gbuffer_, color_, frame_);
+    compositePass_->record(cmd, gbuffer_, color_, frame_, scene_.palette);
     timestamps_.end(cmd);
 
     VK_CHECK(vkEndCommandBuffer(cmd));
@@ -141,28 +137,21 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
 
     const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const auto depth = vk::readImage(ctx_, gbuffer_.depth, ro, 4);
-    const bool snorm = gbuffer_.normal.format == VK_FORMAT_R8G8B8A8_SNORM;
-    const auto normal = vk::readImage(ctx_, gbuffer_.normal, ro, snorm ? 4 : 8);
-    const auto albedo = vk::readImage(ctx_, gbuffer_.albedo, ro, 4);
+    const auto surface = vk::readImage(ctx_, gbuffer_.surface, ro, 2);
     f.depth.resize(n);
-    f.normal.resize(3 * n);
-    f.albedo.resize(3 * n);
+    f.normal.assign(3 * n, 0.0f);
+    f.albedo.assign(3 * n, 0.0f);
     for (size_t i = 0; i < n; ++i) {
         float d;
         std::memcpy(&d, depth.data() + 4 * i, 4);
         f.depth[i] = d > 0.0f ? float(camera.linearDepth(d)) : std::numeric_limits<float>::infinity();
-        for (int c = 0; c < 3; ++c) {
-            if (snorm) {
-                f.normal[3 * i + c] = std::max(-1.0f, float(int8_t(normal[4 * i + c])) / 127.0f);
-            } else {
-                uint16_t h;
-                std::memcpy(&h, normal.data() + 8 * i + 2 * c, 2);
-                f.normal[3 * i + c] = glm::unpackHalf1x16(h);
-            }
-            // The target stores sRGB-encoded albedo; decode to linear.
-            const float s = albedo[4 * i + c] / 255.0f;
-            f.albedo[3 * i + c] = s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f);
-        }
+        uint16_t id;
+        std::memcpy(&id, surface.data() + 2 * i, 2);
+        if (id == 0) continue;  // sky
+        const uint32_t face = gpu::surfaceFace(id), material = gpu::surfaceMaterial(id);
+        f.normal[3 * i + gpu::faceAxis(face)] = gpu::facePositive(face) ? 1.0f : -1.0f;
+        if (material >= 1 && material <= scene_.albedo.size())
+            for (int c = 0; c < 3; ++c) f.albedo[3 * i + c] = scene_.albedo[material - 1][c];
     }
     return f;
 }

@@ -1,7 +1,10 @@
 #include "engine/scene.h"
 
 #include "voxel/mesh.h"
+
+#include <algorithm>
 #include "voxel/world_desc.h"
+#include "shaders/shared/frame.h"
 
 namespace grotto {
 
@@ -29,17 +32,40 @@ GpuScene uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::Wor
         g.hi = glm::vec3(hi) * float(mesh.voxelSize);
         s.chunks.push_back(g);
     }
-    s.quads = vk::uploadBuffer(ctx, mesh.quads.data(), mesh.quads.size() * sizeof(gpu::PackedQuad),
-                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-    std::vector<glm::vec4> palette;
-    for (const voxel::Material& m : desc.materials) palette.emplace_back(m.albedo, 1.0f);
+    std::vector<uint32_t> vertices;
+    vertices.reserve(4 * mesh.quads.size());
+    uint32_t largestDraw = 1;
+    for (const voxel::MeshChunk& c : mesh.chunks) {
+        for (uint32_t f = 0; f < 6; ++f) largestDraw = std::max(largestDraw, c.faceCount[f]);
+        for (uint32_t q = c.firstQuad; q < c.firstQuad + c.quadCount(); ++q) {
+            const gpu::PackedQuad quad = mesh.quads[q];
+            for (const glm::ivec3& v : mesh.corners(c, quad)) {
+                const glm::uvec3 p(v - c.origin);
+                vertices.push_back(gpu::packVertex(p.x, p.y, p.z, gpu::quadFace(quad.bits), quad.material));
+            }
+        }
+    }
+    s.vertices = vk::uploadBuffer(ctx, vertices.data(), vertices.size() * sizeof(uint32_t),
+                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    std::vector<uint32_t> indices;
+    indices.reserve(6 * size_t(largestDraw));
+    for (uint32_t q = 0; q < largestDraw; ++q)
+        for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) indices.push_back(4 * q + i);
+    s.indices = vk::uploadBuffer(ctx, indices.data(), indices.size() * sizeof(uint32_t),
+                                 VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
+    // The whole palette range the shaders declare, unused entries black.
+    std::vector<glm::vec4> palette(GROTTO_MAX_MATERIALS, glm::vec4(0.0f));
+    for (size_t i = 0; i < desc.materials.size() && i < palette.size(); ++i)
+        palette[i] = glm::vec4(desc.materials[i].albedo, 1.0f);
+    for (const voxel::Material& m : desc.materials) s.albedo.push_back(m.albedo);
     s.palette = vk::uploadBuffer(ctx, palette.data(), palette.size() * sizeof(glm::vec4),
-                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+                                 VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     return s;
 }
 
 void destroy(vk::Context& ctx, GpuScene& scene) {
-    vk::destroy(ctx, scene.quads);
+    vk::destroy(ctx, scene.vertices);
+    vk::destroy(ctx, scene.indices);
     vk::destroy(ctx, scene.palette);
     scene.chunks.clear();
 }

@@ -17,13 +17,17 @@ struct GpuChunk {
     std::array<uint32_t, 6> faceFirst{}, faceCount{};  // quad ranges per face
 };
 
+// Quads become 4 packed vertices each (shaders/shared/quad.h); one shared index
+// buffer (0 1 2 0 2 3, +4 per quad) serves every draw through its vertex offset.
 struct GpuScene {
-    vk::Buffer quads;
-    vk::Buffer palette;
+    vk::Buffer vertices;
+    vk::Buffer indices;
+    vk::Buffer palette;                 // uniform buffer of GROTTO_MAX_MATERIALS vec4
+    std::vector<glm::vec3> albedo;      // host copy of the palette, id k at [k - 1]
     std::vector<GpuChunk> chunks;
     double voxelSize = 1.0;
     uint64_t quadCount = 0;
-    size_t gpuBytes() const { return size_t(quads.size + palette.size); }
+    size_t gpuBytes() const { return size_t(vertices.size + indices.size + palette.size); }
     size_t hostBytes() const { return chunks.size() * sizeof(GpuChunk); }
 };
 

@@ -14,10 +14,10 @@ CompositePass::CompositePass(vk::Context& ctx) : ctx_(ctx) {
                            .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
                            .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE};
     VK_CHECK(vkCreateSampler(ctx.device, &si, nullptr, &sampler_));
-    const auto sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    setLayout_ = vk::pushDescriptorLayout(
-        ctx, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled, sampled, sampled, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-        VK_SHADER_STAGE_COMPUTE_BIT);
+    setLayout_ = vk::pushDescriptorLayout(ctx,
+                                          {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                           VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                          VK_SHADER_STAGE_COMPUTE_BIT);
     layout_ = vk::pipelineLayout(ctx, setLayout_, 0, 0);
     pipeline_ = vk::computePipeline(ctx, layout_, "composite.comp");
 }
@@ -30,13 +30,12 @@ CompositePass::~CompositePass() {
 }
 
 void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& color,
-                           const vk::Buffer& frame) {
+                           const vk::Buffer& frame, const vk::Buffer& palette) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_,
-                     {vk::storageBuffer(frame.buffer), vk::sampledImage(sampler_, g.depth.view, ro),
-                      vk::sampledImage(sampler_, g.normal.view, ro), vk::sampledImage(sampler_, g.albedo.view, ro),
-                      vk::storageImage(color.view)});
+                     {vk::uniformBuffer(frame.buffer), vk::uniformBuffer(palette.buffer),
+                      vk::sampledImage(sampler_, g.surface.view, ro), vk::storageImage(color.view)});
     const uint32_t group = GROTTO_COMPOSITE_GROUP;
     vkCmdDispatch(cmd, (color.extent.width + group - 1) / group, (color.extent.height + group - 1) / group, 1);
 }

@@ -1,5 +1,5 @@
 #pragma once
-// Composite pass. Reads: depth, normal, albedo, frame uniforms.
+// Composite pass. Reads: the surface id, the palette, frame uniforms.
 // Writes: linear RGBA32F colour (sun Lambert + ambient x AO, sky). No history.
 #include "engine/passes/gbuffer_pass.h"
 
@@ -11,7 +11,7 @@ public:
     ~CompositePass();
 
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& color,
-                const vk::Buffer& frame);
+                const vk::Buffer& frame, const vk::Buffer& palette);
 
 private:
     vk::Context& ctx_;

@@ -8,7 +8,7 @@
 namespace grotto {
 namespace {
 
-VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, VkFormat normalFormat, VkFormat albedoFormat) {
+VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout) {
     VkShaderModule vs = vk::loadShader(ctx, "gbuffer.vert");
     VkShaderModule fs = vk::loadShader(ctx, "gbuffer.frag");
     VkPipelineShaderStageCreateInfo stages[2] = {
@@ -16,7 +16,13 @@ VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, VkFormat no
          .module = vs, .pName = "main"},
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
          .module = fs, .pName = "main"}};
-    VkPipelineVertexInputStateCreateInfo vertexInput{.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    VkVertexInputBindingDescription vertexBinding{.binding = 0, .stride = 4, .inputRate = VK_VERTEX_INPUT_RATE_VERTEX};
+    VkVertexInputAttributeDescription vertexAttribute{.location = 0, .binding = 0, .format = VK_FORMAT_R32_UINT};
+    VkPipelineVertexInputStateCreateInfo vertexInput{.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO,
+                                                     .vertexBindingDescriptionCount = 1,
+                                                     .pVertexBindingDescriptions = &vertexBinding,
+                                                     .vertexAttributeDescriptionCount = 1,
+                                                     .pVertexAttributeDescriptions = &vertexAttribute};
     VkPipelineInputAssemblyStateCreateInfo assembly{
         .sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO,
         .topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST};
@@ -37,17 +43,16 @@ VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, VkFormat no
         .depthTestEnable = VK_TRUE,
         .depthWriteEnable = VK_TRUE,
         .depthCompareOp = VK_COMPARE_OP_GREATER};  // reverse-Z: nearer is larger
-    VkPipelineColorBlendAttachmentState blendOff{.colorWriteMask = 0xf};
-    VkPipelineColorBlendAttachmentState blends[2] = {blendOff, blendOff};
+    VkPipelineColorBlendAttachmentState blendOff{.colorWriteMask = VK_COLOR_COMPONENT_R_BIT};
     VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-                                              .attachmentCount = 2, .pAttachments = blends};
+                                              .attachmentCount = 1, .pAttachments = &blendOff};
     VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
     VkPipelineDynamicStateCreateInfo dynamic{.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
                                              .dynamicStateCount = 2, .pDynamicStates = dynamicStates};
-    VkFormat colorFormats[2] = {normalFormat, albedoFormat};
+    const VkFormat surfaceFormat = kSurfaceFormat;
     VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-                                            .colorAttachmentCount = 2,
-                                            .pColorAttachmentFormats = colorFormats,
+                                            .colorAttachmentCount = 1,
+                                            .pColorAttachmentFormats = &surfaceFormat,
                                             .depthAttachmentFormat = VK_FORMAT_D32_SFLOAT};
     VkGraphicsPipelineCreateInfo ci{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
                                     .pNext = &rendering,
@@ -95,12 +100,10 @@ struct Frustum {
 
 }  // namespace
 
-GBufferPass::GBufferPass(vk::Context& ctx, VkFormat normalFormat, VkFormat albedoFormat) : ctx_(ctx) {
-    setLayout_ = vk::pushDescriptorLayout(ctx, {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                                                VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                          VK_SHADER_STAGE_VERTEX_BIT);
+GBufferPass::GBufferPass(vk::Context& ctx) : ctx_(ctx) {
+    setLayout_ = vk::pushDescriptorLayout(ctx, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, VK_SHADER_STAGE_VERTEX_BIT);
     layout_ = vk::pipelineLayout(ctx, setLayout_, sizeof(gpu::ChunkPush), VK_SHADER_STAGE_VERTEX_BIT);
-    pipeline_ = createPipeline(ctx, layout_, normalFormat, albedoFormat);
+    pipeline_ = createPipeline(ctx, layout_);
 }
 
 GBufferPass::~GBufferPass() {
@@ -122,13 +125,13 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
                                          .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
                                          .clearValue = clear};
     };
-    VkRenderingAttachmentInfo colors[2] = {attachment(t.normal, {}), attachment(t.albedo, {})};
+    VkRenderingAttachmentInfo color = attachment(t.surface, {});  // 0 = sky
     VkRenderingAttachmentInfo depth = attachment(t.depth, {.depthStencil = {0.0f, 0}});
     VkRenderingInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                          .renderArea = {{0, 0}, extent},
                          .layerCount = 1,
-                         .colorAttachmentCount = 2,
-                         .pColorAttachments = colors,
+                         .colorAttachmentCount = 1,
+                         .pColorAttachments = &color,
                          .pDepthAttachment = &depth};
     ctx_.cmdBeginRendering(cmd, &info);
     VkViewport viewport{0, 0, float(extent.width), float(extent.height), 0.0f, 1.0f};
@@ -136,9 +139,10 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-    vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_,
-                     {vk::storageBuffer(frame.buffer), vk::storageBuffer(scene.quads.buffer),
-                      vk::storageBuffer(scene.palette.buffer)});
+    vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, {vk::uniformBuffer(frame.buffer)});
+    const VkDeviceSize zero = 0;
+    vkCmdBindVertexBuffers(cmd, 0, 1, &scene.vertices.buffer, &zero);
+    vkCmdBindIndexBuffer(cmd, scene.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
 
     // Visible chunks, camera-relative, nearest first so early depth tests reject more.
     const Frustum frustum(camera);
@@ -165,7 +169,7 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
             // (at the origin) is below the lowest one, and likewise for -axis faces.
             const int axis = f / 2;
             if ((f % 2 == 0) ? lo[axis] >= 0.0f : hi[axis] <= 0.0f) continue;
-            vkCmdDraw(cmd, 6 * c.faceCount[f], 1, 6 * c.faceFirst[f], 0);
+            vkCmdDrawIndexed(cmd, 6 * c.faceCount[f], 1, 0, int32_t(4 * c.faceFirst[f]), 0);
             drawn += c.faceCount[f];
         }
     }

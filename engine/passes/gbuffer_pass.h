@@ -1,6 +1,7 @@
 #pragma once
-// G-buffer pass. Reads: the scene's quads and palette, frame uniforms.
-// Writes: depth (D32, reverse-Z), normal, albedo. Keeps no history.
+// G-buffer pass. Reads: the scene's vertices, frame uniforms.
+// Writes: depth (D32, reverse-Z) and a 16-bit surface id that encodes the normal
+// (one of six axes) and the material (albedo from the palette). No history.
 // Chunks outside the frustum are skipped; inside one, faces turned away from the
 // camera are skipped as whole per-face ranges; chunks are drawn front to back.
 #include "engine/camera.h"
@@ -8,13 +9,16 @@
 
 namespace grotto {
 
+inline constexpr VkFormat kSurfaceFormat = VK_FORMAT_R16_UINT;
+
 struct GBufferTargets {
-    vk::Image depth, normal, albedo;
+    vk::Image depth;
+    vk::Image surface;  // R16_UINT, see packSurface in shaders/shared/quad.h
 };
 
 class GBufferPass {
 public:
-    GBufferPass(vk::Context& ctx, VkFormat normalFormat, VkFormat albedoFormat);
+    explicit GBufferPass(vk::Context& ctx);
     ~GBufferPass();
 
     // Returns the number of quads drawn.

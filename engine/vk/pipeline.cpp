@@ -73,12 +73,16 @@ Binding storageBuffer(VkBuffer buffer, VkDeviceSize size) {
     return {.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, .buffer = {buffer, 0, size}};
 }
 
+Binding uniformBuffer(VkBuffer buffer, VkDeviceSize size) {
+    return {.type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, .buffer = {buffer, 0, size}};
+}
+
 void pushBindings(Context& ctx, VkCommandBuffer cmd, VkPipelineBindPoint point, VkPipelineLayout layout,
                   const std::vector<Binding>& bindings) {
     std::vector<VkWriteDescriptorSet> writes;
     for (uint32_t i = 0; i < bindings.size(); ++i) {
         const Binding& b = bindings[i];
-        const bool image = b.type != VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        const bool image = b.type != VK_DESCRIPTOR_TYPE_STORAGE_BUFFER && b.type != VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
         writes.push_back({.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET,
                           .dstBinding = i,
                           .descriptorCount = 1,

@@ -1,4 +1,5 @@
-// Per-frame constants read by the G-buffer and composite passes. Positions are
+// Per-frame constants read by the G-buffer and composite passes (a uniform buffer:
+// lavapipe reads those far faster than storage buffers). Positions are
 // camera-relative (the camera sits at the origin) so precision does not depend
 // on where in the world the camera is.
 #ifndef GROTTO_SHARED_FRAME_H
@@ -15,10 +16,13 @@ struct FrameUniforms {
     vec4 ambient;        // rgb: colour x intensity
     vec4 skyZenith;      // rgb
     vec4 skyHorizon;     // rgb
+    vec4 rayOrigin;      // xyz: unnormalised view ray through pixel corner (0, 0)
+    vec4 rayStepX;       // xyz: its change per pixel to the right
+    vec4 rayStepY;       // xyz: its change per pixel down
     uvec2 size;          // full-resolution width, height
     uvec2 pad;
 };
-GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 2 * 64 + 5 * 16 + 16);
+GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 2 * 64 + 8 * 16 + 16);
 
 // G-buffer push constants: one chunk's corner, camera-relative, and the voxel size.
 struct ChunkPush {
@@ -27,6 +31,7 @@ struct ChunkPush {
 GROTTO_STATIC_ASSERT(sizeof(ChunkPush) == 16);
 
 #define GROTTO_COMPOSITE_GROUP 8u
+#define GROTTO_MAX_MATERIALS 255
 
 GROTTO_NAMESPACE_END
 #endif

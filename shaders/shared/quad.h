@@ -1,5 +1,6 @@
-// A voxel face quad as the mesher writes it and the G-buffer vertex shader pulls
-// it: 8 bytes, chunk-relative. Included by C++ and GLSL.
+// A voxel face quad as the mesher writes it (8 bytes, chunk-relative), the 4-byte
+// vertex the G-buffer pass draws it with, and the 16-bit G-buffer surface id.
+// Included by C++ and GLSL.
 #ifndef GROTTO_SHARED_QUAD_H
 #define GROTTO_SHARED_QUAD_H
 #include "common.h"
@@ -30,6 +31,22 @@ GROTTO_INLINE bool facePositive(uint face) { return (face & 1u) == 0u; }
 // U axis per face: +X:Y -X:Z +Y:Z -Y:X +Z:X -Z:Y; V axis: +X:Z -X:Y +Y:X -Y:Z +Z:Y -Z:X.
 GROTTO_INLINE uint faceUAxis(uint face) { return (0x100221u >> (4u * face)) & 15u; }
 GROTTO_INLINE uint faceVAxis(uint face) { return (0x012012u >> (4u * face)) & 15u; }
+
+// A quad corner: x 0-5, y 6-11, z 12-17 (0..32 within the chunk), face 18-20,
+// material 21-28. Attribute fetch of one uint is far cheaper on lavapipe than
+// pulling quads from a storage buffer.
+GROTTO_INLINE uint packVertex(uint x, uint y, uint z, uint face, uint material) {
+    return x | (y << 6) | (z << 12) | (face << 18) | (material << 21);
+}
+GROTTO_INLINE uint vertexCoord(uint v, uint axis) { return (v >> (6u * axis)) & 63u; }
+GROTTO_INLINE uint vertexFace(uint v) { return (v >> 18) & 7u; }
+GROTTO_INLINE uint vertexMaterial(uint v) { return (v >> 21) & 255u; }
+
+// The G-buffer keeps a surface id instead of normal and albedo: voxel normals are
+// one of six axes and albedo comes from the palette. 0 = sky.
+GROTTO_INLINE uint packSurface(uint face, uint material) { return (face + 1u) | (material << 3); }
+GROTTO_INLINE uint surfaceFace(uint id) { return (id & 7u) - 1u; }
+GROTTO_INLINE uint surfaceMaterial(uint id) { return id >> 3; }
 
 GROTTO_NAMESPACE_END
 #endif

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Regenerates the shipped grids in worlds/ with `grotto mkworld` (deterministic).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+grotto=${GROTTO:-build/grotto}
+"$grotto" mkworld rooms  -o worlds/rooms.vdb  --seed 1
+"$grotto" mkworld caves  -o worlds/caves.vdb  --seed 1
+"$grotto" mkworld thin   -o worlds/thin.vdb   --seed 1
+"$grotto" mkworld city   -o worlds/city.vdb   --seed 1
+"$grotto" mkworld sphere -o worlds/sphere.vdb --seed 1
