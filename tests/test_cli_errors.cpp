@@ -2,8 +2,12 @@
 // output file; the CLI runs with the validation layer on.
 #include "tests/test_util.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <openvdb/openvdb.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include <fstream>
 #include <random>
@@ -12,6 +16,7 @@ namespace grotto {
 namespace {
 
 namespace fs = std::filesystem;
+namespace OIIO = OIIO_NAMESPACE;
 using test::runGrotto;
 
 class CliErrors : public ::testing::Test {
@@ -34,8 +39,9 @@ protected:
     }
 
     // Exit code 2, a single stderr line naming `mention`, and no output written.
-    void expectRefused(const std::string& args, const std::string& mention, const fs::path& output) {
-        const test::RunResult r = runGrotto(args);
+    void expectRefused(const std::string& args, const std::string& mention, const fs::path& output,
+                       const std::string& env = "") {
+        const test::RunResult r = runGrotto(args, env);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         EXPECT_NE(r.err.find(mention), std::string::npos) << "expected '" << mention << "' in: " << r.err;
@@ -147,6 +153,59 @@ TEST_F(CliErrors, ExportMeshWritesExactlyThePly) {
     EXPECT_TRUE(fs::exists(dir_ / "m.ply"));
     expectRefused("export-mesh " + (dir_ / "gone.vdb").string() + " -o " + (dir_ / "n.ply").string(), "gone.vdb",
                   dir_ / "n.ply");
+}
+
+}  // namespace
+}  // namespace grotto
+
+namespace grotto {
+namespace {
+
+TEST_F(CliErrors, NoVulkanDeviceNamesThePackage) {
+    expectRefused(render(good_), "mesa-vulkan-drivers", out(),
+                  "VK_DRIVER_FILES=/nonexistent/icd.json VK_ICD_FILENAMES=/nonexistent/icd.json");
+}
+
+TEST_F(CliErrors, UnknownDeviceNameListsDevices) {
+    expectRefused(render(good_), "GROTTO_DEVICE", out(), "GROTTO_DEVICE=no-such-gpu");
+}
+
+TEST_F(CliErrors, ExrWithAovsCarriesChannelsAndCamera) {
+    const fs::path exr = dir_ / "frame.exr";
+    const auto world = writeText("cam.json", R"({"grid": {"file": "good.vdb"},
+        "cameras": {"c": {"position": [8, 10, 30], "target": [8, 0, 8]}}})");
+    const test::RunResult r = runGrotto("render " + world.string() + " --size 64x48 --aov -o " + exr.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto in = OIIO::ImageInput::open(exr.string());
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec& spec = in->spec();
+    const std::vector<std::string> expected = {"R", "G", "B", "A", "Z", "N.x", "N.y", "N.z",
+                                               "albedo.R", "albedo.G", "albedo.B"};
+    std::vector<std::string> names(spec.channelnames.begin(), spec.channelnames.end());
+    std::sort(names.begin(), names.end());
+    std::vector<std::string> sorted = expected;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_EQ(names, sorted);
+    const OIIO::ParamValue* w2c = spec.find_attribute("worldtocamera", OIIO::TypeMatrix44);
+    ASSERT_NE(w2c, nullptr);
+    ASSERT_NE(spec.find_attribute("worldtoscreen", OIIO::TypeMatrix44), nullptr);
+    // The camera sits at (8, 10, 30): worldtocamera takes it to the origin.
+    const float* m = static_cast<const float*>(w2c->data());
+    const float p[4] = {8, 10, 30, 1};
+    for (int col = 0; col < 3; ++col) {
+        float v = 0;
+        for (int row = 0; row < 4; ++row) v += p[row] * m[row * 4 + col];
+        EXPECT_NEAR(v, 0.0f, 1e-4f);
+    }
+    std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
+    ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
+    const int z = spec.channelindex("Z"), ny = spec.channelindex("N.y");
+    // The centre pixel looks at the floor's top: up normal, depth along the view axis.
+    const size_t centre = (size_t(spec.height / 2) * spec.width + spec.width / 2) * spec.nchannels;
+    EXPECT_FLOAT_EQ(px[centre + ny], 1.0f);
+    EXPECT_GT(px[centre + z], 5.0f);
+    EXPECT_LT(px[centre + z], 40.0f);
+    for (float v : px) ASSERT_TRUE(std::isfinite(v));
 }
 
 }  // namespace

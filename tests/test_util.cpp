@@ -24,10 +24,10 @@ ScratchDir::~ScratchDir() {
     fs::remove_all(path, ec);
 }
 
-RunResult runGrotto(const std::string& args) {
+RunResult runGrotto(const std::string& args, const std::string& env) {
     ScratchDir dir;
     const fs::path out = dir / "stdout", err = dir / "stderr";
-    const std::string cmd = std::string(GROTTO_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
+    const std::string cmd = (env.empty() ? "" : "env " + env + " ") + std::string(GROTTO_EXE) + " " + args + " >" + out.string() + " 2>" + err.string();
     RunResult r;
     const int status = std::system(cmd.c_str());
     r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

@@ -18,8 +18,9 @@ struct RunResult {
     std::string out, err;
 };
 
-// Runs the grotto executable with the given arguments (shell-quoted here).
-RunResult runGrotto(const std::string& args);
+// Runs the grotto executable with the given arguments (shell-quoted here),
+// with `env` ("NAME=value ...") added to its environment.
+RunResult runGrotto(const std::string& args, const std::string& env = "");
 
 // The source tree's worlds/ directory.
 std::filesystem::path worldsDir();

@@ -106,7 +106,7 @@ Context::Context(ContextOptions options) {
                              .ppEnabledExtensionNames = extensions.data()};
     VkResult r = vkCreateInstance(&ici, nullptr, &instance);
     if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
-        throw Error("vulkan", std::string("cannot create a Vulkan instance (") + resultName(r) + ")", kNoDevice);
+        throw Error("vulkan", std::string("no Vulkan driver could be loaded (") + resultName(r) + ")", kNoDevice);
     VK_CHECK(r);
     if (validate) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
