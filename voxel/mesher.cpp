@@ -79,7 +79,10 @@ MeshChunk meshChunk(const World::Impl& w, const openvdb::Coord& origin, bool gre
         const int a = int(gpu::faceAxis(f)), ua = int(gpu::faceUAxis(f)), va = int(gpu::faceVAxis(f));
         const int step = gpu::facePositive(f) ? 1 : -1;
         const size_t before = quads.size();
-        for (int d = 0; d < N; ++d) {
+        // Visible +axis faces are nearer the camera the higher their slice, -axis
+        // faces the lower: emit them nearest first so depth tests reject more.
+        for (int i = 0; i < N; ++i) {
+            const int d = step > 0 ? N - 1 - i : i;
             bool any = false;
             for (int u = 0; u < N; ++u)
                 for (int v = 0; v < N; ++v) {
