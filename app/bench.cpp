@@ -3,6 +3,7 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
+#include "common/error.h"
 #include "engine/renderer.h"
 #include "voxel/world.h"
 
@@ -56,7 +57,7 @@ void addBenchCommand(CLI::App& app) {
         const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
 
         vk::Context ctx;
-        GpuScene scene = uploadScene(ctx, mesh, world.desc());
+        auto scene = uploadScene(ctx, mesh, world.desc());
         const size_t quadCount = mesh.quads.size();
         mesh = {};  // the GPU holds the quads now
         std::map<std::string, std::vector<double>> passMs;
@@ -64,7 +65,7 @@ void addBenchCommand(CLI::App& app) {
         uint64_t drawn = 0;
         size_t targetBytes = 0;
         {
-            Renderer renderer(ctx, scene, world.desc().lighting, size.width, size.height);
+            Renderer renderer(ctx, *scene, world.desc().lighting, size.width, size.height);
             targetBytes = renderer.targetBytes();
             for (int i = 0; i < args->warmup + args->frames; ++i) {
                 const FrameStats f = renderer.render(camera);
@@ -76,9 +77,9 @@ void addBenchCommand(CLI::App& app) {
                 drawn = f.quadsDrawn;
             }
         }
-        const size_t hostBytes = stats.hostBytes + scene.hostBytes();
-        const size_t gpuBytes = scene.gpuBytes();
-        destroy(ctx, scene);
+        const size_t hostBytes = stats.hostBytes + scene->hostBytes();
+        const size_t gpuBytes = scene->gpuBytes();
+        scene.reset();
         requireNoValidationMessages(ctx);
 
         nlohmann::json j = {
@@ -104,7 +105,10 @@ void addBenchCommand(CLI::App& app) {
                     j["memory"]["world_to_grid_ratio"].get<double>(), targetBytes);
         if (!args->json.empty())
             writeAtomically(args->json, [&](const std::filesystem::path& tmp) {
-                std::ofstream(tmp) << j.dump(2) << "\n";
+                std::ofstream out(tmp);
+                out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
+                out.close();
+                if (!out) throw Error(args->json, "write failed", "is the disk full?");
             });
     });
 }

@@ -37,10 +37,10 @@ void addFlythroughCommand(CLI::App& app) {
         const voxel::World world = voxel::World::load(args->world);
         const voxel::CameraDesc start = world.camera(args->camera);
         vk::Context ctx;
-        GpuScene scene = uploadScene(ctx, world.mesh(), world.desc());
+        auto scene = uploadScene(ctx, world.mesh(), world.desc());
         int written = 0;
         {
-            Renderer renderer(ctx, scene, world.desc().lighting, size.width, size.height);
+            Renderer renderer(ctx, *scene, world.desc().lighting, size.width, size.height);
             for (int i = 0; i < args->frames; ++i) {
                 char name[32];
                 std::snprintf(name, sizeof name, "frame.%04d.%s", i + 1, args->format.c_str());
@@ -58,7 +58,7 @@ void addFlythroughCommand(CLI::App& app) {
                 std::fflush(stdout);
             }
         }
-        destroy(ctx, scene);
+        scene.reset();
         requireNoValidationMessages(ctx);
         std::printf("wrote %d frames to %s (%d already there)\n", written, dir.c_str(), args->frames - written);
     });

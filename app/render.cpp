@@ -33,13 +33,13 @@ void addRenderCommand(CLI::App& app) {
         const voxel::World world = voxel::World::load(args->world);
         const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
         vk::Context ctx;
-        GpuScene scene = uploadScene(ctx, world.mesh(), world.desc());
+        auto scene = uploadScene(ctx, world.mesh(), world.desc());
         {
-            Renderer renderer(ctx, scene, world.desc().lighting, size.width, size.height);
+            Renderer renderer(ctx, *scene, world.desc().lighting, size.width, size.height);
             renderer.render(camera);
             writeFrame(out, renderer.readback(camera, args->aov), camera, args->aov);
         }
-        destroy(ctx, scene);
+        scene.reset();
         requireNoValidationMessages(ctx);
         std::printf("wrote %s (%ux%u, %s)\n", out.c_str(), size.width, size.height, ctx.deviceName().c_str());
     });

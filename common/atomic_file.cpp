@@ -2,6 +2,7 @@
 
 #include "error.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -31,7 +32,14 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
                          std::to_string(counter++) + target.extension().string());
     try {
         write(tmp);
-        fs::rename(tmp, target);
+        // Flush to disk before the rename, so a crash never leaves an empty target.
+        if (int fd = open(tmp.c_str(), O_RDONLY); fd >= 0) {
+            fsync(fd);
+            close(fd);
+        }
+        std::error_code ec;
+        fs::rename(tmp, target, ec);
+        if (ec) throw Error(target.string(), "cannot be replaced: " + ec.message());
     } catch (...) {
         std::error_code ec;
         fs::remove(tmp, ec);

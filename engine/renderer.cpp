@@ -95,7 +95,7 @@ FrameStats Renderer::render(const Camera& camera) {
     const auto depthWrite = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
 
     // G-buffer: previous contents are not needed (cleared), so start from UNDEFINED.
-    vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, top, 0,
+    vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, top, 0,
                    fragmentTests, depthWrite);
     vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
                    colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
@@ -105,7 +105,7 @@ FrameStats Renderer::render(const Camera& camera) {
     timestamps_.end(cmd);
 
     // Composite reads the G-buffer and overwrites all of the colour target.
-    vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL, readOnly, fragmentTests,
+    vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, readOnly, fragmentTests,
                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);

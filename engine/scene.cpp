@@ -8,8 +8,9 @@
 
 namespace grotto {
 
-GpuScene uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc) {
-    GpuScene s;
+std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc) {
+    auto scene = std::make_unique<GpuScene>(ctx);
+    GpuScene& s = *scene;
     s.voxelSize = mesh.voxelSize;
     s.quadCount = mesh.quads.size();
     s.chunks.reserve(mesh.chunks.size());
@@ -60,14 +61,13 @@ GpuScene uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::Wor
     for (const voxel::Material& m : desc.materials) s.albedo.push_back(m.albedo);
     s.palette = vk::uploadBuffer(ctx, palette.data(), palette.size() * sizeof(glm::vec4),
                                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
-    return s;
+    return scene;
 }
 
-void destroy(vk::Context& ctx, GpuScene& scene) {
-    vk::destroy(ctx, scene.vertices);
-    vk::destroy(ctx, scene.indices);
-    vk::destroy(ctx, scene.palette);
-    scene.chunks.clear();
+GpuScene::~GpuScene() {
+    vk::destroy(ctx, vertices);
+    vk::destroy(ctx, indices);
+    vk::destroy(ctx, palette);
 }
 
 }  // namespace grotto

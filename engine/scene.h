@@ -6,6 +6,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <memory>
 #include <vector>
 
 namespace grotto {
@@ -20,6 +21,12 @@ struct GpuChunk {
 // Quads become 4 packed vertices each (shaders/shared/quad.h); one shared index
 // buffer (0 1 2 0 2 3, +4 per quad) serves every draw through its vertex offset.
 struct GpuScene {
+    explicit GpuScene(vk::Context& context) : ctx(context) {}
+    ~GpuScene();  // releases the buffers
+    GpuScene(const GpuScene&) = delete;
+    GpuScene& operator=(const GpuScene&) = delete;
+
+    vk::Context& ctx;
     vk::Buffer vertices;
     vk::Buffer indices;
     vk::Buffer palette;                 // uniform buffer of GROTTO_MAX_MATERIALS vec4
@@ -31,7 +38,6 @@ struct GpuScene {
     size_t hostBytes() const { return chunks.size() * sizeof(GpuChunk); }
 };
 
-GpuScene uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc);
-void destroy(vk::Context& ctx, GpuScene& scene);
+std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc);
 
 }  // namespace grotto

@@ -211,3 +211,23 @@ TEST_F(CliErrors, ExrWithAovsCarriesChannelsAndCamera) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+TEST_F(CliErrors, RuleThatDoesNotFitTheGrid) {
+    auto ints = openvdb::Int32Grid::create(0);
+    ints->setName("material");
+    ints->tree().setValueOn(openvdb::Coord(0), 1);
+    writeGrids(dir_ / "ints.vdb", {ints});
+    const auto world = writeText("r.json", R"({"grid": {"file": "ints.vdb", "rule": "mask"}})");
+    expectRefused(render(world), "does not apply", out());
+}
+
+TEST_F(CliErrors, NumberOutOfRange) {
+    const auto world = writeText("n.json", R"({"grid": {"file": "good.vdb", "threshold": 1e400}})");
+    expectRefused(render(world), "n.json", out());
+}
+
+}  // namespace
+}  // namespace grotto

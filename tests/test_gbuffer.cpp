@@ -53,14 +53,13 @@ TEST_P(GBuffer, DepthAndNormalsMatchCpuRayCast) {
     cd.nearPlane = k.nearPlane;
     cd.farPlane = k.farPlane;
     const Camera camera = makeCamera(cd, k.width, k.height);
-    GpuScene scene = uploadScene(ctx(), world.mesh(), world.desc());
+    auto scene = uploadScene(ctx(), world.mesh(), world.desc());
     FrameImages img;
     {
-        Renderer renderer(ctx(), scene, world.desc().lighting, k.width, k.height);
+        Renderer renderer(ctx(), *scene, world.desc().lighting, k.width, k.height);
         renderer.render(camera);
         img = renderer.readback(camera, true);
     }
-    destroy(ctx(), scene);
 
     const glm::dvec3 forward = -camera.basis[2];
     std::mt19937 rng(11);
@@ -108,16 +107,15 @@ INSTANTIATE_TEST_SUITE_P(
 
 TEST_F(GpuTest, TinyImagesRenderFiniteValues) {
     const voxel::World world = terrain({0, 0, 0}, 1.0);
-    GpuScene scene = uploadScene(ctx(), world.mesh(), world.desc());
+    auto scene = uploadScene(ctx(), world.mesh(), world.desc());
     for (auto [w, h] : {std::pair{1u, 1u}, {2u, 2u}, {3u, 1u}}) {
         const Camera camera = makeCamera(world.camera(""), w, h);
-        Renderer renderer(ctx(), scene, world.desc().lighting, w, h);
+        Renderer renderer(ctx(), *scene, world.desc().lighting, w, h);
         renderer.render(camera);
         const FrameImages img = renderer.readback(camera, true);
         ASSERT_EQ(img.color.size(), size_t(4) * w * h);
         for (float c : img.color) EXPECT_TRUE(std::isfinite(c)) << w << "x" << h;
     }
-    destroy(ctx(), scene);
 }
 
 }  // namespace

@@ -1,4 +1,7 @@
-// Exact voxel traversal (Amanatides & Woo) through the solid grid, in double precision.
+// Exact voxel traversal (Amanatides & Woo) through the solid grid, in double
+// precision. The walk starts where the ray enters the solid bounds, so a camera
+// far from the world costs nothing extra.
+#include "common/error.h"
 #include "voxel/solid.h"
 
 #include <glm/geometric.hpp>
@@ -10,12 +13,37 @@ namespace grotto::voxel {
 
 std::optional<RayHit> World::raycast(glm::dvec3 origin, glm::dvec3 direction, double maxDistance) const {
     const Impl& w = *impl_;
-    const glm::dvec3 dir = glm::normalize(direction);
+    const double length = glm::length(direction);
+    if (!(length > 0.0) || !std::isfinite(length) || !std::isfinite(origin.x + origin.y + origin.z))
+        throw Error::internal("raycast", "ray origin and direction must be finite and non-zero");
+    if (w.bounds.empty()) return std::nullopt;
+    const glm::dvec3 dir = direction / length;
     const glm::dvec3 p = (origin - w.origin) / w.voxelSize;  // voxel-corner index units
-    const double tMax = maxDistance / w.voxelSize;
-    openvdb::MaskGrid::ConstAccessor acc = w.solid->getConstAccessor();
+    const double tMax = std::min(maxDistance / w.voxelSize, 1e15);
 
-    glm::ivec3 cell(std::floor(p.x), std::floor(p.y), std::floor(p.z));
+    // Slab test against the bounds: where the walk starts and must end.
+    const glm::dvec3 lo(w.bounds.min), hi(w.bounds.max + 1);
+    double tEnter = 0.0, tExit = tMax;
+    for (int i = 0; i < 3; ++i) {
+        if (dir[i] == 0.0) {
+            if (p[i] < lo[i] || p[i] >= hi[i]) return std::nullopt;
+            continue;
+        }
+        double t0 = (lo[i] - p[i]) / dir[i], t1 = (hi[i] - p[i]) / dir[i];
+        if (t0 > t1) std::swap(t0, t1);
+        tEnter = std::max(tEnter, t0);
+        tExit = std::min(tExit, t1);
+    }
+    if (tEnter > tExit) return std::nullopt;
+
+    const glm::dvec3 start = p + dir * tEnter;
+    glm::ivec3 cell = glm::clamp(glm::ivec3(glm::floor(start)), w.bounds.min, w.bounds.max);
+    // The face the walk enters the first cell through, when it starts on the bounds.
+    int face = -1;
+    if (tEnter > 0.0)
+        for (int i = 0; i < 3; ++i)
+            if (dir[i] != 0.0 && std::abs(start[i] - (dir[i] > 0 ? lo[i] : hi[i])) < 1e-9)
+                face = i * 2 + (dir[i] > 0 ? 1 : 0);
     glm::ivec3 step;
     glm::dvec3 tNext, tDelta;
     constexpr double inf = std::numeric_limits<double>::infinity();
@@ -34,32 +62,17 @@ std::optional<RayHit> World::raycast(glm::dvec3 origin, glm::dvec3 direction, do
             tNext[i] = inf;
         }
     }
-    if (acc.isValueOn(openvdb::Coord(cell.x, cell.y, cell.z)))
-        return RayHit{0.0, cell, -1};  // starts inside solid
-    // Bound the walk to the world's solid bounds so an escaping ray stops early.
-    const IndexBox box = bounds();
-    if (box.empty()) return std::nullopt;
-    double tLimit = tMax;
-    for (int i = 0; i < 3; ++i) {
-        if (dir[i] == 0) {
-            if (p[i] < box.min[i] || p[i] > box.max[i] + 1) return std::nullopt;
-            continue;
-        }
-        const double exit = ((dir[i] > 0 ? box.max[i] + 1 : box.min[i]) - p[i]) / dir[i];
-        tLimit = std::min(tLimit, exit);
-    }
-    double t = 0;
+    openvdb::MaskGrid::ConstAccessor acc = w.solid->getConstAccessor();
+    double t = tEnter;
     while (true) {
-        int axis = tNext.x < tNext.y ? (tNext.x < tNext.z ? 0 : 2) : (tNext.y < tNext.z ? 1 : 2);
+        if (acc.isValueOn(openvdb::Coord(cell.x, cell.y, cell.z)))
+            return RayHit{t * w.voxelSize, cell, face};  // face -1: the ray starts inside solid
+        const int axis = tNext.x < tNext.y ? (tNext.x < tNext.z ? 0 : 2) : (tNext.y < tNext.z ? 1 : 2);
         t = tNext[axis];
-        if (t > tLimit) return std::nullopt;
+        if (t > tExit) return std::nullopt;
         cell[axis] += step[axis];
         tNext[axis] += tDelta[axis];
-        if (acc.isValueOn(openvdb::Coord(cell.x, cell.y, cell.z))) {
-            // Entered through the face pointing back along the step.
-            const int face = axis * 2 + (step[axis] > 0 ? 1 : 0);
-            return RayHit{t * w.voxelSize, cell, face};
-        }
+        face = axis * 2 + (step[axis] > 0 ? 1 : 0);  // entered through the face facing back
     }
 }
 

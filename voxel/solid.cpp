@@ -28,7 +28,7 @@ SolidRule ruleFor(const openvdb::GridBase& grid, SolidRule asked, const std::str
                         "set 'grid.rule' to level_set or fog in the world file");
     }
     const bool fits = (rule == SolidRule::LevelSet || rule == SolidRule::Fog) ? scalar
-                      : rule == SolidRule::Mask ? true
+                      : rule == SolidRule::Mask ? mask
                                                 : int32;
     if (!fits)
         throw Error(where, std::string("rule '") + solidRuleName(rule) + "' does not apply to a " +

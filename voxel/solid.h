@@ -11,6 +11,7 @@ struct World::Impl {
     openvdb::MaskGrid::Ptr solid;            // active = solid; tiles kept as tiles
     openvdb::Int32Grid::ConstPtr materials;  // int32 worlds only: per-voxel material id
     int uniformMaterial = 1;                 // every other world
+    IndexBox bounds;                         // of the solid voxels, cached once built
     double voxelSize = 1.0;
     glm::dvec3 origin{0.0};
     size_t sourceGridBytes = 0;

@@ -16,6 +16,9 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     readTransform(*grid, file, *impl);
     impl->sourceGridBytes = grid->memUsage();
     buildSolid(grid, *impl);
+    openvdb::CoordBBox box;
+    if (impl->solid->tree().evalActiveVoxelBoundingBox(box))
+        impl->bounds = {{box.min().x(), box.min().y(), box.min().z()}, {box.max().x(), box.max().y(), box.max().z()}};
     return World(std::move(impl));
 }
 
@@ -29,11 +32,7 @@ const WorldDesc& World::desc() const { return impl_->desc; }
 double World::voxelSize() const { return impl_->voxelSize; }
 glm::dvec3 World::origin() const { return impl_->origin; }
 
-IndexBox World::bounds() const {
-    openvdb::CoordBBox box;
-    if (!impl_->solid->tree().evalActiveVoxelBoundingBox(box)) return {};
-    return {{box.min().x(), box.min().y(), box.min().z()}, {box.max().x(), box.max().y(), box.max().z()}};
-}
+IndexBox World::bounds() const { return impl_->bounds; }
 
 WorldStats World::stats() const {
     WorldStats s;

@@ -225,7 +225,7 @@ WorldDesc loadWorldDesc(const fs::path& path) {
     json doc;
     try {
         doc = json::parse(in);
-    } catch (const json::parse_error& e) {
+    } catch (const json::exception& e) {  // syntax errors and out-of-range numbers
         std::string msg = e.what();
         auto colon = msg.find("parse error");
         throw Error(path.string(), "malformed JSON: " + msg.substr(colon == std::string::npos ? 0 : colon),

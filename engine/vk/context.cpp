@@ -70,6 +70,15 @@ VkBool32 Context::onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT severity,
 }
 
 Context::Context(ContextOptions options) {
+    try {
+        create(options);
+    } catch (...) {
+        release();  // a half-made context (no device found, say) must not leak
+        throw;
+    }
+}
+
+void Context::create(const ContextOptions& options) {
     const bool validate = options.validation || envFlag("GROTTO_VALIDATION");
     std::string wanted = options.deviceName;
     if (wanted.empty())
@@ -133,6 +142,11 @@ Context::Context(ContextOptions options) {
 
     // The instance asks for 1.3; a 1.2 device gets dynamic rendering as an extension.
     const bool core13 = properties.apiVersion >= VK_API_VERSION_1_3;
+    if (properties.apiVersion < VK_API_VERSION_1_2)
+        throw Error("vulkan", std::string(properties.deviceName) + " supports only Vulkan " +
+                    std::to_string(VK_API_VERSION_MAJOR(properties.apiVersion)) + "." +
+                    std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)),
+                    "Grotto needs Vulkan 1.2; set GROTTO_DEVICE to another device");
     std::vector<const char*> deviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
     if (!core13) deviceExtensions.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
     for (const char* e : deviceExtensions)
@@ -148,8 +162,7 @@ Context::Context(ContextOptions options) {
     VkPhysicalDeviceDynamicRenderingFeatures dynamicRendering{
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES, .dynamicRendering = VK_TRUE};
     VkPhysicalDeviceVulkan12Features features12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
-                                                .pNext = &dynamicRendering,
-                                                .hostQueryReset = VK_TRUE};
+                                                .pNext = &dynamicRendering};
     VkDeviceCreateInfo dci{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
                            .pNext = &features12,
                            .queueCreateInfoCount = 1,
@@ -175,7 +188,9 @@ Context::Context(ContextOptions options) {
     allocator = std::make_unique<Allocator>(physical, device);
 }
 
-Context::~Context() {
+Context::~Context() { release(); }
+
+void Context::release() {
     if (device) vkDeviceWaitIdle(device);
     allocator.reset();
     if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);
@@ -186,6 +201,10 @@ Context::~Context() {
         destroy(instance, messenger_, nullptr);
     }
     if (instance) vkDestroyInstance(instance, nullptr);
+    commandPool = VK_NULL_HANDLE;
+    device = VK_NULL_HANDLE;
+    messenger_ = VK_NULL_HANDLE;
+    instance = VK_NULL_HANDLE;
 }
 
 void Context::submitAndWait(const std::function<void(VkCommandBuffer)>& record) {

@@ -47,6 +47,8 @@ public:
     void submitAndWait(const std::function<void(VkCommandBuffer)>& record);
 
 private:
+    void create(const ContextOptions& options);
+    void release();
     static VkBool32 VKAPI_PTR onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
                                         VkDebugUtilsMessageTypeFlagsEXT,
                                         const VkDebugUtilsMessengerCallbackDataEXT*, void*);

@@ -14,6 +14,12 @@ std::vector<uint8_t> readImage(Context& ctx, const Image& image, VkImageLayout l
         VkBufferImageCopy region{.imageSubresource = {image.aspect, 0, 0, 1},
                                  .imageExtent = {image.extent.width, image.extent.height, 1}};
         vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1, &region);
+        // A fence wait alone does not make device writes visible to the host.
+        VkMemoryBarrier toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
+                               .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
+                               .dstAccessMask = VK_ACCESS_HOST_READ_BIT};
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0,
+                             nullptr, 0, nullptr);
         transition(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, layout, VK_PIPELINE_STAGE_TRANSFER_BIT,
                    VK_ACCESS_TRANSFER_READ_BIT, all, VK_ACCESS_MEMORY_READ_BIT);
     });

@@ -71,6 +71,12 @@ Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferU
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         VkBufferCopy region{.size = size};
         vkCmdCopyBuffer(cmd, staging.buffer, dst.buffer, 1, &region);
+        // Later submissions read the buffer; make the copy visible to them.
+        VkMemoryBarrier visible{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
+                                .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
+                                .dstAccessMask = VK_ACCESS_MEMORY_READ_BIT};
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1,
+                             &visible, 0, nullptr, 0, nullptr);
     });
     destroy(ctx, staging);
     return dst;

@@ -23,6 +23,7 @@ private:
     Context& ctx_;
     VkQueryPool pool_ = VK_NULL_HANDLE;
     uint32_t max_;
+    uint32_t validBits_ = 64;
     std::vector<std::string> names_;
 };
 

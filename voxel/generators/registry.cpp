@@ -109,6 +109,11 @@ void makeWorldFile(const std::string& kind, const GeneratorOptions& options,
             openvdb::io::File file(tmp.string());
             file.write(openvdb::GridCPtrVec{grid});
             file.close();
+            // OpenVDB does not check its stream: read the file back before it
+            // replaces the target, so a full disk cannot leave a truncated grid.
+            openvdb::io::File check(tmp.string());
+            check.open(false);
+            check.readGrid(grid->getName());
         } catch (const openvdb::Exception& e) {
             throw Error(out.string(), std::string("could not write the grid: ") + e.what(),
                         "check free disk space and permissions");
