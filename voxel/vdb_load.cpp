@@ -86,6 +86,8 @@ openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc) {
     openvdb::GridBase::Ptr grid;
     try {
         openvdb::GridBase::Ptr meta = file.readGridMetadata(name);
+        World::Impl probe;  // refuse a bad transform before reading any voxels
+        readTransform(*meta, path, probe);
         const size_t estimate = estimatedBytes(*meta);
         if (estimate > desc.memoryBudgetBytes)
             throw Error(path, "grid '" + name + "' needs an estimated " + mib(estimate) +
