@@ -35,6 +35,7 @@ void addBenchCommand(CLI::App& app) {
     struct Args {
         std::string world, camera, size = "1280x720", json;
         int frames = 30, warmup = 5;
+        AoFlags ao;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("bench", "Measure load, mesh and per-pass GPU cost of a world");
@@ -44,6 +45,7 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--frames", args->frames, "Measured frames")->capture_default_str()->check(CLI::Range(1, 100000));
     cmd->add_option("--warmup", args->warmup, "Frames rendered before measuring")->capture_default_str()->check(CLI::Range(0, 100000));
     cmd->add_option("--json", args->json, "Also write the figures to this JSON file");
+    addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
         if (!args->json.empty()) requireWritableDirectory(args->json);
@@ -55,6 +57,7 @@ void addBenchCommand(CLI::App& app) {
         const double meshMs = msSince(t);
         const voxel::WorldStats stats = world.stats();
         const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        const AoOptions ao = resolveAo(world, args->ao);
 
         vk::Context ctx;
         auto scene = uploadScene(ctx, mesh, world.desc());
@@ -65,7 +68,7 @@ void addBenchCommand(CLI::App& app) {
         uint64_t drawn = 0;
         size_t targetBytes = 0;
         {
-            Renderer renderer(ctx, *scene, world.desc().lighting, size.width, size.height);
+            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
             targetBytes = renderer.targetBytes();
             for (int i = 0; i < args->warmup + args->frames; ++i) {
                 const FrameStats f = renderer.render(camera);

@@ -18,6 +18,7 @@ void addFlythroughCommand(CLI::App& app) {
     struct Args {
         std::string world, camera, size = "640x360", output, format = "png";
         int frames = 24;
+        AoFlags ao;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("flythrough", "Render an orbit of a camera to DIR/frame.NNNN.png");
@@ -27,6 +28,7 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--format", args->format, "png or exr")->capture_default_str()->check(CLI::IsMember({"png", "exr"}));
     cmd->add_option("-o,--output", args->output, "Output directory")->required();
+    addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
         const std::filesystem::path dir = args->output;
@@ -36,11 +38,12 @@ void addFlythroughCommand(CLI::App& app) {
             throw Error(dir.string(), "cannot create the output directory", ec ? ec.message() : "");
         const voxel::World world = voxel::World::load(args->world);
         const voxel::CameraDesc start = world.camera(args->camera);
+        const AoOptions ao = resolveAo(world, args->ao);
         vk::Context ctx;
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
         int written = 0;
         {
-            Renderer renderer(ctx, *scene, world.desc().lighting, size.width, size.height);
+            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
             for (int i = 0; i < args->frames; ++i) {
                 char name[32];
                 std::snprintf(name, sizeof name, "frame.%04d.%s", i + 1, args->format.c_str());

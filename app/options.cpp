@@ -14,6 +14,40 @@ Size parseSize(const std::string& text, const std::string& option) {
     return {w, h};
 }
 
+void addAoFlags(CLI::App* cmd, AoFlags& f) {
+    cmd->add_option("--ao", f.method, "Ambient occlusion: gtao or off (default: the world's, else gtao)")
+        ->check(CLI::IsMember({"gtao", "off"}));
+    cmd->add_option("--quality", f.quality, "GTAO preset: low, medium, high, ultra")
+        ->check(CLI::IsMember({"low", "medium", "high", "ultra"}));
+    cmd->add_option("--radius", f.radius, "AO radius in world units (> 0)");
+    cmd->add_option("--thin-occluder", f.thinOccluder, "Thin-occluder compensation, 0 to 0.7");
+    cmd->add_option("--denoise", f.denoise, "Spatial denoise passes, 0 to 4");
+}
+
+AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
+    voxel::AoDesc desc = world.desc().ao;
+    if (!f.method.empty()) desc.method = f.method;
+    if (!f.quality.empty()) {
+        // A preset on the command line replaces the world's slices and steps too.
+        desc.quality = f.quality;
+        desc.slices.reset();
+        desc.steps.reset();
+    }
+    AoOptions o = aoOptionsFor(desc, world.voxelSize(), world.desc().source.string());
+    if (f.radius) o.gtao.radius = float(*f.radius);
+    if (f.thinOccluder) o.gtao.thinOccluderCompensation = float(*f.thinOccluder);
+    if (f.denoise) {
+        if (*f.denoise < 0 || *f.denoise > 4) throw Error("--denoise", std::to_string(*f.denoise) + " is out of range", "accepted: 0 to 4");
+        o.gtao.denoisePasses = uint32_t(*f.denoise);
+    }
+    if (f.radius && !(*f.radius > 0.0 && *f.radius <= 1e6))
+        throw Error("--radius", std::to_string(*f.radius) + " is out of range", "accepted: > 0 world units");
+    if (f.thinOccluder && !(*f.thinOccluder >= 0.0 && *f.thinOccluder <= 0.7))
+        throw Error("--thin-occluder", std::to_string(*f.thinOccluder) + " is out of range", "accepted: 0 to 0.7");
+    validateGtao(o.gtao, "command line");
+    return o;
+}
+
 void requireNoValidationMessages(const vk::Context& ctx) {
     if (ctx.validationMessages() > 0)
         throw Error::internal("vulkan", std::to_string(ctx.validationMessages()) +

@@ -1,8 +1,13 @@
 #pragma once
 // Small pieces the subcommands share: image sizes and the checks that end a run.
+#include "engine/ao_settings.h"
 #include "engine/vk/context.h"
+#include "voxel/world.h"
+
+#include <CLI/CLI.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <string>
 
 namespace grotto::app {
@@ -13,6 +18,17 @@ struct Size {
 
 // "WxH" with both in 1..16384; throws grotto::Error (input) naming the option.
 Size parseSize(const std::string& text, const std::string& option = "--size");
+
+// The AO flags every rendering subcommand takes; unset ones keep the world's values.
+struct AoFlags {
+    std::string method, quality;
+    std::optional<double> radius, thinOccluder;
+    std::optional<int> denoise;
+};
+void addAoFlags(CLI::App* cmd, AoFlags& flags);
+
+// Preset, world file, then flags; throws grotto::Error (input) for nonsense.
+AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
 
 // Fails the run (exit 1) when the validation layer reported anything.
 void requireNoValidationMessages(const vk::Context& ctx);

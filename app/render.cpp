@@ -15,6 +15,8 @@ void addRenderCommand(CLI::App& app) {
     struct Args {
         std::string world, camera, size = "1280x720", output;
         bool aov = false;
+        std::string show;
+        AoFlags ao;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("render", "Render one frame of a world to a PNG or EXR");
@@ -23,21 +25,30 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_flag("--aov", args->aov, "EXR only: also write Z, N.xyz and albedo.RGB channels");
     cmd->add_option("-o,--output", args->output, "Output .png or .exr")->required();
+    cmd->add_option("--show", args->show, "PNG only: write one AOV instead of colour (ao, normal, depth, edges)")
+        ->check(CLI::IsMember({"ao", "normal", "depth", "edges"}));
+    addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
         const std::filesystem::path out = args->output;
         // Check everything about the output before any work, so bad input writes nothing.
         if (imageFormatFor(out) != ImageFormat::Exr && args->aov)
-            throw Error(out.string(), "--aov needs an .exr output", "PNG holds colour only");
+            throw Error(out.string(), "--aov needs an .exr output", "PNG holds colour only; try --show");
+        if (imageFormatFor(out) != ImageFormat::Png && !args->show.empty())
+            throw Error(out.string(), "--show needs a .png output", "EXR holds every AOV with --aov");
         requireWritableDirectory(out);
         const voxel::World world = voxel::World::load(args->world);
         const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        const AoOptions ao = resolveAo(world, args->ao);
+        const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
         {
-            Renderer renderer(ctx, *scene, world.desc().lighting, size.width, size.height);
+            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
             renderer.render(camera);
-            writeFrame(out, renderer.readback(camera, args->aov), camera, args->aov);
+            FrameImages frame = renderer.readback(camera, aovs);
+            if (!args->show.empty()) showAov(frame, args->show);
+            writeFrame(out, frame, camera, args->aov);
         }
         scene.reset();
         requireNoValidationMessages(ctx);

@@ -5,7 +5,9 @@
 
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -24,6 +26,30 @@ uint8_t toSrgb8(float v) {
     if (v >= 1.0f) return 255;
     const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
     return uint8_t(std::lround(s * 255.0f));
+}
+
+namespace {
+
+float srgbToLinear(float s) { return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f); }
+
+}  // namespace
+
+void showAov(FrameImages& f, const std::string& which) {
+    const size_t n = size_t(f.width) * f.height;
+    float zMin = std::numeric_limits<float>::max(), zMax = 0.0f;
+    for (float z : f.depth)
+        if (std::isfinite(z)) zMin = std::min(zMin, z), zMax = std::max(zMax, z);
+    const float logRange = std::max(std::log(std::max(zMax, 1e-30f) / std::max(zMin, 1e-30f)), 1e-6f);
+    for (size_t i = 0; i < n; ++i) {
+        glm::vec3 v(0.0f);
+        const bool sky = !std::isfinite(f.depth[i]);
+        if (which == "ao") v = glm::vec3(f.ao[i]);
+        else if (which == "edges") v = glm::vec3(f.edges[i]);
+        else if (which == "normal") v = sky ? v : glm::vec3(f.normal[3 * i], f.normal[3 * i + 1], f.normal[3 * i + 2]) * 0.5f + 0.5f;
+        else if (which == "depth") v = sky ? v : glm::vec3(1.0f - 0.9f * std::log(f.depth[i] / zMin) / logRange);
+        else throw Error("--show", "unknown AOV '" + which + "'", "accepted: ao, normal, depth, edges");
+        for (int c = 0; c < 3; ++c) f.color[4 * i + c] = srgbToLinear(std::clamp(v[c], 0.0f, 1.0f));
+    }
 }
 
 namespace {
@@ -61,7 +87,9 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& f, const C
             return;
         }
         std::vector<std::string> names = {"R", "G", "B", "A"};
-        if (aovs) names.insert(names.end(), {"Z", "N.x", "N.y", "N.z", "albedo.R", "albedo.G", "albedo.B"});
+        if (aovs)
+            names.insert(names.end(), {"Z", "N.x", "N.y", "N.z", "albedo.R", "albedo.G", "albedo.B", "AO", "AO_raw",
+                                       "AO_spatial", "edges"});
         const int channels = int(names.size());
         OIIO::ImageSpec spec(int(f.width), int(f.height), channels, OIIO::TypeDesc::FLOAT);
         spec.channelnames = names;
@@ -79,6 +107,10 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& f, const C
             p[4] = std::isfinite(f.depth[i]) ? f.depth[i] : std::numeric_limits<float>::max();
             for (int c = 0; c < 3; ++c) p[5 + c] = f.normal[3 * i + c];
             for (int c = 0; c < 3; ++c) p[8 + c] = f.albedo[3 * i + c];
+            p[11] = f.ao[i];
+            p[12] = f.aoRaw[i];
+            p[13] = f.aoSpatial[i];
+            p[14] = f.edges[i];
         }
         write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT);
     });

@@ -1,7 +1,8 @@
 #pragma once
 // Writes a read-back frame with OpenImageIO, atomically. PNG: 8-bit sRGB colour.
 // EXR: float RGBA, with AOVs also Z, N.x N.y N.z and albedo.R albedo.G albedo.B.
-// Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
+// With AOVs the EXR also holds AO (final), AO_raw and AO_spatial (half res,
+// stored by nearest) and edges. Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
 #include "engine/camera.h"
 #include "engine/renderer.h"
 
@@ -18,5 +19,10 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& frame, con
 
 // Linear [0, 1] -> 8-bit sRGB (clamped; NaN -> 0).
 uint8_t toSrgb8(float linear);
+
+// Replaces the colour with one AOV for eyeballing (ao, normal, depth, edges), so
+// that a PNG's 8-bit values are the AOV's values (normals as n * 0.5 + 0.5, depth
+// log-scaled from near white to far black, sky black). Needs a readback with AOVs.
+void showAov(FrameImages& frame, const std::string& which);
 
 }  // namespace grotto

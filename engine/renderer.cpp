@@ -1,4 +1,6 @@
-// The whole frame on one screen: G-buffer, then composite, with their barriers.
+// The whole frame on one screen: G-buffer, then (with AO) depth prefilter, GTAO,
+// spatial denoise and upsample at half resolution, then composite, with the
+// barriers between them.
 #include "engine/renderer.h"
 
 #include "engine/vk/readback.h"
@@ -15,7 +17,7 @@ namespace {
 
 constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 
-gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l) {
+gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l, const AoOptions& ao) {
     gpu::FrameUniforms u{};
     u.viewProj = camera.viewProjRelative();
     u.invViewProj = glm::mat4(glm::inverse(glm::dmat4(u.viewProj)));
@@ -32,15 +34,41 @@ gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l)
     u.rayOrigin = glm::vec4(glm::vec3(corner), 0.0f);
     u.rayStepX = glm::vec4(glm::vec3(right), 0.0f);
     u.rayStepY = glm::vec4(glm::vec3(down), 0.0f);
+    u.aoStrength = glm::vec4(ao.enabled ? ao.gtao.strength : 0.0f, 0.0f, 0.0f, 0.0f);
     u.size = {camera.width, camera.height};
     return u;
 }
 
+VkExtent2D halfOf(VkExtent2D e) { return {(e.width + 1) / 2, (e.height + 1) / 2}; }
+
 }  // namespace
 
-Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, uint32_t width,
-                   uint32_t height)
-    : ctx_(ctx), scene_(scene), lighting_(lighting), timestamps_(ctx, 8) {
+gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex) {
+    gpu::GtaoConstants c{};
+    c.settings = settings;
+    const double tanY = std::tan(camera.fovY * 0.5), tanX = tanY * camera.aspect();
+    c.ndcToViewMul_Add = glm::vec4(float(2.0 * tanX / camera.width), float(-2.0 * tanY / camera.height),
+                                   float(-tanX), float(tanY));
+    for (int f = 0; f < 6; ++f) {
+        glm::dvec3 n(0.0);
+        n[f / 2] = f % 2 == 0 ? 1.0 : -1.0;
+        // World to view is the transpose of the camera basis.
+        c.viewNormals[f] = glm::vec4(glm::vec3(glm::transpose(camera.basis) * n), 0.0f);
+    }
+    c.fullSize = {camera.width, camera.height};
+    c.halfSize = {(camera.width + 1) / 2, (camera.height + 1) / 2};
+    c.frameIndex = frameIndex;
+    c.pixelViewSize = float(2.0 * 2.0 * tanX / camera.width);  // a half-res pixel spans two
+    const glm::dmat4 p = camera.projection();
+    c.depthA = float(p[2][2]);
+    c.depthB = float(p[3][2]);
+    return c;
+}
+
+Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
+                   uint32_t width, uint32_t height)
+    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), timestamps_(ctx, 16) {
+    validateGtao(ao_.gtao, "AO settings");
     const VkExtent2D extent{width, height};
     const VkImageUsageFlags read = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     gbuffer_.depth = vk::createImage(ctx, extent, VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | read);
@@ -49,6 +77,41 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
     frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
     gbufferPass_ = std::make_unique<GBufferPass>(ctx);
     compositePass_ = std::make_unique<CompositePass>(ctx);
+
+    // The AO chain's targets and passes exist only when AO is on; without it the
+    // composite reads a 1x1 image it ignores.
+    const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | read;
+    if (ao_.enabled) {
+        aoTargets_.half = halfOf(extent);
+        for (uint32_t k = 0; k < aoTargets_.depthMips.size(); ++k) {
+            const uint32_t round = (1u << k) - 1;
+            const VkExtent2D mip{(aoTargets_.half.width + round) >> k, (aoTargets_.half.height + round) >> k};
+            aoTargets_.depthMips[k] = vk::createImage(ctx, mip, VK_FORMAT_R32_SFLOAT, storage);
+        }
+        aoTargets_.raw = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32_SFLOAT, storage);
+        for (vk::Image& s : aoTargets_.spatial) s = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32_SFLOAT, storage);
+        aoTargets_.full = vk::createImage(ctx, extent, VK_FORMAT_R32_SFLOAT, storage);
+        gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+        prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
+        gtaoPass_ = std::make_unique<GtaoPass>(ctx);
+        denoisePass_ = std::make_unique<DenoisePass>(ctx);
+        upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
+    } else {
+        aoTargets_.full = vk::createImage(ctx, {1, 1}, VK_FORMAT_R32_SFLOAT, storage);
+    }
+    // AO images live in GENERAL: written as storage, read as sampled images.
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        auto general = [&](const vk::Image& img) {
+            if (img.image)
+                vk::transition(cmd, img, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
+                               VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+        };
+        for (const vk::Image& m : aoTargets_.depthMips) general(m);
+        general(aoTargets_.raw);
+        for (const vk::Image& s : aoTargets_.spatial) general(s);
+        general(aoTargets_.full);
+    });
 
     VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
                                    .commandPool = ctx.commandPool,
@@ -64,21 +127,53 @@ Renderer::~Renderer() {
     vkDestroyFence(ctx_.device, fence_, nullptr);
     vkFreeCommandBuffers(ctx_.device, ctx_.commandPool, 1, &cmd_);
     gbufferPass_.reset();
+    prefilterPass_.reset();
+    gtaoPass_.reset();
+    denoisePass_.reset();
+    upsamplePass_.reset();
     compositePass_.reset();
-    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_}) vk::destroy(ctx_, *i);
+    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
+                         &aoTargets_.spatial[1], &aoTargets_.full})
+        vk::destroy(ctx_, *i);
+    for (vk::Image& m : aoTargets_.depthMips) vk::destroy(ctx_, m);
     vk::destroy(ctx_, frame_);
+    vk::destroy(ctx_, gtaoConstants_);
 }
 
 size_t Renderer::targetBytes() const {
     size_t n = 0;
-    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_}) n += i->memory.size;
+    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
+                               &aoTargets_.spatial[1], &aoTargets_.full})
+        n += i->memory.size;
+    for (const vk::Image& m : aoTargets_.depthMips) n += m.memory.size;
     return n;
 }
 
-FrameStats Renderer::render(const Camera& camera) {
+void Renderer::recordAo(VkCommandBuffer cmd) {
+    timestamps_.begin(cmd, "prefilter");
+    prefilterPass_->record(cmd, gbuffer_.depth, aoTargets_, gtaoConstants_);
+    timestamps_.end(cmd);
+    timestamps_.begin(cmd, "gtao");
+    gtaoPass_->record(cmd, gbuffer_.surface, aoTargets_, gtaoConstants_);
+    timestamps_.end(cmd);
+    computeToCompute(cmd);
+    timestamps_.begin(cmd, "denoise");
+    denoisePass_->record(cmd, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);
+    timestamps_.end(cmd);
+    timestamps_.begin(cmd, "upsample");
+    upsamplePass_->record(cmd, gbuffer_.depth, gbuffer_.surface, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);
+    timestamps_.end(cmd);
+    computeToCompute(cmd);
+}
+
+FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     const auto start = std::chrono::steady_clock::now();
-    const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_);
+    const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
     std::memcpy(frame_.mapped(), &uniforms, sizeof uniforms);
+    if (ao_.enabled) {
+        const gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex);
+        std::memcpy(gtaoConstants_.mapped(), &constants, sizeof constants);
+    }
 
     VkCommandBuffer cmd = cmd_;
     VK_CHECK(vkResetCommandBuffer(cmd, 0));
@@ -92,11 +187,11 @@ FrameStats Renderer::render(const Camera& camera) {
     const auto colorOut = VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT;
     const auto compute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     const auto readOnly = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+    const auto depthAttachment = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
     const auto depthWrite = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
 
     // G-buffer: previous contents are not needed (cleared), so start from UNDEFINED.
-    vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, top, 0,
-                   fragmentTests, depthWrite);
+    vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_UNDEFINED, depthAttachment, top, 0, fragmentTests, depthWrite);
     vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
                    colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     timestamps_.begin(cmd, "gbuffer");
@@ -104,15 +199,16 @@ FrameStats Renderer::render(const Camera& camera) {
     stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera);
     timestamps_.end(cmd);
 
-    // Composite reads the G-buffer and overwrites all of the colour target.
-    vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL, readOnly, fragmentTests,
+    // Everything after reads the G-buffer from compute shaders.
+    vk::transition(cmd, gbuffer_.depth, depthAttachment, readOnly, fragmentTests,
                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
+    if (ao_.enabled) recordAo(cmd);
     vk::transition(cmd, color_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, top, 0, compute,
                    VK_ACCESS_SHADER_WRITE_BIT);
     timestamps_.begin(cmd, "composite");
-    compositePass_->record(cmd, gbuffer_, color_, frame_, scene_.palette);
+    compositePass_->record(cmd, gbuffer_, aoTargets_.full, color_, frame_, scene_.palette);
     timestamps_.end(cmd);
 
     VK_CHECK(vkEndCommandBuffer(cmd));
@@ -125,26 +221,42 @@ FrameStats Renderer::render(const Camera& camera) {
     return stats;
 }
 
+namespace {
+
+std::vector<float> floats(const std::vector<uint8_t>& bytes) {
+    std::vector<float> out(bytes.size() / 4);
+    std::memcpy(out.data(), bytes.data(), out.size() * 4);
+    return out;
+}
+
+// Channel `c` of a `channels`-wide half-res image, stored at full size by nearest.
+std::vector<float> halfToFull(const std::vector<float>& half, VkExtent2D h, uint32_t channels, uint32_t c,
+                              uint32_t width, uint32_t height) {
+    std::vector<float> out(size_t(width) * height);
+    for (uint32_t y = 0; y < height; ++y)
+        for (uint32_t x = 0; x < width; ++x)
+            out[size_t(y) * width + x] = half[(size_t(y / 2) * h.width + x / 2) * channels + c];
+    return out;
+}
+
+}  // namespace
+
 FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     FrameImages f;
     f.width = color_.extent.width;
     f.height = color_.extent.height;
     const size_t n = size_t(f.width) * f.height;
-    const auto color = vk::readImage(ctx_, color_, VK_IMAGE_LAYOUT_GENERAL, 16);
-    f.color.resize(4 * n);
-    std::memcpy(f.color.data(), color.data(), color.size());
+    f.color = floats(vk::readImage(ctx_, color_, VK_IMAGE_LAYOUT_GENERAL, 16));
     if (!aovs) return f;
 
     const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    const auto depth = vk::readImage(ctx_, gbuffer_.depth, ro, 4);
+    const std::vector<float> depth = floats(vk::readImage(ctx_, gbuffer_.depth, ro, 4));
     const auto surface = vk::readImage(ctx_, gbuffer_.surface, ro, 2);
     f.depth.resize(n);
     f.normal.assign(3 * n, 0.0f);
     f.albedo.assign(3 * n, 0.0f);
     for (size_t i = 0; i < n; ++i) {
-        float d;
-        std::memcpy(&d, depth.data() + 4 * i, 4);
-        f.depth[i] = d > 0.0f ? float(camera.linearDepth(d)) : std::numeric_limits<float>::infinity();
+        f.depth[i] = depth[i] > 0.0f ? float(camera.linearDepth(depth[i])) : std::numeric_limits<float>::infinity();
         uint16_t id;
         std::memcpy(&id, surface.data() + 2 * i, 2);
         if (id == 0) continue;  // sky
@@ -152,6 +264,26 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
         f.normal[3 * i + gpu::faceAxis(face)] = gpu::facePositive(face) ? 1.0f : -1.0f;
         if (material >= 1 && material <= scene_.albedo.size())
             for (int c = 0; c < 3; ++c) f.albedo[3 * i + c] = scene_.albedo[material - 1][c];
+    }
+    if (!ao_.enabled) {
+        f.ao = f.aoRaw = f.aoSpatial = f.edges = std::vector<float>(n, 1.0f);
+        return f;
+    }
+    const VkExtent2D h = aoTargets_.half;
+    const auto general = VK_IMAGE_LAYOUT_GENERAL;
+    f.ao = floats(vk::readImage(ctx_, aoTargets_.full, general, 4));
+    const std::vector<float> raw = floats(vk::readImage(ctx_, aoTargets_.raw, general, 8));
+    const std::vector<float> spatial =
+        floats(vk::readImage(ctx_, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 8));
+    f.aoRaw = halfToFull(raw, h, 2, 0, f.width, f.height);
+    f.aoSpatial = halfToFull(spatial, h, 2, 0, f.width, f.height);
+    const std::vector<float> packed = halfToFull(raw, h, 2, 1, f.width, f.height);
+    f.edges.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const uint32_t v = uint32_t(packed[i] * 255.0f + 0.5f);
+        float e = 1.0f;
+        for (int k = 0; k < 4; ++k) e = std::min(e, float((v >> (2 * k)) & 3u) / 3.0f);
+        f.edges[i] = e;
     }
     return f;
 }

@@ -1,8 +1,14 @@
 #pragma once
 // Orders the passes of a frame and places every barrier between them.
+#include "engine/ao_settings.h"
 #include "engine/camera.h"
+#include "engine/passes/ao_targets.h"
 #include "engine/passes/composite_pass.h"
+#include "engine/passes/denoise_pass.h"
+#include "engine/passes/depth_prefilter_pass.h"
 #include "engine/passes/gbuffer_pass.h"
+#include "engine/passes/gtao_pass.h"
+#include "engine/passes/upsample_pass.h"
 #include "engine/scene.h"
 #include "engine/vk/timestamps.h"
 #include "voxel/world_desc.h"
@@ -21,38 +27,56 @@ struct FrameStats {
 };
 
 // A frame read back to host memory; pixel (x, y) at index y * width + x, row 0 on top.
+// Half-resolution AOVs are stored at full size, each pixel taking its half-res
+// pixel (x / 2, y / 2).
 struct FrameImages {
     uint32_t width = 0, height = 0;
-    std::vector<float> color;   // linear RGBA
-    std::vector<float> depth;   // view-axis distance in world units; +inf for sky
-    std::vector<float> normal;  // world-space xyz; 0 for sky
-    std::vector<float> albedo;  // linear rgb; 0 for sky
+    std::vector<float> color;      // linear RGBA
+    std::vector<float> depth;      // view-axis distance in world units; +inf for sky
+    std::vector<float> normal;     // world-space xyz; 0 for sky
+    std::vector<float> albedo;     // linear rgb; 0 for sky
+    std::vector<float> ao;         // final visibility, full res (1 without AO)
+    std::vector<float> aoRaw;      // GTAO main pass output (half res)
+    std::vector<float> aoSpatial;  // after the spatial denoiser (half res)
+    std::vector<float> edges;      // smallest of the four edge weights (half res)
 };
 
 class Renderer {
 public:
-    Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, uint32_t width,
-             uint32_t height);
+    Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
+             uint32_t width, uint32_t height);
     ~Renderer();
 
-    FrameStats render(const Camera& camera);
-    // Reads back the last frame; the G-buffer AOVs only when asked for.
+    FrameStats render(const Camera& camera, uint32_t frameIndex = 0);
+    // Reads back the last frame; the G-buffer and AO AOVs only when asked for.
     FrameImages readback(const Camera& camera, bool aovs);
 
     size_t targetBytes() const;
+    const AoOptions& ao() const { return ao_; }
 
 private:
+    void recordAo(VkCommandBuffer cmd);
+
     vk::Context& ctx_;
     const GpuScene& scene_;
     voxel::Lighting lighting_;
+    AoOptions ao_;
     GBufferTargets gbuffer_;
+    AoTargets aoTargets_;
     vk::Image color_;
-    vk::Buffer frame_;
+    vk::Buffer frame_, gtaoConstants_;
     std::unique_ptr<GBufferPass> gbufferPass_;
+    std::unique_ptr<DepthPrefilterPass> prefilterPass_;
+    std::unique_ptr<GtaoPass> gtaoPass_;
+    std::unique_ptr<DenoisePass> denoisePass_;
+    std::unique_ptr<UpsamplePass> upsamplePass_;
     std::unique_ptr<CompositePass> compositePass_;
     vk::Timestamps timestamps_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
 };
+
+// The GTAO constants for a camera (exposed for the CPU twin and its tests).
+gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex);
 
 }  // namespace grotto

@@ -8,7 +8,17 @@ layout(local_size_x = GROTTO_COMPOSITE_GROUP, local_size_y = GROTTO_COMPOSITE_GR
 layout(set = 0, binding = 0, std140) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1, std140) uniform Palette { vec4 albedo[GROTTO_MAX_MATERIALS]; };
 layout(set = 0, binding = 2) uniform usampler2D surfaceTex;
-layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D outColor;
+layout(set = 0, binding = 3) uniform sampler2D aoTex;  // full-res visibility
+layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D outColor;
+
+// Multi-bounce fit (Jimenez et al. 2016): light bouncing between bright surfaces
+// brightens what plain visibility would leave dark.
+vec3 multiBounce(float v, vec3 albedo) {
+    vec3 a = 2.0404 * albedo - 0.3324;
+    vec3 b = -4.7951 * albedo + 0.6417;
+    vec3 c = 2.7552 * albedo + 0.6903;
+    return max(vec3(v), ((a * v + b) * v + c) * v);
+}
 
 vec3 sky(ivec2 pixel) {
     vec2 p = vec2(pixel) + 0.5;
@@ -28,9 +38,9 @@ void main() {
         uint face = surfaceFace(surface);
         // The sun term for an axis normal is one component of the sun direction.
         float cosSun = (facePositive(face) ? 1.0 : -1.0) * frame.sunDirection[faceAxis(face)];
-        float ao = 1.0;
-        color = albedo[surfaceMaterial(surface) - 1u].rgb *
-                (frame.sunRadiance.rgb * max(cosSun, 0.0) + frame.ambient.rgb * ao);
+        vec3 base = albedo[surfaceMaterial(surface) - 1u].rgb;
+        float visibility = mix(1.0, texelFetch(aoTex, pixel, 0).r, frame.aoStrength.x);
+        color = base * (frame.sunRadiance.rgb * max(cosSun, 0.0) + frame.ambient.rgb * multiBounce(visibility, base));
     }
     imageStore(outColor, pixel, vec4(color, 1.0));
 }

@@ -56,7 +56,7 @@ TEST_P(GBuffer, DepthAndNormalsMatchCpuRayCast) {
     auto scene = uploadScene(ctx(), world.mesh(), world.desc());
     FrameImages img;
     {
-        Renderer renderer(ctx(), *scene, world.desc().lighting, k.width, k.height);
+        Renderer renderer(ctx(), *scene, world.desc().lighting, aoOptionsFor(world.desc().ao, vs, "test"), k.width, k.height);
         renderer.render(camera);
         img = renderer.readback(camera, true);
     }
@@ -110,7 +110,7 @@ TEST_F(GpuTest, TinyImagesRenderFiniteValues) {
     auto scene = uploadScene(ctx(), world.mesh(), world.desc());
     for (auto [w, h] : {std::pair{1u, 1u}, {2u, 2u}, {3u, 1u}}) {
         const Camera camera = makeCamera(world.camera(""), w, h);
-        Renderer renderer(ctx(), *scene, world.desc().lighting, w, h);
+        Renderer renderer(ctx(), *scene, world.desc().lighting, aoOptionsFor(world.desc().ao, 1.0, "test"), w, h);
         renderer.render(camera);
         const FrameImages img = renderer.readback(camera, true);
         ASSERT_EQ(img.color.size(), size_t(4) * w * h);

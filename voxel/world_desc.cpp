@@ -162,6 +162,30 @@ void parseLighting(Reader r, Lighting& l) {
     }
 }
 
+void parseAo(Reader r, AoDesc& ao) {
+    ao.method = r.string("method", ao.method);
+    if (ao.method != "gtao" && ao.method != "off") r.fail("method", "unknown AO method '" + ao.method + "'", "accepted: gtao, off");
+    ao.quality = r.string("quality", ao.quality);
+    auto opt = [&](const char* key, std::optional<double>& v, double lo, double hi) {
+        if (r.has(key)) v = r.number(key, 0.0, lo, hi);
+    };
+    auto optInt = [&](const char* key, std::optional<int>& v, int lo, int hi) {
+        if (r.has(key)) v = int(r.number(key, 0.0, lo, hi));
+    };
+    opt("radius", ao.radius, 1e-6, 1e6);
+    opt("radius_multiplier", ao.radiusMultiplier, 0.3, 3.0);
+    opt("falloff_range", ao.falloffRange, 0.0, 1.0);
+    opt("sample_distribution_power", ao.sampleDistributionPower, 1.0, 3.0);
+    opt("thin_occluder", ao.thinOccluder, 0.0, 0.7);
+    opt("final_value_power", ao.finalValuePower, 0.5, 5.0);
+    opt("depth_mip_offset", ao.depthMipOffset, 0.0, 30.0);
+    opt("strength", ao.strength, 0.0, 1.0);
+    opt("denoise_blur_beta", ao.denoiseBlurBeta, 0.0, 10.0);
+    optInt("slices", ao.slices, 1, 32);
+    optInt("steps", ao.steps, 1, 32);
+    optInt("denoise", ao.denoisePasses, 0, 4);
+}
+
 WorldDesc parseWorld(const fs::path& file, const json& doc) {
     WorldDesc w;
     w.source = file;
@@ -193,6 +217,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
         }
     }
     if (r.has("lighting")) parseLighting(r.child("lighting"), w.lighting);
+    if (r.has("ao")) parseAo(r.child("ao"), w.ao);
     if (r.has("cameras")) {
         const json& cams = r.at("cameras");
         if (!cams.is_object()) r.fail("cameras", "expected an object of named cameras");

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,15 @@ struct Lighting {
     glm::vec3 skyHorizon{0.75f, 0.82f, 0.92f};
 };
 
+// The "ao" block of a world file: method, preset and any overrides (unset = preset).
+struct AoDesc {
+    std::string method = "gtao";   // gtao or off
+    std::string quality = "high";  // low, medium, high, ultra, custom
+    std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
+        finalValuePower, depthMipOffset, strength, denoiseBlurBeta;
+    std::optional<int> slices, steps, denoisePasses;
+};
+
 struct WorldDesc {
     std::filesystem::path source;      // the .json or .vdb the user named
     std::filesystem::path gridFile;    // resolved .vdb path
@@ -52,6 +62,7 @@ struct WorldDesc {
     int material = 1;                  // material id of every voxel for non-int32 grids
     std::vector<Material> materials;   // id k uses materials[k - 1]
     Lighting lighting;
+    AoDesc ao;
     std::map<std::string, CameraDesc> cameras;
     std::string defaultCamera;         // empty = framed from the world's bounds
     size_t memoryBudgetBytes = size_t(8) << 30;  // grids estimated above this are refused

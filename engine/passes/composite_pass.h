@@ -1,6 +1,8 @@
 #pragma once
-// Composite pass. Reads: the surface id, the palette, frame uniforms.
-// Writes: linear RGBA32F colour (sun Lambert + ambient x AO, sky). No history.
+// Composite pass. Reads: the surface id, the palette, full-res AO, frame uniforms.
+// Writes: linear RGBA32F colour: sun Lambert + ambient x AO (multi-bounce from
+// albedo; the sun is not occluded), and the sky. No history.
+#include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 
 namespace grotto {
@@ -8,17 +10,12 @@ namespace grotto {
 class CompositePass {
 public:
     explicit CompositePass(vk::Context& ctx);
-    ~CompositePass();
-
-    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& color,
+    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& ao, const vk::Image& color,
                 const vk::Buffer& frame, const vk::Buffer& palette);
 
 private:
     vk::Context& ctx_;
-    VkSampler sampler_;
-    VkDescriptorSetLayout setLayout_;
-    VkPipelineLayout layout_;
-    VkPipeline pipeline_;
+    ComputePass pass_;
 };
 
 }  // namespace grotto

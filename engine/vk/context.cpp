@@ -185,6 +185,14 @@ void Context::create(const ContextOptions& options) {
                                 .flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT,
                                 .queueFamilyIndex = queueFamily};
     VK_CHECK(vkCreateCommandPool(device, &pci, nullptr, &commandPool));
+    VkSamplerCreateInfo si{.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO,
+                           .magFilter = VK_FILTER_NEAREST,
+                           .minFilter = VK_FILTER_NEAREST,
+                           .mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST,
+                           .addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                           .addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE,
+                           .addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE};
+    VK_CHECK(vkCreateSampler(device, &si, nullptr, &pointSampler));
     allocator = std::make_unique<Allocator>(physical, device);
 }
 
@@ -193,6 +201,8 @@ Context::~Context() { release(); }
 void Context::release() {
     if (device) vkDeviceWaitIdle(device);
     allocator.reset();
+    if (pointSampler) vkDestroySampler(device, pointSampler, nullptr);
+    pointSampler = VK_NULL_HANDLE;
     if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);
     if (device) vkDestroyDevice(device, nullptr);
     if (messenger_) {

@@ -31,6 +31,7 @@ public:
     VkQueue queue = VK_NULL_HANDLE;
     uint32_t queueFamily = 0;
     VkCommandPool commandPool = VK_NULL_HANDLE;
+    VkSampler pointSampler = VK_NULL_HANDLE;  // nearest, clamp to edge: for texelFetch reads
     VkPhysicalDeviceProperties properties{};
     std::unique_ptr<Allocator> allocator;
 

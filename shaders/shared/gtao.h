@@ -1,32 +1,43 @@
-// GTAO settings shared by C++ and GLSL: one struct, every field with its default
-// and range. Defaults are XeGTAO's published ones (DESIGN.md), except that the
-// thin-occluder compensation is compiled in and exposed.
+// GTAO settings and per-frame constants, shared by C++ and GLSL. Every setting
+// carries its default and range; the defaults are XeGTAO's published values
+// (DESIGN.md) except that thin-occluder compensation is compiled in and exposed.
 #ifndef GROTTO_SHARED_GTAO_H
 #define GROTTO_SHARED_GTAO_H
 #include "common.h"
 
 GROTTO_NAMESPACE_BEGIN
 
-#define GROTTO_GTAO_DEPTH_MIPS 5u
+#define GROTTO_GTAO_DEPTH_MIPS 5
+#define GROTTO_GTAO_GROUP 8u
 
 struct GtaoSettings {
-    float radius;                  // world units; default 4 voxels' worth is set per world (> 0)
-    float radiusMultiplier;        // 1.457 (0.3 .. 3): compensates screen-space undersampling
-    float falloffRange;            // 0.615 (0 .. 1): fraction of the radius over which occluders fade
-    float sampleDistributionPower; // 2.0 (1 .. 3): > 1 puts more samples near the centre
-    float thinOccluderCompensation;// 0 (0 .. 0.7): > 0 treats occluders as thinner than they look
-    float finalValuePower;         // 2.2 (0.5 .. 5): contrast of the final visibility
-    float depthMipSamplingOffset;  // 3.30 (0 .. 30): higher = later switch to coarser depth MIPs
-    float maxDistance;             // view depth beyond which AO fades out (world units, > 0)
-    float strength;                // 1 (0 .. 1): blend from no AO (0) to full AO (1)
-    float denoiseBlurBeta;         // 1.2 (0 .. 10): edge-aware blur weight of the centre
-    uint sliceCount;               // slices per pixel: low 1, medium 2, high 3, ultra 9
-    uint stepsPerSlice;            // steps per side: low 2, medium 2, high 3, ultra 3
-    uint denoisePasses;            // 1 (0 .. 4): edge-aware spatial blur passes
-    uint frameIndex;               // advances the noise; the temporal pass steps it
-    uint pad0, pad1;
+    float radius;                   // world units (> 0); default 3 voxels, from the world file or --radius
+    float radiusMultiplier;         // 1.457 (0.3 .. 3): compensates for screen-space undersampling
+    float falloffRange;             // 0.615 (0 .. 1): fraction of the radius over which occluders fade out
+    float sampleDistributionPower;  // 2.0 (1 .. 3): > 1 puts more samples near the centre
+    float thinOccluderCompensation; // 0 (0 .. 0.7): > 0 treats occluders as thinner than they look
+    float finalValuePower;          // 2.2 (0.5 .. 5): contrast of the final visibility
+    float depthMipSamplingOffset;   // 3.30 (0 .. 30): higher = later switch to coarser depth MIPs
+    float strength;                 // 1 (0 .. 1): 0 = no AO, 1 = full AO
+    float denoiseBlurBeta;          // 1.2 (0 .. 10): centre weight of the edge-aware blur
+    uint sliceCount;                // slices per pixel: low 1, medium 2, high 3, ultra 9 (1 .. 32)
+    uint stepsPerSlice;             // steps per side: low 2, medium 2, high 3, ultra 3 (1 .. 32)
+    uint denoisePasses;             // 1 (0 .. 4): edge-aware spatial blur passes
 };
-GROTTO_STATIC_ASSERT(sizeof(GtaoSettings) == 64);
+GROTTO_STATIC_ASSERT(sizeof(GtaoSettings) == 48);
+
+// What the GTAO passes need besides the settings, all at half resolution.
+struct GtaoConstants {
+    GtaoSettings settings;
+    vec4 ndcToViewMul_Add;   // view xy = (fullResPixel * mul + add) * depth
+    vec4 viewNormals[6];     // the six face normals in view space (+X -X +Y -Y +Z -Z)
+    uvec2 fullSize;
+    uvec2 halfSize;          // ceil(full / 2)
+    uint frameIndex;         // advances the noise; the temporal pass will step it
+    float pixelViewSize;     // view-space size of one half-res pixel at depth 1
+    float depthA, depthB;    // view depth = depthB / (depth buffer value + depthA)
+};
+GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 48 + 16 + 96 + 16 + 16);
 
 GROTTO_NAMESPACE_END
 #endif

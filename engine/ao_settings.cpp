@@ -1,0 +1,77 @@
+#include "engine/ao_settings.h"
+
+#include "common/error.h"
+
+#include <cmath>
+
+namespace grotto {
+
+gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius) {
+    gpu::GtaoSettings s{};
+    s.radius = float(radius);
+    s.radiusMultiplier = 1.457f;
+    s.falloffRange = 0.615f;
+    s.sampleDistributionPower = 2.0f;
+    s.thinOccluderCompensation = 0.0f;
+    s.finalValuePower = 2.2f;
+    s.depthMipSamplingOffset = 3.30f;
+    s.strength = 1.0f;
+    s.denoiseBlurBeta = 1.2f;
+    s.denoisePasses = 1;
+    if (quality == "low") s.sliceCount = 1, s.stepsPerSlice = 2;
+    else if (quality == "medium") s.sliceCount = 2, s.stepsPerSlice = 2;
+    else if (quality == "high" || quality == "custom") s.sliceCount = 3, s.stepsPerSlice = 3;
+    else if (quality == "ultra") s.sliceCount = 9, s.stepsPerSlice = 3;
+    else throw Error("--quality", "unknown quality '" + quality + "'", "accepted: low, medium, high, ultra, custom");
+    return s;
+}
+
+namespace {
+void check(bool ok, const std::string& where, const std::string& name, double value, const char* range) {
+    if (!ok)
+        throw Error(where, "AO setting '" + name + "' = " + std::to_string(value) + " is out of range",
+                    std::string("accepted: ") + range);
+}
+}  // namespace
+
+void validateGtao(const gpu::GtaoSettings& s, const std::string& where) {
+    auto finite = [](double v) { return std::isfinite(v); };
+    check(finite(s.radius) && s.radius > 0 && s.radius <= 1e6, where, "radius", s.radius, "> 0 world units");
+    check(s.radiusMultiplier >= 0.3f && s.radiusMultiplier <= 3.0f, where, "radius_multiplier", s.radiusMultiplier, "0.3 to 3");
+    check(s.falloffRange >= 0.0f && s.falloffRange <= 1.0f, where, "falloff_range", s.falloffRange, "0 to 1");
+    check(s.sampleDistributionPower >= 1.0f && s.sampleDistributionPower <= 3.0f, where, "sample_distribution_power",
+          s.sampleDistributionPower, "1 to 3");
+    check(s.thinOccluderCompensation >= 0.0f && s.thinOccluderCompensation <= 0.7f, where, "thin_occluder",
+          s.thinOccluderCompensation, "0 to 0.7");
+    check(s.finalValuePower >= 0.5f && s.finalValuePower <= 5.0f, where, "final_value_power", s.finalValuePower, "0.5 to 5");
+    check(s.depthMipSamplingOffset >= 0.0f && s.depthMipSamplingOffset <= 30.0f, where, "depth_mip_offset",
+          s.depthMipSamplingOffset, "0 to 30");
+    check(s.strength >= 0.0f && s.strength <= 1.0f, where, "strength", s.strength, "0 to 1");
+    check(s.denoiseBlurBeta >= 0.0f && s.denoiseBlurBeta <= 10.0f, where, "denoise_blur_beta", s.denoiseBlurBeta, "0 to 10");
+    check(s.sliceCount >= 1 && s.sliceCount <= 32, where, "slices", s.sliceCount, "1 to 32");
+    check(s.stepsPerSlice >= 1 && s.stepsPerSlice <= 32, where, "steps", s.stepsPerSlice, "1 to 32");
+    check(s.denoisePasses <= 4, where, "denoise", s.denoisePasses, "0 to 4");
+}
+
+AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::string& where) {
+    AoOptions o;
+    o.enabled = d.method != "off";
+    o.quality = d.quality;
+    o.gtao = gtaoPreset(d.quality, d.radius ? *d.radius : 4.0 * voxelSize);
+    gpu::GtaoSettings& s = o.gtao;
+    if (d.radiusMultiplier) s.radiusMultiplier = float(*d.radiusMultiplier);
+    if (d.falloffRange) s.falloffRange = float(*d.falloffRange);
+    if (d.sampleDistributionPower) s.sampleDistributionPower = float(*d.sampleDistributionPower);
+    if (d.thinOccluder) s.thinOccluderCompensation = float(*d.thinOccluder);
+    if (d.finalValuePower) s.finalValuePower = float(*d.finalValuePower);
+    if (d.depthMipOffset) s.depthMipSamplingOffset = float(*d.depthMipOffset);
+    if (d.strength) s.strength = float(*d.strength);
+    if (d.denoiseBlurBeta) s.denoiseBlurBeta = float(*d.denoiseBlurBeta);
+    if (d.slices) s.sliceCount = uint32_t(*d.slices);
+    if (d.steps) s.stepsPerSlice = uint32_t(*d.steps);
+    if (d.denoisePasses) s.denoisePasses = uint32_t(*d.denoisePasses);
+    validateGtao(s, where);
+    return o;
+}
+
+}  // namespace grotto

@@ -1,0 +1,35 @@
+#pragma once
+// A compute shader with a push-descriptor set layout and optional push constants:
+// what every full-screen compute pass needs, so each pass file holds only its own
+// inputs, outputs and dispatch.
+#include "engine/vk/pipeline.h"
+
+#include <string>
+#include <vector>
+
+namespace grotto {
+
+class ComputePass {
+public:
+    ComputePass(vk::Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
+                uint32_t pushBytes = 0);
+    ~ComputePass();
+    ComputePass(const ComputePass&) = delete;
+    ComputePass& operator=(const ComputePass&) = delete;
+
+    // One thread per pixel of `size`, in groups of `group` x `group`.
+    void dispatch(VkCommandBuffer cmd, const std::vector<vk::Binding>& bindings, VkExtent2D size, uint32_t group,
+                  const void* push = nullptr) const;
+
+private:
+    vk::Context& ctx_;
+    uint32_t pushBytes_;
+    VkDescriptorSetLayout setLayout_;
+    VkPipelineLayout layout_;
+    VkPipeline pipeline_;
+};
+
+// A global barrier: compute writes so far are visible to later compute reads.
+void computeToCompute(VkCommandBuffer cmd);
+
+}  // namespace grotto

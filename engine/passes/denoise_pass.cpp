@@ -1,0 +1,25 @@
+#include "engine/passes/denoise_pass.h"
+
+namespace grotto {
+
+DenoisePass::DenoisePass(vk::Context& ctx)
+    : ctx_(ctx),
+      pass_(ctx, "denoise.comp",
+            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+             VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+            sizeof(uint32_t)) {}
+
+void DenoisePass::record(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, const vk::Buffer& constants) {
+    for (uint32_t i = 0; i < passes; ++i) {
+        const vk::Image& source = i == 0 ? ao.raw : ao.spatial[(i - 1) % 2];
+        const uint32_t finalPass = i + 1 == passes ? 1u : 0u;
+        pass_.dispatch(cmd,
+                       {vk::uniformBuffer(constants.buffer),
+                        vk::sampledImage(ctx_.pointSampler, source.view, VK_IMAGE_LAYOUT_GENERAL),
+                        vk::storageImage(ao.spatial[i % 2].view)},
+                       ao.half, GROTTO_GTAO_GROUP, &finalPass);
+        computeToCompute(cmd);
+    }
+}
+
+}  // namespace grotto

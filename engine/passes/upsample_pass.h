@@ -1,0 +1,21 @@
+#pragma once
+// Depth-aware upsample to full resolution. Reads: the denoised half-res AO, the
+// half-res depth (MIP 0), full-res depth and surface ids, GTAO constants.
+// Writes: AoTargets::full. No history.
+#include "engine/passes/ao_targets.h"
+#include "engine/passes/compute_pass.h"
+
+namespace grotto {
+
+class UpsamplePass {
+public:
+    explicit UpsamplePass(vk::Context& ctx);
+    void record(VkCommandBuffer cmd, const vk::Image& depth, const vk::Image& surface, const AoTargets& ao,
+                uint32_t denoisePasses, const vk::Buffer& constants);
+
+private:
+    vk::Context& ctx_;
+    ComputePass pass_;
+};
+
+}  // namespace grotto

@@ -1,0 +1,42 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Edge-aware 3x3 blur of half-res AO. A neighbour counts only as far as both its
+// own and the centre's edge weights agree they lie on one surface; diagonals
+// through both of their paths. Edges pass through unchanged.
+#include "shared/gtao.h"
+#include "shared/quad.h"
+
+layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
+layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
+layout(set = 0, binding = 1) uniform sampler2D source;  // rg: AO, packed edges
+layout(set = 0, binding = 2, rg32f) uniform writeonly image2D target;
+layout(push_constant) uniform Push { uint finalPass; };
+
+float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
+uint gtaoSurface(ivec2 pixel) { return 0u; }
+#include "shared/gtao_kernel.h"
+
+vec2 fetch(ivec2 p) { return texelFetch(source, clamp(p, ivec2(0), ivec2(gtao.halfSize) - 1), 0).rg; }
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(uvec2(p), gtao.halfSize))) return;
+    vec2 c = fetch(p);
+    vec2 l = fetch(p + ivec2(-1, 0)), r = fetch(p + ivec2(1, 0));
+    vec2 t = fetch(p + ivec2(0, -1)), b = fetch(p + ivec2(0, 1));
+    vec2 tl = fetch(p + ivec2(-1, -1)), tr = fetch(p + ivec2(1, -1));
+    vec2 bl = fetch(p + ivec2(-1, 1)), br = fetch(p + ivec2(1, 1));
+    vec4 ec = gtaoUnpackEdges(c.y);
+    // Symmetric: the neighbour's edge back towards the centre must agree.
+    float wl = ec.x * gtaoUnpackEdges(l.y).y;
+    float wr = ec.y * gtaoUnpackEdges(r.y).x;
+    float wt = ec.z * gtaoUnpackEdges(t.y).w;
+    float wb = ec.w * gtaoUnpackEdges(b.y).z;
+    const float diagonal = 0.425;
+    float wtl = diagonal * wl * wt, wtr = diagonal * wr * wt;
+    float wbl = diagonal * wl * wb, wbr = diagonal * wr * wb;
+    float beta = finalPass != 0u ? gtao.settings.denoiseBlurBeta : gtao.settings.denoiseBlurBeta / 5.0;
+    float sum = beta * c.x + wl * l.x + wr * r.x + wt * t.x + wb * b.x + wtl * tl.x + wtr * tr.x + wbl * bl.x + wbr * br.x;
+    float weight = beta + wl + wr + wt + wb + wtl + wtr + wbl + wbr;
+    imageStore(target, p, vec4(sum / max(weight, 1e-6), c.y, 0.0, 0.0));
+}

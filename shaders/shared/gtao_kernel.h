@@ -1,0 +1,165 @@
+// The GTAO kernel, written once for GLSL and C++ (GLM): the GPU pass includes it
+// in its shader, the CPU twin in a class. The includer provides
+//   GtaoConstants gtao;                       the constants (shared/gtao.h)
+//   float gtaoDepth(ivec2 texel, int mip);    prefiltered view depth (kGtaoSky = none)
+//   uint  gtaoSurface(ivec2 fullResPixel);    G-buffer surface id (shared/quad.h)
+// and, in C++, `using namespace glm` around it. Float literals carry an f so both
+// languages read them the same way.
+//
+// Half-resolution pixel (x, y) stands for full-resolution pixel (2x, 2y): its depth,
+// normal and position are that pixel's exactly (see depth_prefilter.comp).
+
+#define kGtaoSky 1.0e15f
+#define kGtaoPi 3.14159265358979f
+
+float gtaoSaturate(float x) { return clamp(x, 0.0f, 1.0f); }
+
+// Index of a pixel along a 64x64 Hilbert curve: neighbouring pixels get distant
+// sequence indices, so the low-discrepancy noise below spreads evenly in space.
+uint gtaoHilbertIndex(uint px, uint py) {
+    uint x = px & 63u, y = py & 63u, index = 0u;
+    for (uint level = 32u; level > 0u; level /= 2u) {
+        uint rx = (x & level) > 0u ? 1u : 0u;
+        uint ry = (y & level) > 0u ? 1u : 0u;
+        index += level * level * ((3u * rx) ^ ry);
+        if (ry == 0u) {  // rotate the quadrant so the curve stays continuous
+            if (rx == 1u) {
+                x = 63u - x;
+                y = 63u - y;
+            }
+            uint t = x;
+            x = y;
+            y = t;
+        }
+    }
+    return index;
+}
+
+// The R2 sequence (plastic-number lattice) in 32-bit fixed point, so GPU and CPU
+// produce the same bits: 2^32 / 1.32471795724 and 2^32 / 1.32471795724^2, offset by 0.5.
+vec2 gtaoNoise(uvec2 pixel, uint frameIndex) {
+    uint index = gtaoHilbertIndex(pixel.x, pixel.y) + 288u * (frameIndex % 64u);
+    uint a = index * 3242174889u + 2147483648u;
+    uint b = index * 2447445414u + 2147483648u;
+    return vec2(float(a >> 8u), float(b >> 8u)) * (1.0f / 16777216.0f);
+}
+
+vec3 gtaoViewPosition(ivec2 halfPixel, float depth) {
+    vec2 p = vec2(halfPixel) * 2.0f + 0.5f;
+    return vec3((p * gtao.ndcToViewMul_Add.xy + gtao.ndcToViewMul_Add.zw) * depth, -depth);
+}
+
+// Depth MIP reduction: an average that down-weights samples far behind the
+// nearest, so thin near surfaces survive in the coarse levels.
+float gtaoMipFilter(float d0, float d1, float d2, float d3) {
+    float nearest = min(min(d0, d1), min(d2, d3));
+    float range = max(0.615f * 0.75f * gtao.settings.radius * gtao.settings.radiusMultiplier, 1e-6f);
+    float w0 = gtaoSaturate(1.0f - (d0 - nearest) / range);
+    float w1 = gtaoSaturate(1.0f - (d1 - nearest) / range);
+    float w2 = gtaoSaturate(1.0f - (d2 - nearest) / range);
+    float w3 = gtaoSaturate(1.0f - (d3 - nearest) / range);
+    return (w0 * d0 + w1 * d1 + w2 * d2 + w3 * d3) / (w0 + w1 + w2 + w3);
+}
+
+// Edge weights to the left, right, top and bottom neighbours (1 = same surface),
+// tolerant of planar slopes, from view depths.
+vec4 gtaoEdges(float c, float l, float r, float t, float b) {
+    vec4 e = vec4(l, r, t, b) - c;
+    float slopeLR = (e.y - e.x) * 0.5f;
+    float slopeTB = (e.w - e.z) * 0.5f;
+    vec4 alongSlope = e + vec4(slopeLR, -slopeLR, slopeTB, -slopeTB);
+    e = min(abs(e), abs(alongSlope));
+    return clamp(vec4(1.25f) - e / (c * 0.011f), vec4(0.0f), vec4(1.0f));
+}
+
+// Four edges in two bits each, as a value in [0, 1].
+float gtaoPackEdges(vec4 e) {
+    uvec4 q = uvec4(floor(clamp(e, vec4(0.0f), vec4(1.0f)) * 3.0f + 0.5f));
+    return float((q.x << 6u) | (q.y << 4u) | (q.z << 2u) | q.w) / 255.0f;
+}
+
+vec4 gtaoUnpackEdges(float packed) {
+    uint v = uint(packed * 255.0f + 0.5f);
+    return vec4(float((v >> 6u) & 3u), float((v >> 4u) & 3u), float((v >> 2u) & 3u), float(v & 3u)) / 3.0f;
+}
+
+// Visibility in [0, 1] (1 = open) at a half-resolution pixel, and its packed edges.
+vec2 gtaoPixel(ivec2 pixel) {
+    GtaoSettings s = gtao.settings;
+    ivec2 last = ivec2(gtao.halfSize) - 1;
+    float z = gtaoDepth(pixel, 0);
+    float zl = gtaoDepth(ivec2(max(pixel.x - 1, 0), pixel.y), 0);
+    float zr = gtaoDepth(ivec2(min(pixel.x + 1, last.x), pixel.y), 0);
+    float zt = gtaoDepth(ivec2(pixel.x, max(pixel.y - 1, 0)), 0);
+    float zb = gtaoDepth(ivec2(pixel.x, min(pixel.y + 1, last.y)), 0);
+    float edges = gtaoPackEdges(gtaoEdges(z, zl, zr, zt, zb));
+    if (z >= kGtaoSky) return vec2(1.0f, edges);
+
+    vec3 normal = gtao.viewNormals[surfaceFace(gtaoSurface(pixel * 2))].xyz;
+    vec3 position = gtaoViewPosition(pixel, z);
+    vec3 viewVec = normalize(-position);
+
+    float effectRadius = s.radius * s.radiusMultiplier;
+    float falloffRange = max(s.falloffRange * effectRadius, 1e-6f);
+    float falloffFrom = effectRadius * (1.0f - s.falloffRange);
+    float falloffMul = -1.0f / falloffRange;
+    float falloffAdd = falloffFrom / falloffRange + 1.0f;
+    // Screen-space radius in half-res pixels; tiny radii fade towards open.
+    float screenRadius = effectRadius / (z * gtao.pixelViewSize);
+    float visibility = gtaoSaturate((10.0f - screenRadius) / 100.0f) * 0.5f;
+    float minS = 1.3f / screenRadius;  // skip the centre pixel itself
+    vec2 noise = gtaoNoise(uvec2(pixel), gtao.frameIndex);
+
+    for (uint slice = 0u; slice < s.sliceCount; ++slice) {
+        float phi = (float(slice) + noise.x) / float(s.sliceCount) * kGtaoPi;
+        float cosPhi = cos(phi), sinPhi = sin(phi);
+        vec2 omega = vec2(cosPhi, -sinPhi) * screenRadius;  // pixels: y points down
+        vec3 direction = vec3(cosPhi, sinPhi, 0.0f);        // view space: y points up
+        vec3 orthoDirection = direction - dot(direction, viewVec) * viewVec;
+        vec3 axis = normalize(cross(orthoDirection, viewVec));
+        vec3 projectedNormal = normal - axis * dot(normal, axis);
+        float signNorm = dot(orthoDirection, projectedNormal) >= 0.0f ? 1.0f : -1.0f;
+        float projectedLength = max(length(projectedNormal), 1e-6f);
+        float cosNorm = gtaoSaturate(dot(projectedNormal, viewVec) / projectedLength);
+        float n = signNorm * acos(cosNorm);
+        float lowCos0 = cos(n + 0.5f * kGtaoPi), lowCos1 = cos(n - 0.5f * kGtaoPi);
+        float horizonCos0 = lowCos0, horizonCos1 = lowCos1;
+
+        for (uint stepIndex = 0u; stepIndex < s.stepsPerSlice; ++stepIndex) {
+            // Golden-ratio jitter per step decorrelates steps sharing the pixel's noise.
+            float stepNoise = fract(noise.y + float(slice + stepIndex * s.stepsPerSlice) * 0.6180339887f);
+            float t = pow((float(stepIndex) + stepNoise) / float(s.stepsPerSlice), s.sampleDistributionPower) + minS;
+            vec2 offset = t * omega;
+            int mip = int(clamp(floor(log2(length(offset)) - s.depthMipSamplingOffset + 0.5f), 0.0f,
+                                float(GROTTO_GTAO_DEPTH_MIPS - 1)));
+            ivec2 rounded = ivec2(floor(offset + 0.5f));
+            ivec2 p0 = clamp(pixel + rounded, ivec2(0), last);
+            ivec2 p1 = clamp(pixel - rounded, ivec2(0), last);
+            vec3 delta0 = gtaoViewPosition(p0, gtaoDepth(p0, mip)) - position;
+            vec3 delta1 = gtaoViewPosition(p1, gtaoDepth(p1, mip)) - position;
+            float dist0 = length(delta0), dist1 = length(delta1);
+            vec3 horizon0 = delta0 / max(dist0, 1e-20f), horizon1 = delta1 / max(dist1, 1e-20f);
+            // Thin-occluder compensation: stretching the view-axis distance fades
+            // samples that sit far in front of or behind the centre sooner.
+            float thin = 1.0f + s.thinOccluderCompensation;
+            float falloff0 = length(vec3(delta0.x, delta0.y, delta0.z * thin));
+            float falloff1 = length(vec3(delta1.x, delta1.y, delta1.z * thin));
+            float weight0 = gtaoSaturate(falloff0 * falloffMul + falloffAdd);
+            float weight1 = gtaoSaturate(falloff1 * falloffMul + falloffAdd);
+            float shc0 = mix(lowCos0, dot(horizon0, viewVec), weight0);
+            float shc1 = mix(lowCos1, dot(horizon1, viewVec), weight1);
+            horizonCos0 = max(horizonCos0, shc0);
+            horizonCos1 = max(horizonCos1, shc1);
+        }
+        // Cosine-weighted integral of the visible arc between the two horizons.
+        projectedLength = mix(projectedLength, 1.0f, 0.05f);
+        float h0 = -acos(clamp(horizonCos1, -1.0f, 1.0f));
+        float h1 = acos(clamp(horizonCos0, -1.0f, 1.0f));
+        float arc0 = (cosNorm + 2.0f * h0 * sin(n) - cos(2.0f * h0 - n)) / 4.0f;
+        float arc1 = (cosNorm + 2.0f * h1 * sin(n) - cos(2.0f * h1 - n)) / 4.0f;
+        visibility += projectedLength * (arc0 + arc1);
+    }
+    visibility /= float(s.sliceCount);
+    visibility = pow(gtaoSaturate(visibility), s.finalValuePower);
+    return vec2(max(visibility, 0.03f), edges);
+}

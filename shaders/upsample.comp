@@ -1,0 +1,54 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Depth-aware upsample of half-res AO to full resolution. Of the four half-res
+// samples around a pixel, only those on the same surface (same face direction and
+// view depth within 2%) contribute, bilinearly weighted; if none does, the one
+// nearest in depth is taken. AO therefore never crosses a depth discontinuity.
+#include "shared/gtao.h"
+#include "shared/quad.h"
+
+layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
+layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
+layout(set = 0, binding = 1) uniform sampler2D aoHalf;       // rg: AO, edges
+layout(set = 0, binding = 2) uniform sampler2D depthHalf;    // view depth, MIP 0
+layout(set = 0, binding = 3) uniform sampler2D depthBuffer;  // full-res D32, reverse-Z
+layout(set = 0, binding = 4) uniform usampler2D surfaceTex;  // full res
+layout(set = 0, binding = 5, r32f) uniform writeonly image2D aoFull;
+
+float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
+uint gtaoSurface(ivec2 pixel) { return 0u; }
+#include "shared/gtao_kernel.h"
+
+void main() {
+    ivec2 q = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(uvec2(q), gtao.fullSize))) return;
+    float d = texelFetch(depthBuffer, q, 0).r;
+    if (d <= 0.0) {  // sky
+        imageStore(aoFull, q, vec4(1.0));
+        return;
+    }
+    float z = gtao.depthB / (d + gtao.depthA);
+    uint face = texelFetch(surfaceTex, q, 0).r & 7u;
+    ivec2 h = q / 2;
+    vec2 f = vec2(q - h * 2) * 0.5;  // 0 or 0.5: how far past the half-res sample
+    ivec2 last = ivec2(gtao.halfSize) - 1;
+    float sum = 0.0, weight = 0.0, nearestAo = 1.0, nearestDz = 1e30;
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+            ivec2 s = min(h + ivec2(i, j), last);
+            float zs = texelFetch(depthHalf, s, 0).r;
+            float ao = texelFetch(aoHalf, s, 0).r;
+            float dz = abs(zs - z);
+            bool sameFace = (texelFetch(surfaceTex, s * 2, 0).r & 7u) == face;
+            if (dz < nearestDz) {
+                nearestDz = dz;
+                nearestAo = ao;
+            }
+            float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+            if (sameFace && dz <= 0.02 * z) {
+                sum += w * ao;
+                weight += w;
+            }
+        }
+    imageStore(aoFull, q, vec4(weight > 1e-4 ? sum / weight : nearestAo));
+}
