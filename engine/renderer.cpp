@@ -252,6 +252,9 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const std::vector<float> depth = floats(vk::readImage(ctx_, gbuffer_.depth, ro, 4));
     const auto surface = vk::readImage(ctx_, gbuffer_.surface, ro, 2);
+    f.depthBuffer = depth;
+    f.surfaceIds.resize(n);
+    std::memcpy(f.surfaceIds.data(), surface.data(), 2 * n);
     f.depth.resize(n);
     f.normal.assign(3 * n, 0.0f);
     f.albedo.assign(3 * n, 0.0f);
@@ -275,6 +278,7 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     const std::vector<float> raw = floats(vk::readImage(ctx_, aoTargets_.raw, general, 8));
     const std::vector<float> spatial =
         floats(vk::readImage(ctx_, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 8));
+    f.aoRawHalf = raw;
     f.aoRaw = halfToFull(raw, h, 2, 0, f.width, f.height);
     f.aoSpatial = halfToFull(spatial, h, 2, 0, f.width, f.height);
     const std::vector<float> packed = halfToFull(raw, h, 2, 1, f.width, f.height);

@@ -39,6 +39,9 @@ struct FrameImages {
     std::vector<float> aoRaw;      // GTAO main pass output (half res)
     std::vector<float> aoSpatial;  // after the spatial denoiser (half res)
     std::vector<float> edges;      // smallest of the four edge weights (half res)
+    std::vector<float> depthBuffer;       // raw reverse-Z values, as the GPU stored them
+    std::vector<uint16_t> surfaceIds;     // raw G-buffer surface ids
+    std::vector<float> aoRawHalf;         // GTAO output at half res: visibility, packed edges
 };
 
 class Renderer {

@@ -19,11 +19,11 @@ layout(set = 0, binding = 7, rg32f) uniform writeonly image2D aoEdges;
 float gtaoDepth(ivec2 texel, int mip) {
     ivec2 t = texel >> mip;
     switch (mip) {
-        case 0: return texelFetch(depthMip0, min(t, textureSize(depthMip0, 0) - 1), 0).r;
-        case 1: return texelFetch(depthMip1, min(t, textureSize(depthMip1, 0) - 1), 0).r;
-        case 2: return texelFetch(depthMip2, min(t, textureSize(depthMip2, 0) - 1), 0).r;
-        case 3: return texelFetch(depthMip3, min(t, textureSize(depthMip3, 0) - 1), 0).r;
-        default: return texelFetch(depthMip4, min(t, textureSize(depthMip4, 0) - 1), 0).r;
+        case 0: return texelFetch(depthMip0, clamp(t, ivec2(0), textureSize(depthMip0, 0) - 1), 0).r;
+        case 1: return texelFetch(depthMip1, clamp(t, ivec2(0), textureSize(depthMip1, 0) - 1), 0).r;
+        case 2: return texelFetch(depthMip2, clamp(t, ivec2(0), textureSize(depthMip2, 0) - 1), 0).r;
+        case 3: return texelFetch(depthMip3, clamp(t, ivec2(0), textureSize(depthMip3, 0) - 1), 0).r;
+        default: return texelFetch(depthMip4, clamp(t, ivec2(0), textureSize(depthMip4, 0) - 1), 0).r;
     }
 }
 uint gtaoSurface(ivec2 pixel) { return texelFetch(surfaceTex, pixel, 0).r; }

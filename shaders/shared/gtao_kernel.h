@@ -1,7 +1,8 @@
 // The GTAO kernel, written once for GLSL and C++ (GLM): the GPU pass includes it
 // in its shader, the CPU twin in a class. The includer provides
 //   GtaoConstants gtao;                       the constants (shared/gtao.h)
-//   float gtaoDepth(ivec2 texel, int mip);    prefiltered view depth (kGtaoSky = none)
+//   float gtaoDepth(ivec2 texel, int mip);    prefiltered view depth (kGtaoSky = none),
+//                                             clamping texel >> mip to the MIP's size
 //   uint  gtaoSurface(ivec2 fullResPixel);    G-buffer surface id (shared/quad.h)
 // and, in C++, `using namespace glm` around it. Float literals carry an f so both
 // languages read them the same way.
@@ -44,9 +45,17 @@ vec2 gtaoNoise(uvec2 pixel, uint frameIndex) {
     return vec2(float(a >> 8u), float(b >> 8u)) * (1.0f / 16777216.0f);
 }
 
-vec3 gtaoViewPosition(ivec2 halfPixel, float depth) {
-    vec2 p = vec2(halfPixel) * 2.0f + 0.5f;
-    return vec3((p * gtao.ndcToViewMul_Add.xy + gtao.ndcToViewMul_Add.zw) * depth, -depth);
+vec3 gtaoViewPosition(vec2 halfPixel, float depth) {
+    vec2 p = halfPixel * 2.0f + 0.5f;
+    vec4 m = gtao.ndcToViewMul_Add;  // no swizzles: GLM has none by default
+    return vec3((p * vec2(m.x, m.y) + vec2(m.z, m.w)) * depth, -depth);
+}
+
+// The view position behind a sample: a coarse MIP's depth stands for its whole
+// block of half-res pixels, so it is placed at the block's centre.
+vec3 gtaoSamplePosition(ivec2 halfPixel, int mip) {
+    vec2 block = vec2((halfPixel >> mip) << mip) + 0.5f * float((1 << mip) - 1);
+    return gtaoViewPosition(block, gtaoDepth(halfPixel, mip));
 }
 
 // Depth MIP reduction: an average that down-weights samples far behind the
@@ -95,8 +104,8 @@ vec2 gtaoPixel(ivec2 pixel) {
     float edges = gtaoPackEdges(gtaoEdges(z, zl, zr, zt, zb));
     if (z >= kGtaoSky) return vec2(1.0f, edges);
 
-    vec3 normal = gtao.viewNormals[surfaceFace(gtaoSurface(pixel * 2))].xyz;
-    vec3 position = gtaoViewPosition(pixel, z);
+    vec3 normal = vec3(gtao.viewNormals[surfaceFace(gtaoSurface(pixel * 2))]);
+    vec3 position = gtaoViewPosition(vec2(pixel), z);
     vec3 viewVec = normalize(-position);
 
     float effectRadius = s.radius * s.radiusMultiplier;
@@ -107,6 +116,7 @@ vec2 gtaoPixel(ivec2 pixel) {
     // Screen-space radius in half-res pixels; tiny radii fade towards open.
     float screenRadius = effectRadius / (z * gtao.pixelViewSize);
     float visibility = gtaoSaturate((10.0f - screenRadius) / 100.0f) * 0.5f;
+    float visible = 0.0f, unoccluded = 0.0f;
     float minS = 1.3f / screenRadius;  // skip the centre pixel itself
     vec2 noise = gtaoNoise(uvec2(pixel), gtao.frameIndex);
 
@@ -133,10 +143,9 @@ vec2 gtaoPixel(ivec2 pixel) {
             int mip = int(clamp(floor(log2(length(offset)) - s.depthMipSamplingOffset + 0.5f), 0.0f,
                                 float(GROTTO_GTAO_DEPTH_MIPS - 1)));
             ivec2 rounded = ivec2(floor(offset + 0.5f));
-            ivec2 p0 = clamp(pixel + rounded, ivec2(0), last);
-            ivec2 p1 = clamp(pixel - rounded, ivec2(0), last);
-            vec3 delta0 = gtaoViewPosition(p0, gtaoDepth(p0, mip)) - position;
-            vec3 delta1 = gtaoViewPosition(p1, gtaoDepth(p1, mip)) - position;
+            ivec2 p0 = pixel + rounded, p1 = pixel - rounded;
+            vec3 delta0 = gtaoSamplePosition(p0, mip) - position;
+            vec3 delta1 = gtaoSamplePosition(p1, mip) - position;
             float dist0 = length(delta0), dist1 = length(delta1);
             vec3 horizon0 = delta0 / max(dist0, 1e-20f), horizon1 = delta1 / max(dist1, 1e-20f);
             // Thin-occluder compensation: stretching the view-axis distance fades
@@ -144,22 +153,34 @@ vec2 gtaoPixel(ivec2 pixel) {
             float thin = 1.0f + s.thinOccluderCompensation;
             float falloff0 = length(vec3(delta0.x, delta0.y, delta0.z * thin));
             float falloff1 = length(vec3(delta1.x, delta1.y, delta1.z * thin));
-            float weight0 = gtaoSaturate(falloff0 * falloffMul + falloffAdd);
-            float weight1 = gtaoSaturate(falloff1 * falloffMul + falloffAdd);
+            // Tangent bias: a sample on or below the centre's tangent plane cannot
+            // occlude. Snapping samples to pixel centres moves in-plane samples off
+            // the slice, which would otherwise read as occlusion on flat floors.
+            // Off-screen samples are unknown and count as open: clamping them to the
+            // border would lift slanted planes into false occluders.
+            float inside0 = all(equal(p0, clamp(p0, ivec2(0), last))) ? 1.0f : 0.0f;
+            float inside1 = all(equal(p1, clamp(p1, ivec2(0), last))) ? 1.0f : 0.0f;
+            float weight0 = gtaoSaturate(falloff0 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon0, normal) * 32.0f) * inside0;
+            float weight1 = gtaoSaturate(falloff1 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon1, normal) * 32.0f) * inside1;
             float shc0 = mix(lowCos0, dot(horizon0, viewVec), weight0);
             float shc1 = mix(lowCos1, dot(horizon1, viewVec), weight1);
             horizonCos0 = max(horizonCos0, shc0);
             horizonCos1 = max(horizonCos1, shc1);
         }
-        // Cosine-weighted integral of the visible arc between the two horizons.
+        // Cosine-weighted integral of the visible arc between the two horizons, and
+        // of the whole arc (horizons at n -/+ pi/2, where it is cos n + n sin n).
         projectedLength = mix(projectedLength, 1.0f, 0.05f);
         float h0 = -acos(clamp(horizonCos1, -1.0f, 1.0f));
         float h1 = acos(clamp(horizonCos0, -1.0f, 1.0f));
         float arc0 = (cosNorm + 2.0f * h0 * sin(n) - cos(2.0f * h0 - n)) / 4.0f;
         float arc1 = (cosNorm + 2.0f * h1 * sin(n) - cos(2.0f * h1 - n)) / 4.0f;
-        visibility += projectedLength * (arc0 + arc1);
+        visible += projectedLength * (arc0 + arc1);
+        unoccluded += projectedLength * (cosNorm + n * sin(n));
     }
-    visibility /= float(s.sliceCount);
-    visibility = pow(gtaoSaturate(visibility), s.finalValuePower);
+    // Normalised by the unoccluded integral of the same slices: an open plane is
+    // exactly 1 whatever the view angle and slice count. (The plain average over a
+    // few slices swings between 0.77 and 1.21 per slice 40 degrees off-axis.)
+    visibility = gtaoSaturate(visible / max(unoccluded, 1e-6f) + visibility);
+    visibility = pow(visibility, s.finalValuePower);
     return vec2(max(visibility, 0.03f), edges);
 }

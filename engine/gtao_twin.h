@@ -1,0 +1,31 @@
+#pragma once
+// The CPU twin of the GTAO main pass: the same kernel source (shaders/shared/
+// gtao_kernel.h), the same noise and the same depth MIP chain, run on a read-back
+// G-buffer. Tests use it to pin the GPU result.
+#include "shaders/shared/gtao.h"
+
+#include <glm/glm.hpp>
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace grotto {
+
+class GtaoTwin {
+public:
+    // depthBuffer: full-res reverse-Z values as stored; surface: full-res ids.
+    GtaoTwin(const gpu::GtaoConstants& constants, std::vector<float> depthBuffer, std::vector<uint16_t> surface);
+    ~GtaoTwin();
+
+    // Visibility and packed edges at a half-resolution pixel.
+    glm::vec2 pixel(glm::ivec2 halfPixel) const;
+    // The prefiltered view depth, as the GPU's MIP chain holds it.
+    float mipDepth(int level, glm::ivec2 texel) const;
+
+private:
+    struct Kernel;
+    Kernel* kernel_;
+};
+
+}  // namespace grotto

@@ -1,0 +1,23 @@
+#include "tests/scenes.h"
+
+#include "voxel/solid.h"
+
+namespace grotto::test {
+
+voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bool(int, int, int)>& solid,
+                            double voxelSize, glm::dvec3 offset) {
+    openvdb::initialize();
+    auto grid = openvdb::MaskGrid::create();
+    grid->setTransform(openvdb::math::Transform::createLinearTransform(voxelSize));
+    grid->transform().postTranslate(openvdb::Vec3d(offset.x, offset.y, offset.z));
+    auto acc = grid->getAccessor();
+    for (int x = lo.x; x <= hi.x; ++x)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int z = lo.z; z <= hi.z; ++z)
+                if (solid(x, y, z)) acc.setValueOn(openvdb::Coord(x, y, z));
+    voxel::WorldDesc d;
+    d.materials = voxel::defaultMaterials();
+    return voxel::makeWorld(grid, d);
+}
+
+}  // namespace grotto::test

@@ -1,0 +1,215 @@
+// GTAO: the GPU pass against its CPU twin, flat floors that must stay open,
+// corners that must darken symmetrically, tiny sizes, no AO leaking across
+// silhouettes in the upsample, and thin-occluder compensation.
+#include "engine/gtao_twin.h"
+#include "engine/renderer.h"
+#include "tests/gpu_fixture.h"
+#include "tests/scenes.h"
+#include "tests/test_util.h"
+
+#include <cmath>
+#include <map>
+
+namespace grotto {
+namespace {
+
+using test::GpuTest;
+
+struct Rendered {
+    FrameImages img;
+    Camera camera;
+    gpu::GtaoConstants constants;
+};
+
+class Gtao : public GpuTest {
+protected:
+    Rendered render(const voxel::World& world, const voxel::CameraDesc& cd, uint32_t w, uint32_t h,
+                    const AoOptions& ao) {
+        Rendered r{{}, makeCamera(cd, w, h), {}};
+        auto scene = uploadScene(ctx(), world.mesh(), world.desc());
+        Renderer renderer(ctx(), *scene, world.desc().lighting, ao, w, h);
+        renderer.render(r.camera);
+        r.img = renderer.readback(r.camera, true);
+        r.constants = gtaoConstants(r.camera, ao.gtao, 0);
+        return r;
+    }
+    static AoOptions options(const std::string& quality, double radius = 4.0) {
+        AoOptions o;
+        o.quality = quality;
+        o.gtao = gtaoPreset(quality, radius);
+        return o;
+    }
+    // World position seen at a full-res pixel.
+    static glm::dvec3 worldAt(const Rendered& r, uint32_t x, uint32_t y) {
+        const glm::dvec3 dir = r.camera.rayDirection(x + 0.5, y + 0.5);
+        const double z = r.img.depth[size_t(y) * r.img.width + x];
+        return r.camera.position + dir * (z / glm::dot(dir, -r.camera.basis[2]));
+    }
+};
+
+voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov = 60.0) {
+    voxel::CameraDesc c;
+    c.position = position;
+    c.target = target;
+    c.fovDegrees = fov;
+    return c;
+}
+
+TEST_F(Gtao, GpuMatchesCpuTwinForEveryPreset) {
+    const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
+    for (const char* quality : {"low", "medium", "high", "ultra"}) {
+        const Rendered r = render(world, world.camera("table"), 160, 90, options(quality));
+        const GtaoTwin twin(r.constants, r.img.depthBuffer, r.img.surfaceIds);
+        const glm::uvec2 half = r.constants.halfSize;
+        int compared = 0;
+        float worst = 0.0f;
+        for (uint32_t y = 0; y < half.y; y += 3)
+            for (uint32_t x = 0; x < half.x; x += 3) {
+                const glm::vec2 cpu = twin.pixel(glm::ivec2(x, y));
+                const float* gpu = &r.img.aoRawHalf[2 * (size_t(y) * half.x + x)];
+                worst = std::max(worst, std::abs(gpu[0] - cpu.x));
+                EXPECT_NEAR(gpu[0], cpu.x, 1e-3) << quality << " pixel " << x << "," << y;
+                EXPECT_EQ(gpu[1], cpu.y) << quality << " edges at " << x << "," << y;
+                ++compared;
+            }
+        EXPECT_GT(compared, 300);
+        RecordProperty(std::string("worst_") + quality, std::to_string(worst));
+    }
+}
+
+TEST_F(Gtao, FlatFloorStaysOpenFromStraightDownToGrazing) {
+    const voxel::World floor = test::makeVoxelWorld({-256, -1, -256}, {255, -1, 255}, [](int, int, int) { return true; });
+    for (double degrees : {0.0, 45.0, 80.0, 85.0, 89.0, 89.5}) {
+        const double a = glm::radians(degrees);
+        const glm::dvec3 eye(0.0, 1.5, 0.0);
+        const glm::dvec3 dir(std::sin(a), -std::cos(a), 0.0);
+        const Rendered r = render(floor, lookAt(eye, eye + dir, 70.0), 192, 108, options("high"));
+        int floorPixels = 0;
+        for (size_t i = 0; i < r.img.ao.size(); ++i) {
+            ASSERT_TRUE(std::isfinite(r.img.ao[i]) && std::isfinite(r.img.aoRaw[i])) << degrees;
+            if (!std::isfinite(r.img.depth[i])) continue;
+            ++floorPixels;
+            EXPECT_GE(r.img.ao[i], 0.97f) << degrees << " degrees, pixel " << i % 192 << "," << i / 192;
+            EXPECT_GE(r.img.aoRaw[i], 0.97f) << degrees << " degrees, raw";
+            if (r.img.ao[i] < 0.97f) break;  // one report per angle is enough
+        }
+        EXPECT_GT(floorPixels, 1000) << degrees;
+    }
+}
+
+TEST_F(Gtao, CornerDarkensMonotonicallyAndSymmetrically) {
+    // Floor y < 0 and a wall x < 0 meet along the z axis; the camera sits on the
+    // bisecting plane x = y, so floor and wall see the corner alike.
+    const voxel::World corner = test::makeVoxelWorld({-40, -40, -60}, {40, 40, 60}, [](int x, int y, int) {
+        return (y < 0 && x >= -40) || (x < 0 && y >= 0);
+    });
+    AoOptions ao = options("ultra", 4.0);
+    ao.gtao.denoisePasses = 2;
+    const Rendered r = render(corner, lookAt({14, 14, 24}, {0, 0, 0}, 60.0), 320, 240, ao);
+    // Average AO by distance from the corner line, floor and wall apart.
+    std::map<int, std::pair<double, int>> floorBins, wallBins;
+    for (uint32_t y = 0; y < r.img.height; ++y)
+        for (uint32_t x = 0; x < r.img.width; ++x) {
+            const size_t i = size_t(y) * r.img.width + x;
+            if (!std::isfinite(r.img.depth[i])) continue;
+            const glm::dvec3 w = worldAt(r, x, y);
+            if (std::abs(w.z) > 8) continue;  // away from the ends
+            const bool onFloor = r.img.normal[3 * i + 1] > 0.5f, onWall = r.img.normal[3 * i] > 0.5f;
+            const double d = onFloor ? w.x + 0.5 : w.y + 0.5;  // distance from the corner line
+            if (d < 0 || d > 6) continue;
+            auto& bin = (onFloor ? floorBins : wallBins)[int(d * 2)];
+            if (onFloor || onWall) bin.first += r.img.ao[i], ++bin.second;
+        }
+    double previous = 0.0;
+    for (int b = 0; b < 12; ++b) {
+        ASSERT_GT(floorBins[b].second, 20) << "bin " << b;
+        ASSERT_GT(wallBins[b].second, 20) << "bin " << b;
+        const double f = floorBins[b].first / floorBins[b].second, w = wallBins[b].first / wallBins[b].second;
+        EXPECT_NEAR(f, w, 0.03) << "floor and wall differ at " << b / 2.0 << " from the corner";
+        EXPECT_GE(f + 0.01, previous) << "AO must not darken away from the corner (bin " << b << ")";
+        previous = f;
+    }
+    EXPECT_LT(floorBins[0].first / floorBins[0].second, 0.8);   // dark in the corner
+    EXPECT_GT(floorBins[11].first / floorBins[11].second, 0.9); // open beyond the radius
+}
+
+TEST_F(Gtao, TinySizesAndOneSliceOneStepStayFinite) {
+    const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
+    AoOptions minimal = options("low");
+    minimal.gtao.sliceCount = 1;
+    minimal.gtao.stepsPerSlice = 1;
+    for (auto [w, h] : {std::pair{1u, 1u}, {2u, 2u}, {3u, 5u}, {333u, 177u}})
+        for (const AoOptions& ao : {minimal, options("high")}) {
+            const Rendered r = render(world, world.camera("table"), w, h, ao);
+            for (size_t i = 0; i < r.img.ao.size(); ++i) {
+                ASSERT_TRUE(r.img.ao[i] >= 0.0f && r.img.ao[i] <= 1.0f) << w << "x" << h;
+                ASSERT_TRUE(std::isfinite(r.img.color[4 * i])) << w << "x" << h;
+            }
+        }
+}
+
+TEST_F(Gtao, UpsampleLeaksNoAoAcrossASilhouette) {
+    // A thin bar floats in front of a dark floor/wall corner: the bar is open, the
+    // corner behind it dark, and the bar's pixels must not pick up the corner's AO.
+    const voxel::World scene = test::makeVoxelWorld({-40, -40, -40}, {40, 40, 40}, [](int x, int y, int z) {
+        const bool bar = x == 8 && y == 8 && z >= -30 && z <= 30;
+        return bar || (y < 0 && x >= -40) || (x < 0 && y >= 0);
+    });
+    // Radius 6 (8.7 with the multiplier): the bar, 11 units from the corner, stays open.
+    const Rendered r = render(scene, lookAt({20.5, 20.5, 0.5}, {0.5, 0.5, 0.5}, 50.0), 256, 192, options("high", 6.0));
+    int barPixels = 0, darkNeighbours = 0;
+    float barMin = 1.0f, behindMin = 1.0f;
+    for (uint32_t y = 1; y + 1 < r.img.height; ++y)
+        for (uint32_t x = 1; x + 1 < r.img.width; ++x) {
+            const size_t i = size_t(y) * r.img.width + x;
+            const bool bar = r.img.depth[i] < 20.0f;  // the bar is ~18 units away, the corner ~28
+            if (!bar) continue;
+            ++barPixels;
+            barMin = std::min(barMin, r.img.ao[i]);
+            for (int dy : {-1, 1}) {
+                const size_t j = i + dy * int(r.img.width);
+                if (r.img.depth[j] <= 20.0f) continue;
+                behindMin = std::min(behindMin, r.img.ao[j]);
+                if (r.img.ao[j] < 0.85f) ++darkNeighbours;
+            }
+        }
+    EXPECT_GT(barPixels, 100);
+    EXPECT_GT(darkNeighbours, 10) << "the test needs dark AO right behind the silhouette; darkest " << behindMin;
+    EXPECT_GE(barMin, 0.95f) << "AO leaked onto the bar";
+}
+
+TEST_F(Gtao, ThinOccluderCompensationOpensBehindPolesButKeepsWallContact) {
+    // Floor, a one-voxel pole at the origin and a thick wall at x >= 10.
+    const voxel::World scene = test::makeVoxelWorld({-30, -2, -30}, {30, 12, 30}, [](int x, int y, int z) {
+        return y < 0 || (x == 0 && z == 0 && y < 10) || (x >= 10 && x < 16 && y < 10);
+    });
+    auto meanNear = [&](const Rendered& r, auto inside) {
+        double sum = 0;
+        int n = 0;
+        for (uint32_t y = 0; y < r.img.height; ++y)
+            for (uint32_t x = 0; x < r.img.width; ++x) {
+                const size_t i = size_t(y) * r.img.width + x;
+                if (!std::isfinite(r.img.depth[i]) || r.img.normal[3 * i + 1] < 0.5f) continue;  // floor only
+                if (inside(worldAt(r, x, y))) sum += r.img.ao[i], ++n;
+            }
+        EXPECT_GT(n, 50);
+        return sum / std::max(n, 1);
+    };
+    const voxel::CameraDesc cam = lookAt({-12, 9, 14}, {2, 0, -2}, 60.0);
+    AoOptions plain = options("ultra", 3.0);
+    AoOptions thin = plain;
+    thin.gtao.thinOccluderCompensation = 0.4f;
+    const Rendered a = render(scene, cam, 256, 192, plain), b = render(scene, cam, 256, 192, thin);
+    auto behindPole = [](glm::dvec3 p) { return glm::length(glm::dvec2(p.x, p.z)) < 3.0 && glm::length(glm::dvec2(p.x, p.z)) > 0.8 && p.x > 0.2; };
+    auto wallContact = [](glm::dvec3 p) { return p.x > 7.5 && p.x < 9.5 && std::abs(p.z) < 6; };
+    const double poleA = meanNear(a, behindPole), poleB = meanNear(b, behindPole);
+    const double wallA = meanNear(a, wallContact), wallB = meanNear(b, wallContact);
+    EXPECT_GT(poleB, poleA + 0.01) << "compensation should open the floor behind the pole";
+    EXPECT_NEAR(wallB, wallA, 0.02) << "the wall's contact shadow should stay";
+    std::printf("thin occluder: pole %.3f -> %.3f, wall %.3f -> %.3f\n", poleA, poleB, wallA, wallB);
+    RecordProperty("pole", std::to_string(poleA) + " -> " + std::to_string(poleB));
+    RecordProperty("wall", std::to_string(wallA) + " -> " + std::to_string(wallB));
+}
+
+}  // namespace
+}  // namespace grotto
