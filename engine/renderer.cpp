@@ -62,6 +62,8 @@ gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& 
     const glm::dmat4 p = camera.projection();
     c.depthA = float(p[2][2]);
     c.depthB = float(p[3][2]);
+    const DepthMipLayout layout = depthMipLayout({c.halfSize.x, c.halfSize.y});
+    for (int k = 0; k < GROTTO_GTAO_DEPTH_MIPS; ++k) c.depthMips[k] = layout.mips[k];
     return c;
 }
 
@@ -83,11 +85,8 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
     const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | read;
     if (ao_.enabled) {
         aoTargets_.half = halfOf(extent);
-        for (uint32_t k = 0; k < aoTargets_.depthMips.size(); ++k) {
-            const uint32_t round = (1u << k) - 1;
-            const VkExtent2D mip{(aoTargets_.half.width + round) >> k, (aoTargets_.half.height + round) >> k};
-            aoTargets_.depthMips[k] = vk::createImage(ctx, mip, VK_FORMAT_R32_SFLOAT, storage);
-        }
+        aoTargets_.depthAtlas =
+            vk::createImage(ctx, depthMipLayout(aoTargets_.half).atlas, VK_FORMAT_R32_SFLOAT, storage);
         aoTargets_.raw = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32_SFLOAT, storage);
         for (vk::Image& s : aoTargets_.spatial) s = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32_SFLOAT, storage);
         aoTargets_.full = vk::createImage(ctx, extent, VK_FORMAT_R32_SFLOAT, storage);
@@ -107,7 +106,7 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
                                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
         };
-        for (const vk::Image& m : aoTargets_.depthMips) general(m);
+        general(aoTargets_.depthAtlas);
         general(aoTargets_.raw);
         for (const vk::Image& s : aoTargets_.spatial) general(s);
         general(aoTargets_.full);
@@ -135,7 +134,7 @@ Renderer::~Renderer() {
     for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
                          &aoTargets_.spatial[1], &aoTargets_.full})
         vk::destroy(ctx_, *i);
-    for (vk::Image& m : aoTargets_.depthMips) vk::destroy(ctx_, m);
+    vk::destroy(ctx_, aoTargets_.depthAtlas);
     vk::destroy(ctx_, frame_);
     vk::destroy(ctx_, gtaoConstants_);
 }
@@ -145,7 +144,7 @@ size_t Renderer::targetBytes() const {
     for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
                                &aoTargets_.spatial[1], &aoTargets_.full})
         n += i->memory.size;
-    for (const vk::Image& m : aoTargets_.depthMips) n += m.memory.size;
+    n += aoTargets_.depthAtlas.memory.size;
     return n;
 }
 

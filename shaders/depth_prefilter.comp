@@ -10,8 +10,8 @@
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
 layout(set = 0, binding = 1) uniform sampler2D depthBuffer;   // full-res D32, reverse-Z
-layout(set = 0, binding = 2) uniform sampler2D sourceMip;     // MIP level - 1 (level >= 1)
-layout(set = 0, binding = 3, r32f) uniform writeonly image2D targetMip;
+layout(set = 0, binding = 2) uniform sampler2D atlasIn;       // the atlas, MIP level - 1 read
+layout(set = 0, binding = 3, r32f) uniform writeonly image2D atlasOut;  // MIP level written
 layout(push_constant) uniform Push { int level; };
 
 // Only gtaoMipFilter is used here; the kernel's inputs are not needed.
@@ -21,18 +21,19 @@ uint gtaoSurface(ivec2 pixel) { return 0u; }
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 size = imageSize(targetMip);
-    if (any(greaterThanEqual(p, size))) return;
+    ivec4 target = gtao.depthMips[level];
+    if (any(greaterThanEqual(p, target.zw))) return;
     float depth;
     if (level == 0) {
         float d = texelFetch(depthBuffer, p * 2, 0).r;
         depth = d > 0.0 ? min(gtao.depthB / (d + gtao.depthA), kGtaoSky) : kGtaoSky;
     } else {
-        ivec2 last = textureSize(sourceMip, 0) - 1;
-        depth = gtaoMipFilter(texelFetch(sourceMip, min(p * 2, last), 0).r,
-                              texelFetch(sourceMip, min(p * 2 + ivec2(1, 0), last), 0).r,
-                              texelFetch(sourceMip, min(p * 2 + ivec2(0, 1), last), 0).r,
-                              texelFetch(sourceMip, min(p * 2 + ivec2(1, 1), last), 0).r);
+        ivec4 source = gtao.depthMips[level - 1];
+        ivec2 last = source.zw - 1;
+        depth = gtaoMipFilter(texelFetch(atlasIn, min(p * 2, last) + source.xy, 0).r,
+                              texelFetch(atlasIn, min(p * 2 + ivec2(1, 0), last) + source.xy, 0).r,
+                              texelFetch(atlasIn, min(p * 2 + ivec2(0, 1), last) + source.xy, 0).r,
+                              texelFetch(atlasIn, min(p * 2 + ivec2(1, 1), last) + source.xy, 0).r);
     }
-    imageStore(targetMip, p, vec4(depth));
+    imageStore(atlasOut, p + target.xy, vec4(depth));
 }

@@ -6,25 +6,16 @@
 
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
-layout(set = 0, binding = 1) uniform sampler2D depthMip0;
-layout(set = 0, binding = 2) uniform sampler2D depthMip1;
-layout(set = 0, binding = 3) uniform sampler2D depthMip2;
-layout(set = 0, binding = 4) uniform sampler2D depthMip3;
-layout(set = 0, binding = 5) uniform sampler2D depthMip4;
-layout(set = 0, binding = 6) uniform usampler2D surfaceTex;  // full resolution
-layout(set = 0, binding = 7, rg32f) uniform writeonly image2D aoEdges;
+layout(set = 0, binding = 1) uniform sampler2D depthAtlas;  // all MIPs side by side
+layout(set = 0, binding = 2) uniform usampler2D surfaceTex;  // full resolution
+layout(set = 0, binding = 3, rg32f) uniform writeonly image2D aoEdges;
 
 // Point sampling with explicit, clamped texel coordinates, so the CPU twin can
-// reproduce every fetch exactly whatever the image size.
+// reproduce every fetch exactly whatever the image size. One atlas image keeps
+// this a single fetch (five images behind a switch cost lavapipe half the pass).
 float gtaoDepth(ivec2 texel, int mip) {
-    ivec2 t = texel >> mip;
-    switch (mip) {
-        case 0: return texelFetch(depthMip0, clamp(t, ivec2(0), textureSize(depthMip0, 0) - 1), 0).r;
-        case 1: return texelFetch(depthMip1, clamp(t, ivec2(0), textureSize(depthMip1, 0) - 1), 0).r;
-        case 2: return texelFetch(depthMip2, clamp(t, ivec2(0), textureSize(depthMip2, 0) - 1), 0).r;
-        case 3: return texelFetch(depthMip3, clamp(t, ivec2(0), textureSize(depthMip3, 0) - 1), 0).r;
-        default: return texelFetch(depthMip4, clamp(t, ivec2(0), textureSize(depthMip4, 0) - 1), 0).r;
-    }
+    ivec4 m = gtao.depthMips[mip];
+    return texelFetch(depthAtlas, clamp(texel >> mip, ivec2(0), m.zw - 1) + m.xy, 0).r;
 }
 uint gtaoSurface(ivec2 pixel) { return texelFetch(surfaceTex, pixel, 0).r; }
 

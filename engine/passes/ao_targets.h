@@ -10,7 +10,7 @@ namespace grotto {
 
 struct AoTargets {
     VkExtent2D half{};                                         // ceil(full / 2)
-    std::array<vk::Image, GROTTO_GTAO_DEPTH_MIPS> depthMips;   // R32F view depth, MIP k at ceil(half / 2^k)
+    vk::Image depthAtlas;                                      // R32F view depth, every MIP (see depthMipLayout)
     vk::Image raw;                                             // RG32F: visibility, packed edges
     std::array<vk::Image, 2> spatial;                          // RG32F: denoiser ping-pong
     vk::Image full;                                            // R32F: upsampled visibility
@@ -18,5 +18,13 @@ struct AoTargets {
     // The denoiser's output after `passes` passes (the raw AO when there are none).
     const vk::Image& denoised(uint32_t passes) const { return passes == 0 ? raw : spatial[(passes - 1) % 2]; }
 };
+
+// Where each depth MIP sits in the atlas (xy offset, zw size): MIP 0 at the origin,
+// MIPs 1-4 stacked in a column to its right; MIP k is ceil(half / 2^k).
+struct DepthMipLayout {
+    std::array<glm::ivec4, GROTTO_GTAO_DEPTH_MIPS> mips;
+    VkExtent2D atlas;
+};
+DepthMipLayout depthMipLayout(VkExtent2D half);
 
 }  // namespace grotto

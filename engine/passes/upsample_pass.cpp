@@ -15,7 +15,7 @@ void UpsamplePass::record(VkCommandBuffer cmd, const vk::Image& depth, const vk:
     pass_.dispatch(cmd,
                    {vk::uniformBuffer(constants.buffer),
                     vk::sampledImage(ctx_.pointSampler, ao.denoised(denoisePasses).view, general),
-                    vk::sampledImage(ctx_.pointSampler, ao.depthMips[0].view, general),
+                    vk::sampledImage(ctx_.pointSampler, ao.depthAtlas.view, general),
                     vk::sampledImage(ctx_.pointSampler, depth.view, ro),
                     vk::sampledImage(ctx_.pointSampler, surface.view, ro), vk::storageImage(ao.full.view)},
                    ao.full.extent, GROTTO_GTAO_GROUP);

@@ -36,8 +36,9 @@ struct GtaoConstants {
     uint frameIndex;         // advances the noise; the temporal pass will step it
     float pixelViewSize;     // view-space size of one half-res pixel at depth 1
     float depthA, depthB;    // view depth = depthB / (depth buffer value + depthA)
+    ivec4 depthMips[GROTTO_GTAO_DEPTH_MIPS];  // per MIP: xy offset in the depth atlas, zw size
 };
-GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 48 + 16 + 96 + 16 + 16);
+GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 48 + 16 + 96 + 16 + 16 + 16 * GROTTO_GTAO_DEPTH_MIPS);
 
 GROTTO_NAMESPACE_END
 #endif
