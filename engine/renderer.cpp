@@ -87,8 +87,9 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
         aoTargets_.half = halfOf(extent);
         aoTargets_.depthAtlas =
             vk::createImage(ctx, depthMipLayout(aoTargets_.half).atlas, VK_FORMAT_R32_SFLOAT, storage);
-        aoTargets_.raw = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32_SFLOAT, storage);
-        for (vk::Image& s : aoTargets_.spatial) s = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32_SFLOAT, storage);
+        aoTargets_.raw = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
+        for (vk::Image& s : aoTargets_.spatial)
+            s = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
         aoTargets_.full = vk::createImage(ctx, extent, VK_FORMAT_R32_SFLOAT, storage);
         gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
@@ -274,13 +275,14 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     const VkExtent2D h = aoTargets_.half;
     const auto general = VK_IMAGE_LAYOUT_GENERAL;
     f.ao = floats(vk::readImage(ctx_, aoTargets_.full, general, 4));
-    const std::vector<float> raw = floats(vk::readImage(ctx_, aoTargets_.raw, general, 8));
+    const std::vector<float> raw = floats(vk::readImage(ctx_, aoTargets_.raw, general, 16));
     const std::vector<float> spatial =
-        floats(vk::readImage(ctx_, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 8));
-    f.aoRawHalf = raw;
-    f.aoRaw = halfToFull(raw, h, 2, 0, f.width, f.height);
-    f.aoSpatial = halfToFull(spatial, h, 2, 0, f.width, f.height);
-    const std::vector<float> packed = halfToFull(raw, h, 2, 1, f.width, f.height);
+        floats(vk::readImage(ctx_, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 16));
+    f.aoRawHalf.resize(raw.size() / 2);
+    for (size_t i = 0; i < raw.size() / 4; ++i) f.aoRawHalf[2 * i] = raw[4 * i], f.aoRawHalf[2 * i + 1] = raw[4 * i + 1];
+    f.aoRaw = halfToFull(raw, h, 4, 0, f.width, f.height);
+    f.aoSpatial = halfToFull(spatial, h, 4, 0, f.width, f.height);
+    const std::vector<float> packed = halfToFull(raw, h, 4, 1, f.width, f.height);
     f.edges.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const uint32_t v = uint32_t(packed[i] * 255.0f + 0.5f);

@@ -8,8 +8,8 @@
 
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
-layout(set = 0, binding = 1) uniform sampler2D source;  // rg: AO, packed edges
-layout(set = 0, binding = 2, rg32f) uniform writeonly image2D target;
+layout(set = 0, binding = 1) uniform sampler2D source;  // AO, packed edges, depth, face + 1
+layout(set = 0, binding = 2, rgba32f) uniform writeonly image2D target;
 layout(push_constant) uniform Push { uint finalPass; };
 
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
@@ -38,5 +38,6 @@ void main() {
     float beta = finalPass != 0u ? gtao.settings.denoiseBlurBeta : gtao.settings.denoiseBlurBeta / 5.0;
     float sum = beta * c.x + wl * l.x + wr * r.x + wt * t.x + wb * b.x + wtl * tl.x + wtr * tr.x + wbl * bl.x + wbr * br.x;
     float weight = beta + wl + wr + wt + wb + wtl + wtr + wbl + wbr;
-    imageStore(target, p, vec4(sum / max(weight, 1e-6), c.y, 0.0, 0.0));
+    vec2 depthFace = texelFetch(source, p, 0).ba;  // carried through for the upsample
+    imageStore(target, p, vec4(sum / max(weight, 1e-6), c.y, depthFace));
 }

@@ -8,7 +8,7 @@ layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
 layout(set = 0, binding = 1) uniform sampler2D depthAtlas;  // all MIPs side by side
 layout(set = 0, binding = 2) uniform usampler2D surfaceTex;  // full resolution
-layout(set = 0, binding = 3, rg32f) uniform writeonly image2D aoEdges;
+layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D aoEdges;  // AO, edges, depth, face + 1
 
 // Point sampling with explicit, clamped texel coordinates, so the CPU twin can
 // reproduce every fetch exactly whatever the image size. One atlas image keeps
@@ -24,5 +24,6 @@ uint gtaoSurface(ivec2 pixel) { return texelFetch(surfaceTex, pixel, 0).r; }
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(uvec2(p), gtao.halfSize))) return;
-    imageStore(aoEdges, p, vec4(gtaoPixel(p), 0.0, 0.0));
+    // Depth and face ride along so the upsample needs one fetch per sample.
+    imageStore(aoEdges, p, vec4(gtaoPixel(p), gtaoDepth(p, 0), float(gtaoSurface(p * 2) & 7u)));
 }

@@ -9,11 +9,10 @@
 
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
-layout(set = 0, binding = 1) uniform sampler2D aoHalf;       // rg: AO, edges
-layout(set = 0, binding = 2) uniform sampler2D depthHalf;    // view depth, MIP 0
-layout(set = 0, binding = 3) uniform sampler2D depthBuffer;  // full-res D32, reverse-Z
-layout(set = 0, binding = 4) uniform usampler2D surfaceTex;  // full res
-layout(set = 0, binding = 5, r32f) uniform writeonly image2D aoFull;
+layout(set = 0, binding = 1) uniform sampler2D aoHalf;       // AO, edges, view depth, face + 1
+layout(set = 0, binding = 2) uniform sampler2D depthBuffer;  // full-res D32, reverse-Z
+layout(set = 0, binding = 3) uniform usampler2D surfaceTex;  // full res
+layout(set = 0, binding = 4, r32f) uniform writeonly image2D aoFull;
 
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
@@ -36,10 +35,10 @@ void main() {
     for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i) {
             ivec2 s = min(h + ivec2(i, j), last);
-            float zs = texelFetch(depthHalf, s, 0).r;
-            float ao = texelFetch(aoHalf, s, 0).r;
-            float dz = abs(zs - z);
-            bool sameFace = (texelFetch(surfaceTex, s * 2, 0).r & 7u) == face;
+            vec4 sample4 = texelFetch(aoHalf, s, 0);
+            float ao = sample4.x;
+            float dz = abs(sample4.z - z);
+            bool sameFace = uint(sample4.w) == face;
             if (dz < nearestDz) {
                 nearestDz = dz;
                 nearestAo = ao;

@@ -11,8 +11,8 @@ namespace grotto {
 struct AoTargets {
     VkExtent2D half{};                                         // ceil(full / 2)
     vk::Image depthAtlas;                                      // R32F view depth, every MIP (see depthMipLayout)
-    vk::Image raw;                                             // RG32F: visibility, packed edges
-    std::array<vk::Image, 2> spatial;                          // RG32F: denoiser ping-pong
+    vk::Image raw;                                             // RGBA32F: visibility, packed edges, depth, face + 1
+    std::array<vk::Image, 2> spatial;                          // RGBA32F: denoiser ping-pong, same layout
     vk::Image full;                                            // R32F: upsampled visibility
 
     // The denoiser's output after `passes` passes (the raw AO when there are none).

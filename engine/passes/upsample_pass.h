@@ -1,6 +1,6 @@
 #pragma once
-// Depth-aware upsample to full resolution. Reads: the denoised half-res AO, the
-// half-res depth (MIP 0), full-res depth and surface ids, GTAO constants.
+// Depth-aware upsample to full resolution. Reads: the denoised half-res AO (with
+// its depth and face), full-res depth and surface ids, GTAO constants.
 // Writes: AoTargets::full. No history.
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"
