@@ -119,6 +119,7 @@ vec2 gtaoPixel(ivec2 pixel) {
     float visible = 0.0f, unoccluded = 0.0f;
     float minS = 1.3f / screenRadius;  // skip the centre pixel itself
     vec2 noise = gtaoNoise(uvec2(pixel), gtao.frameIndex);
+    float thinStretch = (1.0f + s.thinOccluderCompensation) * (1.0f + s.thinOccluderCompensation) - 1.0f;
 
     for (uint slice = 0u; slice < s.sliceCount; ++slice) {
         float phi = (float(slice) + noise.x) / float(s.sliceCount) * kGtaoPi;
@@ -146,13 +147,13 @@ vec2 gtaoPixel(ivec2 pixel) {
             ivec2 p0 = pixel + rounded, p1 = pixel - rounded;
             vec3 delta0 = gtaoSamplePosition(p0, mip) - position;
             vec3 delta1 = gtaoSamplePosition(p1, mip) - position;
-            float dist0 = length(delta0), dist1 = length(delta1);
-            vec3 horizon0 = delta0 / max(dist0, 1e-20f), horizon1 = delta1 / max(dist1, 1e-20f);
+            float squared0 = dot(delta0, delta0), squared1 = dot(delta1, delta1);
+            float inverse0 = inversesqrt(max(squared0, 1e-30f)), inverse1 = inversesqrt(max(squared1, 1e-30f));
+            vec3 horizon0 = delta0 * inverse0, horizon1 = delta1 * inverse1;
             // Thin-occluder compensation: stretching the view-axis distance fades
             // samples that sit far in front of or behind the centre sooner.
-            float thin = 1.0f + s.thinOccluderCompensation;
-            float falloff0 = length(vec3(delta0.x, delta0.y, delta0.z * thin));
-            float falloff1 = length(vec3(delta1.x, delta1.y, delta1.z * thin));
+            float falloff0 = sqrt(squared0 + delta0.z * delta0.z * thinStretch);
+            float falloff1 = sqrt(squared1 + delta1.z * delta1.z * thinStretch);
             // Tangent bias: a sample on or below the centre's tangent plane cannot
             // occlude. Snapping samples to pixel centres moves in-plane samples off
             // the slice, which would otherwise read as occlusion on flat floors.
