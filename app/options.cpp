@@ -22,6 +22,7 @@ void addAoFlags(CLI::App* cmd, AoFlags& f) {
     cmd->add_option("--radius", f.radius, "AO radius in world units (> 0)");
     cmd->add_option("--thin-occluder", f.thinOccluder, "Thin-occluder compensation, 0 to 0.7");
     cmd->add_option("--denoise", f.denoise, "Spatial denoise passes, 0 to 4");
+    cmd->add_flag("--ao-full-res", f.fullResolution, "Run the AO chain at full instead of half resolution");
 }
 
 AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
@@ -34,6 +35,7 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
         desc.steps.reset();
     }
     AoOptions o = aoOptionsFor(desc, world.voxelSize(), world.desc().source.string());
+    o.fullResolution = f.fullResolution;
     if (f.radius) o.gtao.radius = float(*f.radius);
     if (f.thinOccluder) o.gtao.thinOccluderCompensation = float(*f.thinOccluder);
     if (f.denoise) {

@@ -24,6 +24,7 @@ struct AoFlags {
     std::string method, quality;
     std::optional<double> radius, thinOccluder;
     std::optional<int> denoise;
+    bool fullResolution = false;
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);
 

@@ -11,6 +11,7 @@ namespace grotto {
 struct AoOptions {
     bool enabled = true;           // --ao gtao | off
     std::string quality = "high";  // low, medium, high, ultra or custom
+    bool fullResolution = false;   // run the chain at full resolution (for comparison)
     gpu::GtaoSettings gtao{};
 };
 

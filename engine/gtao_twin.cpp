@@ -36,7 +36,7 @@ struct Kernel {
                 for (int x = 0; x < mipSize[k].x; ++x) {
                     float v;
                     if (k == 0) {
-                        const float d = depthBuffer[size_t(2 * y) * gtao.fullSize.x + 2 * x];
+                        const float d = depthBuffer[size_t(gtao.scale * y) * gtao.fullSize.x + gtao.scale * x];
                         v = d > 0.0f ? std::min(gtao.depthB / (d + gtao.depthA), kGtaoSky) : kGtaoSky;
                     } else {
                         const ivec2 last = mipSize[k - 1] - 1;

@@ -43,7 +43,8 @@ VkExtent2D halfOf(VkExtent2D e) { return {(e.width + 1) / 2, (e.height + 1) / 2}
 
 }  // namespace
 
-gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex) {
+gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex,
+                                 uint32_t scale) {
     gpu::GtaoConstants c{};
     c.settings = settings;
     const double tanY = std::tan(camera.fovY * 0.5), tanX = tanY * camera.aspect();
@@ -56,9 +57,10 @@ gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& 
         c.viewNormals[f] = glm::vec4(glm::vec3(glm::transpose(camera.basis) * n), 0.0f);
     }
     c.fullSize = {camera.width, camera.height};
-    c.halfSize = {(camera.width + 1) / 2, (camera.height + 1) / 2};
+    c.scale = scale;
+    c.halfSize = {(camera.width + scale - 1) / scale, (camera.height + scale - 1) / scale};
     c.frameIndex = frameIndex;
-    c.pixelViewSize = float(2.0 * 2.0 * tanX / camera.width);  // a half-res pixel spans two
+    c.pixelViewSize = float(scale * 2.0 * tanX / camera.width);  // an AO pixel spans `scale`
     const glm::dmat4 p = camera.projection();
     c.depthA = float(p[2][2]);
     c.depthB = float(p[3][2]);
@@ -84,7 +86,7 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
     // composite reads a 1x1 image it ignores.
     const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | read;
     if (ao_.enabled) {
-        aoTargets_.half = halfOf(extent);
+        aoTargets_.half = ao_.fullResolution ? extent : halfOf(extent);
         aoTargets_.depthAtlas =
             vk::createImage(ctx, depthMipLayout(aoTargets_.half).atlas, VK_FORMAT_R32_SFLOAT, storage);
         aoTargets_.raw = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
@@ -171,7 +173,7 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
     std::memcpy(frame_.mapped(), &uniforms, sizeof uniforms);
     if (ao_.enabled) {
-        const gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex);
+        const gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, ao_.fullResolution ? 1 : 2);
         std::memcpy(gtaoConstants_.mapped(), &constants, sizeof constants);
     }
 
@@ -231,11 +233,11 @@ std::vector<float> floats(const std::vector<uint8_t>& bytes) {
 
 // Channel `c` of a `channels`-wide half-res image, stored at full size by nearest.
 std::vector<float> halfToFull(const std::vector<float>& half, VkExtent2D h, uint32_t channels, uint32_t c,
-                              uint32_t width, uint32_t height) {
+                              uint32_t scale, uint32_t width, uint32_t height) {
     std::vector<float> out(size_t(width) * height);
     for (uint32_t y = 0; y < height; ++y)
         for (uint32_t x = 0; x < width; ++x)
-            out[size_t(y) * width + x] = half[(size_t(y / 2) * h.width + x / 2) * channels + c];
+            out[size_t(y) * width + x] = half[(size_t(y / scale) * h.width + x / scale) * channels + c];
     return out;
 }
 
@@ -280,9 +282,10 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
         floats(vk::readImage(ctx_, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 16));
     f.aoRawHalf.resize(raw.size() / 2);
     for (size_t i = 0; i < raw.size() / 4; ++i) f.aoRawHalf[2 * i] = raw[4 * i], f.aoRawHalf[2 * i + 1] = raw[4 * i + 1];
-    f.aoRaw = halfToFull(raw, h, 4, 0, f.width, f.height);
-    f.aoSpatial = halfToFull(spatial, h, 4, 0, f.width, f.height);
-    const std::vector<float> packed = halfToFull(raw, h, 4, 1, f.width, f.height);
+    const uint32_t scale = ao_.fullResolution ? 1 : 2;
+    f.aoRaw = halfToFull(raw, h, 4, 0, scale, f.width, f.height);
+    f.aoSpatial = halfToFull(spatial, h, 4, 0, scale, f.width, f.height);
+    const std::vector<float> packed = halfToFull(raw, h, 4, 1, scale, f.width, f.height);
     f.edges.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const uint32_t v = uint32_t(packed[i] * 255.0f + 0.5f);

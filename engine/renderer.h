@@ -80,6 +80,7 @@ private:
 };
 
 // The GTAO constants for a camera (exposed for the CPU twin and its tests).
-gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex);
+gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex,
+                                 uint32_t scale = 2);
 
 }  // namespace grotto

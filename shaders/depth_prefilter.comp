@@ -25,7 +25,7 @@ void main() {
     if (any(greaterThanEqual(p, target.zw))) return;
     float depth;
     if (level == 0) {
-        float d = texelFetch(depthBuffer, p * 2, 0).r;
+        float d = texelFetch(depthBuffer, p * int(gtao.scale), 0).r;
         depth = d > 0.0 ? min(gtao.depthB / (d + gtao.depthA), kGtaoSky) : kGtaoSky;
     } else {
         ivec4 source = gtao.depthMips[level - 1];

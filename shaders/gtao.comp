@@ -25,5 +25,5 @@ void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(uvec2(p), gtao.halfSize))) return;
     // Depth and face ride along so the upsample needs one fetch per sample.
-    imageStore(aoEdges, p, vec4(gtaoPixel(p), gtaoDepth(p, 0), float(gtaoSurface(p * 2) & 7u)));
+    imageStore(aoEdges, p, vec4(gtaoPixel(p), gtaoDepth(p, 0), float(gtaoSurface(p * int(gtao.scale)) & 7u)));
 }

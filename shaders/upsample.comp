@@ -28,8 +28,9 @@ void main() {
     }
     float z = gtao.depthB / (d + gtao.depthA);
     uint face = texelFetch(surfaceTex, q, 0).r & 7u;
-    ivec2 h = q / 2;
-    vec2 f = vec2(q - h * 2) * 0.5;  // 0 or 0.5: how far past the half-res sample
+    int scale = int(gtao.scale);
+    ivec2 h = q / scale;
+    vec2 f = vec2(q - h * scale) / float(scale);  // how far past the AO sample: 0 or 0.5
     ivec2 last = ivec2(gtao.halfSize) - 1;
     float sum = 0.0, weight = 0.0, nearestAo = 1.0, nearestDz = 1e30;
     for (int j = 0; j < 2; ++j)

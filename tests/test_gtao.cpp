@@ -30,7 +30,7 @@ protected:
         Renderer renderer(ctx(), *scene, world.desc().lighting, ao, w, h);
         renderer.render(r.camera);
         r.img = renderer.readback(r.camera, true);
-        r.constants = gtaoConstants(r.camera, ao.gtao, 0);
+        r.constants = gtaoConstants(r.camera, ao.gtao, 0, ao.fullResolution ? 1 : 2);
         return r;
     }
     static AoOptions options(const std::string& quality, double radius = 4.0) {
@@ -57,8 +57,10 @@ voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov = 60
 
 TEST_F(Gtao, GpuMatchesCpuTwinForEveryPreset) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
-    for (const char* quality : {"low", "medium", "high", "ultra"}) {
-        const Rendered r = render(world, world.camera("table"), 160, 90, options(quality));
+    for (const char* quality : {"low", "medium", "high", "ultra", "full-res high"}) {
+        AoOptions ao = options(quality[0] == 'f' ? "high" : quality);
+        ao.fullResolution = quality[0] == 'f';
+        const Rendered r = render(world, world.camera("table"), 160, 90, ao);
         const GtaoTwin twin(r.constants, r.img.depthBuffer, r.img.surfaceIds);
         const glm::uvec2 half = r.constants.halfSize;
         int compared = 0;

@@ -32,13 +32,15 @@ struct GtaoConstants {
     vec4 ndcToViewMul_Add;   // view xy = (fullResPixel * mul + add) * depth
     vec4 viewNormals[6];     // the six face normals in view space (+X -X +Y -Y +Z -Z)
     uvec2 fullSize;
-    uvec2 halfSize;          // ceil(full / 2)
+    uvec2 halfSize;          // AO resolution: ceil(full / 2), or full size when scale is 1
     uint frameIndex;         // advances the noise; the temporal pass will step it
     float pixelViewSize;     // view-space size of one half-res pixel at depth 1
     float depthA, depthB;    // view depth = depthB / (depth buffer value + depthA)
     ivec4 depthMips[GROTTO_GTAO_DEPTH_MIPS];  // per MIP: xy offset in the depth atlas, zw size
+    uint scale;              // full-res pixels per AO pixel: 2 (half res, the default) or 1
+    uint pad0, pad1, pad2;
 };
-GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 48 + 16 + 96 + 16 + 16 + 16 * GROTTO_GTAO_DEPTH_MIPS);
+GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 48 + 16 + 96 + 16 + 16 + 16 * GROTTO_GTAO_DEPTH_MIPS + 16);
 
 GROTTO_NAMESPACE_END
 #endif

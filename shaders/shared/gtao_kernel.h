@@ -8,7 +8,8 @@
 // languages read them the same way.
 //
 // Half-resolution pixel (x, y) stands for full-resolution pixel (2x, 2y): its depth,
-// normal and position are that pixel's exactly (see depth_prefilter.comp).
+// normal and position are that pixel's exactly (see depth_prefilter.comp). With
+// gtao.scale = 1 (the full-resolution comparison) the AO pixel is the full one.
 
 #define kGtaoSky 1.0e15f
 #define kGtaoPi 3.14159265358979f
@@ -46,7 +47,7 @@ vec2 gtaoNoise(uvec2 pixel, uint frameIndex) {
 }
 
 vec3 gtaoViewPosition(vec2 halfPixel, float depth) {
-    vec2 p = halfPixel * 2.0f + 0.5f;
+    vec2 p = halfPixel * float(gtao.scale) + 0.5f;
     vec4 m = gtao.ndcToViewMul_Add;  // no swizzles: GLM has none by default
     return vec3((p * vec2(m.x, m.y) + vec2(m.z, m.w)) * depth, -depth);
 }
@@ -104,7 +105,7 @@ vec2 gtaoPixel(ivec2 pixel) {
     float edges = gtaoPackEdges(gtaoEdges(z, zl, zr, zt, zb));
     if (z >= kGtaoSky) return vec2(1.0f, edges);
 
-    vec3 normal = vec3(gtao.viewNormals[surfaceFace(gtaoSurface(pixel * 2))]);
+    vec3 normal = vec3(gtao.viewNormals[surfaceFace(gtaoSurface(pixel * int(gtao.scale)))]);
     vec3 position = gtaoViewPosition(vec2(pixel), z);
     vec3 viewVec = normalize(-position);
 
