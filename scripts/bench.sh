@@ -1,17 +1,25 @@
 #!/usr/bin/env bash
-# The foundation's benchmark targets in one run: caves at 1280x720 (both cameras),
-# memory against OpenVDB's memUsage, and load + mesh of a ~10M-voxel world.
-# Figures go to out/bench/*.json; compare ratios from one run, not absolute times.
+# Benchmarks in one run (compare ratios within a run; absolute times drift on
+# shared machines). Figures go to out/bench/*.json and the terminal.
+#  - foundation: caves at 1280x720 without AO (G-buffer + composite), both cameras;
+#    memory against OpenVDB's memUsage; load + mesh of a ~10M-voxel world
+#  - GTAO: the AO chain per preset on caves at 1280x720, half and full resolution
 set -euo pipefail
 cd "$(dirname "$0")/.."
 grotto=${GROTTO:-build/grotto}
 mkdir -p out/bench
 for camera in walk overview; do
-  "$grotto" bench worlds/caves.json --camera "$camera" --size 1280x720 --frames 60 --warmup 10 \
-    --json "out/bench/caves-$camera.json"
+  "$grotto" bench worlds/caves.json --camera "$camera" --size 1280x720 --frames 40 --warmup 5 --ao off \
+    --json "out/bench/caves-$camera-noao.json"
 done
 for world in rooms thin city; do
-  "$grotto" bench "worlds/$world.json" --size 1280x720 --frames 30 --warmup 5 --json "out/bench/$world.json"
+  "$grotto" bench "worlds/$world.json" --size 1280x720 --frames 20 --warmup 3 --ao off --json "out/bench/$world-noao.json"
 done
 [ -f out/bench/caves10m.vdb ] || "$grotto" mkworld caves --size 680 -o out/bench/caves10m.vdb
-"$grotto" bench out/bench/caves10m.vdb --size 640x360 --frames 5 --warmup 1 --json out/bench/caves10m.json
+"$grotto" bench out/bench/caves10m.vdb --size 640x360 --frames 3 --warmup 1 --ao off --json out/bench/caves10m.json
+for quality in low medium high ultra; do
+  "$grotto" bench worlds/caves.json --size 1280x720 --frames 20 --warmup 3 --quality "$quality" \
+    --json "out/bench/caves-gtao-$quality.json"
+  "$grotto" bench worlds/caves.json --size 1280x720 --frames 10 --warmup 2 --quality "$quality" --ao-full-res \
+    --json "out/bench/caves-gtao-$quality-fullres.json"
+done
