@@ -27,17 +27,19 @@ void main() {
     vec2 tl = fetch(p + ivec2(-1, -1)), tr = fetch(p + ivec2(1, -1));
     vec2 bl = fetch(p + ivec2(-1, 1)), br = fetch(p + ivec2(1, 1));
     vec4 ec = gtaoUnpackEdges(c.y);
+    vec4 el = gtaoUnpackEdges(l.y), er = gtaoUnpackEdges(r.y), et = gtaoUnpackEdges(t.y), eb = gtaoUnpackEdges(b.y);
     // Symmetric: the neighbour's edge back towards the centre must agree.
-    float wl = ec.x * gtaoUnpackEdges(l.y).y;
-    float wr = ec.y * gtaoUnpackEdges(r.y).x;
-    float wt = ec.z * gtaoUnpackEdges(t.y).w;
-    float wb = ec.w * gtaoUnpackEdges(b.y).z;
+    float wl = ec.x * el.y, wr = ec.y * er.x, wt = ec.z * et.w, wb = ec.w * eb.z;
+    // A corner counts through either side neighbour, and that neighbour's own edge
+    // towards the corner, so nothing leaks round a silhouette's corner.
     const float diagonal = 0.425;
-    float wtl = diagonal * wl * wt, wtr = diagonal * wr * wt;
-    float wbl = diagonal * wl * wb, wbr = diagonal * wr * wb;
+    float wtl = diagonal * (wl * el.z + wt * et.x);
+    float wtr = diagonal * (wt * et.y + wr * er.z);
+    float wbl = diagonal * (wb * eb.x + wl * el.w);
+    float wbr = diagonal * (wr * er.w + wb * eb.y);
     float beta = finalPass != 0u ? gtao.settings.denoiseBlurBeta : gtao.settings.denoiseBlurBeta / 5.0;
     float sum = beta * c.x + wl * l.x + wr * r.x + wt * t.x + wb * b.x + wtl * tl.x + wtr * tr.x + wbl * bl.x + wbr * br.x;
     float weight = beta + wl + wr + wt + wb + wtl + wtr + wbl + wbr;
     vec2 depthFace = texelFetch(source, p, 0).ba;  // carried through for the upsample
-    imageStore(target, p, vec4(sum / max(weight, 1e-6), c.y, depthFace));
+    imageStore(target, p, vec4(weight > 0.0 ? sum / weight : c.x, c.y, depthFace));
 }

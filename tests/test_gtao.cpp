@@ -81,19 +81,21 @@ TEST_F(Gtao, GpuMatchesCpuTwinForEveryPreset) {
 
 TEST_F(Gtao, FlatFloorStaysOpenFromStraightDownToGrazing) {
     const voxel::World floor = test::makeVoxelWorld({-256, -1, -256}, {255, -1, 255}, [](int, int, int) { return true; });
+    // Large images too: coarse depth MIPs only come into play there.
+    for (auto [w, h] : {std::pair{192u, 108u}, {1280u, 720u}})
     for (double degrees : {0.0, 45.0, 80.0, 85.0, 89.0, 89.5}) {
         const double a = glm::radians(degrees);
         const glm::dvec3 eye(0.0, 1.5, 0.0);
         const glm::dvec3 dir(std::sin(a), -std::cos(a), 0.0);
-        const Rendered r = render(floor, lookAt(eye, eye + dir, 70.0), 192, 108, options("high"));
+        const Rendered r = render(floor, lookAt(eye, eye + dir, 70.0), w, h, options("high"));
         int floorPixels = 0;
         for (size_t i = 0; i < r.img.ao.size(); ++i) {
             ASSERT_TRUE(std::isfinite(r.img.ao[i]) && std::isfinite(r.img.aoRaw[i])) << degrees;
             if (!std::isfinite(r.img.depth[i])) continue;
             ++floorPixels;
-            EXPECT_GE(r.img.ao[i], 0.97f) << degrees << " degrees, pixel " << i % 192 << "," << i / 192;
+            EXPECT_GE(r.img.ao[i], 0.97f) << degrees << " degrees, " << w << "x" << h << ", pixel " << i % w << "," << i / w;
             EXPECT_GE(r.img.aoRaw[i], 0.97f) << degrees << " degrees, raw";
-            if (r.img.ao[i] < 0.97f) break;  // one report per angle is enough
+            if (r.img.ao[i] < 0.97f || r.img.aoRaw[i] < 0.97f) break;  // one report per view is enough
         }
         EXPECT_GT(floorPixels, 1000) << degrees;
     }
@@ -145,7 +147,8 @@ TEST_F(Gtao, TinySizesAndOneSliceOneStepStayFinite) {
             const Rendered r = render(world, world.camera("table"), w, h, ao);
             for (size_t i = 0; i < r.img.ao.size(); ++i) {
                 ASSERT_TRUE(r.img.ao[i] >= 0.0f && r.img.ao[i] <= 1.0f) << w << "x" << h;
-                ASSERT_TRUE(std::isfinite(r.img.color[4 * i])) << w << "x" << h;
+                ASSERT_TRUE(r.img.aoRaw[i] >= 0.0f && r.img.aoRaw[i] <= 1.0f) << w << "x" << h;
+                for (int c = 0; c < 4; ++c) ASSERT_TRUE(std::isfinite(r.img.color[4 * i + c])) << w << "x" << h;
             }
         }
 }
@@ -181,7 +184,10 @@ TEST_F(Gtao, UpsampleLeaksNoAoAcrossASilhouette) {
 }
 
 TEST_F(Gtao, ThinOccluderCompensationOpensBehindPolesButKeepsWallContact) {
-    // Floor, a one-voxel pole at the origin and a thick wall at x >= 10.
+    // Floor, a one-voxel pole at the origin and a thick wall at x >= 10. The
+    // compensation stretches view-depth distances rather than measuring thickness,
+    // so how much the wall changes depends on the view; for this one (facing the
+    // wall) it must stay within 0.02 while the pole's surroundings open up more.
     const voxel::World scene = test::makeVoxelWorld({-30, -2, -30}, {30, 12, 30}, [](int x, int y, int z) {
         return y < 0 || (x == 0 && z == 0 && y < 10) || (x >= 10 && x < 16 && y < 10);
     });
@@ -207,6 +213,7 @@ TEST_F(Gtao, ThinOccluderCompensationOpensBehindPolesButKeepsWallContact) {
     const double poleA = meanNear(a, behindPole), poleB = meanNear(b, behindPole);
     const double wallA = meanNear(a, wallContact), wallB = meanNear(b, wallContact);
     EXPECT_GT(poleB, poleA + 0.01) << "compensation should open the floor behind the pole";
+    EXPECT_GT(poleB - poleA, wallB - wallA) << "the pole should gain more than the wall";
     EXPECT_NEAR(wallB, wallA, 0.02) << "the wall's contact shadow should stay";
     std::printf("thin occluder: pole %.3f -> %.3f, wall %.3f -> %.3f\n", poleA, poleB, wallA, wallB);
     RecordProperty("pole", std::to_string(poleA) + " -> " + std::to_string(poleB));

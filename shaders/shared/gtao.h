@@ -11,7 +11,7 @@ GROTTO_NAMESPACE_BEGIN
 #define GROTTO_GTAO_GROUP 8u
 
 struct GtaoSettings {
-    float radius;                   // world units (> 0); default 3 voxels, from the world file or --radius
+    float radius;                   // world units (> 0); default 4 voxels, from the world file or --radius
     float radiusMultiplier;         // 1.457 (0.3 .. 3): compensates for screen-space undersampling
     float falloffRange;             // 0.615 (0 .. 1): fraction of the radius over which occluders fade out
     float sampleDistributionPower;  // 2.0 (1 .. 3): > 1 puts more samples near the centre

@@ -59,15 +59,21 @@ vec3 gtaoSamplePosition(ivec2 halfPixel, int mip) {
     return gtaoViewPosition(block, gtaoDepth(halfPixel, mip));
 }
 
-// Depth MIP reduction: an average that down-weights samples far behind the
-// nearest, so thin near surfaces survive in the coarse levels.
+// Depth MIP reduction: an average around the farthest of the four, with samples
+// nearer than it by more than (a fraction of) the AO radius fading out, as
+// XeGTAO does. Favouring the far side keeps a block that straddles a surface and
+// the sky or a far background from placing near depth higher on screen, where it
+// would occlude an open floor.
 float gtaoMipFilter(float d0, float d1, float d2, float d3) {
-    float nearest = min(min(d0, d1), min(d2, d3));
-    float range = max(0.615f * 0.75f * gtao.settings.radius * gtao.settings.radiusMultiplier, 1e-6f);
-    float w0 = gtaoSaturate(1.0f - (d0 - nearest) / range);
-    float w1 = gtaoSaturate(1.0f - (d1 - nearest) / range);
-    float w2 = gtaoSaturate(1.0f - (d2 - nearest) / range);
-    float w3 = gtaoSaturate(1.0f - (d3 - nearest) / range);
+    float farthest = max(max(d0, d1), max(d2, d3));
+    float radius = 0.75f * gtao.settings.radius * gtao.settings.radiusMultiplier;
+    float range = max(gtao.settings.falloffRange * radius, 1e-6f);
+    float from = radius * (1.0f - gtao.settings.falloffRange);
+    float mul = -1.0f / range, add = from / range + 1.0f;
+    float w0 = gtaoSaturate((farthest - d0) * mul + add);
+    float w1 = gtaoSaturate((farthest - d1) * mul + add);
+    float w2 = gtaoSaturate((farthest - d2) * mul + add);
+    float w3 = gtaoSaturate((farthest - d3) * mul + add);
     return (w0 * d0 + w1 * d1 + w2 * d2 + w3 * d3) / (w0 + w1 + w2 + w3);
 }
 
@@ -141,7 +147,9 @@ vec2 gtaoPixel(ivec2 pixel) {
             // Golden-ratio jitter per step decorrelates steps sharing the pixel's noise.
             float stepNoise = fract(noise.y + float(slice + stepIndex * s.stepsPerSlice) * 0.6180339887f);
             float t = pow((float(stepIndex) + stepNoise) / float(s.stepsPerSlice), s.sampleDistributionPower) + minS;
-            vec2 offset = t * omega;
+            // Bounded so the integer pixel offset cannot overflow at extreme radii;
+            // such a sample is off-screen, and open, either way.
+            vec2 offset = clamp(t * omega, vec2(-32768.0f), vec2(32768.0f));
             int mip = int(clamp(floor(log2(length(offset)) - s.depthMipSamplingOffset + 0.5f), 0.0f,
                                 float(GROTTO_GTAO_DEPTH_MIPS - 1)));
             ivec2 rounded = ivec2(floor(offset + 0.5f));
@@ -181,7 +189,8 @@ vec2 gtaoPixel(ivec2 pixel) {
     }
     // Normalised by the unoccluded integral of the same slices: an open plane is
     // exactly 1 whatever the view angle and slice count. (The plain average over a
-    // few slices swings between 0.77 and 1.21 per slice 40 degrees off-axis.)
+    // few slices swings between 0.77 and 1.21 per slice 40 degrees off-axis.) The
+    // small-radius fade is added once, not per slice, so no preset dilutes it.
     visibility = gtaoSaturate(visible / max(unoccluded, 1e-6f) + visibility);
     visibility = pow(visibility, s.finalValuePower);
     return vec2(max(visibility, 0.03f), edges);
