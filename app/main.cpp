@@ -9,6 +9,10 @@
 int main(int argc, char** argv) {
     CLI::App app{"grotto: voxel deferred renderer with temporal GTAO"};
     app.require_subcommand(1);
+    // Usage errors get one line too, like every other error.
+    app.failure_message([](const CLI::App*, const CLI::Error& e) {
+        return "grotto: error: " + std::string(e.what()) + " (see --help)\n";
+    });
     grotto::app::addRenderCommand(app);
     grotto::app::addInfoCommand(app);
     grotto::app::addMkworldCommand(app);

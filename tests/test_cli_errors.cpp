@@ -231,3 +231,28 @@ TEST_F(CliErrors, NumberOutOfRange) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+TEST_F(CliErrors, NonsenseAoSettings) {
+    expectRefused(render(good_) + " --radius -1", "--radius", out());
+    expectRefused(render(good_) + " --thin-occluder 0.9", "--thin-occluder", out());
+    expectRefused(render(good_) + " --denoise 9", "--denoise", out());
+    expectRefused(render(good_) + " --quality extreme", "--quality", out());
+    const auto world = writeText("ao.json", R"({"grid": {"file": "good.vdb"}, "ao": {"thin_occluder": 0.9}})");
+    expectRefused(render(world), "ao.thin_occluder", out());
+    const auto preset = writeText("q.json", R"({"grid": {"file": "good.vdb"}, "ao": {"quality": "extreme"}})");
+    expectRefused(render(preset), "extreme", out());
+}
+
+TEST_F(CliErrors, ShowWritesOneAovAsPng) {
+    const test::RunResult r = runGrotto(render(good_) + " --show ao");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out()));
+    expectRefused("render " + good_.string() + " --size 8x8 --show ao -o " + (dir_ / "x.exr").string(), "--show",
+                  dir_ / "x.exr");
+}
+
+}  // namespace
+}  // namespace grotto

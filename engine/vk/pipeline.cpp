@@ -69,10 +69,6 @@ Binding sampledImage(VkSampler sampler, VkImageView view, VkImageLayout layout) 
 Binding storageImage(VkImageView view) {
     return {.type = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, .image = {VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL}};
 }
-Binding storageBuffer(VkBuffer buffer, VkDeviceSize size) {
-    return {.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, .buffer = {buffer, 0, size}};
-}
-
 Binding uniformBuffer(VkBuffer buffer, VkDeviceSize size) {
     return {.type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, .buffer = {buffer, 0, size}};
 }

@@ -82,12 +82,6 @@ Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferU
     return dst;
 }
 
-bool supportsFormat(Context& ctx, VkFormat format, VkFormatFeatureFlags features) {
-    VkFormatProperties p;
-    vkGetPhysicalDeviceFormatProperties(ctx.physical, format, &p);
-    return (p.optimalTilingFeatures & features) == features;
-}
-
 void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
                 VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
                 VkAccessFlags dstAccess) {

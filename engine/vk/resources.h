@@ -31,9 +31,6 @@ void destroy(Context& ctx, Image& i);
 // Device-local buffer filled from host data through a staging buffer.
 Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
 
-// Whether the device can use format for the given optimal-tiling features.
-bool supportsFormat(Context& ctx, VkFormat format, VkFormatFeatureFlags features);
-
 // One image memory barrier (whole image) between two layouts and stages.
 void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
                 VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
