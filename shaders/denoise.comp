@@ -8,7 +8,7 @@
 
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
-layout(set = 0, binding = 1) uniform sampler2D source;  // AO, packed edges, depth, face + 1
+layout(set = 0, binding = 1, rgba32f) uniform readonly image2D source;  // AO, packed edges, depth, face + 1
 layout(set = 0, binding = 2, rgba32f) uniform writeonly image2D target;
 layout(push_constant) uniform Push { uint finalPass; };
 
@@ -16,7 +16,7 @@ float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
 #include "shared/gtao_kernel.h"
 
-vec2 fetch(ivec2 p) { return texelFetch(source, clamp(p, ivec2(0), ivec2(gtao.halfSize) - 1), 0).rg; }
+vec2 fetch(ivec2 p) { return imageLoad(source, clamp(p, ivec2(0), ivec2(gtao.halfSize) - 1)).rg; }
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -40,6 +40,6 @@ void main() {
     float beta = finalPass != 0u ? gtao.settings.denoiseBlurBeta : gtao.settings.denoiseBlurBeta / 5.0;
     float sum = beta * c.x + wl * l.x + wr * r.x + wt * t.x + wb * b.x + wtl * tl.x + wtr * tr.x + wbl * bl.x + wbr * br.x;
     float weight = beta + wl + wr + wt + wb + wtl + wtr + wbl + wbr;
-    vec2 depthFace = texelFetch(source, p, 0).ba;  // carried through for the upsample
+    vec2 depthFace = imageLoad(source, p).ba;  // carried through for the upsample
     imageStore(target, p, vec4(weight > 0.0 ? sum / weight : c.x, c.y, depthFace));
 }

@@ -6,7 +6,7 @@
 
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
-layout(set = 0, binding = 1) uniform sampler2D depthAtlas;  // all MIPs side by side
+layout(set = 0, binding = 1, r32f) uniform readonly image2D depthAtlas;  // all MIPs side by side
 layout(set = 0, binding = 2) uniform usampler2D surfaceTex;  // full resolution
 layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D aoEdges;  // AO, edges, depth, face + 1
 
@@ -15,7 +15,7 @@ layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D aoEdges;  // AO,
 // this a single fetch (five images behind a switch cost lavapipe half the pass).
 float gtaoDepth(ivec2 texel, int mip) {
     ivec4 m = gtao.depthMips[mip];
-    return texelFetch(depthAtlas, clamp(texel >> mip, ivec2(0), m.zw - 1) + m.xy, 0).r;
+    return imageLoad(depthAtlas, clamp(texel >> mip, ivec2(0), m.zw - 1) + m.xy).r;
 }
 uint gtaoSurface(ivec2 pixel) { return texelFetch(surfaceTex, pixel, 0).r; }
 

@@ -9,7 +9,7 @@
 
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
-layout(set = 0, binding = 1) uniform sampler2D aoHalf;       // AO, edges, view depth, face + 1
+layout(set = 0, binding = 1, rgba32f) uniform readonly image2D aoHalf;  // AO, edges, view depth, face + 1
 layout(set = 0, binding = 2) uniform sampler2D depthBuffer;  // full-res D32, reverse-Z
 layout(set = 0, binding = 3) uniform usampler2D surfaceTex;  // full res
 layout(set = 0, binding = 4, r32f) uniform writeonly image2D aoFull;
@@ -36,7 +36,7 @@ void main() {
     for (int j = 0; j < 2; ++j)
         for (int i = 0; i < 2; ++i) {
             ivec2 s = min(h + ivec2(i, j), last);
-            vec4 sample4 = texelFetch(aoHalf, s, 0);
+            vec4 sample4 = imageLoad(aoHalf, s);
             float ao = sample4.x;
             float dz = abs(sample4.z - z);
             bool sameFace = uint(sample4.w) == face;

@@ -5,8 +5,7 @@ namespace grotto {
 DenoisePass::DenoisePass(vk::Context& ctx)
     : ctx_(ctx),
       pass_(ctx, "denoise.comp",
-            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-             VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
             sizeof(uint32_t)) {}
 
 void DenoisePass::record(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, const vk::Buffer& constants) {
@@ -15,7 +14,7 @@ void DenoisePass::record(VkCommandBuffer cmd, const AoTargets& ao, uint32_t pass
         const uint32_t finalPass = i + 1 == passes ? 1u : 0u;
         pass_.dispatch(cmd,
                        {vk::uniformBuffer(constants.buffer),
-                        vk::sampledImage(ctx_.pointSampler, source.view, VK_IMAGE_LAYOUT_GENERAL),
+                        vk::storageImage(source.view),
                         vk::storageImage(ao.spatial[i % 2].view)},
                        ao.half, GROTTO_GTAO_GROUP, &finalPass);
         computeToCompute(cmd);

@@ -5,16 +5,16 @@ namespace grotto {
 UpsamplePass::UpsamplePass(vk::Context& ctx)
     : ctx_(ctx),
       pass_(ctx, "upsample.comp",
-            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
              VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
              VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}) {}
 
 void UpsamplePass::record(VkCommandBuffer cmd, const vk::Image& depth, const vk::Image& surface, const AoTargets& ao,
                           uint32_t denoisePasses, const vk::Buffer& constants) {
-    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, general = VK_IMAGE_LAYOUT_GENERAL;
+    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     pass_.dispatch(cmd,
                    {vk::uniformBuffer(constants.buffer),
-                    vk::sampledImage(ctx_.pointSampler, ao.denoised(denoisePasses).view, general),
+                    vk::storageImage(ao.denoised(denoisePasses).view),
                     vk::sampledImage(ctx_.pointSampler, depth.view, ro),
                     vk::sampledImage(ctx_.pointSampler, surface.view, ro), vk::storageImage(ao.full.view)},
                    ao.full.extent, GROTTO_GTAO_GROUP);
