@@ -20,7 +20,6 @@ constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l, const AoOptions& ao) {
     gpu::FrameUniforms u{};
     u.viewProj = camera.viewProjRelative();
-    u.invViewProj = glm::mat4(glm::inverse(glm::dmat4(u.viewProj)));
     u.sunDirection = glm::vec4(l.sunDirection, 0.0f);
     u.sunRadiance = glm::vec4(l.sunColor * l.sunIntensity, 0.0f);
     u.ambient = glm::vec4(l.ambientColor * l.ambientIntensity, 0.0f);

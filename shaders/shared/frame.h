@@ -10,7 +10,6 @@ GROTTO_NAMESPACE_BEGIN
 
 struct FrameUniforms {
     mat4 viewProj;       // camera-relative world -> clip (reverse-Z)
-    mat4 invViewProj;    // clip -> camera-relative world
     vec4 sunDirection;   // xyz: unit vector toward the sun
     vec4 sunRadiance;    // rgb: colour x intensity
     vec4 ambient;        // rgb: colour x intensity
@@ -23,7 +22,7 @@ struct FrameUniforms {
     uvec2 size;          // full-resolution width, height
     uvec2 pad;
 };
-GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 2 * 64 + 9 * 16 + 16);
+GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 9 * 16 + 16);
 
 // G-buffer push constants: one chunk's corner, camera-relative, and the voxel size.
 struct ChunkPush {
