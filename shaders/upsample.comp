@@ -1,9 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Depth-aware upsample of half-res AO to full resolution. Of the four half-res
-// samples around a pixel, only those on the same surface (same face direction and
-// view depth within 2%) contribute, bilinearly weighted; if none does, the one
-// nearest in depth is taken. AO therefore never crosses a depth discontinuity.
+// samples around a pixel, only those on the same surface contribute, bilinearly
+// weighted: same face direction and on the pixel's plane (voxel faces are planes,
+// so this holds on grazing floors too, where depths differ a lot). If none
+// qualifies, the one nearest in depth is taken. AO never crosses a discontinuity.
 #include "shared/gtao.h"
 #include "shared/quad.h"
 
@@ -28,6 +29,8 @@ void main() {
     }
     float z = gtao.depthB / (d + gtao.depthA);
     uint face = texelFetch(surfaceTex, q, 0).r & 7u;
+    vec3 normal = vec3(gtao.viewNormals[face - 1u]);
+    vec3 position = gtaoViewPosition(vec2(q) / float(gtao.scale), z);  // full-res pixel q itself
     int scale = int(gtao.scale);
     ivec2 h = q / scale;
     vec2 f = vec2(q - h * scale) / float(scale);  // how far past the AO sample: 0 or 0.5
@@ -45,7 +48,8 @@ void main() {
                 nearestAo = ao;
             }
             float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
-            if (sameFace && dz <= 0.02 * z) {
+            float offPlane = abs(dot(gtaoViewPosition(vec2(s), sample4.z) - position, normal));
+            if (w > 0.0 && sameFace && offPlane <= 1e-3 * z) {
                 sum += w * ao;
                 weight += w;
             }
