@@ -63,8 +63,6 @@ gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& 
     const glm::dmat4 p = camera.projection();
     c.depthA = float(p[2][2]);
     c.depthB = float(p[3][2]);
-    const DepthMipLayout layout = depthMipLayout({c.halfSize.x, c.halfSize.y});
-    for (int k = 0; k < GROTTO_GTAO_DEPTH_MIPS; ++k) c.depthMips[k] = layout.mips[k];
     return c;
 }
 

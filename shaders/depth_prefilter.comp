@@ -21,14 +21,14 @@ uint gtaoSurface(ivec2 pixel) { return 0u; }
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
-    ivec4 target = gtao.depthMips[level];
+    ivec4 target = gtaoMipRect(level);
     if (any(greaterThanEqual(p, target.zw))) return;
     float depth;
     if (level == 0) {
         float d = texelFetch(depthBuffer, p * int(gtao.scale), 0).r;
         depth = d > 0.0 ? min(gtao.depthB / (d + gtao.depthA), kGtaoSky) : kGtaoSky;
     } else {
-        ivec4 source = gtao.depthMips[level - 1];
+        ivec4 source = gtaoMipRect(level - 1);
         ivec2 last = source.zw - 1;
         depth = gtaoMipFilter(texelFetch(atlasIn, min(p * 2, last) + source.xy, 0).r,
                               texelFetch(atlasIn, min(p * 2 + ivec2(1, 0), last) + source.xy, 0).r,

@@ -13,8 +13,10 @@ layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D aoEdges;  // AO,
 // Point sampling with explicit, clamped texel coordinates, so the CPU twin can
 // reproduce every fetch exactly whatever the image size. One atlas image keeps
 // this a single fetch (five images behind a switch cost lavapipe half the pass).
+ivec4 gtaoMipRect(int mip);  // in the kernel below
+
 float gtaoDepth(ivec2 texel, int mip) {
-    ivec4 m = gtao.depthMips[mip];
+    ivec4 m = gtaoMipRect(mip);
     return imageLoad(depthAtlas, clamp(texel >> mip, ivec2(0), m.zw - 1) + m.xy).r;
 }
 uint gtaoSurface(ivec2 pixel) { return texelFetch(surfaceTex, pixel, 0).r; }

@@ -20,7 +20,7 @@ struct AoTargets {
 };
 
 // Where each depth MIP sits in the atlas (xy offset, zw size): MIP 0 at the origin,
-// MIPs 1-4 stacked in a column to its right; MIP k is ceil(half / 2^k).
+// MIPs 1-4 in a column of equal slots to its right; MIP k is ceil(half / 2^k).
 struct DepthMipLayout {
     std::array<glm::ivec4, GROTTO_GTAO_DEPTH_MIPS> mips;
     VkExtent2D atlas;

@@ -4,21 +4,17 @@
 
 namespace grotto {
 
+// Mirrors gtaoMipRect in shaders/shared/gtao_kernel.h.
 DepthMipLayout depthMipLayout(VkExtent2D half) {
     DepthMipLayout l;
-    int column = 0, width1 = 0;
+    const glm::ivec2 half0(int(half.width), int(half.height));
     for (int k = 0; k < GROTTO_GTAO_DEPTH_MIPS; ++k) {
-        const int round = (1 << k) - 1;
-        const glm::ivec2 size((int(half.width) + round) >> k, (int(half.height) + round) >> k);
-        if (k == 0) {
-            l.mips[0] = glm::ivec4(0, 0, size);
-        } else {
-            l.mips[k] = glm::ivec4(int(half.width), column, size);
-            column += size.y;
-            width1 = std::max(width1, size.x);
-        }
+        const glm::ivec2 size = (half0 + ((1 << k) - 1)) >> k;
+        const glm::ivec2 offset = k == 0 ? glm::ivec2(0) : glm::ivec2(half0.x, (k - 1) * ((half0.y + 1) >> 1));
+        l.mips[k] = glm::ivec4(offset, size);
     }
-    l.atlas = {half.width + uint32_t(width1), std::max(half.height, uint32_t(column))};
+    const int slot = (half0.y + 1) >> 1;
+    l.atlas = {uint32_t(half0.x + l.mips[1].z), uint32_t(std::max(half0.y, (GROTTO_GTAO_DEPTH_MIPS - 1) * slot))};
     return l;
 }
 

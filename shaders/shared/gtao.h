@@ -36,11 +36,10 @@ struct GtaoConstants {
     uint frameIndex;         // advances the noise; the temporal pass will step it
     float pixelViewSize;     // view-space size of one half-res pixel at depth 1
     float depthA, depthB;    // view depth = depthB / (depth buffer value + depthA)
-    ivec4 depthMips[GROTTO_GTAO_DEPTH_MIPS];  // per MIP: xy offset in the depth atlas, zw size
     uint scale;              // full-res pixels per AO pixel: 2 (half res, the default) or 1
     uint pad0, pad1, pad2;
 };
-GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 48 + 16 + 96 + 16 + 16 + 16 * GROTTO_GTAO_DEPTH_MIPS + 16);
+GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 48 + 16 + 96 + 16 + 16 + 16);
 
 GROTTO_NAMESPACE_END
 #endif

@@ -46,6 +46,16 @@ vec2 gtaoNoise(uvec2 pixel, uint frameIndex) {
     return vec2(float(a >> 8u), float(b >> 8u)) * (1.0f / 16777216.0f);
 }
 
+// Where MIP `mip` sits in the depth atlas (xy offset, zw size): MIP 0 at the
+// origin, MIPs 1-4 in a column of equal slots to its right. Plain arithmetic, so a
+// sample's varying MIP costs no indexed constant load.
+ivec4 gtaoMipRect(int mip) {
+    ivec2 half0 = ivec2(gtao.halfSize);
+    ivec2 size = (half0 + ((1 << mip) - 1)) >> mip;
+    ivec2 offset = mip == 0 ? ivec2(0) : ivec2(half0.x, (mip - 1) * ((half0.y + 1) >> 1));
+    return ivec4(offset, size);
+}
+
 vec3 gtaoViewPosition(vec2 halfPixel, float depth) {
     vec2 p = halfPixel * float(gtao.scale) + 0.5f;
     vec4 m = gtao.ndcToViewMul_Add;  // no swizzles: GLM has none by default
