@@ -150,7 +150,9 @@ vec2 gtaoPixel(ivec2 pixel) {
         float projectedLength = max(length(projectedNormal), 1e-6f);
         float cosNorm = gtaoSaturate(dot(projectedNormal, viewVec) / projectedLength);
         float n = signNorm * acos(cosNorm);
-        float lowCos0 = cos(n + 0.5f * kGtaoPi), lowCos1 = cos(n - 0.5f * kGtaoPi);
+        float sinN = sin(n);
+        // The hemisphere's own horizons: cos(n + pi/2) = -sin n, cos(n - pi/2) = sin n.
+        float lowCos0 = -sinN, lowCos1 = sinN;
         float horizonCos0 = lowCos0, horizonCos1 = lowCos1;
 
         for (uint stepIndex = 0u; stepIndex < s.stepsPerSlice; ++stepIndex) {
@@ -192,10 +194,10 @@ vec2 gtaoPixel(ivec2 pixel) {
         projectedLength = mix(projectedLength, 1.0f, 0.05f);
         float h0 = -acos(clamp(horizonCos1, -1.0f, 1.0f));
         float h1 = acos(clamp(horizonCos0, -1.0f, 1.0f));
-        float arc0 = (cosNorm + 2.0f * h0 * sin(n) - cos(2.0f * h0 - n)) / 4.0f;
-        float arc1 = (cosNorm + 2.0f * h1 * sin(n) - cos(2.0f * h1 - n)) / 4.0f;
+        float arc0 = (cosNorm + 2.0f * h0 * sinN - cos(2.0f * h0 - n)) / 4.0f;
+        float arc1 = (cosNorm + 2.0f * h1 * sinN - cos(2.0f * h1 - n)) / 4.0f;
         visible += projectedLength * (arc0 + arc1);
-        unoccluded += projectedLength * (cosNorm + n * sin(n));
+        unoccluded += projectedLength * (cosNorm + n * sinN);
     }
     // Normalised by the unoccluded integral of the same slices: an open plane is
     // exactly 1 whatever the view angle and slice count. (The plain average over a
