@@ -1,8 +1,10 @@
 // grotto flythrough WORLD [--camera NAME] [--frames N] [--size WxH] -o DIR
 // Until camera paths land, the flythrough is one orbit of the chosen camera about
-// its target. Frames already on disk are skipped, so an interrupted run resumes.
+// its target. Frames already on disk are skipped, so an interrupted run resumes;
+// dir/flythrough.json records the settings so a resume never mixes sequences.
 #include "app/commands.h"
 #include "app/options.h"
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "engine/image_output.h"
 #include "engine/renderer.h"
@@ -10,16 +12,62 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <nlohmann/json.hpp>
+
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 
 namespace grotto::app {
 
+namespace {
+
+struct Args {
+    std::string world, camera, size = "640x360", output, format = "png";
+    int frames = 24;
+    AoFlags ao;
+};
+
+// Everything that decides a frame's pixels: a resumed run must match it.
+nlohmann::json runManifest(const Args& a, const AoOptions& ao) {
+    const gpu::GtaoSettings& g = ao.gtao;
+    return {{"world", std::filesystem::absolute(a.world).lexically_normal().string()}, {"camera", a.camera},
+            {"size", a.size}, {"frames", a.frames}, {"format", a.format}, {"ao", ao.enabled},
+            {"ao_full_res", ao.fullResolution},
+            {"gtao", {g.radius, g.radiusMultiplier, g.falloffRange, g.sampleDistributionPower,
+                      g.thinOccluderCompensation, g.finalValuePower, g.depthMipSamplingOffset, g.strength,
+                      g.denoiseBlurBeta, g.sliceCount, g.stepsPerSlice, g.denoisePasses}}};
+}
+
+// Frames already in `dir` are kept only when they came from the same settings,
+// recorded in dir/flythrough.json; otherwise the run refuses to mix sequences.
+void requireSameRun(const std::filesystem::path& dir, const nlohmann::json& manifest) {
+    const std::filesystem::path file = dir / "flythrough.json";
+    const std::string mine = manifest.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+    if (std::filesystem::exists(file)) {
+        std::ifstream in(file);
+        std::stringstream previous;
+        previous << in.rdbuf();
+        if (previous.str() != mine + "\n")
+            throw Error(file.string(), "holds frames of a flythrough with other settings",
+                        "render into another directory, or delete this one to start over");
+        return;
+    }
+    for (const auto& entry : std::filesystem::directory_iterator(dir))
+        if (entry.path().filename().string().rfind("frame.", 0) == 0)
+            throw Error(dir.string(), "already holds frames but no flythrough.json saying how they were made",
+                        "render into another directory");
+    writeAtomically(file, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp);
+        out << mine << "\n";
+        out.close();
+        if (!out) throw Error(file.string(), "write failed", "is the disk full?");
+    });
+}
+
+}  // namespace
+
 void addFlythroughCommand(CLI::App& app) {
-    struct Args {
-        std::string world, camera, size = "640x360", output, format = "png";
-        int frames = 24;
-        AoFlags ao;
-    };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("flythrough", "Render an orbit of a camera to DIR/frame.NNNN.png");
     cmd->add_option("world", args->world, "World .json or .vdb")->required();
@@ -39,6 +87,7 @@ void addFlythroughCommand(CLI::App& app) {
         const voxel::World world = voxel::World::load(args->world);
         const voxel::CameraDesc start = world.camera(args->camera);
         const AoOptions ao = resolveAo(world, args->ao);
+        requireSameRun(dir, runManifest(*args, ao));
         vk::Context ctx;
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
         int written = 0;

@@ -256,3 +256,25 @@ TEST_F(CliErrors, ShowWritesOneAovAsPng) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+TEST_F(CliErrors, FlythroughResumesButNeverMixesSequences) {
+    const fs::path seq = dir_ / "seq";
+    const std::string base = "flythrough " + good_.string() + " --size 16x8 -o " + seq.string();
+    test::RunResult r = runGrotto(base + " --frames 3");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(seq / "frame.0003.png"));
+    fs::remove(seq / "frame.0002.png");  // an interrupted run
+    r = runGrotto(base + " --frames 3");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("wrote 1 frames"), std::string::npos) << r.out;
+    r = runGrotto(base + " --frames 4");  // a different orbit must not reuse these frames
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("other settings"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(seq / "frame.0004.png"));
+}
+
+}  // namespace
+}  // namespace grotto
