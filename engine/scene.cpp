@@ -57,7 +57,7 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh,
     // The whole palette range the shaders declare, unused entries black.
     std::vector<glm::vec4> palette(GROTTO_MAX_MATERIALS, glm::vec4(0.0f));
     for (size_t i = 0; i < desc.materials.size() && i < palette.size(); ++i)
-        palette[i] = glm::vec4(desc.materials[i].albedo, 1.0f);
+        palette[i] = glm::vec4(desc.materials[i].albedo, desc.materials[i].ao);
     for (const voxel::Material& m : desc.materials) s.albedo.push_back(m.albedo);
     s.palette = vk::uploadBuffer(ctx, palette.data(), palette.size() * sizeof(glm::vec4),
                                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);

@@ -29,7 +29,7 @@ struct GpuScene {
     vk::Context& ctx;
     vk::Buffer vertices;
     vk::Buffer indices;
-    vk::Buffer palette;                 // uniform buffer of GROTTO_MAX_MATERIALS vec4
+    vk::Buffer palette;                 // uniform buffer of GROTTO_MAX_MATERIALS vec4: albedo, material AO
     std::vector<glm::vec3> albedo;      // host copy of the palette, id k at [k - 1]
     std::vector<GpuChunk> chunks;
     double voxelSize = 1.0;

@@ -38,9 +38,11 @@ void main() {
         uint face = surfaceFace(surface);
         // The sun term for an axis normal is one component of the sun direction.
         float cosSun = (facePositive(face) ? 1.0 : -1.0) * frame.sunDirection[faceAxis(face)];
-        vec3 base = albedo[surfaceMaterial(surface) - 1u].rgb;
+        vec4 material = albedo[surfaceMaterial(surface) - 1u];  // rgb albedo, a: material AO
+        vec3 base = material.rgb;
         // Without AO the bound image is a 1x1 placeholder: do not read it.
         float visibility = frame.aoStrength.x > 0.0 ? mix(1.0, texelFetch(aoTex, pixel, 0).r, frame.aoStrength.x) : 1.0;
+        visibility = min(visibility, material.a);
         color = base * (frame.sunRadiance.rgb * max(cosSun, 0.0) + frame.ambient.rgb * multiBounce(visibility, base));
     }
     imageStore(outColor, pixel, vec4(color, 1.0));

@@ -5,7 +5,7 @@
 namespace grotto::test {
 
 voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bool(int, int, int)>& solid,
-                            double voxelSize, glm::dvec3 offset) {
+                            double voxelSize, glm::dvec3 offset, std::vector<voxel::Material> materials) {
     openvdb::initialize();
     auto grid = openvdb::MaskGrid::create();
     grid->setTransform(openvdb::math::Transform::createLinearTransform(voxelSize));
@@ -16,7 +16,7 @@ voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bo
             for (int z = lo.z; z <= hi.z; ++z)
                 if (solid(x, y, z)) acc.setValueOn(openvdb::Coord(x, y, z));
     voxel::WorldDesc d;
-    d.materials = voxel::defaultMaterials();
+    d.materials = std::move(materials);
     return voxel::makeWorld(grid, d);
 }
 

@@ -7,8 +7,9 @@
 namespace grotto::test {
 
 // A world of unit voxels (times voxelSize) where solid(x, y, z) is true, over the
-// inclusive index box [lo, hi]; material 1 everywhere unless `material` says otherwise.
+// inclusive index box [lo, hi]; material 1 everywhere, from `materials`.
 voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bool(int, int, int)>& solid,
-                            double voxelSize = 1.0, glm::dvec3 offset = glm::dvec3(0.0));
+                            double voxelSize = 1.0, glm::dvec3 offset = glm::dvec3(0.0),
+                            std::vector<voxel::Material> materials = voxel::defaultMaterials());
 
 }  // namespace grotto::test

@@ -222,3 +222,25 @@ TEST_F(Gtao, ThinOccluderCompensationOpensBehindPolesButKeepsWallContact) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+TEST_F(Gtao, CompositeTakesMaterialAoAndLeavesTheSunAlone) {
+    // An open floor whose material is fully occluded: only the sun's Lambert term
+    // remains, exactly albedo x sun x cos(sun elevation).
+    std::vector<voxel::Material> palette = voxel::defaultMaterials();
+    palette[0].ao = 0.0f;
+    const voxel::World floor = test::makeVoxelWorld({-64, -1, -64}, {63, -1, 63}, [](int, int, int) { return true; },
+                                                    1.0, glm::dvec3(0.0), palette);
+    const voxel::Material m = floor.desc().materials[0];
+    const voxel::Lighting l = floor.desc().lighting;
+    const Rendered r = render(floor, lookAt({0, 10, 0.01}, {0, 0, 0}, 40.0), 32, 32, options("high"));
+    const size_t centre = (16 * 32 + 16) * 4;
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(r.img.color[centre + c], m.albedo[c] * l.sunColor[c] * l.sunIntensity * l.sunDirection.y, 1e-4);
+    EXPECT_GE(r.img.ao[16 * 32 + 16], 0.97f);  // the computed AO itself is open
+}
+
+}  // namespace
+}  // namespace grotto

@@ -213,6 +213,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
             Material mat;
             mat.name = mr.string("name", "material" + std::to_string(i + 1));
             mat.albedo = glm::vec3(mr.vec3("albedo", glm::dvec3(mat.albedo), 0.0, 1.0));
+            mat.ao = float(mr.number("ao", mat.ao, 0.0, 1.0));
             w.materials.push_back(mat);
         }
     }

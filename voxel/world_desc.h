@@ -24,6 +24,7 @@ const char* solidRuleName(SolidRule rule);
 struct Material {
     std::string name;
     glm::vec3 albedo{0.7f};  // linear RGB in [0, 1]
+    float ao = 1.0f;         // baked occlusion of the material in [0, 1]; the composite takes min(AO, this)
 };
 
 struct CameraDesc {
