@@ -244,3 +244,50 @@ TEST_F(Gtao, CompositeTakesMaterialAoAndLeavesTheSunAlone) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+// DESIGN.md's numerical extremes: no NaN or Inf may reach an output.
+TEST_F(Gtao, NumericalExtremesStayFinite) {
+    auto hills = [](int x, int y, int z) { return y < 0 || (y < 6 && (x * 7 + z * 13) % 11 == 0); };
+    const voxel::World near = test::makeVoxelWorld({-48, -2, -48}, {47, 6, 47}, hills);
+    const voxel::World far = test::makeVoxelWorld({-48, -2, -48}, {47, 6, 47}, hills, 1.0, glm::dvec3(1e6, 0, -1e6));
+    struct Extreme {
+        const char* name;
+        const voxel::World* world;
+        voxel::CameraDesc camera;
+        uint32_t width, height;
+    };
+    auto cam = [](glm::dvec3 p, glm::dvec3 t, double fov, double n = 0.05, double f = 0.0) {
+        voxel::CameraDesc c = lookAt(p, t, fov);
+        c.nearPlane = n;
+        c.farPlane = f;
+        return c;
+    };
+    const std::vector<Extreme> cases = {
+        {"inside solid", &near, cam({0.2, -1.0, 0.3}, {5, -1, 5}, 60), 64, 48},
+        {"sky only", &near, cam({0, 20, 0}, {0.1, 40, 0.2}, 60), 64, 48},
+        {"fov 1", &near, cam({-30, 8, -30}, {10, 0, 10}, 1), 64, 48},
+        {"fov 170", &near, cam({0, 3, 0}, {10, 0, 10}, 170), 64, 48},
+        {"near 1e-4", &near, cam({0.3, 0.5, 0.3}, {10, -0.5, 10}, 60, 1e-4), 64, 48},
+        {"finite far 1e7, near 10", &near, cam({-40, 30, -40}, {0, 0, 0}, 60, 10, 1e7), 64, 48},
+        {"1e6 from the origin", &far, cam({1e6 - 30, 10, -1e6 - 30}, {1e6, 0, -1e6}, 60), 64, 48},
+        {"4K", &near, cam({-40, 20, -40}, {0, 0, 0}, 60), 3840, 2160},
+    };
+    for (const Extreme& e : cases) {
+        AoOptions ao = options("high", e.width > 1000 ? 40.0 : 4.0);  // 4K also gets a screen-filling radius
+        const Rendered r = render(*e.world, e.camera, e.width, e.height, ao);
+        size_t bad = 0;
+        for (size_t i = 0; i < r.img.ao.size(); ++i) {
+            if (!(r.img.ao[i] >= 0.0f && r.img.ao[i] <= 1.0f) || !(r.img.aoRaw[i] >= 0.0f && r.img.aoRaw[i] <= 1.0f))
+                ++bad;
+            for (int c = 0; c < 4; ++c)
+                if (!std::isfinite(r.img.color[4 * i + c])) ++bad;
+        }
+        EXPECT_EQ(bad, 0u) << e.name;
+    }
+}
+
+}  // namespace
+}  // namespace grotto
