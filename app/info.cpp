@@ -1,5 +1,6 @@
 // grotto info WORLD: what a world holds and what it costs, without a GPU.
 #include "app/commands.h"
+#include "engine/scene.h"
 #include "voxel/world.h"
 
 #include <cstdio>
@@ -15,8 +16,8 @@ void addInfoCommand(CLI::App& app) {
         const voxel::WorldStats s = w.stats();
         const voxel::Mesh mesh = w.mesh();
         const voxel::IndexBox b = w.bounds();
-        const size_t gpu = mesh.quads.size() * sizeof(gpu::PackedQuad) + w.desc().materials.size() * 16;
-        const size_t host = s.hostBytes + mesh.chunks.size() * sizeof(voxel::MeshChunk);
+        const size_t gpu = sceneBufferBytes(mesh);
+        const size_t host = s.hostBytes + mesh.chunks.size() * sizeof(GpuChunk);
         const glm::dvec3 lo = w.origin() + glm::dvec3(b.min) * w.voxelSize();
         const glm::dvec3 hi = w.origin() + glm::dvec3(b.max + 1) * w.voxelSize();
         std::printf("world          %s\n", w.desc().source.c_str());

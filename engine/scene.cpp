@@ -8,6 +8,23 @@
 
 namespace grotto {
 
+namespace {
+
+// The longest run of quads one draw covers: the shared index buffer's length.
+uint32_t largestDraw(const voxel::Mesh& mesh) {
+    uint32_t n = 1;
+    for (const voxel::MeshChunk& c : mesh.chunks)
+        for (uint32_t f = 0; f < 6; ++f) n = std::max(n, c.faceCount[f]);
+    return n;
+}
+
+}  // namespace
+
+size_t sceneBufferBytes(const voxel::Mesh& mesh) {
+    return mesh.quads.size() * 4 * sizeof(uint32_t) + size_t(largestDraw(mesh)) * 6 * sizeof(uint32_t) +
+           GROTTO_MAX_MATERIALS * sizeof(glm::vec4);
+}
+
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc) {
     auto scene = std::make_unique<GpuScene>(ctx);
     GpuScene& s = *scene;
@@ -35,9 +52,7 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh,
     }
     std::vector<uint32_t> vertices;
     vertices.reserve(4 * mesh.quads.size());
-    uint32_t largestDraw = 1;
     for (const voxel::MeshChunk& c : mesh.chunks) {
-        for (uint32_t f = 0; f < 6; ++f) largestDraw = std::max(largestDraw, c.faceCount[f]);
         for (uint32_t q = c.firstQuad; q < c.firstQuad + c.quadCount(); ++q) {
             const gpu::PackedQuad quad = mesh.quads[q];
             for (const glm::ivec3& v : mesh.corners(c, quad)) {
@@ -48,9 +63,10 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh,
     }
     s.vertices = vk::uploadBuffer(ctx, vertices.data(), vertices.size() * sizeof(uint32_t),
                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT);
+    const uint32_t drawQuads = largestDraw(mesh);
     std::vector<uint32_t> indices;
-    indices.reserve(6 * size_t(largestDraw));
-    for (uint32_t q = 0; q < largestDraw; ++q)
+    indices.reserve(6 * size_t(drawQuads));
+    for (uint32_t q = 0; q < drawQuads; ++q)
         for (uint32_t i : {0u, 1u, 2u, 0u, 2u, 3u}) indices.push_back(4 * q + i);
     s.indices = vk::uploadBuffer(ctx, indices.data(), indices.size() * sizeof(uint32_t),
                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);

@@ -40,4 +40,8 @@ struct GpuScene {
 
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc);
 
+// What uploadScene would allocate for these buffers (before allocator rounding),
+// without a device: for `grotto info`.
+size_t sceneBufferBytes(const voxel::Mesh& mesh);
+
 }  // namespace grotto
