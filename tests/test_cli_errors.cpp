@@ -243,7 +243,7 @@ TEST_F(CliErrors, NonsenseAoSettings) {
     const auto world = writeText("ao.json", R"({"grid": {"file": "good.vdb"}, "ao": {"thin_occluder": 0.9}})");
     expectRefused(render(world), "ao.thin_occluder", out());
     const auto preset = writeText("q.json", R"({"grid": {"file": "good.vdb"}, "ao": {"quality": "extreme"}})");
-    expectRefused(render(preset), "extreme", out());
+    expectRefused(render(preset), "ao.quality", out());
 }
 
 TEST_F(CliErrors, ShowWritesOneAovAsPng) {

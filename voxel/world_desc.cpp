@@ -166,6 +166,9 @@ void parseAo(Reader r, AoDesc& ao) {
     ao.method = r.string("method", ao.method);
     if (ao.method != "gtao" && ao.method != "off") r.fail("method", "unknown AO method '" + ao.method + "'", "accepted: gtao, off");
     ao.quality = r.string("quality", ao.quality);
+    if (ao.quality != "low" && ao.quality != "medium" && ao.quality != "high" && ao.quality != "ultra" &&
+        ao.quality != "custom")
+        r.fail("quality", "unknown AO quality '" + ao.quality + "'", "accepted: low, medium, high, ultra, custom");
     auto opt = [&](const char* key, std::optional<double>& v, double lo, double hi) {
         if (r.has(key)) v = r.number(key, 0.0, lo, hi);
     };
