@@ -138,9 +138,12 @@ vec2 gtaoPixel(ivec2 pixel) {
     vec2 noise = gtaoNoise(uvec2(pixel), gtao.frameIndex);
     float thinStretch = (1.0f + s.thinOccluderCompensation) * (1.0f + s.thinOccluderCompensation) - 1.0f;
 
+    // Slice directions by rotation: one sin/cos pair for the first and for the step.
+    float phi0 = noise.x / float(s.sliceCount) * kGtaoPi, dPhi = kGtaoPi / float(s.sliceCount);
+    vec2 sliceDir = vec2(cos(phi0), sin(phi0)), sliceStep = vec2(cos(dPhi), sin(dPhi));
     for (uint slice = 0u; slice < s.sliceCount; ++slice) {
-        float phi = (float(slice) + noise.x) / float(s.sliceCount) * kGtaoPi;
-        float cosPhi = cos(phi), sinPhi = sin(phi);
+        float cosPhi = sliceDir.x, sinPhi = sliceDir.y;
+        sliceDir = vec2(cosPhi * sliceStep.x - sinPhi * sliceStep.y, sinPhi * sliceStep.x + cosPhi * sliceStep.y);
         vec2 omega = vec2(cosPhi, -sinPhi) * screenRadius;  // pixels: y points down
         vec3 direction = vec3(cosPhi, sinPhi, 0.0f);        // view space: y points up
         vec3 orthoDirection = direction - dot(direction, viewVec) * viewVec;
