@@ -68,6 +68,4 @@ GtaoTwin::~GtaoTwin() { delete kernel_; }
 
 glm::vec2 GtaoTwin::pixel(glm::ivec2 p) const { return kernel_->gtaoPixel(p); }
 
-float GtaoTwin::mipDepth(int level, glm::ivec2 texel) const { return kernel_->gtaoDepth(texel, level); }
-
 }  // namespace grotto

@@ -20,8 +20,6 @@ public:
 
     // Visibility and packed edges at a half-resolution pixel.
     glm::vec2 pixel(glm::ivec2 halfPixel) const;
-    // The prefiltered view depth, as the GPU's MIP chain holds it.
-    float mipDepth(int level, glm::ivec2 texel) const;
 
 private:
     struct Kernel;

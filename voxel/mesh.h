@@ -34,7 +34,6 @@ struct Mesh {
 
     // The 4 corners of quad q of chunk c, in voxel-corner index units (CCW about the normal).
     std::array<glm::ivec3, 4> corners(const MeshChunk& c, const gpu::PackedQuad& q) const;
-    size_t bytes() const { return quads.size() * sizeof(gpu::PackedQuad) + chunks.size() * sizeof(MeshChunk); }
 };
 
 }  // namespace grotto::voxel

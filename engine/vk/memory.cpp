@@ -49,7 +49,6 @@ VkDeviceMemory Allocator::allocateMemory(uint32_t type, VkDeviceSize size, void*
     *mapped = nullptr;
     if (props_.memoryTypes[type].propertyFlags & VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT)
         VK_CHECK(vkMapMemory(device_, memory, 0, VK_WHOLE_SIZE, 0, mapped));
-    reserved_ += size;
     return memory;
 }
 
@@ -57,7 +56,6 @@ Allocation Allocator::allocate(const VkMemoryRequirements& req, bool hostVisible
     const uint32_t type = findType(req.memoryTypeBits, hostVisible);
     const VkDeviceSize align = std::max(req.alignment, granularity_);
     const VkDeviceSize size = alignUp(req.size, granularity_);
-    inUse_ += size;
     if (size > kBlockSize / 2) {
         Allocation a{.size = size, .type = type};
         a.memory = allocateMemory(type, size, &a.mapped);
@@ -91,10 +89,8 @@ Allocation Allocator::allocate(const VkMemoryRequirements& req, bool hostVisible
 
 void Allocator::free(const Allocation& a) {
     if (!a.memory) return;
-    inUse_ -= a.size;
     if (a.block < 0) {
         vkFreeMemory(device_, a.memory, nullptr);
-        reserved_ -= a.size;
         return;
     }
     auto& ranges = blocks_[a.block].freeRanges;

@@ -27,9 +27,6 @@ public:
     Allocation allocate(const VkMemoryRequirements& req, bool hostVisible);
     void free(const Allocation& a);
 
-    VkDeviceSize bytesInUse() const { return inUse_; }
-    VkDeviceSize bytesReserved() const { return reserved_; }
-
 private:
     struct Range { VkDeviceSize offset, size; };
     struct Block {
@@ -46,7 +43,6 @@ private:
     VkPhysicalDeviceMemoryProperties props_{};
     VkDeviceSize granularity_ = 1;
     std::vector<Block> blocks_;
-    VkDeviceSize inUse_ = 0, reserved_ = 0;
 };
 
 }  // namespace grotto::vk
