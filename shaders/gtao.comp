@@ -10,15 +10,13 @@ layout(set = 0, binding = 1, r32f) uniform readonly image2D depthAtlas;  // all 
 layout(set = 0, binding = 2) uniform usampler2D surfaceTex;  // full resolution
 layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D aoEdges;  // AO, edges, depth, face + 1
 
-// Point sampling with explicit, clamped texel coordinates, so the CPU twin can
-// reproduce every fetch exactly whatever the image size. One atlas image keeps
-// this a single fetch (five images behind a switch cost lavapipe half the pass).
-ivec4 gtaoMipRect(int mip);  // in the kernel below
+// Point sampling with explicit texel coordinates, so the CPU twin can reproduce
+// every fetch exactly. One atlas image keeps this a single fetch (five images
+// behind a switch cost lavapipe half the pass). The kernel passes AO pixels inside
+// the image, so texel >> mip is inside the MIP: only its offset is needed.
+ivec2 gtaoMipOffset(int mip);  // in the kernel below
 
-float gtaoDepth(ivec2 texel, int mip) {
-    ivec4 m = gtaoMipRect(mip);
-    return imageLoad(depthAtlas, clamp(texel >> mip, ivec2(0), m.zw - 1) + m.xy).r;
-}
+float gtaoDepth(ivec2 texel, int mip) { return imageLoad(depthAtlas, (texel >> mip) + gtaoMipOffset(mip)).r; }
 uint gtaoSurface(ivec2 pixel) { return texelFetch(surfaceTex, pixel, 0).r; }
 
 #include "shared/gtao_kernel.h"

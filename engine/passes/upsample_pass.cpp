@@ -17,7 +17,7 @@ void UpsamplePass::record(VkCommandBuffer cmd, const vk::Image& depth, const vk:
                     vk::storageImage(ao.denoised(denoisePasses).view),
                     vk::sampledImage(ctx_.pointSampler, depth.view, ro),
                     vk::sampledImage(ctx_.pointSampler, surface.view, ro), vk::storageImage(ao.full.view)},
-                   ao.full.extent, GROTTO_GTAO_GROUP);
+                   ao.half, GROTTO_GTAO_GROUP);  // one thread per AO pixel
 }
 
 }  // namespace grotto

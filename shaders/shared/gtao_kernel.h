@@ -1,8 +1,9 @@
 // The GTAO kernel, written once for GLSL and C++ (GLM): the GPU pass includes it
 // in its shader, the CPU twin in a class. The includer provides
 //   GtaoConstants gtao;                       the constants (shared/gtao.h)
-//   float gtaoDepth(ivec2 texel, int mip);    prefiltered view depth (kGtaoSky = none),
-//                                             clamping texel >> mip to the MIP's size
+//   float gtaoDepth(ivec2 texel, int mip);    prefiltered view depth (kGtaoSky = none) at
+//                                             AO pixel texel (always inside the AO image)
+//                                             from MIP mip, i.e. MIP texel texel >> mip
 //   uint  gtaoSurface(ivec2 fullResPixel);    G-buffer surface id (shared/quad.h)
 // and, in C++, `using namespace glm` around it. Float literals carry an f so both
 // languages read them the same way.
@@ -49,12 +50,18 @@ vec2 gtaoNoise(uvec2 pixel, uint frameIndex) {
 // Where MIP `mip` sits in the depth atlas (xy offset, zw size): MIP 0 at the
 // origin, MIPs 1-4 in a column of equal slots to its right. Plain arithmetic, so a
 // sample's varying MIP costs no indexed constant load.
-ivec4 gtaoMipRect(int mip) {
+ivec2 gtaoMipOffset(int mip) {
     ivec2 half0 = ivec2(gtao.halfSize);
-    ivec2 size = (half0 + ((1 << mip) - 1)) >> mip;
-    ivec2 offset = mip == 0 ? ivec2(0) : ivec2(half0.x, (mip - 1) * ((half0.y + 1) >> 1));
-    return ivec4(offset, size);
+    return mip == 0 ? ivec2(0) : ivec2(half0.x, (mip - 1) * ((half0.y + 1) >> 1));
 }
+
+ivec4 gtaoMipRect(int mip) {
+    ivec2 size = (ivec2(gtao.halfSize) + ((1 << mip) - 1)) >> mip;
+    return ivec4(gtaoMipOffset(mip), size);
+}
+
+// floor(log2(x)) for positive normal floats (-127 for zero): the IEEE exponent.
+int gtaoExponent(float x) { return (floatBitsToInt(x) >> 23) - 127; }
 
 vec3 gtaoViewPosition(vec2 halfPixel, float depth) {
     vec2 p = halfPixel * float(gtao.scale) + 0.5f;
@@ -136,6 +143,7 @@ vec2 gtaoPixel(ivec2 pixel) {
     float visible = 0.0f, unoccluded = 0.0f;
     float minS = 1.3f / screenRadius;  // skip the centre pixel itself
     vec2 noise = gtaoNoise(uvec2(pixel), gtao.frameIndex);
+    float mipScale = exp2(1.0f - 2.0f * s.depthMipSamplingOffset);  // (2^(0.5 - offset))^2
     float thinStretch = (1.0f + s.thinOccluderCompensation) * (1.0f + s.thinOccluderCompensation) - 1.0f;
 
     // Slice directions by rotation: one sin/cos pair for the first and for the step.
@@ -153,7 +161,7 @@ vec2 gtaoPixel(ivec2 pixel) {
         float projectedLength = max(length(projectedNormal), 1e-6f);
         float cosNorm = gtaoSaturate(dot(projectedNormal, viewVec) / projectedLength);
         float n = signNorm * acos(cosNorm);
-        float sinN = sin(n);
+        float sinN = signNorm * sqrt(max(1.0f - cosNorm * cosNorm, 0.0f));  // sin n, without a sin
         // The hemisphere's own horizons: cos(n + pi/2) = -sin n, cos(n - pi/2) = sin n.
         float lowCos0 = -sinN, lowCos1 = sinN;
         float horizonCos0 = lowCos0, horizonCos1 = lowCos1;
@@ -165,12 +173,14 @@ vec2 gtaoPixel(ivec2 pixel) {
             // Bounded so the integer pixel offset cannot overflow at extreme radii;
             // such a sample is off-screen, and open, either way.
             vec2 offset = clamp(t * omega, vec2(-32768.0f), vec2(32768.0f));
-            int mip = int(clamp(floor(log2(length(offset)) - s.depthMipSamplingOffset + 0.5f), 0.0f,
-                                float(GROTTO_GTAO_DEPTH_MIPS - 1)));
+            // MIP floor(log2|offset| - mipOffset + 0.5), read off the float exponent of
+            // the scaled squared length: no log2 or sqrt per step.
+            int mip = clamp((gtaoExponent(dot(offset, offset) * mipScale) >> 1), 0, GROTTO_GTAO_DEPTH_MIPS - 1);
             ivec2 rounded = ivec2(floor(offset + 0.5f));
             ivec2 p0 = pixel + rounded, p1 = pixel - rounded;
-            vec3 delta0 = gtaoSamplePosition(p0, mip) - position;
-            vec3 delta1 = gtaoSamplePosition(p1, mip) - position;
+            ivec2 c0 = clamp(p0, ivec2(0), last), c1 = clamp(p1, ivec2(0), last);
+            vec3 delta0 = gtaoSamplePosition(c0, mip) - position;
+            vec3 delta1 = gtaoSamplePosition(c1, mip) - position;
             float squared0 = dot(delta0, delta0), squared1 = dot(delta1, delta1);
             float inverse0 = inversesqrt(max(squared0, 1e-30f)), inverse1 = inversesqrt(max(squared1, 1e-30f));
             vec3 horizon0 = delta0 * inverse0, horizon1 = delta1 * inverse1;
@@ -183,8 +193,8 @@ vec2 gtaoPixel(ivec2 pixel) {
             // the slice, which would otherwise read as occlusion on flat floors.
             // Off-screen samples are unknown and count as open: clamping them to the
             // border would lift slanted planes into false occluders.
-            float inside0 = all(equal(p0, clamp(p0, ivec2(0), last))) ? 1.0f : 0.0f;
-            float inside1 = all(equal(p1, clamp(p1, ivec2(0), last))) ? 1.0f : 0.0f;
+            float inside0 = all(equal(p0, c0)) ? 1.0f : 0.0f;
+            float inside1 = all(equal(p1, c1)) ? 1.0f : 0.0f;
             float weight0 = gtaoSaturate(falloff0 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon0, normal) * 32.0f) * inside0;
             float weight1 = gtaoSaturate(falloff1 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon1, normal) * 32.0f) * inside1;
             float shc0 = mix(lowCos0, dot(horizon0, viewVec), weight0);
@@ -195,10 +205,15 @@ vec2 gtaoPixel(ivec2 pixel) {
         // Cosine-weighted integral of the visible arc between the two horizons, and
         // of the whole arc (horizons at n -/+ pi/2, where it is cos n + n sin n).
         projectedLength = mix(projectedLength, 1.0f, 0.05f);
-        float h0 = -acos(clamp(horizonCos1, -1.0f, 1.0f));
-        float h1 = acos(clamp(horizonCos0, -1.0f, 1.0f));
-        float arc0 = (cosNorm + 2.0f * h0 * sinN - cos(2.0f * h0 - n)) / 4.0f;
-        float arc1 = (cosNorm + 2.0f * h1 * sinN - cos(2.0f * h1 - n)) / 4.0f;
+        // cos(2h - n) by the angle formulas from cos h, which the search found, so
+        // only the angles themselves need an acos.
+        float c0 = clamp(horizonCos1, -1.0f, 1.0f), c1 = clamp(horizonCos0, -1.0f, 1.0f);
+        float h0 = -acos(c0), h1 = acos(c1);
+        float sin0 = -sqrt(max(1.0f - c0 * c0, 0.0f)), sin1 = sqrt(max(1.0f - c1 * c1, 0.0f));
+        float cos2h0n = (2.0f * c0 * c0 - 1.0f) * cosNorm + 2.0f * sin0 * c0 * sinN;
+        float cos2h1n = (2.0f * c1 * c1 - 1.0f) * cosNorm + 2.0f * sin1 * c1 * sinN;
+        float arc0 = (cosNorm + 2.0f * h0 * sinN - cos2h0n) / 4.0f;
+        float arc1 = (cosNorm + 2.0f * h1 * sinN - cos2h1n) / 4.0f;
         visible += projectedLength * (arc0 + arc1);
         unoccluded += projectedLength * (cosNorm + n * sinN);
     }
