@@ -92,7 +92,7 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
         aoTargets_.full = vk::createImage(ctx, extent, VK_FORMAT_R32_SFLOAT, storage);
         gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
-        gtaoPass_ = std::make_unique<GtaoPass>(ctx);
+        gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_.gtao);
         denoisePass_ = std::make_unique<DenoisePass>(ctx);
         upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
     } else {

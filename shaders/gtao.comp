@@ -5,6 +5,14 @@
 #include "shared/quad.h"
 
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
+// The loop shape as specialization constants (see the kernel); GtaoPass sets them.
+layout(constant_id = 0) const uint specSlices = 3u;
+layout(constant_id = 1) const uint specSteps = 3u;
+layout(constant_id = 2) const float specPower = 2.0;
+#define kGtaoSlices specSlices
+#define kGtaoSteps specSteps
+#define kGtaoPower specPower
+
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
 layout(set = 0, binding = 1, r32f) uniform readonly image2D depthAtlas;  // all MIPs side by side
 layout(set = 0, binding = 2) uniform usampler2D surfaceTex;  // full resolution

@@ -3,11 +3,11 @@
 namespace grotto {
 
 ComputePass::ComputePass(vk::Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
-                         uint32_t pushBytes)
+                         uint32_t pushBytes, const std::vector<uint32_t>& specialization)
     : ctx_(ctx), pushBytes_(pushBytes) {
     setLayout_ = vk::pushDescriptorLayout(ctx, bindings, VK_SHADER_STAGE_COMPUTE_BIT);
     layout_ = vk::pipelineLayout(ctx, setLayout_, pushBytes, VK_SHADER_STAGE_COMPUTE_BIT);
-    pipeline_ = vk::computePipeline(ctx, layout_, shader);
+    pipeline_ = vk::computePipeline(ctx, layout_, shader, specialization);
 }
 
 ComputePass::~ComputePass() {

@@ -12,7 +12,7 @@ namespace grotto {
 class ComputePass {
 public:
     ComputePass(vk::Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
-                uint32_t pushBytes = 0);
+                uint32_t pushBytes = 0, const std::vector<uint32_t>& specialization = {});
     ~ComputePass();
     ComputePass(const ComputePass&) = delete;
     ComputePass& operator=(const ComputePass&) = delete;

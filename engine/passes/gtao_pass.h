@@ -9,7 +9,8 @@ namespace grotto {
 
 class GtaoPass {
 public:
-    explicit GtaoPass(vk::Context& ctx);
+    // The loop shape (slices, steps, distribution power) is compiled in from `settings`.
+    GtaoPass(vk::Context& ctx, const gpu::GtaoSettings& settings);
     void record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants);
 
 private:

@@ -49,13 +49,21 @@ VkPipelineLayout pipelineLayout(Context& ctx, VkDescriptorSetLayout set, uint32_
     return layout;
 }
 
-VkPipeline computePipeline(Context& ctx, VkPipelineLayout layout, const std::string& shader) {
+VkPipeline computePipeline(Context& ctx, VkPipelineLayout layout, const std::string& shader,
+                           const std::vector<uint32_t>& specialization) {
     VkShaderModule module = loadShader(ctx, shader);
+    std::vector<VkSpecializationMapEntry> entries;
+    for (uint32_t i = 0; i < specialization.size(); ++i) entries.push_back({i, 4 * i, 4});
+    const VkSpecializationInfo spec{.mapEntryCount = uint32_t(entries.size()),
+                                    .pMapEntries = entries.data(),
+                                    .dataSize = 4 * specialization.size(),
+                                    .pData = specialization.data()};
     VkComputePipelineCreateInfo ci{.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
                                    .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
                                              .stage = VK_SHADER_STAGE_COMPUTE_BIT,
                                              .module = module,
-                                             .pName = "main"},
+                                             .pName = "main",
+                                             .pSpecializationInfo = specialization.empty() ? nullptr : &spec},
                                    .layout = layout};
     VkPipeline pipeline;
     VK_CHECK(vkCreateComputePipelines(ctx.device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline));

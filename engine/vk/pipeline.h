@@ -19,7 +19,9 @@ VkDescriptorSetLayout pushDescriptorLayout(Context& ctx, const std::vector<VkDes
 VkPipelineLayout pipelineLayout(Context& ctx, VkDescriptorSetLayout set, uint32_t pushConstantBytes,
                                 VkShaderStageFlags pushStages);
 
-VkPipeline computePipeline(Context& ctx, VkPipelineLayout layout, const std::string& shader);
+// `specialization`: 32-bit values for constant_id 0, 1, 2, ... (floats bit-cast).
+VkPipeline computePipeline(Context& ctx, VkPipelineLayout layout, const std::string& shader,
+                           const std::vector<uint32_t>& specialization = {});
 
 // One write of a push-descriptor binding (image or buffer).
 struct Binding {

@@ -13,6 +13,15 @@
 // gtao.scale = 1 (the full-resolution comparison) the AO pixel is the full one.
 
 #define kGtaoSky 1.0e15f
+
+// The loop shape. The GTAO pass defines these as specialization constants (same
+// values as the settings), so the compiler sees constants, unrolls both loops and
+// folds pow(t, 2): about 30 % of the pass on lavapipe.
+#ifndef kGtaoSlices
+#define kGtaoSlices gtao.settings.sliceCount
+#define kGtaoSteps gtao.settings.stepsPerSlice
+#define kGtaoPower gtao.settings.sampleDistributionPower
+#endif
 #define kGtaoPi 3.14159265358979f
 
 float gtaoSaturate(float x) { return clamp(x, 0.0f, 1.0f); }
@@ -147,9 +156,9 @@ vec2 gtaoPixel(ivec2 pixel) {
     float thinStretch = (1.0f + s.thinOccluderCompensation) * (1.0f + s.thinOccluderCompensation) - 1.0f;
 
     // Slice directions by rotation: one sin/cos pair for the first and for the step.
-    float phi0 = noise.x / float(s.sliceCount) * kGtaoPi, dPhi = kGtaoPi / float(s.sliceCount);
+    float phi0 = noise.x / float(kGtaoSlices) * kGtaoPi, dPhi = kGtaoPi / float(kGtaoSlices);
     vec2 sliceDir = vec2(cos(phi0), sin(phi0)), sliceStep = vec2(cos(dPhi), sin(dPhi));
-    for (uint slice = 0u; slice < s.sliceCount; ++slice) {
+    for (uint slice = 0u; slice < kGtaoSlices; ++slice) {
         float cosPhi = sliceDir.x, sinPhi = sliceDir.y;
         sliceDir = vec2(cosPhi * sliceStep.x - sinPhi * sliceStep.y, sinPhi * sliceStep.x + cosPhi * sliceStep.y);
         vec2 omega = vec2(cosPhi, -sinPhi) * screenRadius;  // pixels: y points down
@@ -166,10 +175,10 @@ vec2 gtaoPixel(ivec2 pixel) {
         float lowCos0 = -sinN, lowCos1 = sinN;
         float horizonCos0 = lowCos0, horizonCos1 = lowCos1;
 
-        for (uint stepIndex = 0u; stepIndex < s.stepsPerSlice; ++stepIndex) {
+        for (uint stepIndex = 0u; stepIndex < kGtaoSteps; ++stepIndex) {
             // Golden-ratio jitter per step decorrelates steps sharing the pixel's noise.
-            float stepNoise = fract(noise.y + float(slice + stepIndex * s.stepsPerSlice) * 0.6180339887f);
-            float t = pow((float(stepIndex) + stepNoise) / float(s.stepsPerSlice), s.sampleDistributionPower) + minS;
+            float stepNoise = fract(noise.y + float(slice + stepIndex * kGtaoSteps) * 0.6180339887f);
+            float t = pow((float(stepIndex) + stepNoise) / float(kGtaoSteps), kGtaoPower) + minS;
             // Bounded so the integer pixel offset cannot overflow at extreme radii;
             // such a sample is off-screen, and open, either way.
             vec2 offset = clamp(t * omega, vec2(-32768.0f), vec2(32768.0f));
