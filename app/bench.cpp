@@ -71,7 +71,7 @@ void addBenchCommand(CLI::App& app) {
             Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
             targetBytes = renderer.targetBytes();
             for (int i = 0; i < args->warmup + args->frames; ++i) {
-                const FrameStats f = renderer.render(camera);
+                const FrameStats f = renderer.render(camera, uint32_t(i));  // consecutive: temporal runs as in a flythrough
                 if (i < args->warmup) continue;
                 double gpu = 0;
                 for (auto& [name, ms] : f.passMs) passMs[name].push_back(ms), gpu += ms;

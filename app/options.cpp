@@ -22,6 +22,7 @@ void addAoFlags(CLI::App* cmd, AoFlags& f) {
     cmd->add_option("--radius", f.radius, "AO radius in world units (> 0)");
     cmd->add_option("--thin-occluder", f.thinOccluder, "Thin-occluder compensation, 0 to 0.7");
     cmd->add_option("--denoise", f.denoise, "Spatial denoise passes, 0 to 4");
+    cmd->add_option("--temporal", f.temporal, "Most frames the temporal pass averages, 0 (off) to 64");
     cmd->add_flag("--ao-full-res", f.fullResolution, "Run the AO chain at full instead of half resolution");
 }
 
@@ -41,6 +42,10 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
     if (f.denoise) {
         if (*f.denoise < 0 || *f.denoise > 4) throw Error("--denoise", std::to_string(*f.denoise) + " is out of range", "accepted: 0 to 4");
         o.gtao.denoisePasses = uint32_t(*f.denoise);
+    }
+    if (f.temporal) {
+        if (*f.temporal < 0 || *f.temporal > 64) throw Error("--temporal", std::to_string(*f.temporal) + " is out of range", "accepted: 0 (off) to 64");
+        o.gtao.temporalHistory = uint32_t(*f.temporal);
     }
     if (f.radius && !(*f.radius > 0.0 && *f.radius <= 1e6))
         throw Error("--radius", std::to_string(*f.radius) + " is out of range", "accepted: > 0 world units");

@@ -23,7 +23,7 @@ Size parseSize(const std::string& text, const std::string& option = "--size");
 struct AoFlags {
     std::string method, quality;
     std::optional<double> radius, thinOccluder;
-    std::optional<int> denoise;
+    std::optional<int> denoise, temporal;
     bool fullResolution = false;
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);

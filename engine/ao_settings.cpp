@@ -18,6 +18,7 @@ gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius) {
     s.strength = 1.0f;
     s.denoiseBlurBeta = 1.2f;
     s.denoisePasses = 1;
+    s.temporalHistory = 16;
     if (quality == "low") s.sliceCount = 1, s.stepsPerSlice = 2;
     else if (quality == "medium") s.sliceCount = 2, s.stepsPerSlice = 2;
     else if (quality == "high" || quality == "custom") s.sliceCount = 3, s.stepsPerSlice = 3;
@@ -51,6 +52,7 @@ void validateGtao(const gpu::GtaoSettings& s, const std::string& where) {
     check(s.sliceCount >= 1 && s.sliceCount <= 32, where, "slices", s.sliceCount, "1 to 32");
     check(s.stepsPerSlice >= 1 && s.stepsPerSlice <= 32, where, "steps", s.stepsPerSlice, "1 to 32");
     check(s.denoisePasses <= 4, where, "denoise", s.denoisePasses, "0 to 4");
+    check(s.temporalHistory <= 64, where, "temporal_history", s.temporalHistory, "0 to 64");
 }
 
 AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::string& where) {
@@ -70,6 +72,7 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
     if (d.slices) s.sliceCount = uint32_t(*d.slices);
     if (d.steps) s.stepsPerSlice = uint32_t(*d.steps);
     if (d.denoisePasses) s.denoisePasses = uint32_t(*d.denoisePasses);
+    if (d.temporalHistory) s.temporalHistory = uint32_t(*d.temporalHistory);
     validateGtao(s, where);
     return o;
 }

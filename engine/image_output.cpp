@@ -89,7 +89,7 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& f, const C
         std::vector<std::string> names = {"R", "G", "B", "A"};
         if (aovs)
             names.insert(names.end(), {"Z", "N.x", "N.y", "N.z", "albedo.R", "albedo.G", "albedo.B", "AO", "AO_raw",
-                                       "AO_spatial", "edges"});
+                                       "AO_spatial", "AO_temporal", "AO_history", "edges"});
         const int channels = int(names.size());
         OIIO::ImageSpec spec(int(f.width), int(f.height), channels, OIIO::TypeDesc::FLOAT);
         spec.channelnames = names;
@@ -110,7 +110,9 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& f, const C
             p[11] = f.ao[i];
             p[12] = f.aoRaw[i];
             p[13] = f.aoSpatial[i];
-            p[14] = f.edges[i];
+            p[14] = f.aoTemporal[i];
+            p[15] = f.aoHistory[i];
+            p[16] = f.edges[i];
         }
         write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT);
     });

@@ -1,8 +1,8 @@
 #pragma once
 // Writes a read-back frame with OpenImageIO, atomically. PNG: 8-bit sRGB colour.
 // EXR: float RGBA, with AOVs also Z, N.x N.y N.z and albedo.R albedo.G albedo.B.
-// With AOVs the EXR also holds AO (final), AO_raw and AO_spatial (half res,
-// stored by nearest) and edges. Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
+// With AOVs the EXR also holds AO (final), AO_raw, AO_spatial, AO_temporal and
+// AO_history (half res, stored by nearest) and edges. Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
 #include "engine/camera.h"
 #include "engine/renderer.h"
 

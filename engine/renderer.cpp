@@ -1,6 +1,6 @@
 // The whole frame on one screen: G-buffer, then (with AO) depth prefilter, GTAO,
-// spatial denoise and upsample at half resolution, then composite, with the
-// barriers between them.
+// spatial denoise and temporal accumulation at half resolution, the upsample,
+// then composite, with the barriers between them.
 #include "engine/renderer.h"
 
 #include "engine/vk/readback.h"
@@ -66,6 +66,17 @@ gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& 
     return c;
 }
 
+gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* previous, uint32_t scale) {
+    gpu::TemporalConstants t{};
+    t.reset = previous ? 0u : 1u;
+    const Camera& prev = previous ? *previous : current;
+    t.currentToPrevious = glm::mat4(prev.viewFromWorld() * glm::inverse(current.viewFromWorld()));
+    const gpu::GtaoConstants g = gtaoConstants(prev, {}, 0, scale);
+    t.previousNdcToViewMul_Add = g.ndcToViewMul_Add;
+    for (int f = 0; f < 6; ++f) t.previousViewNormals[f] = g.viewNormals[f];
+    return t;
+}
+
 Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                    uint32_t width, uint32_t height)
     : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), timestamps_(ctx, 16) {
@@ -95,6 +106,13 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
         gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_.gtao);
         denoisePass_ = std::make_unique<DenoisePass>(ctx);
         upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
+        if (temporal()) {
+            for (vk::Image& h : aoTargets_.history)
+                h = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
+            temporalConstants_ =
+                vk::createBuffer(ctx, sizeof(gpu::TemporalConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+            temporalPass_ = std::make_unique<TemporalPass>(ctx);
+        }
     } else {
         aoTargets_.full = vk::createImage(ctx, {1, 1}, VK_FORMAT_R32_SFLOAT, storage);
     }
@@ -109,6 +127,7 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
         general(aoTargets_.depthAtlas);
         general(aoTargets_.raw);
         for (const vk::Image& s : aoTargets_.spatial) general(s);
+        for (const vk::Image& h : aoTargets_.history) general(h);
         general(aoTargets_.full);
     });
 
@@ -129,24 +148,40 @@ Renderer::~Renderer() {
     prefilterPass_.reset();
     gtaoPass_.reset();
     denoisePass_.reset();
+    temporalPass_.reset();
     upsamplePass_.reset();
     compositePass_.reset();
     for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
-                         &aoTargets_.spatial[1], &aoTargets_.full})
+                         &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1], &aoTargets_.full})
         vk::destroy(ctx_, *i);
     vk::destroy(ctx_, aoTargets_.depthAtlas);
     vk::destroy(ctx_, frame_);
     vk::destroy(ctx_, gtaoConstants_);
+    vk::destroy(ctx_, temporalConstants_);
 }
 
 size_t Renderer::targetBytes() const {
     size_t n = 0;
     for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
-                               &aoTargets_.spatial[1], &aoTargets_.full})
+                               &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
+                               &aoTargets_.full})
         n += i->memory.size;
     n += aoTargets_.depthAtlas.memory.size;
     return n;
 }
+
+const vk::Image& Renderer::aoHalfOutput() const {
+    return temporal() ? aoTargets_.history[historyIndex_] : aoTargets_.denoised(ao_.gtao.denoisePasses);
+}
+
+namespace {
+// A new sequence, or a change of the projection, leaves nothing to reproject.
+bool continues(const Camera& previous, uint32_t previousFrame, const Camera& camera, uint32_t frameIndex) {
+    return frameIndex == previousFrame + 1u && previous.width == camera.width && previous.height == camera.height &&
+           previous.fovY == camera.fovY && previous.nearPlane == camera.nearPlane &&
+           previous.farPlane == camera.farPlane;
+}
+}  // namespace
 
 void Renderer::recordAo(VkCommandBuffer cmd) {
     timestamps_.begin(cmd, "prefilter");
@@ -159,8 +194,18 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     timestamps_.begin(cmd, "denoise");
     denoisePass_->record(cmd, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);
     timestamps_.end(cmd);
+    if (temporal()) {
+        // Reads the last output, writes the other image, which becomes the last.
+        const vk::Image& previous = aoTargets_.history[historyIndex_];
+        historyIndex_ = 1 - historyIndex_;
+        timestamps_.begin(cmd, "temporal");
+        temporalPass_->record(cmd, aoTargets_.denoised(ao_.gtao.denoisePasses), previous,
+                              aoTargets_.history[historyIndex_], gtaoConstants_, temporalConstants_);
+        timestamps_.end(cmd);
+        computeToCompute(cmd);
+    }
     timestamps_.begin(cmd, "upsample");
-    upsamplePass_->record(cmd, gbuffer_.depth, gbuffer_.surface, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);
+    upsamplePass_->record(cmd, gbuffer_.depth, gbuffer_.surface, aoHalfOutput(), aoTargets_.full, gtaoConstants_);
     timestamps_.end(cmd);
     computeToCompute(cmd);
 }
@@ -170,8 +215,17 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
     std::memcpy(frame_.mapped(), &uniforms, sizeof uniforms);
     if (ao_.enabled) {
-        const gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, ao_.fullResolution ? 1 : 2);
+        const uint32_t scale = ao_.fullResolution ? 1 : 2;
+        const gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, scale);
         std::memcpy(gtaoConstants_.mapped(), &constants, sizeof constants);
+        if (temporal()) {
+            if (previousCamera_ && !continues(*previousCamera_, previousFrame_, camera, frameIndex))
+                previousCamera_.reset();
+            const gpu::TemporalConstants t = temporalConstants(camera, previousCamera_ ? &*previousCamera_ : nullptr, scale);
+            std::memcpy(temporalConstants_.mapped(), &t, sizeof t);
+            previousCamera_ = camera;
+            previousFrame_ = frameIndex;
+        }
     }
 
     VkCommandBuffer cmd = cmd_;
@@ -268,7 +322,7 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
             for (int c = 0; c < 3; ++c) f.albedo[3 * i + c] = scene_.albedo[material - 1][c];
     }
     if (!ao_.enabled) {
-        f.ao = f.aoRaw = f.aoSpatial = f.edges = std::vector<float>(n, 1.0f);
+        f.ao = f.aoRaw = f.aoSpatial = f.aoTemporal = f.aoHistory = f.edges = std::vector<float>(n, 1.0f);
         return f;
     }
     const VkExtent2D h = aoTargets_.half;
@@ -282,6 +336,14 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     const uint32_t scale = ao_.fullResolution ? 1 : 2;
     f.aoRaw = halfToFull(raw, h, 4, 0, scale, f.width, f.height);
     f.aoSpatial = halfToFull(spatial, h, 4, 0, scale, f.width, f.height);
+    if (temporal()) {
+        const std::vector<float> history = floats(vk::readImage(ctx_, aoHalfOutput(), general, 16));
+        f.aoTemporal = halfToFull(history, h, 4, 0, scale, f.width, f.height);
+        f.aoHistory = halfToFull(history, h, 4, 1, scale, f.width, f.height);
+    } else {
+        f.aoTemporal = f.aoSpatial;
+        f.aoHistory.assign(n, 1.0f);
+    }
     const std::vector<float> packed = halfToFull(raw, h, 4, 1, scale, f.width, f.height);
     f.edges.resize(n);
     for (size_t i = 0; i < n; ++i) {

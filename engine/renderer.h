@@ -8,12 +8,15 @@
 #include "engine/passes/depth_prefilter_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/passes/gtao_pass.h"
+#include "engine/passes/temporal_pass.h"
 #include "engine/passes/upsample_pass.h"
 #include "engine/scene.h"
 #include "engine/vk/timestamps.h"
+#include "shaders/shared/temporal.h"
 #include "voxel/world_desc.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,6 +41,8 @@ struct FrameImages {
     std::vector<float> ao;         // final visibility, full res (1 without AO)
     std::vector<float> aoRaw;      // GTAO main pass output (half res)
     std::vector<float> aoSpatial;  // after the spatial denoiser (half res)
+    std::vector<float> aoTemporal; // after the temporal pass (half res; the spatial AO without one)
+    std::vector<float> aoHistory;  // frames of history behind each temporal pixel (half res; 1 without)
     std::vector<float> edges;      // smallest of the four edge weights (half res)
     std::vector<float> depthBuffer;       // raw reverse-Z values, as the GPU stored them
     std::vector<uint16_t> surfaceIds;     // raw G-buffer surface ids
@@ -50,7 +55,12 @@ public:
              uint32_t width, uint32_t height);
     ~Renderer();
 
+    // Renders frame `frameIndex` (it advances the GTAO noise). The temporal pass
+    // accumulates over consecutive frame indices (wrapping); any other index, or a
+    // change of field of view, clip planes or size, starts the history afresh.
     FrameStats render(const Camera& camera, uint32_t frameIndex = 0);
+    // A camera cut: the next frame starts without history.
+    void resetHistory() { previousCamera_.reset(); }
     // Reads back the last frame; the G-buffer and AO AOVs only when asked for.
     FrameImages readback(const Camera& camera, bool aovs);
 
@@ -59,6 +69,8 @@ public:
 
 private:
     void recordAo(VkCommandBuffer cmd);
+    bool temporal() const { return ao_.enabled && ao_.gtao.temporalHistory > 0; }
+    const vk::Image& aoHalfOutput() const;  // what the upsample reads
 
     vk::Context& ctx_;
     const GpuScene& scene_;
@@ -67,11 +79,17 @@ private:
     GBufferTargets gbuffer_;
     AoTargets aoTargets_;
     vk::Image color_;
-    vk::Buffer frame_, gtaoConstants_;
+    vk::Buffer frame_, gtaoConstants_, temporalConstants_;
+    // Temporal state: which history image holds the last output, and the camera
+    // and frame index it was rendered with (none after a cut).
+    uint32_t historyIndex_ = 0;
+    std::optional<Camera> previousCamera_;
+    uint32_t previousFrame_ = 0;
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<DepthPrefilterPass> prefilterPass_;
     std::unique_ptr<GtaoPass> gtaoPass_;
     std::unique_ptr<DenoisePass> denoisePass_;
+    std::unique_ptr<TemporalPass> temporalPass_;
     std::unique_ptr<UpsamplePass> upsamplePass_;
     std::unique_ptr<CompositePass> compositePass_;
     vk::Timestamps timestamps_;
@@ -82,5 +100,8 @@ private:
 // The GTAO constants for a camera (exposed for the CPU twin and its tests).
 gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex,
                                  uint32_t scale = 2);
+// How the current camera's view maps to the previous one's (camera-relative, built
+// in double so it stays exact far from the origin); reset when there is no history.
+gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* previous, uint32_t scale);
 
 }  // namespace grotto

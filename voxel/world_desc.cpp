@@ -187,6 +187,7 @@ void parseAo(Reader r, AoDesc& ao) {
     optInt("slices", ao.slices, 1, 32);
     optInt("steps", ao.steps, 1, 32);
     optInt("denoise", ao.denoisePasses, 0, 4);
+    optInt("temporal_history", ao.temporalHistory, 0, 64);
 }
 
 WorldDesc parseWorld(const fs::path& file, const json& doc) {

@@ -51,7 +51,7 @@ struct AoDesc {
     std::string quality = "high";  // low, medium, high, ultra, custom
     std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
         finalValuePower, depthMipOffset, strength, denoiseBlurBeta;
-    std::optional<int> slices, steps, denoisePasses;
+    std::optional<int> slices, steps, denoisePasses, temporalHistory;
 };
 
 struct WorldDesc {

@@ -13,6 +13,8 @@ struct AoTargets {
     vk::Image depthAtlas;                                      // R32F view depth, every MIP (see depthMipLayout)
     vk::Image raw;                                             // RGBA32F: visibility, packed edges, depth, face + 1
     std::array<vk::Image, 2> spatial;                          // RGBA32F: denoiser ping-pong, same layout
+    std::array<vk::Image, 2> history;                          // RGBA32F: temporal output, this frame's and the last
+                                                               // (visibility, history length, depth, face + 1)
     vk::Image full;                                            // R32F: upsampled visibility
 
     // The denoiser's output after `passes` passes (the raw AO when there are none).

@@ -1,5 +1,5 @@
 #pragma once
-// Depth-aware upsample to full resolution. Reads: the denoised half-res AO (with
+// Depth-aware upsample to full resolution. Reads: the half-res AO (with
 // its depth and face), full-res depth and surface ids, GTAO constants.
 // Writes: AoTargets::full. No history.
 #include "engine/passes/ao_targets.h"
@@ -10,8 +10,9 @@ namespace grotto {
 class UpsamplePass {
 public:
     explicit UpsamplePass(vk::Context& ctx);
-    void record(VkCommandBuffer cmd, const vk::Image& depth, const vk::Image& surface, const AoTargets& ao,
-                uint32_t denoisePasses, const vk::Buffer& constants);
+    // `aoHalf`: the chain's last half-res output (spatial or temporal).
+    void record(VkCommandBuffer cmd, const vk::Image& depth, const vk::Image& surface, const vk::Image& aoHalf,
+                const vk::Image& full, const vk::Buffer& constants);
 
 private:
     vk::Context& ctx_;

@@ -23,8 +23,10 @@ struct GtaoSettings {
     uint sliceCount;                // slices per pixel: low 1, medium 2, high 3, ultra 9 (1 .. 32)
     uint stepsPerSlice;             // steps per side: low 2, medium 2, high 3, ultra 3 (1 .. 32)
     uint denoisePasses;             // 1 (0 .. 4): edge-aware spatial blur passes
+    uint temporalHistory;           // 16 (0 .. 64): most frames the temporal pass averages; 0 = no temporal pass
+    uint pad0, pad1, pad2;
 };
-GROTTO_STATIC_ASSERT(sizeof(GtaoSettings) == 48);
+GROTTO_STATIC_ASSERT(sizeof(GtaoSettings) == 64);
 
 // What the GTAO passes need besides the settings, all at half resolution.
 struct GtaoConstants {
@@ -39,7 +41,7 @@ struct GtaoConstants {
     uint scale;              // full-res pixels per AO pixel: 2 (half res, the default) or 1
     uint pad0, pad1, pad2;
 };
-GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 48 + 16 + 96 + 16 + 16 + 16);
+GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 64 + 16 + 96 + 16 + 16 + 16);
 
 GROTTO_NAMESPACE_END
 #endif

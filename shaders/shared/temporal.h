@@ -1,0 +1,19 @@
+// Constants of the temporal pass, shared by C++ and GLSL: how the current view
+// maps to the previous frame's, and the previous camera's projection.
+#ifndef GROTTO_SHARED_TEMPORAL_H
+#define GROTTO_SHARED_TEMPORAL_H
+#include "common.h"
+
+GROTTO_NAMESPACE_BEGIN
+
+struct TemporalConstants {
+    mat4 currentToPrevious;          // current view space -> previous view space, built in double
+    vec4 previousNdcToViewMul_Add;   // as GtaoConstants::ndcToViewMul_Add, for the previous camera
+    vec4 previousViewNormals[6];     // the six face normals in the previous view space
+    uint reset;                      // 1 = no usable history: first frame, camera cut, new sequence
+    uint pad0, pad1, pad2;
+};
+GROTTO_STATIC_ASSERT(sizeof(TemporalConstants) == 64 + 16 + 96 + 16);
+
+GROTTO_NAMESPACE_END
+#endif

@@ -1,0 +1,82 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Temporal accumulation of the spatially denoised half-res AO. Each pixel's
+// surface point is carried into the previous view (the world is static, so the
+// camera change is the whole motion) and the previous output is read there,
+// bilinearly, from taps that lie on the same face plane: anything else is a
+// disocclusion and restarts the pixel's history. The history is clamped to the
+// current 3x3 neighbourhood's range, then blended with weight 1 / length, the
+// length capped at temporalHistory frames.
+#include "shared/gtao.h"
+#include "shared/quad.h"
+#include "shared/temporal.h"
+
+layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
+layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
+layout(set = 0, binding = 1, std140) uniform Temporal { TemporalConstants temporal; };
+layout(set = 0, binding = 2, rgba32f) uniform readonly image2D current;  // AO, edges, view depth, face + 1
+layout(set = 0, binding = 3, rgba32f) uniform readonly image2D history;  // AO, history length, view depth, face + 1
+layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D target;  // same layout as history
+
+float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
+uint gtaoSurface(ivec2 pixel) { return 0u; }
+#include "shared/gtao_kernel.h"
+
+// AO pixel coordinates of a view-space point, the inverse of gtaoViewPosition.
+vec2 aoPixel(vec3 v, vec4 ndcToView) {
+    vec2 p = (vec2(v.x, v.y) / -v.z - vec2(ndcToView.z, ndcToView.w)) / vec2(ndcToView.x, ndcToView.y);
+    return (p - 0.5) / float(gtao.scale);
+}
+
+void main() {
+    ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(uvec2(p), gtao.halfSize))) return;
+    vec4 c = imageLoad(current, p);
+    uint face = uint(c.w);
+    if (face == 0u) {  // sky: nothing to accumulate
+        imageStore(target, p, vec4(1.0, 0.0, c.z, 0.0));
+        return;
+    }
+    ivec2 last = ivec2(gtao.halfSize) - 1;
+    float lo = c.x, hi = c.x;
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+            float v = imageLoad(current, clamp(p + ivec2(i, j), ivec2(0), last)).x;
+            lo = min(lo, v);
+            hi = max(hi, v);
+        }
+
+    vec3 position = gtaoViewPosition(vec2(p), c.z);
+    vec3 previous = (temporal.currentToPrevious * vec4(position, 1.0)).xyz;
+    float previousDepth = -previous.z;
+    vec3 normal = vec3(temporal.previousViewNormals[face - 1u]);
+    float sumAo = 0.0, sumLength = 0.0, weight = 0.0;
+    if (temporal.reset == 0u && previousDepth > 0.0) {
+        // The motion as a difference of two identical computations, so a camera
+        // that did not move reprojects every pixel exactly onto itself.
+        vec2 uv = vec2(p) + (aoPixel(previous, temporal.previousNdcToViewMul_Add) - aoPixel(position, gtao.ndcToViewMul_Add));
+        vec2 base = floor(uv), f = uv - base;
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) {
+                ivec2 t = ivec2(base) + ivec2(i, j);
+                float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
+                if (w <= 0.0 || any(greaterThan(uvec2(t), uvec2(last)))) continue;
+                vec4 h = imageLoad(history, t);
+                vec2 q = vec2(t) * float(gtao.scale) + 0.5;
+                vec4 m = temporal.previousNdcToViewMul_Add;
+                vec3 tap = vec3((q * vec2(m.x, m.y) + vec2(m.z, m.w)) * h.z, -h.z);
+                // Same face and on the same plane: the same surface, seen again.
+                if (uint(h.w) != face || abs(dot(tap - previous, normal)) > 1e-3 * previousDepth) continue;
+                sumAo += w * h.x;
+                sumLength += w * h.y;
+                weight += w;
+            }
+    }
+    float ao = c.x, frames = 1.0;
+    if (weight > 1e-3) {
+        float historyAo = clamp(sumAo / weight, lo, hi);
+        frames = min(sumLength / weight + 1.0, float(max(gtao.settings.temporalHistory, 1u)));
+        ao = mix(historyAo, c.x, 1.0 / frames);
+    }
+    imageStore(target, p, vec4(ao, frames, c.z, c.w));
+}
