@@ -7,8 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <set>
 
 namespace grotto::voxel {
 namespace fs = std::filesystem;
