@@ -1,118 +1,207 @@
-// grotto flythrough WORLD [--camera NAME] [--frames N] [--size WxH] -o DIR
-// Until camera paths land, the flythrough is one orbit of the chosen camera about
-// its target. Frames already on disk are skipped, so an interrupted run resumes;
-// dir/flythrough.json records the settings so a resume never mixes sequences.
+// grotto flythrough WORLD --path NAME [--size WxH] [--fps N] [--frames A-B]
+//                   [--warmup K] [--format png|exr] -o DIR
+// Renders a camera path to DIR/frame.NNNN.png (or .exr with AOVs) and
+// DIR/stats.json. Frame i (1-based) shows the path at time (i - 1) / fps and is
+// rendered with frame index i, so a run split by --frames across machines makes
+// the same frames as one whole run. The K frames before the first frame written
+// are rendered but not written, to warm up temporal history. Frames already on
+// disk are skipped, so an interrupted run resumes: it re-renders from K frames
+// before the first missing one (history again) and writes only missing frames.
+// DIR/flythrough.json records the settings so a resume never mixes sequences.
 #include "app/commands.h"
 #include "app/options.h"
+#include "app/progress.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "engine/camera_path.h"
 #include "engine/image_output.h"
 #include "engine/renderer.h"
 #include "voxel/world.h"
 
-#include <glm/gtc/matrix_transform.hpp>
-
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <sstream>
 
 namespace grotto::app {
 
 namespace {
 
+namespace fs = std::filesystem;
+using nlohmann::json;
+
 struct Args {
-    std::string world, camera, size = "640x360", output, format = "png";
-    int frames = 24;
+    std::string world, path, size = "640x360", output, format = "png", frames;
+    int fps = 24, warmup = 8;
     AoFlags ao;
 };
 
-// Everything that decides a frame's pixels: a resumed run must match it.
-nlohmann::json runManifest(const Args& a, const AoOptions& ao) {
+// A path named in the world, or a path .json given directly.
+voxel::CameraPathDesc findPath(const voxel::World& world, const std::string& name) {
+    const auto& paths = world.desc().paths;
+    if (auto it = paths.find(name); it != paths.end()) return it->second;
+    if (fs::path(name).extension() == ".json") return voxel::loadCameraPath(name);
+    std::string known;
+    for (auto& [n, p] : paths) known += (known.empty() ? "" : ", ") + n;
+    throw Error(world.desc().source.string(), "has no path named '" + name + "'",
+                known.empty() ? "the world defines no paths; give --path FILE.json" : "paths: " + known);
+}
+
+json pathJson(const voxel::CameraPathDesc& p) {
+    json keys = json::array();
+    for (const voxel::PathKey& k : p.keys) {
+        json key = {{"time", k.time}, {"position", {k.position.x, k.position.y, k.position.z}}};
+        if (k.target) key["target"] = {k.target->x, k.target->y, k.target->z};
+        if (k.rotation) key["quaternion"] = {k.rotation->x, k.rotation->y, k.rotation->z, k.rotation->w};
+        if (k.fovDegrees) key["fov"] = *k.fovDegrees;
+        keys.push_back(key);
+    }
+    json j = {{"keys", keys}, {"constant_speed", p.constantSpeed}};
+    if (p.fovDegrees) j["fov"] = *p.fovDegrees;
+    if (p.nearPlane) j["near"] = *p.nearPlane;
+    if (p.farPlane) j["far"] = *p.farPlane;
+    return j;
+}
+
+// Everything that decides a frame's pixels: a resumed run must match it. The
+// frame range and warm-up are not in it: ranges are parts of one sequence.
+json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptions& ao) {
     const gpu::GtaoSettings& g = ao.gtao;
-    return {{"world", std::filesystem::absolute(a.world).lexically_normal().string()}, {"camera", a.camera},
-            {"size", a.size}, {"frames", a.frames}, {"format", a.format}, {"ao", ao.enabled},
-            {"ao_full_res", ao.fullResolution},
+    return {{"world", fs::absolute(a.world).lexically_normal().string()}, {"path", a.path},
+            {"path_keys", pathJson(path)}, {"size", a.size}, {"fps", a.fps}, {"format", a.format},
+            {"ao", ao.enabled}, {"ao_full_res", ao.fullResolution},
             {"gtao", {g.radius, g.radiusMultiplier, g.falloffRange, g.sampleDistributionPower,
                       g.thinOccluderCompensation, g.finalValuePower, g.depthMipSamplingOffset, g.strength,
                       g.denoiseBlurBeta, g.sliceCount, g.stepsPerSlice, g.denoisePasses}}};
 }
 
+void writeJson(const fs::path& file, const json& j) {
+    const std::string text = j.dump(2, ' ', false, json::error_handler_t::replace);
+    writeAtomically(file, [&](const fs::path& tmp) {
+        std::ofstream out(tmp);
+        out << text << "\n";
+        out.close();
+        if (!out) throw Error(file.string(), "write failed", "is the disk full?");
+    });
+}
+
 // Frames already in `dir` are kept only when they came from the same settings,
 // recorded in dir/flythrough.json; otherwise the run refuses to mix sequences.
-void requireSameRun(const std::filesystem::path& dir, const nlohmann::json& manifest) {
-    const std::filesystem::path file = dir / "flythrough.json";
-    const std::string mine = manifest.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
-    if (std::filesystem::exists(file)) {
+void requireSameRun(const fs::path& dir, const json& manifest) {
+    const fs::path file = dir / "flythrough.json";
+    if (fs::exists(file)) {
         std::ifstream in(file);
         std::stringstream previous;
         previous << in.rdbuf();
-        if (previous.str() != mine + "\n")
+        if (previous.str() != manifest.dump(2, ' ', false, json::error_handler_t::replace) + "\n")
             throw Error(file.string(), "holds frames of a flythrough with other settings",
                         "render into another directory, or delete this one to start over");
         return;
     }
-    for (const auto& entry : std::filesystem::directory_iterator(dir))
+    for (const auto& entry : fs::directory_iterator(dir))
         if (entry.path().filename().string().rfind("frame.", 0) == 0)
             throw Error(dir.string(), "already holds frames but no flythrough.json saying how they were made",
                         "render into another directory");
-    writeAtomically(file, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp);
-        out << mine << "\n";
-        out.close();
-        if (!out) throw Error(file.string(), "write failed", "is the disk full?");
-    });
+    writeJson(file, manifest);
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const size_t m = v.size() / 2;
+    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+}
+
+// Per-frame times of this run and their medians.
+json statsJson(const json& frames) {
+    std::vector<double> wall;
+    std::map<std::string, std::vector<double>> passes;
+    for (const json& f : frames) {
+        wall.push_back(f["wall_ms"].get<double>());
+        for (auto& [name, ms] : f["pass_ms"].items()) passes[name].push_back(ms.get<double>());
+    }
+    json medians = {{"wall_ms", median(wall)}, {"pass_ms", json::object()}};
+    for (auto& [name, ms] : passes) medians["pass_ms"][name] = median(ms);
+    return {{"frames", frames}, {"median", medians}};
 }
 
 }  // namespace
 
 void addFlythroughCommand(CLI::App& app) {
     auto args = std::make_shared<Args>();
-    CLI::App* cmd = app.add_subcommand("flythrough", "Render an orbit of a camera to DIR/frame.NNNN.png");
+    CLI::App* cmd = app.add_subcommand("flythrough", "Render a camera path to DIR/frame.NNNN.png and DIR/stats.json");
     cmd->add_option("world", args->world, "World .json or .vdb")->required();
-    cmd->add_option("--camera", args->camera, "Named camera to orbit (default: the world's default)");
-    cmd->add_option("--frames", args->frames, "Frames in the orbit")->capture_default_str()->check(CLI::Range(1, 100000));
+    cmd->add_option("--path", args->path, "Path named in the world file, or a path .json")->required();
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
-    cmd->add_option("--format", args->format, "png or exr")->capture_default_str()->check(CLI::IsMember({"png", "exr"}));
+    cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
+    cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based (default: the whole path)");
+    cmd->add_option("--warmup", args->warmup, "Frames rendered but not written before the first one written")
+        ->capture_default_str()->check(CLI::Range(0, 10000));
+    cmd->add_option("--format", args->format, "png, or exr with AOVs")->capture_default_str()->check(CLI::IsMember({"png", "exr"}));
     cmd->add_option("-o,--output", args->output, "Output directory")->required();
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
-        const std::filesystem::path dir = args->output;
-        std::error_code ec;
-        std::filesystem::create_directories(dir, ec);
-        if (!std::filesystem::is_directory(dir))
-            throw Error(dir.string(), "cannot create the output directory", ec ? ec.message() : "");
         const voxel::World world = voxel::World::load(args->world);
-        const voxel::CameraDesc start = world.camera(args->camera);
+        const voxel::CameraPathDesc desc = findPath(world, args->path);
+        const CameraPath path(desc, world.camera(""));
+        const int count = path.frameCount(args->fps);
+        const FrameRange range = args->frames.empty() ? FrameRange{1, count} : parseFrameRange(args->frames, count);
         const AoOptions ao = resolveAo(world, args->ao);
-        requireSameRun(dir, runManifest(*args, ao));
+        const fs::path dir = args->output;
+        std::error_code ec;
+        fs::create_directories(dir, ec);
+        if (!fs::is_directory(dir)) throw Error(dir.string(), "cannot create the output directory", ec ? ec.message() : "");
+        requireSameRun(dir, runManifest(*args, desc, ao));
+
+        auto frameFile = [&](int i) {
+            char name[32];
+            std::snprintf(name, sizeof name, "frame.%04d.%s", i, args->format.c_str());
+            return dir / name;
+        };
+        std::vector<int> missing;  // complete frames are written atomically, so existing ones are whole
+        for (int i = range.first; i <= range.last; ++i)
+            if (!fs::exists(frameFile(i))) missing.push_back(i);
+        if (missing.empty()) {
+            std::printf("all %d frames already in %s\n", range.last - range.first + 1, dir.c_str());
+            return;
+        }
+        // History: start K frames before the first frame to write.
+        const int start = std::max(1, missing.front() - args->warmup), end = missing.back();
         vk::Context ctx;
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
-        int written = 0;
+        json frames = json::array();
         {
             Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
-            for (int i = 0; i < args->frames; ++i) {
-                char name[32];
-                std::snprintf(name, sizeof name, "frame.%04d.%s", i + 1, args->format.c_str());
-                const std::filesystem::path file = dir / name;
-                if (std::filesystem::exists(file)) continue;  // complete frames are written atomically
-                voxel::CameraDesc cd = start;
-                const double angle = 2.0 * M_PI * i / args->frames;
-                const glm::dmat4 turn = glm::rotate(glm::dmat4(1.0), angle, glm::dvec3(0, 1, 0));
-                cd.position = cd.target + glm::dvec3(turn * glm::dvec4(start.position - start.target, 0.0));
-                const Camera camera = makeCamera(cd, size.width, size.height);
-                renderer.render(camera);
-                writeFrame(file, renderer.readback(camera, false), camera, false);
-                ++written;
-                std::printf("frame %d/%d %s\n", i + 1, args->frames, file.c_str());
-                std::fflush(stdout);
+            Progress progress(end - start + 1, stdout);
+            for (int i = start; i <= end; ++i) {
+                const double time = double(i - 1) / args->fps;
+                const Camera camera = path.camera(time, size.width, size.height);
+                const FrameStats stats = renderer.render(camera, uint32_t(i));
+                const bool write = std::binary_search(missing.begin(), missing.end(), i);
+                if (write) {
+                    const bool aovs = args->format == "exr";
+                    writeFrame(frameFile(i), renderer.readback(camera, aovs), camera, aovs);
+                }
+                json passMs = json::object();
+                for (const auto& [name, ms] : stats.passMs) passMs[name] = ms;
+                frames.push_back({{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", stats.wallMs},
+                                  {"pass_ms", passMs}});
+                char what[96];
+                std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i, write ? "written" : "warm-up",
+                              stats.wallMs);
+                progress.step(what);
             }
+            progress.finish();
         }
         scene.reset();
         requireNoValidationMessages(ctx);
-        std::printf("wrote %d frames to %s (%d already there)\n", written, dir.c_str(), args->frames - written);
+        writeJson(dir / "stats.json", statsJson(frames));
+        std::printf("wrote %zu frames to %s (%d rendered, %d already there)\n", missing.size(), dir.c_str(),
+                    end - start + 1, range.last - range.first + 1 - int(missing.size()));
     });
 }
 

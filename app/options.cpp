@@ -14,6 +14,18 @@ Size parseSize(const std::string& text, const std::string& option) {
     return {w, h};
 }
 
+FrameRange parseFrameRange(const std::string& text, int count, const std::string& option) {
+    int a = 0, b = 0, n = 0;
+    const char* s = text.c_str();
+    const bool range = std::sscanf(s, "%d-%d%n", &a, &b, &n) == 2 && s[n] == 0;
+    const bool single = !range && std::sscanf(s, "%d%n", &a, &n) == 1 && s[n] == 0;
+    if (single) b = a;
+    const std::string accepted = "expected A-B with 1 <= A <= B <= " + std::to_string(count) + " (the path's frames)";
+    if (!range && !single) throw Error(option, "'" + text + "' is not a frame range", accepted);
+    if (a < 1 || b < a || b > count) throw Error(option, "'" + text + "' is out of range", accepted);
+    return {a, b};
+}
+
 void addAoFlags(CLI::App* cmd, AoFlags& f) {
     cmd->add_option("--ao", f.method, "Ambient occlusion: gtao or off (default: the world's, else gtao)")
         ->check(CLI::IsMember({"gtao", "off"}));

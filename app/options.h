@@ -19,6 +19,13 @@ struct Size {
 // "WxH" with both in 1..16384; throws grotto::Error (input) naming the option.
 Size parseSize(const std::string& text, const std::string& option = "--size");
 
+// "A-B" or "A": an inclusive range of 1-based frame numbers within 1..count;
+// throws grotto::Error (input) naming the option.
+struct FrameRange {
+    int first = 1, last = 1;
+};
+FrameRange parseFrameRange(const std::string& text, int count, const std::string& option = "--frames");
+
 // The AO flags every rendering subcommand takes; unset ones keep the world's values.
 struct AoFlags {
     std::string method, quality;

@@ -5,15 +5,19 @@
 
 namespace grotto {
 
-Camera makeCamera(const voxel::CameraDesc& d, uint32_t width, uint32_t height) {
-    Camera c;
-    c.position = d.position;
-    const glm::dvec3 back = glm::normalize(d.position - d.target);
+glm::dmat3 lookAtBasis(glm::dvec3 position, glm::dvec3 target) {
+    const glm::dvec3 back = glm::normalize(position - target);
     // Straight up or down: any horizontal right vector will do.
     glm::dvec3 up(0.0, 1.0, 0.0);
     if (std::abs(glm::dot(back, up)) > 0.999999) up = glm::dvec3(0.0, 0.0, -1.0);
     const glm::dvec3 right = glm::normalize(glm::cross(up, back));
-    c.basis = glm::dmat3(right, glm::cross(back, right), back);
+    return glm::dmat3(right, glm::cross(back, right), back);
+}
+
+Camera makeCamera(const voxel::CameraDesc& d, uint32_t width, uint32_t height) {
+    Camera c;
+    c.position = d.position;
+    c.basis = lookAtBasis(d.position, d.target);
     c.fovY = glm::radians(d.fovDegrees);
     c.nearPlane = d.nearPlane;
     c.farPlane = d.farPlane;

@@ -28,4 +28,8 @@ struct Camera {
 
 Camera makeCamera(const voxel::CameraDesc& desc, uint32_t width, uint32_t height);
 
+// Columns right, up, back of a roll-free camera at `position` looking at `target`
+// (Y up; straight up or down falls back to a horizontal right vector).
+glm::dmat3 lookAtBasis(glm::dvec3 position, glm::dvec3 target);
+
 }  // namespace grotto

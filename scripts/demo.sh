@@ -6,4 +6,4 @@ scripts/setup.sh
 cmake --preset release >/dev/null
 cmake --build --preset release
 rm -rf out/rooms  # a fresh sequence each time (flythrough refuses to mix settings)
-build/grotto flythrough worlds/rooms.json --frames 24 --size 640x360 -o out/rooms
+build/grotto flythrough worlds/rooms.json --path orbit --fps 2 --size 640x360 -o out/rooms  # 25 frames

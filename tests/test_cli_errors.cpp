@@ -260,20 +260,82 @@ TEST_F(CliErrors, ShowWritesOneAovAsPng) {
 namespace grotto {
 namespace {
 
+// One second over the test floor: 9 frames at --fps 8.
+constexpr const char* kFlyPath = R"({"keys": [{"time": 0, "position": [8, 10, 30], "target": [8, 0, 8]},
+    {"time": 0.5, "position": [20, 8, 24], "target": [8, 0, 8]}, {"time": 1, "position": [26, 6, 12], "target": [8, 0, 6]}]})";
+
 TEST_F(CliErrors, FlythroughResumesButNeverMixesSequences) {
+    const fs::path world = writeText("fly.json", std::string(R"({"grid": {"file": "good.vdb"}, "paths": {"p": )") + kFlyPath + "}}");
     const fs::path seq = dir_ / "seq";
-    const std::string base = "flythrough " + good_.string() + " --size 16x8 -o " + seq.string();
-    test::RunResult r = runGrotto(base + " --frames 3");
+    const std::string base = "flythrough " + world.string() + " --path p --size 16x8 -o " + seq.string();
+    test::RunResult r = runGrotto(base + " --fps 2");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::exists(seq / "frame.0003.png"));
+    EXPECT_FALSE(fs::exists(seq / "frame.0004.png"));
+    EXPECT_TRUE(fs::exists(seq / "stats.json"));
+    // Not a terminal: one plain line per frame, no carriage returns.
+    EXPECT_EQ(r.out.find('\r'), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("3/3 frame 0003 written"), std::string::npos) << r.out;
     fs::remove(seq / "frame.0002.png");  // an interrupted run
-    r = runGrotto(base + " --frames 3");
+    const auto untouched = fs::last_write_time(seq / "frame.0003.png");
+    r = runGrotto(base + " --fps 2 --warmup 0");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("wrote 1 frames"), std::string::npos) << r.out;
-    r = runGrotto(base + " --frames 4");  // a different orbit must not reuse these frames
+    EXPECT_EQ(r.out.find("frame 0001"), std::string::npos) << "frame 1 is complete and not needed: " << r.out;
+    EXPECT_EQ(fs::last_write_time(seq / "frame.0003.png"), untouched);
+    // With a warm-up, frame 1 is rendered again (history) but not rewritten.
+    fs::remove(seq / "frame.0002.png");
+    r = runGrotto(base + " --fps 2 --warmup 4");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("frame 0001 warm-up"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("wrote 1 frames"), std::string::npos) << r.out;
+    r = runGrotto(base + " --fps 3");  // other timing must not reuse these frames
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_NE(r.err.find("other settings"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(seq / "frame.0004.png"));
+}
+
+TEST_F(CliErrors, FlythroughSplitRunMatchesTheWholeRun) {
+    const fs::path world = writeText("fly.json", std::string(R"({"grid": {"file": "good.vdb"}, "paths": {"p": )") + kFlyPath + "}}");
+    const std::string base = "flythrough " + world.string() + " --path p --size 48x32 --fps 8 ";
+    test::RunResult r = runGrotto(base + "-o " + (dir_ / "whole").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir_ / "whole" / "frame.0009.png"));
+    r = runGrotto(base + "--frames 5-8 --warmup 4 -o " + (dir_ / "part").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("frame 0001 warm-up"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(dir_ / "part" / "frame.0004.png"));
+    EXPECT_FALSE(fs::exists(dir_ / "part" / "frame.0009.png"));
+    // Bit-for-bit today; temporal history may differ slightly after a finite
+    // warm-up, so the contract is a max abs difference of 2/255 per channel.
+    for (int i = 5; i <= 8; ++i) {
+        const std::string name = "frame.000" + std::to_string(i) + ".png";
+        std::vector<uint8_t> a, b;
+        for (auto [dir, pixels] : {std::pair<const char*, std::vector<uint8_t>*>{"whole", &a}, {"part", &b}}) {
+            auto in = OIIO::ImageInput::open((dir_ / dir / name).string());
+            ASSERT_TRUE(in) << dir << "/" << name;
+            pixels->resize(size_t(in->spec().image_pixels()) * in->spec().nchannels);
+            ASSERT_TRUE(in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::UINT8, pixels->data()));
+        }
+        ASSERT_EQ(a.size(), b.size());
+        int worst = 0;
+        for (size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(int(a[k]) - int(b[k])));
+        EXPECT_LE(worst, 2) << name;
+    }
+}
+
+TEST_F(CliErrors, FlythroughRefusesBadPathsAndRanges) {
+    const fs::path world = writeText("fly.json", std::string(R"({"grid": {"file": "good.vdb"}, "paths": {"p": )") + kFlyPath + "}}");
+    const fs::path seq = dir_ / "seq";
+    const std::string base = "flythrough " + world.string() + " --path p --size 16x8 --fps 8 -o " + seq.string();
+    for (const char* bad : {"5-", "8-5", "0-3", "abc", "1-10", "3-4x"})
+        expectRefused(base + " --frames " + bad, "--frames", seq);
+    expectRefused("flythrough " + world.string() + " --path nope -o " + seq.string(), "paths: p", seq);
+    const fs::path backwards = writeText("back.json", R"({"grid": {"file": "good.vdb"}, "paths": {"p": {"keys": [
+        {"time": 1, "position": [8, 10, 30], "target": [8, 0, 8]}, {"time": 1, "position": [9, 10, 30], "target": [8, 0, 8]}]}}})");
+    expectRefused("flythrough " + backwards.string() + " --path p -o " + seq.string(), "paths.p.keys[1].time", seq);
+    const fs::path empty = writeText("empty.json", R"({"grid": {"file": "good.vdb"}, "paths": {"p": {"keys": []}}})");
+    expectRefused("flythrough " + empty.string() + " --path p -o " + seq.string(), "paths.p.keys", seq);
 }
 
 }  // namespace

@@ -1,13 +1,12 @@
 #include "voxel/world_desc.h"
 
 #include "common/error.h"
+#include "voxel/json_reader.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
-#include <set>
 
 namespace grotto::voxel {
 namespace fs = std::filesystem;
@@ -32,86 +31,6 @@ std::vector<Material> defaultMaterials() {
 }
 
 namespace {
-
-// Reads one JSON object strictly: every field is checked, unknown ones refused.
-class Reader {
-public:
-    Reader(const fs::path& file, const json& object, std::string path)
-        : file_(file), obj_(object), path_(std::move(path)) {
-        if (!obj_.is_object()) fail("", "expected an object");
-    }
-    ~Reader() noexcept(false) {
-        if (std::uncaught_exceptions()) return;
-        for (auto& [key, value] : obj_.items())
-            if (!seen_.count(key))
-                fail(key, "unknown field", "known fields: " + known());
-    }
-
-    bool has(const std::string& key) {
-        seen_.insert(key);
-        return obj_.contains(key);
-    }
-    const json& at(const std::string& key) { return obj_.at(key); }
-
-    double number(const std::string& key, double fallback, double lo, double hi) {
-        if (!has(key)) return fallback;
-        const json& v = obj_.at(key);
-        if (!v.is_number() || !std::isfinite(v.get<double>()))
-            fail(key, "expected a finite number");
-        double d = v.get<double>();
-        if (d < lo || d > hi)
-            fail(key, "value " + v.dump() + " is out of range",
-                 "accepted: " + fmt(lo) + " to " + fmt(hi));
-        return d;
-    }
-    std::string string(const std::string& key, std::string fallback) {
-        if (!has(key)) return fallback;
-        if (!obj_.at(key).is_string()) fail(key, "expected a string");
-        return obj_.at(key).get<std::string>();
-    }
-    glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback, double lo = -1e12,
-                    double hi = 1e12) {
-        if (!has(key)) return fallback;
-        const json& v = obj_.at(key);
-        if (!v.is_array() || v.size() != 3) fail(key, "expected an array of 3 numbers");
-        glm::dvec3 r;
-        for (int i = 0; i < 3; ++i) {
-            if (!v[i].is_number() || !std::isfinite(v[i].get<double>()))
-                fail(key, "expected an array of 3 finite numbers");
-            r[i] = v[i].get<double>();
-            if (r[i] < lo || r[i] > hi)
-                fail(key, "component " + v[i].dump() + " is out of range",
-                     "accepted: " + fmt(lo) + " to " + fmt(hi));
-        }
-        return r;
-    }
-    Reader child(const std::string& key) { return Reader(file_, obj_.at(key), field(key)); }
-
-    [[noreturn]] void fail(const std::string& key, const std::string& what,
-                           const std::string& hint = {}) const {
-        std::string f = field(key);
-        throw Error(file_.string(), (f.empty() ? "" : "field '" + f + "': ") + what, hint);
-    }
-    std::string field(const std::string& key) const {
-        return path_.empty() ? key : key.empty() ? path_ : path_ + "." + key;
-    }
-
-private:
-    static std::string fmt(double d) {
-        char buf[32];
-        snprintf(buf, sizeof buf, "%g", d);
-        return buf;
-    }
-    std::string known() const {
-        std::string s;
-        for (auto& k : seen_) s += (s.empty() ? "" : ", ") + k;
-        return s;
-    }
-    const fs::path& file_;
-    const json& obj_;
-    std::string path_;
-    std::set<std::string> seen_;
-};
 
 SolidRule parseRule(Reader& r, const std::string& key) {
     std::string s = r.string(key, "auto");
@@ -190,6 +109,21 @@ void parseAo(Reader r, AoDesc& ao) {
     optInt("temporal_history", ao.temporalHistory, 0, 64);
 }
 
+// A path inline, or the name of a path .json beside the world file.
+CameraPathDesc parsePathEntry(const fs::path& file, const json& entry, const std::string& field) {
+    if (!entry.is_string()) {
+        Reader r(file, entry, field);
+        return parseCameraPath(r, file, field);
+    }
+    const std::string name = entry.get<std::string>();
+    const fs::path pathFile = fs::path(name).is_absolute() ? fs::path(name) : file.parent_path() / name;
+    std::error_code ec;
+    if (name.empty() || !fs::is_regular_file(pathFile, ec))
+        throw Error(file.string(), "field '" + field + "': names no path file '" + pathFile.string() + "'",
+                    "give a path object, or a path .json beside the world file");
+    return loadCameraPath(pathFile);
+}
+
 WorldDesc parseWorld(const fs::path& file, const json& doc) {
     WorldDesc w;
     w.source = file;
@@ -229,6 +163,12 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
         for (auto& [name, cam] : cams.items())
             w.cameras[name] = parseCamera(Reader(file, cam, "cameras." + name));
     }
+    if (r.has("paths")) {
+        const json& paths = r.at("paths");
+        if (!paths.is_object()) r.fail("paths", "expected an object of named paths");
+        for (auto& [name, path] : paths.items())
+            w.paths[name] = parsePathEntry(file, path, "paths." + name);
+    }
     w.defaultCamera = r.string("default_camera", w.cameras.empty() ? "" : w.cameras.begin()->first);
     if (!w.defaultCamera.empty() && !w.cameras.count(w.defaultCamera))
         r.fail("default_camera", "names no camera '" + w.defaultCamera + "'");
@@ -250,17 +190,7 @@ WorldDesc loadWorldDesc(const fs::path& path) {
         w.materials = defaultMaterials();
         return w;
     }
-    std::ifstream in(path);
-    if (!in) throw Error(path.string(), "cannot be read");
-    json doc;
-    try {
-        doc = json::parse(in);
-    } catch (const json::exception& e) {  // syntax errors and out-of-range numbers
-        std::string msg = e.what();
-        auto colon = msg.find("parse error");
-        throw Error(path.string(), "malformed JSON: " + msg.substr(colon == std::string::npos ? 0 : colon),
-                    "a world file is a JSON object with at least \"grid\": {\"file\": ...}");
-    }
+    const json doc = readJsonFile(path, "a world file is a JSON object with at least \"grid\": {\"file\": ...}");
     return parseWorld(path, doc);
 }
 

@@ -1,6 +1,8 @@
 #pragma once
 // What a world file says, as plain data: which grid, how it becomes solid, the
 // material palette, the light and the named cameras. OpenVDB-free.
+#include "voxel/camera_path_desc.h"
+
 #include <glm/vec3.hpp>
 
 #include <filesystem>
@@ -66,6 +68,7 @@ struct WorldDesc {
     AoDesc ao;
     std::map<std::string, CameraDesc> cameras;
     std::string defaultCamera;         // empty = framed from the world's bounds
+    std::map<std::string, CameraPathDesc> paths;  // inline or read from files beside the world
     size_t memoryBudgetBytes = size_t(8) << 30;  // grids estimated above this are refused
 };
 

@@ -1,0 +1,43 @@
+#include "app/progress.h"
+
+#include <unistd.h>
+
+#include <cmath>
+
+namespace grotto::app {
+
+Progress::Progress(int total, std::FILE* out)
+    : out_(out), terminal_(isatty(fileno(out))), total_(total), start_(std::chrono::steady_clock::now()) {}
+
+std::string formatDuration(double seconds) {
+    const long s = long(std::lround(std::max(seconds, 0.0)));
+    char buf[32];
+    if (s >= 3600)
+        std::snprintf(buf, sizeof buf, "%ld:%02ld:%02ld", s / 3600, s / 60 % 60, s % 60);
+    else
+        std::snprintf(buf, sizeof buf, "%ld:%02ld", s / 60, s % 60);
+    return buf;
+}
+
+void Progress::step(const std::string& what) {
+    ++done_;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const std::string eta = formatDuration(elapsed / done_ * (total_ - done_));
+    if (terminal_) {
+        constexpr int kWidth = 30;
+        const int filled = total_ > 0 ? done_ * kWidth / total_ : kWidth;
+        const std::string bar = std::string(size_t(filled), '#') + std::string(size_t(kWidth - filled), '-');
+        std::fprintf(out_, "\r[%s] %d/%d %3d%% ETA %s  %s\033[K", bar.c_str(), done_, total_,
+                     total_ > 0 ? done_ * 100 / total_ : 100, eta.c_str(), what.c_str());
+    } else {
+        std::fprintf(out_, "%d/%d %s (ETA %s)\n", done_, total_, what.c_str(), eta.c_str());
+    }
+    std::fflush(out_);
+}
+
+void Progress::finish() {
+    if (terminal_ && done_ > 0) std::fprintf(out_, "\n");
+    std::fflush(out_);
+}
+
+}  // namespace grotto::app

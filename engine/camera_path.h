@@ -1,0 +1,46 @@
+#pragma once
+// Evaluates a camera path (voxel/camera_path_desc.h) at a time in seconds:
+// position on a centripetal Catmull-Rom curve through the keys, rotation by squad
+// between the keys' rotations (look-at keys stay roll-free, Y up), fov by a
+// monotone cubic. Keys are met at their times, unless the path asks for constant
+// speed, which spreads the whole curve evenly over [first time, last time].
+#include "engine/camera.h"
+#include "engine/spline.h"
+#include "voxel/camera_path_desc.h"
+
+#include <vector>
+
+namespace grotto {
+
+struct CameraPose {
+    glm::dvec3 position{0.0};
+    glm::dmat3 basis{1.0};  // columns: right, up, back, as Camera::basis
+    double fovDegrees = 60.0;
+};
+
+class CameraPath {
+public:
+    // `defaults` supplies fov, near and far where the path leaves them unset
+    // (the world's default camera: World::camera("")).
+    CameraPath(const voxel::CameraPathDesc& desc, const voxel::CameraDesc& defaults);
+
+    double duration() const { return times_.back(); }  // the last key's time
+    CameraPose pose(double time) const;
+    Camera camera(double time, uint32_t width, uint32_t height) const;
+
+    // Frame i (1-based) shows time (i - 1) / fps; frames cover [0, duration].
+    int frameCount(double fps) const;
+
+private:
+    double curveParameter(double time) const;
+
+    std::vector<double> times_;
+    spline::CentripetalCurve curve_;
+    spline::RotationSpline rotations_;
+    spline::MonotoneCubic timeToCurve_, fov_;
+    std::vector<double> arcKnot_, arcLength_;  // cumulative length along the curve, for constant speed
+    bool constantSpeed_ = false, rollFree_ = true;
+    double nearPlane_ = 0.05, farPlane_ = 0.0;
+};
+
+}  // namespace grotto

@@ -1,0 +1,83 @@
+#include "voxel/camera_path_desc.h"
+
+#include "voxel/json_reader.h"
+
+#include <glm/geometric.hpp>
+
+namespace grotto::voxel {
+namespace fs = std::filesystem;
+
+namespace {
+
+// JSON [x, y, z, w], as glTF writes rotations; normalised here.
+glm::dquat quaternion(Reader& r, const std::string& key) {
+    const json& v = r.at(key);
+    if (!v.is_array() || v.size() != 4) r.fail(key, "expected an array of 4 numbers [x, y, z, w]");
+    double c[4];
+    for (int i = 0; i < 4; ++i) {
+        if (!v[i].is_number() || !std::isfinite(v[i].get<double>()))
+            r.fail(key, "expected an array of 4 finite numbers [x, y, z, w]");
+        c[i] = v[i].get<double>();
+    }
+    const glm::dquat q(c[3], c[0], c[1], c[2]);  // glm takes w first
+    const double n = glm::length(q);
+    if (!(n > 1e-9)) r.fail(key, "must not be zero", "a unit quaternion [x, y, z, w], e.g. [0, 0, 0, 1]");
+    return q / n;
+}
+
+PathKey parseKey(Reader r) {
+    PathKey k;
+    if (!r.has("time")) r.fail("time", "missing", "seconds from the start of the path");
+    k.time = r.number("time", 0.0, 0.0, 1e7);
+    if (!r.has("position")) r.fail("position", "missing");
+    k.position = r.vec3("position", k.position);
+    const bool target = r.has("target"), rotation = r.has("quaternion");
+    if (target == rotation)
+        r.fail(target ? "quaternion" : "target", target ? "given with 'target'" : "missing",
+               "each key gives either a look-at 'target' or a 'quaternion', not both");
+    if (target) {
+        k.target = r.vec3("target", k.position);
+        if (glm::length(*k.target - k.position) < 1e-9) r.fail("target", "equals position", "a camera must look somewhere");
+    } else {
+        k.rotation = quaternion(r, "quaternion");
+    }
+    if (r.has("fov")) k.fovDegrees = r.number("fov", 60.0, 1.0, 170.0);
+    return k;
+}
+
+}  // namespace
+
+CameraPathDesc parseCameraPath(Reader& r, const fs::path& file, const std::string& field) {
+    CameraPathDesc p;
+    p.source = file;
+    p.field = field;
+    p.constantSpeed = r.boolean("constant_speed", false);
+    if (r.has("fov")) p.fovDegrees = r.number("fov", 60.0, 1.0, 170.0);
+    if (r.has("near")) p.nearPlane = r.number("near", 0.05, 1e-4, 10.0);
+    if (r.has("far")) p.farPlane = r.number("far", 0.0, 0.0, 1e7);
+    if (p.nearPlane && p.farPlane && *p.farPlane != 0.0 && *p.farPlane <= *p.nearPlane)
+        r.fail("far", "must exceed 'near' (or be 0 for an infinite far plane)");
+    if (!r.has("keys")) r.fail("keys", "missing", "a path needs at least two keys");
+    const json& keys = r.at("keys");
+    if (!keys.is_array()) r.fail("keys", "expected an array of keys");
+    if (keys.size() < 2)
+        r.fail("keys", "has " + std::to_string(keys.size()) + " key(s)", "a path needs at least two keys");
+    for (size_t i = 0; i < keys.size(); ++i) {
+        const std::string name = (field.empty() ? "" : field + ".") + "keys[" + std::to_string(i) + "]";
+        p.keys.push_back(parseKey(Reader(file, keys[i], name)));
+        if (i > 0 && !(p.keys[i].time > p.keys[i - 1].time))
+            throw Error(file.string(), "field '" + name + ".time': " + Reader::format(p.keys[i].time) +
+                                           " does not come after the previous key's " +
+                                           Reader::format(p.keys[i - 1].time),
+                        "key times must increase strictly");
+    }
+    return p;
+}
+
+CameraPathDesc loadCameraPath(const fs::path& file) {
+    const json doc = readJsonFile(file, "a path file is a JSON object with \"keys\": [{\"time\", \"position\", \"target\"}, ...]");
+    Reader r(file, doc, "");
+    return parseCameraPath(r, file, "");
+}
+
+}  // namespace grotto::voxel

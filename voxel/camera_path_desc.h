@@ -1,0 +1,41 @@
+#pragma once
+// What a camera path says, as plain data: keyframes and options, read strictly
+// from a world file's "paths" or from a path .json of its own. OpenVDB-free.
+// docs/paths.md describes the format; engine/camera_path.h evaluates it.
+#include <glm/gtc/quaternion.hpp>
+#include <glm/vec3.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace grotto::voxel {
+
+class Reader;
+
+struct PathKey {
+    double time = 0.0;                   // seconds; strictly increasing, >= 0
+    glm::dvec3 position{0.0};
+    std::optional<glm::dvec3> target;    // look-at point (roll-free, Y up) ...
+    std::optional<glm::dquat> rotation;  // ... or world-from-camera rotation, unit length
+    std::optional<double> fovDegrees;    // vertical; unset = the path's fov
+};
+
+struct CameraPathDesc {
+    std::filesystem::path source;  // the file the path was read from
+    std::string field;             // where in it ("paths.walk"), empty for a whole path file
+    std::vector<PathKey> keys;     // at least two
+    bool constantSpeed = false;    // reparametrise by arc length
+    // Unset = the world's camera conventions (its default camera).
+    std::optional<double> fovDegrees, nearPlane, farPlane;
+};
+
+// Reads a path .json of its own. Throws grotto::Error (input) naming the file and
+// field for anything missing, malformed or unknown.
+CameraPathDesc loadCameraPath(const std::filesystem::path& file);
+
+// Reads a path object from an open reader (world files hold paths inline).
+CameraPathDesc parseCameraPath(Reader& reader, const std::filesystem::path& file, const std::string& field);
+
+}  // namespace grotto::voxel

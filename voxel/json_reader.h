@@ -1,0 +1,111 @@
+#pragma once
+// A strict reader of one JSON object, shared by world and camera-path files: every
+// field read is checked, and an unknown field is an error naming file and field.
+// Internal to voxel/ (nlohmann-json is a private dependency of grotto_voxel).
+#include "common/error.h"
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <exception>
+#include <filesystem>
+#include <set>
+#include <string>
+
+namespace grotto::voxel {
+
+using nlohmann::json;
+
+// Parses a whole JSON file; a missing, unreadable or malformed file throws
+// grotto::Error (input) naming it, with `hint` saying what the file should hold.
+json readJsonFile(const std::filesystem::path& path, const std::string& hint);
+
+// Reads one JSON object strictly: every field is checked, unknown ones refused.
+class Reader {
+public:
+    Reader(const std::filesystem::path& file, const json& object, std::string path)
+        : file_(file), obj_(object), path_(std::move(path)) {
+        if (!obj_.is_object()) fail("", "expected an object");
+    }
+    ~Reader() noexcept(false) {
+        if (std::uncaught_exceptions()) return;
+        for (auto& [key, value] : obj_.items())
+            if (!seen_.count(key))
+                fail(key, "unknown field", "known fields: " + known());
+    }
+
+    bool has(const std::string& key) {
+        seen_.insert(key);
+        return obj_.contains(key);
+    }
+    const json& at(const std::string& key) { return obj_.at(key); }
+
+    double number(const std::string& key, double fallback, double lo, double hi) {
+        if (!has(key)) return fallback;
+        const json& v = obj_.at(key);
+        if (!v.is_number() || !std::isfinite(v.get<double>()))
+            fail(key, "expected a finite number");
+        double d = v.get<double>();
+        if (d < lo || d > hi)
+            fail(key, "value " + v.dump() + " is out of range",
+                 "accepted: " + format(lo) + " to " + format(hi));
+        return d;
+    }
+    bool boolean(const std::string& key, bool fallback) {
+        if (!has(key)) return fallback;
+        if (!obj_.at(key).is_boolean()) fail(key, "expected true or false");
+        return obj_.at(key).get<bool>();
+    }
+    std::string string(const std::string& key, std::string fallback) {
+        if (!has(key)) return fallback;
+        if (!obj_.at(key).is_string()) fail(key, "expected a string");
+        return obj_.at(key).get<std::string>();
+    }
+    glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback, double lo = -1e12,
+                    double hi = 1e12) {
+        if (!has(key)) return fallback;
+        const json& v = obj_.at(key);
+        if (!v.is_array() || v.size() != 3) fail(key, "expected an array of 3 numbers");
+        glm::dvec3 r;
+        for (int i = 0; i < 3; ++i) {
+            if (!v[i].is_number() || !std::isfinite(v[i].get<double>()))
+                fail(key, "expected an array of 3 finite numbers");
+            r[i] = v[i].get<double>();
+            if (r[i] < lo || r[i] > hi)
+                fail(key, "component " + v[i].dump() + " is out of range",
+                     "accepted: " + format(lo) + " to " + format(hi));
+        }
+        return r;
+    }
+    Reader child(const std::string& key) { return Reader(file_, obj_.at(key), field(key)); }
+
+    [[noreturn]] void fail(const std::string& key, const std::string& what,
+                           const std::string& hint = {}) const {
+        std::string f = field(key);
+        throw Error(file_.string(), (f.empty() ? "" : "field '" + f + "': ") + what, hint);
+    }
+    std::string field(const std::string& key) const {
+        return path_.empty() ? key : key.empty() ? path_ : path_ + "." + key;
+    }
+
+    static std::string format(double d) {
+        char buf[32];
+        snprintf(buf, sizeof buf, "%g", d);
+        return buf;
+    }
+
+private:
+    std::string known() const {
+        std::string s;
+        for (auto& k : seen_) s += (s.empty() ? "" : ", ") + k;
+        return s;
+    }
+    const std::filesystem::path& file_;
+    const json& obj_;
+    std::string path_;
+    std::set<std::string> seen_;
+};
+
+}  // namespace grotto::voxel
