@@ -5,12 +5,14 @@
 #include "engine/surface_points.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
+#include "voxel/brick_table.h"
 #include "voxel/reference_ao.h"
 
 #include <tbb/global_control.h>
 
 #include <cmath>
 #include <numbers>
+#include <random>
 
 namespace grotto {
 namespace {
@@ -49,6 +51,36 @@ Points floorPoints(const WallScene& s, double d, int count) {
         pts.n.push_back({0.0, 1.0, 0.0});
     }
     return pts;
+}
+
+TEST(ReferenceAo, BrickTraversalAgreesWithExactRaycast) {
+    // Scattered voxels, solid blocks and empty bricks, off the origin, half-voxel size.
+    const voxel::World world = test::makeVoxelWorld({-40, -40, -40}, {40, 40, 40}, [](int x, int y, int z) {
+        const uint32_t h = uint32_t(x * 73856093) ^ uint32_t(y * 19349663) ^ uint32_t(z * 83492791);
+        const bool block = std::abs(x - 10) < 6 && std::abs(y + 5) < 9 && std::abs(z) < 4;
+        return block || (x < 0 && h % 97 < 3) || (y > 20 && h % 13 == 0);
+    }, 0.5, {12.25, -3.0, 0.75});
+    const voxel::BrickTable table(world);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> pos(-50.0, 50.0), dir(-1.0, 1.0), len(0.05, 60.0);
+    int hits = 0, compared = 0;
+    for (int i = 0; i < 20000; ++i) {
+        const glm::dvec3 p(pos(rng), pos(rng), pos(rng));
+        if (world.solid(glm::ivec3(glm::floor(p)))) continue;  // rays start in open cells
+        glm::dvec3 d(dir(rng), dir(rng), dir(rng));
+        if (i % 5 == 0) d[i % 3] = 0.0;                   // in a plane of the grid
+        if (i % 7 == 0) d = glm::dvec3(0.0), d[i % 3] = 1.0 - 2.0 * (i % 2);  // along an axis
+        d = glm::normalize(d);
+        const double r = len(rng);
+        const auto exact = world.raycast(world.origin() + p * 0.5, d, r * 0.5);
+        if (exact && std::abs(exact->distance - r * 0.5) < 1e-9) continue;  // a tie at R
+        EXPECT_EQ(table.hitWithin(p, d, r), exact.has_value()) << "ray " << i;
+        hits += exact.has_value();
+        ++compared;
+    }
+    EXPECT_GT(compared, 15000);
+    EXPECT_GT(hits, 3000);
+    EXPECT_LT(hits, compared - 3000);
 }
 
 TEST(ReferenceAo, WallMatchesClosedFormWithinThreeStandardErrors) {

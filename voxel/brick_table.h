@@ -27,6 +27,12 @@ public:
     bool solid(uint32_t index, glm::ivec3 v) const {
         return (masks_[size_t(index) * 8 + (v.x & 7)] >> (((v.y & 7) << 3) | (v.z & 7))) & 1u;
     }
+    // Does the ray from p (voxel index units, relative to voxel corner 0,0,0) along
+    // the unit direction d enter a solid voxel at t <= tMax? The start cell counts
+    // as open: it is the empty cell in front of a visible face, and at concave
+    // edges rounding may put p a hair inside the neighbouring voxel.
+    bool hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const;
+
     bool dense() const { return !dense_.empty(); }
 
 private:

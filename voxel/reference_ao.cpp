@@ -20,65 +20,6 @@ namespace grotto::voxel {
 
 namespace {
 
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// Does the ray from p (index units) along unit d enter a solid voxel at t <= tMax?
-// The start cell counts as open: it is the empty cell in front of a visible face,
-// and at concave edges rounding may put p a hair inside the neighbouring voxel.
-bool occluded(const BrickTable& table, glm::dvec3 p, glm::dvec3 d, double tMax) {
-    glm::ivec3 cell(std::floor(p.x), std::floor(p.y), std::floor(p.z)), step;
-    glm::dvec3 tNext, tDelta;
-    for (int i = 0; i < 3; ++i) {
-        if (d[i] > 0) {
-            step[i] = 1, tDelta[i] = 1.0 / d[i], tNext[i] = (cell[i] + 1 - p[i]) * tDelta[i];
-        } else if (d[i] < 0) {
-            step[i] = -1, tDelta[i] = -1.0 / d[i], tNext[i] = (p[i] - cell[i]) * tDelta[i];
-        } else {
-            step[i] = 0, tDelta[i] = kInf, tNext[i] = kInf;
-        }
-    }
-    glm::ivec3 brick = cell >> 3;
-    uint32_t b = table.find(brick);
-    bool first = true;
-    while (true) {
-        if (b == 0) {
-            // An empty brick: move every axis to where the ray leaves it, at once.
-            glm::ivec3 steps;
-            glm::dvec3 tLeave;
-            for (int i = 0; i < 3; ++i) {
-                steps[i] = step[i] > 0 ? brick[i] * 8 + 8 - cell[i] : cell[i] - brick[i] * 8 + 1;
-                tLeave[i] = step[i] == 0 ? kInf : tNext[i] + (steps[i] - 1) * tDelta[i];
-            }
-            const int e = tLeave.x < tLeave.y ? (tLeave.x < tLeave.z ? 0 : 2) : (tLeave.y < tLeave.z ? 1 : 2);
-            const double tE = tLeave[e];
-            if (tE > tMax) return false;
-            for (int i = 0; i < 3; ++i) {
-                if (i == e || step[i] == 0 || tNext[i] >= tE) continue;
-                // Crossings of axis i strictly before tE, staying inside this brick.
-                const double k = std::clamp(std::ceil((tE - tNext[i]) / tDelta[i]), 0.0, double(steps[i] - 1));
-                cell[i] += step[i] * int(k);
-                tNext[i] += k * tDelta[i];
-            }
-            cell[e] += step[e] * steps[e];
-            tNext[e] = tE + tDelta[e];
-            brick[e] += step[e];
-            b = table.find(brick);
-            first = false;
-            continue;
-        }
-        if (!first && table.solid(b, cell)) return true;
-        first = false;
-        const int a = tNext.x < tNext.y ? (tNext.x < tNext.z ? 0 : 2) : (tNext.y < tNext.z ? 1 : 2);
-        if (tNext[a] > tMax) return false;
-        cell[a] += step[a];
-        tNext[a] += tDelta[a];
-        if ((cell[a] & 7) == (step[a] > 0 ? 0 : 7)) {
-            brick[a] += step[a];
-            b = table.find(brick);
-        }
-    }
-}
-
 uint64_t splitmix64(uint64_t x) {
     x += 0x9e3779b97f4a7c15ull;
     x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
@@ -144,7 +85,7 @@ ReferenceAo referenceAo(const World& world, std::span<const glm::dvec3> points, 
                 const double r = std::sqrt(u), z = std::sqrt(1.0 - u);
                 const double x = r * (dirs.cosPhi[i] * ct - dirs.sinPhi[i] * st);
                 const double y = r * (dirs.sinPhi[i] * ct + dirs.cosPhi[i] * st);
-                open += !occluded(table, p, t1 * x + t2 * y + n * z, tMax);
+                open += !table.hitWithin(p, t1 * x + t2 * y + n * z, tMax);
             }
             const double v = double(open) / s.spp;
             out.visibility[k] = float(v);
