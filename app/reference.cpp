@@ -104,7 +104,12 @@ void addReferenceCommand(CLI::App& app) {
 
         const std::string key = cacheKey(world, camera, radius, spp);
         Traced t;
-        if (auto cached = loadCached("reference", key); cached && cached->size() == 3) {
+        const size_t n = size_t(size.width) * size.height;
+        auto cached = loadCached("reference", key);
+        if (cached && (cached->size() != 3 || (*cached)[0].size() != n || (*cached)[1].size() != n ||
+                       (*cached)[2].size() != n))
+            cached.reset();  // not ours after all: trace again and overwrite it
+        if (cached) {
             t.ao = std::move((*cached)[0]), t.stderror = std::move((*cached)[1]), t.surface = std::move((*cached)[2]);
             std::printf("cache hit: %s (nothing traced)\n", cachePath("reference", key).c_str());
         } else {
