@@ -7,6 +7,7 @@
 #include "tests/scenes.h"
 #include "voxel/brick_table.h"
 #include "voxel/reference_ao.h"
+#include "voxel/solid.h"
 
 #include <tbb/global_control.h>
 
@@ -81,6 +82,26 @@ TEST(ReferenceAo, BrickTraversalAgreesWithExactRaycast) {
     EXPECT_GT(compared, 15000);
     EXPECT_GT(hits, 3000);
     EXPECT_LT(hits, compared - 3000);
+}
+
+TEST(ReferenceAo, SparseWorldsUseAHashedBrickTable) {
+    // Two blocks 10^5 voxels apart: a dense table over their range would need 10^8 entries.
+    openvdb::initialize();
+    auto grid = openvdb::MaskGrid::create();
+    for (glm::ivec3 base : {glm::ivec3(0), glm::ivec3(100000, 0, 100000)})
+        for (int x = 0; x < 3; ++x)
+            for (int z = 0; z < 3; ++z) grid->tree().setValueOn(openvdb::Coord(base.x + x, base.y, base.z + z));
+    voxel::WorldDesc desc;
+    desc.materials = voxel::defaultMaterials();
+    const voxel::World world = voxel::makeWorld(grid, desc);
+    const voxel::BrickTable table(world);
+    EXPECT_FALSE(table.dense());
+    for (double bx : {0.0, 100000.0}) {
+        EXPECT_TRUE(table.hitWithin({bx + 1.5, 5.5, bx + 1.5}, {0, -1, 0}, 4.6));
+        EXPECT_FALSE(table.hitWithin({bx + 1.5, 5.5, bx + 1.5}, {0, -1, 0}, 4.4));
+        EXPECT_FALSE(table.hitWithin({bx + 4.5, 5.5, bx + 1.5}, {0, -1, 0}, 100.0));
+        EXPECT_TRUE(table.hitWithin({bx - 9.5, 0.5, bx + 1.5}, {1, 0, 0}, 9.6));
+    }
 }
 
 TEST(ReferenceAo, WallMatchesClosedFormWithinThreeStandardErrors) {
