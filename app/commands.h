@@ -10,5 +10,6 @@ void addMkworldCommand(CLI::App& app);
 void addExportMeshCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addFlythroughCommand(CLI::App& app);
+void addReferenceCommand(CLI::App& app);
 
 }  // namespace grotto::app

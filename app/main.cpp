@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
     grotto::app::addExportMeshCommand(app);
     grotto::app::addBenchCommand(app);
     grotto::app::addFlythroughCommand(app);
+    grotto::app::addReferenceCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -118,4 +118,24 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& f, const C
     });
 }
 
+void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const Channel> channels,
+                   const Camera& camera) {
+    if (imageFormatFor(path) != ImageFormat::Exr)
+        throw Error(path.string(), "named channels need an .exr output", "use .exr");
+    const size_t n = size_t(width) * height, count = channels.size();
+    for (const Channel& c : channels)
+        if (c.values->size() != n) throw Error::internal(path.string(), "channel " + c.name + " has the wrong size");
+    writeAtomically(path, [&](const std::filesystem::path& tmp) {
+        OIIO::ImageSpec spec(int(width), int(height), int(count), OIIO::TypeDesc::FLOAT);
+        spec.channelnames.clear();
+        for (const Channel& c : channels) spec.channelnames.push_back(c.name);
+        spec.attribute("compression", "zip");
+        addCamera(spec, camera);
+        std::vector<float> px(count * n);
+        for (size_t i = 0; i < n; ++i)
+            for (size_t c = 0; c < count; ++c) px[count * i + c] = (*channels[c].values)[i];
+        write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT);
+    });
+}
+
 }  // namespace grotto

@@ -7,6 +7,9 @@
 #include "engine/renderer.h"
 
 #include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
 
 namespace grotto {
 
@@ -16,6 +19,15 @@ enum class ImageFormat { Png, Exr };
 ImageFormat imageFormatFor(const std::filesystem::path& path);
 
 void writeFrame(const std::filesystem::path& path, const FrameImages& frame, const Camera& camera, bool aovs);
+
+// An EXR of named float channels, each width * height values (row 0 on top), with
+// the same camera attributes as writeFrame; written atomically.
+struct Channel {
+    std::string name;
+    const std::vector<float>* values;
+};
+void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const Channel> channels,
+                   const Camera& camera);
 
 // Linear [0, 1] -> 8-bit sRGB (clamped; NaN -> 0).
 uint8_t toSrgb8(float linear);

@@ -338,5 +338,54 @@ TEST_F(CliErrors, FlythroughRefusesBadPathsAndRanges) {
     expectRefused("flythrough " + empty.string() + " --path p -o " + seq.string(), "paths.p.keys", seq);
 }
 
+TEST_F(CliErrors, ReferenceRefusesNonsense) {
+    const fs::path exr = dir_ / "ref.exr";
+    const std::string base = "reference " + good_.string() + " --size 16x8 -o " + exr.string();
+    const std::string cache = "GROTTO_CACHE_DIR=" + (dir_ / "cache").string();
+    expectRefused(base + " --spp 0", "--spp", exr, cache);
+    expectRefused(base + " --spp -3", "--spp", exr, cache);
+    expectRefused(base + " --spp 16 --radius -1", "--radius", exr, cache);
+    expectRefused(base + " --spp 16 --radius 0", "--radius", exr, cache);
+    expectRefused("reference " + good_.string() + " --size 16x8 --spp 16 -o " + out().string(), "out.png", out(), cache);
+    EXPECT_FALSE(fs::exists(dir_ / "cache"));
+}
+
+TEST_F(CliErrors, ReferenceWritesAoAndStderrThenHitsTheCache) {
+    const fs::path exr = dir_ / "ref.exr";
+    const auto world = writeText("cam.json", R"({"grid": {"file": "good.vdb"},
+        "cameras": {"c": {"position": [8, 10, 30], "target": [8, 0, 8]}}})");
+    const std::string args = "reference " + world.string() + " --camera c --size 40x30 --spp 64 -o " + exr.string();
+    const std::string env = "GROTTO_CACHE_DIR=" + (dir_ / "cache").string();
+    const test::RunResult first = runGrotto(args, env);
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    EXPECT_EQ(first.out.find("cache hit"), std::string::npos) << first.out;
+    EXPECT_NE(first.out.find("rays/s"), std::string::npos) << first.out;
+    auto in = OIIO::ImageInput::open(exr.string());
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec spec = in->spec();
+    EXPECT_EQ(std::vector<std::string>(spec.channelnames.begin(), spec.channelnames.end()),
+              (std::vector<std::string>{"AO", "AO_stderr"}));
+    EXPECT_NE(spec.find_attribute("worldtocamera", OIIO::TypeMatrix44), nullptr);
+    EXPECT_NE(spec.find_attribute("worldtoscreen", OIIO::TypeMatrix44), nullptr);
+    std::vector<float> px(size_t(spec.width) * spec.height * 2);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 2, OIIO::TypeDesc::FLOAT, px.data()));
+    in->close();
+    // A 16x16 slab seen from above: its open top is exactly 1, sky is 1 with no error.
+    for (size_t i = 0; i < px.size(); i += 2) {
+        EXPECT_EQ(px[i], 1.0f);
+        EXPECT_EQ(px[i + 1], 0.0f);
+    }
+    const auto written = fs::last_write_time(exr);
+    const test::RunResult second = runGrotto(args, env);
+    ASSERT_EQ(second.exitCode, 0) << second.err;
+    EXPECT_NE(second.out.find("cache hit"), std::string::npos) << second.out;
+    EXPECT_GE(fs::last_write_time(exr), written);
+    // Another radius is another entry.
+    const test::RunResult third = runGrotto(args + " --radius 2", env);
+    ASSERT_EQ(third.exitCode, 0) << third.err;
+    EXPECT_EQ(third.out.find("cache hit"), std::string::npos) << third.out;
+}
+
 }  // namespace
 }  // namespace grotto
+

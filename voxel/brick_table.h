@@ -1,0 +1,45 @@
+#pragma once
+// A flat lookup from brick coordinates (voxel index >> 3) to 512-bit occupancy
+// masks, for traversals that test millions of voxels: one table read per brick
+// entered and one bit test per voxel, instead of a tree walk per voxel.
+#include "voxel/world.h"
+
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace grotto::voxel {
+
+class BrickTable {
+public:
+    explicit BrickTable(const World& world);
+
+    // 0 for an empty (or absent) brick, else an index for mask().
+    uint32_t find(glm::ivec3 brick) const {
+        const glm::ivec3 r = brick - lo_;
+        if (r.x < 0 || r.y < 0 || r.z < 0 || r.x >= dims_.x || r.y >= dims_.y || r.z >= dims_.z) return 0;
+        const size_t key = (size_t(r.x) * size_t(dims_.y) + size_t(r.y)) * size_t(dims_.z) + size_t(r.z);
+        if (!dense_.empty()) return dense_[key];
+        const auto it = sparse_.find(key);
+        return it == sparse_.end() ? 0 : it->second;
+    }
+    // Bit for voxel v of brick `index` (v's low three bits pick the voxel).
+    bool solid(uint32_t index, glm::ivec3 v) const {
+        return (masks_[size_t(index) * 8 + (v.x & 7)] >> (((v.y & 7) << 3) | (v.z & 7))) & 1u;
+    }
+    // Does the ray from p (voxel index units, relative to voxel corner 0,0,0) along
+    // the unit direction d enter a solid voxel at t <= tMax? The start cell counts
+    // as open: it is the empty cell in front of a visible face, and at concave
+    // edges rounding may put p a hair inside the neighbouring voxel.
+    bool hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const;
+
+    bool dense() const { return !dense_.empty(); }
+
+private:
+    glm::ivec3 lo_{0}, dims_{0};          // brick coordinate range
+    std::vector<uint32_t> dense_;         // over the whole range, when it is small enough
+    std::unordered_map<size_t, uint32_t> sparse_;  // otherwise, the non-empty bricks only
+    std::vector<uint64_t> masks_;         // 8 words per brick; brick 0 is all empty
+};
+
+}  // namespace grotto::voxel
