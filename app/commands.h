@@ -11,5 +11,6 @@ void addExportMeshCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addFlythroughCommand(CLI::App& app);
 void addReferenceCommand(CLI::App& app);
+void addStabilityCommand(CLI::App& app);
 
 }  // namespace grotto::app

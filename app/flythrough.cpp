@@ -39,17 +39,6 @@ struct Args {
     AoFlags ao;
 };
 
-// A path named in the world, or a path .json given directly.
-voxel::CameraPathDesc findPath(const voxel::World& world, const std::string& name) {
-    const auto& paths = world.desc().paths;
-    if (auto it = paths.find(name); it != paths.end()) return it->second;
-    if (fs::path(name).extension() == ".json") return voxel::loadCameraPath(name);
-    std::string known;
-    for (auto& [n, p] : paths) known += (known.empty() ? "" : ", ") + n;
-    throw Error(world.desc().source.string(), "has no path named '" + name + "'",
-                known.empty() ? "the world defines no paths; give --path FILE.json" : "paths: " + known);
-}
-
 json pathJson(const voxel::CameraPathDesc& p) {
     json keys = json::array();
     for (const voxel::PathKey& k : p.keys) {
@@ -146,7 +135,7 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->callback([args] {
         const Size size = parseSize(args->size);
         const voxel::World world = voxel::World::load(args->world);
-        const voxel::CameraPathDesc desc = findPath(world, args->path);
+        const voxel::CameraPathDesc desc = findCameraPath(world, args->path);
         const CameraPath path(desc, world.camera(""));
         const int count = path.frameCount(args->fps);
         const FrameRange range = args->frames.empty() ? FrameRange{1, count} : parseFrameRange(args->frames, count);

@@ -3,6 +3,7 @@
 #include "common/error.h"
 
 #include <cstdio>
+#include <filesystem>
 
 namespace grotto::app {
 
@@ -65,6 +66,16 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
         throw Error("--thin-occluder", std::to_string(*f.thinOccluder) + " is out of range", "accepted: 0 to 0.7");
     validateGtao(o.gtao, "command line");
     return o;
+}
+
+voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name) {
+    const auto& paths = world.desc().paths;
+    if (auto it = paths.find(name); it != paths.end()) return it->second;
+    if (std::filesystem::path(name).extension() == ".json") return voxel::loadCameraPath(name);
+    std::string known;
+    for (auto& [n, p] : paths) known += (known.empty() ? "" : ", ") + n;
+    throw Error(world.desc().source.string(), "has no path named '" + name + "'",
+                known.empty() ? "the world defines no paths; give --path FILE.json" : "paths: " + known);
 }
 
 void requireNoValidationMessages(const vk::Context& ctx) {

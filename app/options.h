@@ -26,6 +26,10 @@ struct FrameRange {
 };
 FrameRange parseFrameRange(const std::string& text, int count, const std::string& option = "--frames");
 
+// A path named in the world file, or a path .json given directly; throws
+// grotto::Error (input) listing the world's paths when there is no such one.
+voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name);
+
 // The AO flags every rendering subcommand takes; unset ones keep the world's values.
 struct AoFlags {
     std::string method, quality;

@@ -69,6 +69,12 @@ float expectedBlend(const Half& now, int x, int y, float previous, float length)
     return std::clamp(previous, lo, hi) + (now.at(now.spatial, x, y) - std::clamp(previous, lo, hi)) / length;
 }
 
+// World position seen at AO pixel (x, y).
+glm::dvec3 worldAt(const Camera& camera, const Half& f, int x, int y) {
+    const glm::dvec3 dir = camera.rayDirection(2 * x + 0.5, 2 * y + 0.5);
+    return camera.position + dir * (double(f.at(f.depth, x, y)) / glm::dot(dir, -camera.basis[2]));
+}
+
 class Temporal : public GpuTest {
 protected:
     struct Run {
@@ -130,6 +136,54 @@ TEST_F(Temporal, OnePixelPanReprojectsTheHistoryExactly) {
             ++checked;
         }
     EXPECT_GT(checked, 1500);
+}
+
+TEST_F(Temporal, TurningCameraReprojectsThroughDepthAndBothCameras) {
+    // A turn and a step at once: every pixel moves by its own sub-pixel amount.
+    // The expected history is the previous output interpolated bilinearly at the
+    // point's position in the previous view, computed here in double.
+    const voxel::World world = bumpyWall();
+    const uint32_t w = 128, h = 96;
+    Run run = start(world, options(), w, h);
+    const double wallZ = world.origin().z;
+    const glm::dvec3 eye(0.31, 0.27, wallZ + 12.0);
+    const Camera a = makeCamera(lookAt(eye, eye + glm::dvec3(0.05, 0.02, -1)), w, h);
+    const Camera b = makeCamera(lookAt(eye + glm::dvec3(0.1, -0.05, 0.2), eye + glm::dvec3(0.09, 0.04, -1)), w, h);
+    run.renderer->render(a, 0);
+    const FrameImages fa = run.renderer->readback(a, true);
+    const Half first = half(fa);
+    run.renderer->render(b, 1);
+    const FrameImages fb = run.renderer->readback(b, true);
+    const Half second = half(fb);
+    const glm::dmat4 clipA = a.projection() * a.viewFromWorld();
+    int checked = 0;
+    double worst = 0.0;
+    for (int y = 2; y < int(second.h) - 2; ++y)
+        for (int x = 2; x < int(second.w) - 2; ++x) {
+            const glm::dvec3 p = worldAt(b, second, x, y);
+            if (!(std::abs(p.z - wallZ) < 1e-3)) continue;  // the wall plane only
+            const glm::dvec4 clip = clipA * glm::dvec4(p, 1.0);
+            // AO pixel coordinates in the first frame (AO pixel i sits at full-res 2i + 0.5).
+            const glm::dvec2 uv = ((glm::dvec2(clip) / clip.w * 0.5 + 0.5) * glm::dvec2(w, h) - 0.5) / 2.0;
+            const glm::ivec2 base(glm::floor(uv));
+            const glm::dvec2 f = uv - glm::dvec2(base);
+            double expected = 0.0;
+            bool plane = true;
+            for (int j = 0; j < 2; ++j)
+                for (int i = 0; i < 2; ++i) {
+                    const int tx = base.x + i, ty = base.y + j;
+                    plane = plane && std::abs(worldAt(a, first, tx, ty).z - wallZ) < 1e-3;
+                    expected += (i ? f.x : 1 - f.x) * (j ? f.y : 1 - f.y) * first.at(first.temporal, tx, ty);
+                }
+            if (!plane) continue;
+            const double got = second.at(second.temporal, x, y);
+            const double want = expectedBlend(second, x, y, float(expected), 2.0f);
+            worst = std::max(worst, std::abs(got - want));
+            EXPECT_NEAR(got, want, 2e-3) << x << "," << y;
+            ++checked;
+        }
+    EXPECT_GT(checked, 1000);
+    std::printf("%d pixels, worst %.2e\n", checked, worst);
 }
 
 TEST_F(Temporal, CutsAndNewSequencesStartAfresh) {

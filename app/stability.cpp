@@ -1,0 +1,214 @@
+// grotto stability WORLD --path NAME [--size WxH] [--fps N] [--frames N] [--spp N]
+//                  [--reference-every K] --json FILE
+// Renders a camera path and measures DESIGN.md's temporal metrics at AO
+// resolution: flicker of the raw, spatial and temporal AO and of the reference,
+// error against the reference per frame, the ghosting curve (error by frames
+// since disocclusion) and the cost per pass. The reference is traced on pairs of
+// consecutive frames, one pair every K frames (K = 2: every frame).
+#include "app/commands.h"
+#include "app/options.h"
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "engine/camera_path.h"
+#include "engine/renderer.h"
+#include "engine/surface_points.h"
+#include "engine/temporal_metrics.h"
+#include "voxel/reference_ao.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <map>
+
+namespace grotto::app {
+namespace {
+
+using json = nlohmann::json;
+
+struct Args {
+    std::string world, path, size = "320x180", output;
+    int fps = 24, frames = 0, spp = 256, referenceEvery = 4;
+    AoFlags ao;
+};
+
+// DESIGN.md's error over surface pixels: MAE, RMSE, PSNR (peak 1), mean signed bias.
+json errorJson(const std::vector<float>& ao, const std::vector<float>& reference, const std::vector<uint8_t>& mask) {
+    double abs = 0.0, sq = 0.0, bias = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < ao.size(); ++i)
+        if (mask[i]) {
+            const double e = double(ao[i]) - reference[i];
+            abs += std::abs(e), sq += e * e, bias += e, ++n;
+        }
+    if (n == 0) return {{"pixels", 0}};
+    const double mse = sq / double(n);
+    return {{"pixels", n}, {"mae", abs / double(n)}, {"rmse", std::sqrt(mse)},
+            {"psnr", mse > 0.0 ? -10.0 * std::log10(mse) : 99.0}, {"bias", bias / double(n)}};
+}
+
+// The reference at the AO pixels: the G-buffer's points there, traced.
+std::vector<float> referenceAt(const voxel::World& world, const FrameImages& frame, const Camera& camera,
+                               const AoFrame& ao, double radius, int spp, uint64_t& rays) {
+    const SurfacePoints sp = surfacePoints(frame, camera, world.voxelSize(), world.origin());
+    std::vector<glm::dvec3> points, normals;
+    std::vector<size_t> index;
+    for (size_t k = 0; k < sp.pixels.size(); ++k) {
+        const uint32_t x = sp.pixels[k] % frame.width, y = sp.pixels[k] / frame.width;
+        if (x % ao.scale || y % ao.scale) continue;
+        points.push_back(sp.points[k]);
+        normals.push_back(sp.normals[k]);
+        index.push_back(size_t(y / ao.scale) * ao.width + x / ao.scale);
+    }
+    const voxel::ReferenceAo r = voxel::referenceAo(world, points, normals, {.radius = radius, .spp = uint32_t(spp)});
+    rays += r.rays;
+    std::vector<float> v(ao.world.size(), 1.0f);
+    for (size_t k = 0; k < index.size(); ++k) v[index[k]] = r.visibility[k];
+    return v;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+struct Mean {
+    double sum = 0.0;
+    size_t n = 0;
+    void add(double v) { sum += v, ++n; }
+    double value() const { return n ? sum / double(n) : 0.0; }
+};
+
+}  // namespace
+
+void addStabilityCommand(CLI::App& app) {
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("stability", "Measure flicker, error, ghosting and cost along a camera path");
+    cmd->add_option("world", args->world, "World .json or .vdb")->required();
+    cmd->add_option("--path", args->path, "Path named in the world file, or a path .json")->required();
+    cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
+    cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
+    cmd->add_option("--frames", args->frames, "Frames from the path's start (default: the whole path)")->check(CLI::Range(2, 100000));
+    cmd->add_option("--spp", args->spp, "Reference rays per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 20));
+    cmd->add_option("--reference-every", args->referenceEvery, "Trace the reference on a pair of frames every K frames")
+        ->capture_default_str()->check(CLI::Range(2, 100000));
+    cmd->add_option("--json", args->output, "Write the metrics to this JSON file")->required();
+    addAoFlags(cmd, args->ao);
+    cmd->callback([args] {
+        const Size size = parseSize(args->size);
+        const std::filesystem::path out = args->output;
+        requireWritableDirectory(out);
+        const voxel::World world = voxel::World::load(args->world);
+        const CameraPath path(findCameraPath(world, args->path), world.camera(""));
+        const int count = args->frames ? args->frames : path.frameCount(args->fps);
+        const AoOptions ao = resolveAo(world, args->ao);
+        if (!ao.enabled) throw Error("--ao", "stability measures AO; it is off", "use --ao gtao");
+        const uint32_t scale = ao.fullResolution ? 1 : 2;
+        const double tolerance = 0.5 * world.voxelSize();
+
+        vk::Context ctx;
+        auto scene = uploadScene(ctx, world.mesh(), world.desc());
+        std::map<std::string, std::vector<double>> passMs;
+        std::vector<double> wallMs;
+        Mean flickerRaw, flickerSpatial, flickerTemporal, flickerReference;
+        std::map<int, std::pair<Mean, Mean>> ghosting;  // age -> temporal, spatial MAE
+        json errors = json::array();
+        uint64_t rays = 0;
+        {
+            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
+            AoFrame before;
+            Camera beforeCamera;
+            std::vector<float> beforeReference;
+            std::vector<uint16_t> age;
+            for (int i = 1; i <= count; ++i) {
+                const Camera camera = path.camera(double(i - 1) / args->fps, size.width, size.height);
+                const FrameStats stats = renderer.render(camera, uint32_t(i));
+                for (const auto& [name, ms] : stats.passMs) passMs[name].push_back(ms);
+                wallMs.push_back(stats.wallMs);
+                const FrameImages frame = renderer.readback(camera, true);
+                AoFrame now = aoFrame(frame, camera, scale);
+                std::vector<int32_t> match;
+                if (i > 1) {
+                    match = reproject(now, before, beforeCamera, tolerance);
+                    flickerRaw.add(flicker(now.raw, before.raw, match));
+                    flickerSpatial.add(flicker(now.spatial, before.spatial, match));
+                    flickerTemporal.add(flicker(now.temporal, before.temporal, match));
+                }
+                // The sequence's first frame counts as disoccluded everywhere.
+                age = i > 1 ? disocclusionAge(match, age, now.world.size()) : std::vector<uint16_t>(now.world.size(), 0);
+                std::vector<float> reference;
+                if ((i - 1) % args->referenceEvery < 2) {
+                    reference = referenceAt(world, frame, camera, now, ao.gtao.radius, args->spp, rays);
+                    errors.push_back({{"frame", i},
+                                      {"spatial", errorJson(now.spatial, reference, now.surface)},
+                                      {"temporal", errorJson(now.temporal, reference, now.surface)}});
+                    if (!beforeReference.empty() && i > 1)
+                        flickerReference.add(flicker(reference, beforeReference, match));
+                    for (size_t p = 0; p < age.size(); ++p)
+                        if (now.surface[p]) {
+                            auto& bin = ghosting[std::min<int>(age[p], 32)];
+                            bin.first.add(std::abs(now.temporal[p] - reference[p]));
+                            bin.second.add(std::abs(now.spatial[p] - reference[p]));
+                        }
+                }
+                beforeReference = std::move(reference);
+                before = std::move(now);
+                beforeCamera = camera;
+                std::printf("frame %d/%d\n", i, count);
+                std::fflush(stdout);
+            }
+        }
+        scene.reset();
+        requireNoValidationMessages(ctx);
+
+        json cost = json::object();
+        double chain = 0.0;
+        for (const auto& [name, ms] : passMs) {
+            cost[name] = median(ms);
+            if (name != "gbuffer" && name != "composite") chain += median(ms);
+        }
+        cost["ao_chain"] = chain;
+        cost["frame_wall"] = median(wallMs);
+        json ghostCurve = json::array();
+        for (const auto& [k, bins] : ghosting)
+            ghostCurve.push_back({{"frames_since_disocclusion", k}, {"pixels", bins.first.n},
+                                  {"mae_temporal", bins.first.value()}, {"mae_spatial", bins.second.value()}});
+        auto meanError = [&](const char* which, const char* metric) {
+            Mean m;
+            for (const json& e : errors)
+                if (e[which].contains(metric)) m.add(e[which][metric].get<double>());
+            return m.value();
+        };
+        json steady = json::object();
+        for (const char* which : {"spatial", "temporal"})
+            for (const char* metric : {"mae", "rmse", "psnr", "bias"})
+                steady[which][metric] = meanError(which, metric);
+        const json result = {
+            {"world", args->world}, {"path", args->path}, {"size", {size.width, size.height}}, {"fps", args->fps},
+            {"frames", count}, {"device", ctx.deviceName()}, {"ao_resolution", scale == 2 ? "half" : "full"},
+            {"quality", ao.quality}, {"temporal_history", ao.gtao.temporalHistory},
+            {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}, {"frames", errors.size()},
+                           {"rays", rays}, {"radius", ao.gtao.radius}}},
+            {"flicker", {{"raw", flickerRaw.value()}, {"spatial", flickerSpatial.value()},
+                         {"temporal", flickerTemporal.value()}, {"reference", flickerReference.value()}}},
+            {"error_mean", steady}, {"error", errors}, {"ghosting", ghostCurve}, {"cost_ms", cost}};
+        writeAtomically(out, [&](const std::filesystem::path& tmp) {
+            std::ofstream f(tmp);
+            f << result.dump(2) << "\n";
+            if (!f) throw Error(out.string(), "could not be written", "check free space");
+        });
+        std::printf("flicker raw %.4f spatial %.4f temporal %.4f (%.2fx spatial) reference %.4f\n",
+                    flickerRaw.value(), flickerSpatial.value(), flickerTemporal.value(),
+                    flickerTemporal.value() / std::max(flickerSpatial.value(), 1e-12), flickerReference.value());
+        std::printf("error vs reference (%zu frames): spatial rmse %.4f psnr %.2f dB, temporal rmse %.4f psnr %.2f dB\n",
+                    errors.size(), meanError("spatial", "rmse"), meanError("spatial", "psnr"),
+                    meanError("temporal", "rmse"), meanError("temporal", "psnr"));
+        std::printf("AO chain %.2f ms, temporal %.2f ms; wrote %s\n", chain,
+                    cost.contains("temporal") ? cost["temporal"].get<double>() : 0.0, out.c_str());
+    });
+}
+
+}  // namespace grotto::app
