@@ -1,5 +1,11 @@
 // grotto bench WORLD: load and mesh times, per-pass GPU time (median after
 // warm-up), frame wall time, quads and memory, printed and optionally as JSON.
+//
+// Lavapipe's timestamps miss some compute passes entirely (a pass that follows a
+// barrier can read 0.05 ms whatever it does), so the AO chain's and the temporal
+// pass's costs are also measured as wall-time differences: the same frames are
+// rendered, interleaved, by a renderer without AO and one without the temporal
+// pass, and the median of the per-frame differences is reported.
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
@@ -14,6 +20,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <memory>
 
 namespace grotto::app {
 namespace {
@@ -64,19 +71,32 @@ void addBenchCommand(CLI::App& app) {
         const size_t quadCount = mesh.quads.size();
         mesh = {};  // the GPU holds the quads now
         std::map<std::string, std::vector<double>> passMs;
-        std::vector<double> wallMs, frameGpuMs;
+        std::vector<double> wallMs, frameGpuMs, chainWallMs, temporalWallMs;
         uint64_t drawn = 0;
         size_t targetBytes = 0;
         {
-            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
+            const voxel::Lighting& light = world.desc().lighting;
+            Renderer renderer(ctx, *scene, light, ao, size.width, size.height);
             targetBytes = renderer.targetBytes();
+            // The same frames without AO, and without the temporal pass.
+            AoOptions noAo = ao, noTemporal = ao;
+            noAo.enabled = false;
+            noTemporal.gtao.temporalHistory = 0;
+            std::unique_ptr<Renderer> withoutAo, withoutTemporal;
+            if (ao.enabled) withoutAo = std::make_unique<Renderer>(ctx, *scene, light, noAo, size.width, size.height);
+            if (ao.enabled && ao.gtao.temporalHistory > 0)
+                withoutTemporal = std::make_unique<Renderer>(ctx, *scene, light, noTemporal, size.width, size.height);
             for (int i = 0; i < args->warmup + args->frames; ++i) {
                 const FrameStats f = renderer.render(camera, uint32_t(i));  // consecutive: temporal runs as in a flythrough
+                const double off = withoutAo ? withoutAo->render(camera, uint32_t(i)).wallMs : 0.0;
+                const double noHistory = withoutTemporal ? withoutTemporal->render(camera, uint32_t(i)).wallMs : 0.0;
                 if (i < args->warmup) continue;
                 double gpu = 0;
                 for (auto& [name, ms] : f.passMs) passMs[name].push_back(ms), gpu += ms;
                 frameGpuMs.push_back(gpu);
                 wallMs.push_back(f.wallMs);
+                if (withoutAo) chainWallMs.push_back(f.wallMs - off);
+                if (withoutTemporal) temporalWallMs.push_back(f.wallMs - noHistory);
                 drawn = f.quadsDrawn;
             }
         }
@@ -103,6 +123,14 @@ void addBenchCommand(CLI::App& app) {
             std::printf("  %-10s %8.3f ms GPU\n", name.c_str(), median(v));
         }
         std::printf("  frame      %8.3f ms GPU, %.3f ms wall\n", median(frameGpuMs), median(wallMs));
+        if (!chainWallMs.empty()) {
+            j["ao_chain_wall_ms_median"] = median(chainWallMs);
+            std::printf("  AO chain   %8.3f ms wall (frame minus the same frame without AO)\n", median(chainWallMs));
+        }
+        if (!temporalWallMs.empty()) {
+            j["temporal_wall_ms_median"] = median(temporalWallMs);
+            std::printf("  temporal   %8.3f ms wall (frame minus the same frame without it)\n", median(temporalWallMs));
+        }
         std::printf("  memory: grid memUsage %zu B; world host %zu B + GPU %zu B = %.2fx; targets %zu B\n",
                     stats.sourceGridBytes, hostBytes, gpuBytes,
                     j["memory"]["world_to_grid_ratio"].get<double>(), targetBytes);
