@@ -130,7 +130,7 @@ void addStabilityCommand(CLI::App& app) {
                 wallMs.push_back(stats.wallMs);
                 const FrameImages frame = renderer.readback(camera, true);
                 AoFrame now = aoFrame(frame, camera, scale);
-                std::vector<int32_t> match;
+                Reprojection match;
                 if (i > 1) {
                     match = reproject(now, before, beforeCamera, tolerance);
                     flickerRaw.add(flicker(now.raw, before.raw, match));

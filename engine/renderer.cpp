@@ -199,7 +199,7 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
         const vk::Image& previous = aoTargets_.history[historyIndex_];
         historyIndex_ = 1 - historyIndex_;
         timestamps_.begin(cmd, "temporal");
-        temporalPass_->record(cmd, aoTargets_.denoised(ao_.gtao.denoisePasses), previous,
+        temporalPass_->record(cmd, aoTargets_.raw, aoTargets_.denoised(ao_.gtao.denoisePasses), previous,
                               aoTargets_.history[historyIndex_], gtaoConstants_, temporalConstants_);
         timestamps_.end(cmd);
         computeToCompute(cmd);

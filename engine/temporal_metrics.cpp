@@ -13,6 +13,7 @@ AoFrame aoFrame(const FrameImages& f, const Camera& camera, uint32_t scale) {
     a.height = (f.height + scale - 1) / scale;
     const size_t n = size_t(a.width) * a.height;
     a.world.resize(n);
+    a.normal.resize(n);
     a.surface.assign(n, 0);
     a.raw.resize(n), a.spatial.resize(n), a.temporal.resize(n);
     const glm::dvec3 forward = -camera.basis[2];
@@ -26,14 +27,17 @@ AoFrame aoFrame(const FrameImages& f, const Camera& camera, uint32_t scale) {
             if (!std::isfinite(depth)) continue;
             const glm::dvec3 dir = camera.rayDirection(scale * x + 0.5, scale * y + 0.5);
             a.world[i] = camera.position + dir * (depth / glm::dot(dir, forward));
+            a.normal[i] = glm::dvec3(f.normal[3 * full], f.normal[3 * full + 1], f.normal[3 * full + 2]);
             a.surface[i] = 1;
         }
     return a;
 }
 
-std::vector<int32_t> reproject(const AoFrame& now, const AoFrame& before, const Camera& beforeCamera,
-                               double tolerance) {
-    std::vector<int32_t> match(now.world.size(), -1);
+Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& beforeCamera, double tolerance) {
+    Reprojection r;
+    r.nearest.assign(now.world.size(), -1);
+    r.taps.assign(now.world.size(), {-1, -1, -1, -1});
+    r.weights.assign(now.world.size(), {0.0f, 0.0f, 0.0f, 0.0f});
     // Relative to the camera, so positions far from the origin keep their precision.
     const glm::dmat4 clipFromView = beforeCamera.projection();
     const glm::dmat3 viewFromWorld = glm::transpose(beforeCamera.basis);
@@ -48,25 +52,53 @@ std::vector<int32_t> reproject(const AoFrame& now, const AoFrame& before, const 
         const double qx = std::floor(px / before.scale), qy = std::floor(py / before.scale);
         if (!(qx >= 0 && qy >= 0 && qx < before.width && qy < before.height)) continue;
         const size_t j = size_t(qy) * before.width + size_t(qx);
-        if (before.surface[j] && glm::length(before.world[j] - now.world[i]) <= tolerance) match[i] = int32_t(j);
+        if (!before.surface[j] || glm::length(before.world[j] - now.world[i]) > tolerance) continue;
+        r.nearest[i] = int32_t(j);
+        // Bilinear taps around the exact position (AO pixel k sits at full-res scale k + 0.5).
+        const double u = (px - 0.5) / before.scale, v = (py - 0.5) / before.scale;
+        const double bx = std::floor(u), by = std::floor(v), fx = u - bx, fy = v - by;
+        const double planeTolerance = 1e-3 * -view.z;
+        float sum = 0.0f;
+        for (int k = 0; k < 4; ++k) {
+            const double tx = bx + (k & 1), ty = by + (k >> 1);
+            if (!(tx >= 0 && ty >= 0 && tx < before.width && ty < before.height)) continue;
+            const size_t t = size_t(ty) * before.width + size_t(tx);
+            if (!before.surface[t] || before.normal[t] != now.normal[i] ||
+                std::abs(glm::dot(before.world[t] - now.world[i], now.normal[i])) > planeTolerance)
+                continue;
+            const float w = float(((k & 1) ? fx : 1.0 - fx) * ((k >> 1) ? fy : 1.0 - fy));
+            r.taps[i][k] = int32_t(t);
+            r.weights[i][k] = w;
+            sum += w;
+        }
+        if (sum > 1e-6f) {
+            for (float& w : r.weights[i]) w /= sum;
+        } else {  // only the nearest pixel is on the plane
+            r.taps[i] = {int32_t(j), -1, -1, -1};
+            r.weights[i] = {1.0f, 0.0f, 0.0f, 0.0f};
+        }
     }
-    return match;
+    return r;
 }
 
-double flicker(const std::vector<float>& now, const std::vector<float>& before, const std::vector<int32_t>& match) {
+double flicker(const std::vector<float>& now, const std::vector<float>& before, const Reprojection& r) {
     double sum = 0.0;
     size_t n = 0;
-    for (size_t i = 0; i < match.size(); ++i)
-        if (match[i] >= 0) sum += std::abs(double(now[i]) - before[size_t(match[i])]), ++n;
+    for (size_t i = 0; i < r.nearest.size(); ++i) {
+        if (r.nearest[i] < 0) continue;
+        double previous = 0.0;
+        for (int k = 0; k < 4; ++k)
+            if (r.taps[i][k] >= 0) previous += r.weights[i][k] * before[size_t(r.taps[i][k])];
+        sum += std::abs(double(now[i]) - previous), ++n;
+    }
     return n ? sum / double(n) : 0.0;
 }
 
-std::vector<uint16_t> disocclusionAge(const std::vector<int32_t>& match, const std::vector<uint16_t>& previous,
-                                      size_t pixels) {
+std::vector<uint16_t> disocclusionAge(const Reprojection& r, const std::vector<uint16_t>& previous, size_t pixels) {
     std::vector<uint16_t> age(pixels, 0);
     for (size_t i = 0; i < pixels; ++i)
-        if (match[i] >= 0)
-            age[i] = uint16_t(std::min<int>(previous[size_t(match[i])] + 1, std::numeric_limits<uint16_t>::max()));
+        if (r.nearest[i] >= 0)
+            age[i] = uint16_t(std::min<int>(previous[size_t(r.nearest[i])] + 1, std::numeric_limits<uint16_t>::max()));
     return age;
 }
 

@@ -3,11 +3,14 @@
 // full-res pixel (2x, 2y) exactly (1:1 with --ao-full-res), so its world position,
 // and the reference there, are that pixel's.
 //   flicker: mean |V_t(p) - V_t-1(q)| over pixels p whose reprojection q shows the
-//            same surface (world positions within half a voxel);
+//            same surface (world positions within half a voxel); V_t-1(q) is
+//            interpolated bilinearly from the taps on p's plane, so a steady image
+//            under a moving camera reads (nearly) no flicker;
 //   age:     frames since a pixel was last disoccluded (no such q), for ghosting.
 #include "engine/camera.h"
 #include "engine/renderer.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -17,6 +20,7 @@ struct AoFrame {
     uint32_t width = 0, height = 0;     // AO resolution
     uint32_t scale = 2;                 // full-res pixels per AO pixel
     std::vector<glm::dvec3> world;      // surface position per AO pixel
+    std::vector<glm::dvec3> normal;     // its face normal (world, axis-aligned)
     std::vector<uint8_t> surface;       // 0 for sky
     std::vector<float> raw, spatial, temporal;
 };
@@ -24,17 +28,21 @@ struct AoFrame {
 // Needs a readback with AOVs.
 AoFrame aoFrame(const FrameImages& frame, const Camera& camera, uint32_t scale);
 
-// For each pixel of `now`, the index of the pixel of `before` that shows the same
-// surface point (within `tolerance` world units), or -1: off-screen or disoccluded.
-std::vector<int32_t> reproject(const AoFrame& now, const AoFrame& before, const Camera& beforeCamera,
-                               double tolerance);
+// Where each pixel of `now` was in `before`: the nearest pixel showing the same
+// surface point (within `tolerance` world units; -1: off-screen or disoccluded),
+// and the bilinear taps around the exact position that lie on the same plane.
+struct Reprojection {
+    std::vector<int32_t> nearest;
+    std::vector<std::array<int32_t, 4>> taps;  // -1 = unused
+    std::vector<std::array<float, 4>> weights; // normalised over the used taps
+};
+Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& beforeCamera, double tolerance);
 
-// Mean |now(p) - before(match(p))| over matched pixels; 0 when none matched.
-double flicker(const std::vector<float>& now, const std::vector<float>& before, const std::vector<int32_t>& match);
+// Mean |now(p) - before(q)| over reprojected pixels; 0 when there are none.
+double flicker(const std::vector<float>& now, const std::vector<float>& before, const Reprojection& r);
 
 // Frames since each pixel was disoccluded: 0 where unmatched, else the matched
 // pixel's age + 1 (capped). `previous`: the last frame's ages.
-std::vector<uint16_t> disocclusionAge(const std::vector<int32_t>& match, const std::vector<uint16_t>& previous,
-                                      size_t pixels);
+std::vector<uint16_t> disocclusionAge(const Reprojection& r, const std::vector<uint16_t>& previous, size_t pixels);
 
 }  // namespace grotto

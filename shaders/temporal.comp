@@ -5,8 +5,10 @@
 // camera change is the whole motion) and the previous output is read there,
 // bilinearly, from taps that lie on the same face plane: anything else is a
 // disocclusion and restarts the pixel's history. The history is clamped to the
-// current 3x3 neighbourhood's range, then blended with weight 1 / length, the
-// length capped at temporalHistory frames.
+// range of this frame's raw (not yet denoised) AO over the 3x3 neighbourhood, so
+// the clamp allows for the estimator's own noise yet cuts off stale values (a
+// halo that moved on), then blended with weight 1 / length, the length capped at
+// temporalHistory frames.
 #include "shared/gtao.h"
 #include "shared/quad.h"
 #include "shared/temporal.h"
@@ -17,6 +19,7 @@ layout(set = 0, binding = 1, std140) uniform Temporal { TemporalConstants tempor
 layout(set = 0, binding = 2, rgba32f) uniform readonly image2D current;  // AO, edges, view depth, face + 1
 layout(set = 0, binding = 3, rgba32f) uniform readonly image2D history;  // AO, history length, view depth, face + 1
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D target;  // same layout as history
+layout(set = 0, binding = 5, rgba32f) uniform readonly image2D raw;      // GTAO before denoising: the clamp's range
 
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
@@ -41,7 +44,7 @@ void main() {
     float lo = c.x, hi = c.x;
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) {
-            float v = imageLoad(current, clamp(p + ivec2(i, j), ivec2(0), last)).x;
+            float v = imageLoad(raw, clamp(p + ivec2(i, j), ivec2(0), last)).x;
             lo = min(lo, v);
             hi = max(hi, v);
         }

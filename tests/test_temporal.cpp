@@ -17,15 +17,16 @@ using test::GpuTest;
 // Half-resolution views of a read-back frame (its AOVs are stored at full size).
 struct Half {
     uint32_t w, h;
-    std::vector<float> spatial, temporal, history, depth;
+    std::vector<float> raw, spatial, temporal, history, depth;
     float at(const std::vector<float>& v, int x, int y) const { return v[size_t(y) * w + x]; }
 };
 
 Half half(const FrameImages& f) {
-    Half r{(f.width + 1) / 2, (f.height + 1) / 2, {}, {}, {}, {}};
+    Half r{(f.width + 1) / 2, (f.height + 1) / 2, {}, {}, {}, {}, {}};
     for (uint32_t y = 0; y < r.h; ++y)
         for (uint32_t x = 0; x < r.w; ++x) {
             const size_t i = size_t(2 * y) * f.width + 2 * x;
+            r.raw.push_back(f.aoRaw[i]);
             r.spatial.push_back(f.aoSpatial[i]);
             r.temporal.push_back(f.aoTemporal[i]);
             r.history.push_back(f.aoHistory[i]);
@@ -58,12 +59,13 @@ voxel::World bumpyWall() {
 }
 
 // The pass's blend for one pixel, from the previous output at the reprojected
-// pixel and this frame's spatial AO: clamp to the 3x3 range, weight 1 / length.
+// pixel and this frame's AO: clamp to the raw AO's 3x3 range, then move towards
+// the spatial AO with weight 1 / length.
 float expectedBlend(const Half& now, int x, int y, float previous, float length) {
     float lo = 2.0f, hi = -1.0f;
     for (int j = -1; j <= 1; ++j)
         for (int i = -1; i <= 1; ++i) {
-            const float v = now.at(now.spatial, std::clamp(x + i, 0, int(now.w) - 1), std::clamp(y + j, 0, int(now.h) - 1));
+            const float v = now.at(now.raw, std::clamp(x + i, 0, int(now.w) - 1), std::clamp(y + j, 0, int(now.h) - 1));
             lo = std::min(lo, v), hi = std::max(hi, v);
         }
     return std::clamp(previous, lo, hi) + (now.at(now.spatial, x, y) - std::clamp(previous, lo, hi)) / length;
