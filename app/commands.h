@@ -11,5 +11,7 @@ void addExportMeshCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addFlythroughCommand(CLI::App& app);
 void addReferenceCommand(CLI::App& app);
+void addTradeoffCommand(CLI::App& app);
+void addTuneCommand(CLI::App& app);
 
 }  // namespace grotto::app

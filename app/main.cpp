@@ -20,6 +20,8 @@ int main(int argc, char** argv) {
     grotto::app::addBenchCommand(app);
     grotto::app::addFlythroughCommand(app);
     grotto::app::addReferenceCommand(app);
+    grotto::app::addTradeoffCommand(app);
+    grotto::app::addTuneCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

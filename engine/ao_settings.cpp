@@ -6,6 +6,21 @@
 
 namespace grotto {
 
+const char* aoMethodName(AoMethod m) {
+    switch (m) {
+    case AoMethod::Ssao: return "ssao";
+    case AoMethod::Hbao: return "hbao";
+    default: return "gtao";
+    }
+}
+
+AoMethod parseAoMethod(const std::string& name, const std::string& where) {
+    if (name == "gtao") return AoMethod::Gtao;
+    if (name == "ssao") return AoMethod::Ssao;
+    if (name == "hbao") return AoMethod::Hbao;
+    throw Error(where, "unknown AO method '" + name + "'", "accepted: gtao, ssao, hbao, off");
+}
+
 gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius) {
     gpu::GtaoSettings s{};
     s.radius = float(radius);
@@ -58,7 +73,9 @@ void validateGtao(const gpu::GtaoSettings& s, const std::string& where) {
 AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::string& where) {
     AoOptions o;
     o.enabled = d.method != "off";
+    if (o.enabled) o.method = parseAoMethod(d.method, where);
     o.quality = d.quality;
+    o.ssaoSamples = d.quality == "low" ? 8 : d.quality == "medium" ? 16 : d.quality == "ultra" ? 64 : 32;
     o.gtao = gtaoPreset(d.quality, d.radius ? *d.radius : 4.0 * voxelSize);
     gpu::GtaoSettings& s = o.gtao;
     if (d.radiusMultiplier) s.radiusMultiplier = float(*d.radiusMultiplier);
