@@ -12,5 +12,7 @@ void addBenchCommand(CLI::App& app);
 void addFlythroughCommand(CLI::App& app);
 void addReferenceCommand(CLI::App& app);
 void addStabilityCommand(CLI::App& app);
+void addTradeoffCommand(CLI::App& app);
+void addTuneCommand(CLI::App& app);
 
 }  // namespace grotto::app

@@ -97,13 +97,6 @@ void requireSameRun(const fs::path& dir, const json& manifest) {
     writeJson(file, manifest);
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    const size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
 // Per-frame times of this run and their medians.
 json statsJson(const json& frames) {
     std::vector<double> wall;

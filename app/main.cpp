@@ -21,6 +21,8 @@ int main(int argc, char** argv) {
     grotto::app::addFlythroughCommand(app);
     grotto::app::addReferenceCommand(app);
     grotto::app::addStabilityCommand(app);
+    grotto::app::addTradeoffCommand(app);
+    grotto::app::addTuneCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -28,9 +29,9 @@ FrameRange parseFrameRange(const std::string& text, int count, const std::string
 }
 
 void addAoFlags(CLI::App* cmd, AoFlags& f) {
-    cmd->add_option("--ao", f.method, "Ambient occlusion: gtao or off (default: the world's, else gtao)")
-        ->check(CLI::IsMember({"gtao", "off"}));
-    cmd->add_option("--quality", f.quality, "GTAO preset: low, medium, high, ultra")
+    cmd->add_option("--ao", f.method, "Ambient occlusion: gtao, ssao, hbao (baselines) or off (default: the world's, else gtao)")
+        ->check(CLI::IsMember({"gtao", "ssao", "hbao", "off"}));
+    cmd->add_option("--quality", f.quality, "Preset: low, medium, high, ultra (SSAO: 8, 16, 32, 64 samples)")
         ->check(CLI::IsMember({"low", "medium", "high", "ultra"}));
     cmd->add_option("--radius", f.radius, "AO radius in world units (> 0)");
     cmd->add_option("--thin-occluder", f.thinOccluder, "Thin-occluder compensation, 0 to 0.7");
@@ -76,6 +77,13 @@ voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::strin
     for (auto& [n, p] : paths) known += (known.empty() ? "" : ", ") + n;
     throw Error(world.desc().source.string(), "has no path named '" + name + "'",
                 known.empty() ? "the world defines no paths; give --path FILE.json" : "paths: " + known);
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const size_t m = v.size() / 2;
+    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 void requireNoValidationMessages(const vk::Context& ctx) {

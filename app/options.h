@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace grotto::app {
 
@@ -41,6 +42,9 @@ void addAoFlags(CLI::App* cmd, AoFlags& flags);
 
 // Preset, world file, then flags; throws grotto::Error (input) for nonsense.
 AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
+
+// The median (0 for none): per-pass and frame times are reported as medians.
+double median(std::vector<double> v);
 
 // Fails the run (exit 1) when the validation layer reported anything.
 void requireNoValidationMessages(const vk::Context& ctx);

@@ -3,75 +3,15 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
-#include "common/cache.h"
 #include "common/error.h"
 #include "engine/image_output.h"
-#include "engine/renderer.h"
-#include "engine/surface_points.h"
-#include "voxel/reference_ao.h"
+#include "engine/reference_view.h"
 #include "voxel/world.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 
 namespace grotto::app {
-
-namespace {
-
-// Everything the result depends on: the world's bytes, the camera's values (not
-// its name), the size, radius, rays and the algorithm's version.
-std::string cacheKey(const voxel::World& world, const Camera& c, double radius, uint32_t spp) {
-    Fnv1a content;
-    content.file(world.desc().source);
-    if (world.desc().gridFile != world.desc().source) content.file(world.desc().gridFile);
-    char text[1024];
-    const glm::dmat3& b = c.basis;
-    std::snprintf(text, sizeof text,
-                  "reference v%d world %s pos %.17g %.17g %.17g basis %.17g %.17g %.17g %.17g %.17g %.17g %.17g "
-                  "%.17g %.17g fov %.17g near %.17g far %.17g size %ux%u radius %.17g spp %u",
-                  voxel::kReferenceAoVersion, content.hex().c_str(), c.position.x, c.position.y, c.position.z,
-                  b[0].x, b[0].y, b[0].z, b[1].x, b[1].y, b[1].z, b[2].x, b[2].y, b[2].z, c.fovY, c.nearPlane,
-                  c.farPlane, c.width, c.height, radius, spp);
-    return text;
-}
-
-struct Traced {
-    std::vector<float> ao, stderror, surface;  // per pixel; surface 1, sky 0
-    uint64_t rays = 0;
-    double traceSeconds = 0.0;  // the rays alone, without Vulkan start-up and G-buffer
-};
-
-Traced trace(const voxel::World& world, const Camera& camera, double radius, uint32_t spp) {
-    AoOptions off = resolveAo(world, {});
-    off.enabled = false;  // only the G-buffer is needed
-    vk::Context ctx;
-    auto scene = uploadScene(ctx, world.mesh(), world.desc());
-    FrameImages frame;
-    {
-        Renderer renderer(ctx, *scene, world.desc().lighting, off, camera.width, camera.height);
-        renderer.render(camera);
-        frame = renderer.readback(camera, true);
-    }
-    scene.reset();
-    requireNoValidationMessages(ctx);
-    const SurfacePoints sp = surfacePoints(frame, camera, world.voxelSize(), world.origin());
-    const auto start = std::chrono::steady_clock::now();
-    const voxel::ReferenceAo ref =
-        voxel::referenceAo(world, sp.points, sp.normals, {.radius = radius, .spp = spp});
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    // Sky pixels have no value: V = 1 with no error, and they are left out of the statistics.
-    const size_t n = size_t(camera.width) * camera.height;
-    Traced t{std::vector<float>(n, 1.0f), std::vector<float>(n, 0.0f), std::vector<float>(n, 0.0f), ref.rays, seconds};
-    for (size_t k = 0; k < sp.pixels.size(); ++k) {
-        t.ao[sp.pixels[k]] = ref.visibility[k];
-        t.stderror[sp.pixels[k]] = ref.stderror[k];
-        t.surface[sp.pixels[k]] = 1.0f;
-    }
-    return t;
-}
-
-}  // namespace
 
 void addReferenceCommand(CLI::App& app) {
     struct Args {
@@ -102,31 +42,15 @@ void addReferenceCommand(CLI::App& app) {
         // R is the radius GTAO is given (before its radius multiplier), so both measure the same thing.
         const double radius = double(resolveAo(world, args->ao).gtao.radius);
 
-        const std::string key = cacheKey(world, camera, radius, spp);
-        Traced t;
-        const size_t n = size_t(size.width) * size.height;
-        auto cached = loadCached("reference", key);
-        if (cached && (cached->size() != 3 || (*cached)[0].size() != n || (*cached)[1].size() != n ||
-                       (*cached)[2].size() != n))
-            cached.reset();  // not ours after all: trace again and overwrite it
-        if (cached) {
-            t.ao = std::move((*cached)[0]), t.stderror = std::move((*cached)[1]), t.surface = std::move((*cached)[2]);
-            std::printf("cache hit: %s (nothing traced)\n", cachePath("reference", key).c_str());
-        } else {
-            t = trace(world, camera, radius, spp);
-            try {
-                storeCached("reference", key, {t.ao, t.stderror, t.surface});
-            } catch (const Error& e) {
-                std::fprintf(stderr, "grotto: warning: result not cached: %s\n", e.what());
-            }
-        }
+        ReferenceView t = referenceView(world, camera, radius, spp);
+        if (t.cacheHit) std::printf("cache hit: %s (nothing traced)\n", t.cacheFile.c_str());
         writeChannels(out, size.width, size.height,
                       std::vector<Channel>{{"AO", &t.ao}, {"AO_stderr", &t.stderror}}, camera);
 
         size_t surface = 0;
         double sumError = 0.0, maxError = 0.0, sumAo = 0.0;
         for (size_t i = 0; i < t.ao.size(); ++i) {
-            if (t.surface[i] == 0.0f) continue;
+            if (!t.surface[i]) continue;
             ++surface;
             sumAo += t.ao[i];
             sumError += t.stderror[i];

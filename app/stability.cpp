@@ -9,6 +9,7 @@
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "engine/ao_metrics.h"
 #include "engine/camera_path.h"
 #include "engine/renderer.h"
 #include "engine/surface_points.h"
@@ -34,19 +35,12 @@ struct Args {
     AoFlags ao;
 };
 
-// DESIGN.md's error over surface pixels: MAE, RMSE, PSNR (peak 1), mean signed bias.
+// DESIGN.md's error over surface pixels, as JSON.
 json errorJson(const std::vector<float>& ao, const std::vector<float>& reference, const std::vector<uint8_t>& mask) {
-    double abs = 0.0, sq = 0.0, bias = 0.0;
-    size_t n = 0;
-    for (size_t i = 0; i < ao.size(); ++i)
-        if (mask[i]) {
-            const double e = double(ao[i]) - reference[i];
-            abs += std::abs(e), sq += e * e, bias += e, ++n;
-        }
-    if (n == 0) return {{"pixels", 0}};
-    const double mse = sq / double(n);
-    return {{"pixels", n}, {"mae", abs / double(n)}, {"rmse", std::sqrt(mse)},
-            {"psnr", mse > 0.0 ? -10.0 * std::log10(mse) : 99.0}, {"bias", bias / double(n)}};
+    const AoError e = aoError(ao, reference, mask);
+    if (e.pixels == 0) return {{"pixels", 0}};
+    // JSON has no infinity: an exact match reports 99 dB.
+    return {{"pixels", e.pixels}, {"mae", e.mae}, {"rmse", e.rmse}, {"psnr", std::min(e.psnr, 99.0)}, {"bias", e.bias}};
 }
 
 // The reference at the AO pixels: the G-buffer's points there, traced.
@@ -67,12 +61,6 @@ std::vector<float> referenceAt(const voxel::World& world, const FrameImages& fra
     std::vector<float> v(ao.world.size(), 1.0f);
     for (size_t k = 0; k < index.size(); ++k) v[index[k]] = r.visibility[k];
     return v;
-}
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0.0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
 }
 
 struct Mean {

@@ -6,14 +6,31 @@
 
 namespace grotto {
 
+const char* aoMethodName(AoMethod m) {
+    switch (m) {
+    case AoMethod::Ssao: return "ssao";
+    case AoMethod::Hbao: return "hbao";
+    default: return "gtao";
+    }
+}
+
+AoMethod parseAoMethod(const std::string& name, const std::string& where) {
+    if (name == "gtao") return AoMethod::Gtao;
+    if (name == "ssao") return AoMethod::Ssao;
+    if (name == "hbao") return AoMethod::Hbao;
+    throw Error(where, "unknown AO method '" + name + "'", "accepted: gtao, ssao, hbao, off");
+}
+
 gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius) {
     gpu::GtaoSettings s{};
     s.radius = float(radius);
-    s.radiusMultiplier = 1.457f;
-    s.falloffRange = 0.615f;
+    // Fitted to the reference (docs/tuning.md: coordinate search, mean RMSE over
+    // rooms, caves and thin at 640x360, 0.0771 -> 0.0741). XeGTAO's values in brackets.
+    s.radiusMultiplier = 1.7f;           // [1.457]
+    s.falloffRange = 0.615f;             // [0.615], the fit kept it
     s.sampleDistributionPower = 2.0f;
-    s.thinOccluderCompensation = 0.0f;
-    s.finalValuePower = 2.2f;
+    s.thinOccluderCompensation = 0.2f;   // [0, compiled out there]
+    s.finalValuePower = 1.9f;            // [2.2]
     s.depthMipSamplingOffset = 3.30f;
     s.strength = 1.0f;
     s.denoiseBlurBeta = 1.2f;
@@ -58,7 +75,9 @@ void validateGtao(const gpu::GtaoSettings& s, const std::string& where) {
 AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::string& where) {
     AoOptions o;
     o.enabled = d.method != "off";
+    if (o.enabled) o.method = parseAoMethod(d.method, where);
     o.quality = d.quality;
+    o.ssaoSamples = d.quality == "low" ? 8 : d.quality == "medium" ? 16 : d.quality == "ultra" ? 64 : 32;
     o.gtao = gtaoPreset(d.quality, d.radius ? *d.radius : 4.0 * voxelSize);
     gpu::GtaoSettings& s = o.gtao;
     if (d.radiusMultiplier) s.radiusMultiplier = float(*d.radiusMultiplier);

@@ -8,12 +8,26 @@
 
 namespace grotto {
 
+// The estimator in the AO chain. SSAO and HBAO are baselines for measuring GTAO
+// against (docs/tradeoff.md): they replace only the main pass, writing the same
+// image, so depth prefilter, denoise, temporal and upsample are shared.
+enum class AoMethod { Gtao, Ssao, Hbao };
+
 struct AoOptions {
-    bool enabled = true;           // --ao gtao | off
-    std::string quality = "high";  // low, medium, high, ultra or custom
+    bool enabled = true;                // false for --ao off (no AO chain at all)
+    AoMethod method = AoMethod::Gtao;   // --ao gtao | ssao | hbao
+    std::string quality = "high";       // low, medium, high, ultra or custom
+    // SSAO kernel size, from the quality: low 8, medium 16, high 32 (custom too), ultra 64.
+    // HBAO takes GTAO's sample budget: 2 x slices directions, steps per side.
+    uint32_t ssaoSamples = 32;
     bool fullResolution = false;   // run the chain at full resolution (for comparison)
     gpu::GtaoSettings gtao{};
 };
+
+// "gtao", "ssao", "hbao" (the timestamp names the main pass by too).
+const char* aoMethodName(AoMethod method);
+// Throws grotto::Error (input) naming `where` for anything but gtao, ssao, hbao.
+AoMethod parseAoMethod(const std::string& name, const std::string& where);
 
 // XeGTAO's defaults with the preset's slices and steps; radius in world units.
 gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius);

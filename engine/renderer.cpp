@@ -103,7 +103,7 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
         aoTargets_.full = vk::createImage(ctx, extent, VK_FORMAT_R32_SFLOAT, storage);
         gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
-        gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_.gtao);
+        gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_);
         denoisePass_ = std::make_unique<DenoisePass>(ctx);
         upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
         if (temporal()) {
@@ -187,7 +187,7 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     timestamps_.begin(cmd, "prefilter");
     prefilterPass_->record(cmd, gbuffer_.depth, aoTargets_, gtaoConstants_);
     timestamps_.end(cmd);
-    timestamps_.begin(cmd, "gtao");
+    timestamps_.begin(cmd, aoMethodName(ao_.method));  // the estimator: gtao, or a baseline
     gtaoPass_->record(cmd, gbuffer_.surface, aoTargets_, gtaoConstants_);
     timestamps_.end(cmd);
     computeToCompute(cmd);

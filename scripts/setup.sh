@@ -10,6 +10,7 @@ packages=(
   libopenvdb-dev libboost-dev libboost-iostreams-dev libtbb-dev   # for OpenVDB headers and its CMake module
   libopenimageio-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
+  gnuplot-nox                                                     # grotto tradeoff --plot
 )
 
 missing=()

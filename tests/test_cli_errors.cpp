@@ -386,6 +386,37 @@ TEST_F(CliErrors, ReferenceWritesAoAndStderrThenHitsTheCache) {
     EXPECT_EQ(third.out.find("cache hit"), std::string::npos) << third.out;
 }
 
+TEST_F(CliErrors, UnknownAoMethodAndTradeoffNonsense) {
+    expectRefused(render(good_) + " --ao nonsense", "--ao", out());
+    const auto method = writeText("m.json", R"({"grid": {"file": "good.vdb"}, "ao": {"method": "rtao"}})");
+    expectRefused(render(method), "ao.method", out());
+    const fs::path csv = dir_ / "t.csv";
+    expectRefused("tradeoff --size 16x8 --csv " + csv.string(), "world", csv);
+    const fs::path unwritable = dir_ / "missing-dir" / "t.csv";
+    expectRefused("tradeoff " + good_.string() + " --size 16x8 --csv " + unwritable.string(), "missing-dir", unwritable);
+    expectRefused("tradeoff " + good_.string() + " --size 16x8 --csv " + csv.string() + " --plot " +
+                      (dir_ / "p.svg").string(), "p.svg", csv);
+}
+
+TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
+    const auto world = writeText("cam.json", R"({"grid": {"file": "good.vdb"},
+        "cameras": {"c": {"position": [30, 12, 30], "target": [8, 0, 8]}}})");
+    const fs::path csv = dir_ / "t.csv";
+    const test::RunResult r = runGrotto("tradeoff " + world.string() + " --size 32x24 --spp 64 --frames 1 --warmup 0 --csv " +
+                                            csv.string(), "GROTTO_CACHE_DIR=" + (dir_ / "cache").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::ifstream in(csv);
+    std::string line;
+    std::getline(in, line);
+    EXPECT_EQ(line, "world,method,quality,ms_ao,ms_frame,mae,rmse,psnr,bias");
+    int rows = 0;
+    while (std::getline(in, line)) {
+        ++rows;
+        EXPECT_EQ(line.rfind("cam,", 0), 0u) << line;
+        EXPECT_EQ(std::count(line.begin(), line.end(), ','), 8) << line;
+    }
+    EXPECT_EQ(rows, 12);  // ssao x3, hbao x4, gtao x4, gtao+temporal
+}
+
 }  // namespace
 }  // namespace grotto
-

@@ -83,7 +83,8 @@ void parseLighting(Reader r, Lighting& l) {
 
 void parseAo(Reader r, AoDesc& ao) {
     ao.method = r.string("method", ao.method);
-    if (ao.method != "gtao" && ao.method != "off") r.fail("method", "unknown AO method '" + ao.method + "'", "accepted: gtao, off");
+    if (ao.method != "gtao" && ao.method != "ssao" && ao.method != "hbao" && ao.method != "off")
+        r.fail("method", "unknown AO method '" + ao.method + "'", "accepted: gtao, ssao, hbao, off");
     ao.quality = r.string("quality", ao.quality);
     if (ao.quality != "low" && ao.quality != "medium" && ao.quality != "high" && ao.quality != "ultra" &&
         ao.quality != "custom")

@@ -49,7 +49,7 @@ struct Lighting {
 
 // The "ao" block of a world file: method, preset and any overrides (unset = preset).
 struct AoDesc {
-    std::string method = "gtao";   // gtao or off
+    std::string method = "gtao";   // gtao, ssao, hbao (baselines) or off
     std::string quality = "high";  // low, medium, high, ultra, custom
     std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
         finalValuePower, depthMipOffset, strength, denoiseBlurBeta;

@@ -3,13 +3,25 @@
 #include <bit>
 
 namespace grotto {
+namespace {
 
-GtaoPass::GtaoPass(vk::Context& ctx, const gpu::GtaoSettings& settings)
+std::vector<uint32_t> specialization(const AoOptions& ao) {
+    const gpu::GtaoSettings& s = ao.gtao;
+    switch (ao.method) {
+    case AoMethod::Ssao: return {ao.ssaoSamples};
+    case AoMethod::Hbao: return {2 * s.sliceCount, s.stepsPerSlice};
+    default: return {s.sliceCount, s.stepsPerSlice, std::bit_cast<uint32_t>(s.sampleDistributionPower)};
+    }
+}
+
+}  // namespace
+
+GtaoPass::GtaoPass(vk::Context& ctx, const AoOptions& ao)
     : ctx_(ctx),
-      pass_(ctx, "gtao.comp",
+      pass_(ctx, std::string(aoMethodName(ao.method)) + ".comp",
             {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
              VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-            0, {settings.sliceCount, settings.stepsPerSlice, std::bit_cast<uint32_t>(settings.sampleDistributionPower)}) {}
+            0, specialization(ao)) {}
 
 void GtaoPass::record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants) {
     pass_.dispatch(cmd,

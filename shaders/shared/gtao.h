@@ -1,6 +1,7 @@
 // GTAO settings and per-frame constants, shared by C++ and GLSL. Every setting
 // carries its default and range; the defaults are XeGTAO's published values
-// (DESIGN.md) except that thin-occluder compensation is compiled in and exposed.
+// (DESIGN.md) except three fitted to our ray-traced reference (docs/tuning.md),
+// and thin-occluder compensation is compiled in and exposed.
 #ifndef GROTTO_SHARED_GTAO_H
 #define GROTTO_SHARED_GTAO_H
 #include "common.h"
@@ -12,11 +13,11 @@ GROTTO_NAMESPACE_BEGIN
 
 struct GtaoSettings {
     float radius;                   // world units (> 0); default 4 voxels, from the world file or --radius
-    float radiusMultiplier;         // 1.457 (0.3 .. 3): compensates for screen-space undersampling
-    float falloffRange;             // 0.615 (0 .. 1): fraction of the radius over which occluders fade out
+    float radiusMultiplier;         // 1.7 (0.3 .. 3): compensates for screen-space undersampling (XeGTAO 1.457; fitted)
+    float falloffRange;             // 0.615 (0 .. 1): fraction of the radius over which occluders fade out (fit kept it)
     float sampleDistributionPower;  // 2.0 (1 .. 3): > 1 puts more samples near the centre
-    float thinOccluderCompensation; // 0 (0 .. 0.7): > 0 treats occluders as thinner than they look
-    float finalValuePower;          // 2.2 (0.5 .. 5): contrast of the final visibility
+    float thinOccluderCompensation; // 0.2 (0 .. 0.7): > 0 treats occluders as thinner than they look (XeGTAO 0; fitted)
+    float finalValuePower;          // 1.9 (0.5 .. 5): contrast of the final visibility (XeGTAO 2.2; fitted)
     float depthMipSamplingOffset;   // 3.30 (0 .. 30): higher = later switch to coarser depth MIPs
     float strength;                 // 1 (0 .. 1): 0 = no AO, 1 = full AO
     float denoiseBlurBeta;          // 1.2 (0 .. 10): centre weight of the edge-aware blur

@@ -125,19 +125,32 @@ vec4 gtaoUnpackEdges(float packed) {
     return vec4(float((v >> 6u) & 3u), float((v >> 4u) & 3u), float((v >> 2u) & 3u), float(v & 3u)) / 3.0f;
 }
 
-// Visibility in [0, 1] (1 = open) at a half-resolution pixel, and its packed edges.
-vec2 gtaoPixel(ivec2 pixel) {
-    GtaoSettings s = gtao.settings;
+// The packed edges of an AO pixel from its own and its four neighbours' depths
+// (what every AO estimator writes beside its visibility for the denoiser).
+float gtaoPixelEdges(ivec2 pixel) {
     ivec2 last = ivec2(gtao.halfSize) - 1;
     float z = gtaoDepth(pixel, 0);
     float zl = gtaoDepth(ivec2(max(pixel.x - 1, 0), pixel.y), 0);
     float zr = gtaoDepth(ivec2(min(pixel.x + 1, last.x), pixel.y), 0);
     float zt = gtaoDepth(ivec2(pixel.x, max(pixel.y - 1, 0)), 0);
     float zb = gtaoDepth(ivec2(pixel.x, min(pixel.y + 1, last.y)), 0);
-    float edges = gtaoPackEdges(gtaoEdges(z, zl, zr, zt, zb));
+    return gtaoPackEdges(gtaoEdges(z, zl, zr, zt, zb));
+}
+
+// The view-space normal of an AO pixel's surface (its full-res pixel's face).
+vec3 gtaoViewNormal(ivec2 pixel) {
+    return vec3(gtao.viewNormals[surfaceFace(gtaoSurface(pixel * int(gtao.scale)))]);
+}
+
+// Visibility in [0, 1] (1 = open) at a half-resolution pixel, and its packed edges.
+vec2 gtaoPixel(ivec2 pixel) {
+    GtaoSettings s = gtao.settings;
+    ivec2 last = ivec2(gtao.halfSize) - 1;
+    float z = gtaoDepth(pixel, 0);
+    float edges = gtaoPixelEdges(pixel);
     if (z >= kGtaoSky) return vec2(1.0f, edges);
 
-    vec3 normal = vec3(gtao.viewNormals[surfaceFace(gtaoSurface(pixel * int(gtao.scale)))]);
+    vec3 normal = gtaoViewNormal(pixel);
     vec3 position = gtaoViewPosition(vec2(pixel), z);
     vec3 viewVec = normalize(-position);
 

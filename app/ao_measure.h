@@ -1,0 +1,25 @@
+#pragma once
+// One AO setting measured against the reference: GPU cost of the AO chain and of
+// the whole frame (medians after warm-up) and the error of the final AO. Shared
+// by `grotto tradeoff` and `grotto tune`.
+#include "engine/ao_metrics.h"
+#include "engine/ao_settings.h"
+#include "engine/camera.h"
+#include "engine/reference_view.h"
+#include "engine/scene.h"
+#include "voxel/world.h"
+
+namespace grotto::app {
+
+struct AoMeasurement {
+    AoError error;        // of the last frame's full-res AO against the reference
+    double msAo = 0.0;    // every AO pass: prefilter, estimator, denoise, temporal, upsample
+    double msFrame = 0.0; // the whole frame
+};
+
+// Renders frames 0 .. frames-1 of a static camera (consecutive indices, so the
+// temporal pass accumulates); times are medians over the frames after `warmup`.
+AoMeasurement measureAo(vk::Context& ctx, const GpuScene& scene, const voxel::World& world, const Camera& camera,
+                        const AoOptions& ao, const ReferenceView& reference, int frames, int warmup);
+
+}  // namespace grotto::app

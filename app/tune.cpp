@@ -1,0 +1,132 @@
+// grotto tune WORLD... [--size WxH] [--spp N] [--quality Q]: fits GTAO's
+// heuristics (radius multiplier, falloff range, final value power, thin-occluder
+// compensation) to the reference by coordinate search, minimising the mean RMSE
+// over the worlds (docs/tuning.md). Temporal accumulation off, one frame each, so
+// the fit sees the estimator and the spatial chain, not history.
+#include "app/ao_measure.h"
+#include "app/commands.h"
+#include "app/options.h"
+#include "common/error.h"
+
+#include <cstdio>
+#include <memory>
+
+namespace grotto::app {
+namespace {
+
+struct Parameter {
+    const char* name;
+    float gpu::GtaoSettings::*field;
+    std::vector<float> candidates;
+};
+
+struct Target {
+    std::string name;
+    const voxel::World* world;
+    Camera camera;
+    ReferenceView reference;
+    std::unique_ptr<GpuScene> scene;
+};
+
+}  // namespace
+
+void addTuneCommand(CLI::App& app) {
+    struct Args {
+        std::vector<std::string> worlds;
+        std::string camera, size = "640x360", quality = "high";
+        int64_t spp = 1024;
+        int rounds = 3;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("tune", "Fit GTAO's heuristics to the reference (coordinate search)");
+    cmd->add_option("worlds", args->worlds, "World .json or .vdb files")->required();
+    cmd->add_option("--camera", args->camera, "Named camera in every world (default: each world's default)");
+    cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
+    cmd->add_option("--spp", args->spp, "Reference rays per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 24));
+    cmd->add_option("--quality", args->quality, "GTAO preset to fit")->capture_default_str()
+        ->check(CLI::IsMember({"low", "medium", "high", "ultra"}));
+    cmd->add_option("--rounds", args->rounds, "Most passes over the four settings")->capture_default_str()
+        ->check(CLI::Range(1, 10));
+    cmd->callback([args] {
+        const Size size = parseSize(args->size);
+        std::vector<voxel::World> worlds;
+        for (const std::string& w : args->worlds) worlds.push_back(voxel::World::load(w));
+        vk::Context ctx;
+        std::vector<Target> targets;
+        for (const voxel::World& world : worlds) {
+            Target t{world.desc().source.stem().string(), &world,
+                     makeCamera(world.camera(args->camera), size.width, size.height), {}, {}};
+            t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).gtao.radius), uint32_t(args->spp), &ctx);
+            t.scene = uploadScene(ctx, world.mesh(), world.desc());
+            targets.push_back(std::move(t));
+        }
+        AoFlags flags;
+        flags.method = "gtao";
+        flags.quality = args->quality;
+        flags.temporal = 0;
+        // Each world keeps its own radius; the four heuristics are shared.
+        std::vector<AoOptions> base;
+        for (const Target& t : targets) base.push_back(resolveAo(*t.world, flags));
+        gpu::GtaoSettings best = base[0].gtao;
+
+        auto evaluate = [&](const gpu::GtaoSettings& s, bool print) {
+            double sum = 0.0;
+            for (size_t i = 0; i < targets.size(); ++i) {
+                AoOptions ao = base[i];
+                ao.gtao.radiusMultiplier = s.radiusMultiplier;
+                ao.gtao.falloffRange = s.falloffRange;
+                ao.gtao.finalValuePower = s.finalValuePower;
+                ao.gtao.thinOccluderCompensation = s.thinOccluderCompensation;
+                const Target& t = targets[i];
+                const AoError e = measureAo(ctx, *t.scene, *t.world, t.camera, ao, t.reference, 1, 0).error;
+                if (print)
+                    std::printf("    %-8s rmse %.4f  psnr %6.2f dB  mae %.4f  bias %+.4f\n", t.name.c_str(), e.rmse,
+                                e.psnr, e.mae, e.bias);
+                sum += e.rmse;
+            }
+            return sum / double(targets.size());
+        };
+        auto show = [](const gpu::GtaoSettings& s) {
+            std::printf("radius_multiplier %.3f falloff_range %.3f final_value_power %.2f thin_occluder %.2f",
+                        s.radiusMultiplier, s.falloffRange, s.finalValuePower, s.thinOccluderCompensation);
+        };
+        std::printf("before: ");
+        show(best);
+        std::printf("\n");
+        double bestRmse = evaluate(best, true);
+        std::printf("  mean rmse %.5f\n", bestRmse);
+        const gpu::GtaoSettings before = best;
+
+        const std::vector<Parameter> parameters = {
+            {"radius_multiplier", &gpu::GtaoSettings::radiusMultiplier, {0.8f, 1.0f, 1.2f, 1.457f, 1.7f, 2.0f, 2.4f}},
+            {"falloff_range", &gpu::GtaoSettings::falloffRange, {0.1f, 0.3f, 0.45f, 0.615f, 0.8f, 1.0f}},
+            {"final_value_power", &gpu::GtaoSettings::finalValuePower, {0.8f, 1.0f, 1.3f, 1.6f, 1.9f, 2.2f, 2.6f, 3.0f}},
+            {"thin_occluder", &gpu::GtaoSettings::thinOccluderCompensation, {0.0f, 0.1f, 0.2f, 0.3f, 0.5f, 0.7f}},
+        };
+        for (int round = 1; round <= args->rounds; ++round) {
+            bool changed = false;
+            for (const Parameter& p : parameters) {
+                for (float v : p.candidates) {
+                    if (v == best.*p.field) continue;
+                    gpu::GtaoSettings s = best;
+                    s.*p.field = v;
+                    const double rmse = evaluate(s, false);
+                    std::printf("round %d %-18s %.3f: mean rmse %.5f%s\n", round, p.name, v, rmse,
+                                rmse < bestRmse ? "  (better)" : "");
+                    std::fflush(stdout);
+                    if (rmse < bestRmse) bestRmse = rmse, best = s, changed = true;
+                }
+            }
+            if (!changed) break;
+        }
+        std::printf("after: ");
+        show(best);
+        std::printf("\n");
+        evaluate(best, true);
+        std::printf("  mean rmse %.5f (before %.5f)\n", bestRmse, evaluate(before, false));
+        targets.clear();
+        requireNoValidationMessages(ctx);
+    });
+}
+
+}  // namespace grotto::app

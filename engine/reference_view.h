@@ -1,0 +1,31 @@
+#pragma once
+// The reference AO of one view (docs/reference.md): the G-buffer's surface points
+// traced by voxel::referenceAo, through the on-disk cache. `grotto reference`
+// writes it to an EXR; `grotto tradeoff` and the tests measure methods against it.
+#include "engine/camera.h"
+#include "engine/vk/context.h"
+#include "voxel/world.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <vector>
+
+namespace grotto {
+
+struct ReferenceView {
+    std::vector<float> ao, stderror;  // per pixel, row 0 on top; sky: V 1, error 0
+    std::vector<uint8_t> surface;     // 1 where a surface is (the pixels every statistic counts)
+    uint64_t rays = 0;                // traced now (0 on a cache hit)
+    double traceSeconds = 0.0;        // the rays alone, without Vulkan start-up and G-buffer
+    bool cacheHit = false;
+    std::filesystem::path cacheFile;
+};
+
+// R is in world units. Renders the G-buffer on `ctx`, or, when it is null and the
+// cache misses, on a context of its own (a hit needs no Vulkan). A cache that
+// cannot be written gives a warning on stderr, not a failure; a world with no
+// source file (built in memory) is never cached.
+ReferenceView referenceView(const voxel::World& world, const Camera& camera, double radius, uint32_t spp,
+                            vk::Context* ctx = nullptr);
+
+}  // namespace grotto
