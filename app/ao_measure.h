@@ -1,6 +1,7 @@
 #pragma once
-// One AO setting measured against the reference: GPU cost of the AO chain and of
-// the whole frame (medians after warm-up) and the error of the final AO. Shared
+// One AO setting measured against the reference: wall-time cost of the AO chain
+// (the frame minus the same frame without AO) and of the whole frame, medians
+// after warm-up, and the error of the final AO. Shared
 // by `grotto tradeoff` and `grotto tune`.
 #include "engine/ao_metrics.h"
 #include "engine/ao_settings.h"
