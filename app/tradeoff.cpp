@@ -64,7 +64,7 @@ void writePlot(const std::filesystem::path& file, const std::vector<Row>& rows, 
     }
     writeAtomically(file, [&](const std::filesystem::path& tmp) {
         std::string script = "set terminal pngcairo size 900,600\nset output '" + tmp.string() + "'\n"
-                             "set xlabel 'AO chain GPU ms (median, mean over worlds)'\n"
+                             "set xlabel 'AO chain ms (wall time over the frame without AO; median, mean over worlds)'\n"
                              "set ylabel 'RMSE against the reference (mean over worlds)'\n"
                              "set title 'AO error against cost'\nset grid\nset key top right\n";
         std::string plot = "plot", data;
