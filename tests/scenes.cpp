@@ -20,4 +20,12 @@ voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bo
     return voxel::makeWorld(grid, d);
 }
 
+voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov) {
+    voxel::CameraDesc c;
+    c.position = position;
+    c.target = target;
+    c.fovDegrees = fov;
+    return c;
+}
+
 }  // namespace grotto::test

@@ -12,4 +12,7 @@ voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bo
                             double voxelSize = 1.0, glm::dvec3 offset = glm::dvec3(0.0),
                             std::vector<voxel::Material> materials = voxel::defaultMaterials());
 
+// A camera at `position` looking at `target` with a vertical field of view in degrees.
+voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov = 60.0);
+
 }  // namespace grotto::test

@@ -47,14 +47,6 @@ protected:
     }
 };
 
-voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov = 60.0) {
-    voxel::CameraDesc c;
-    c.position = position;
-    c.target = target;
-    c.fovDegrees = fov;
-    return c;
-}
-
 TEST_F(Gtao, GpuMatchesCpuTwinForEveryPreset) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
     for (const char* quality : {"low", "medium", "high", "ultra", "full-res high"}) {
@@ -87,7 +79,7 @@ TEST_F(Gtao, FlatFloorStaysOpenFromStraightDownToGrazing) {
         const double a = glm::radians(degrees);
         const glm::dvec3 eye(0.0, 1.5, 0.0);
         const glm::dvec3 dir(std::sin(a), -std::cos(a), 0.0);
-        const Rendered r = render(floor, lookAt(eye, eye + dir, 70.0), w, h, options("high"));
+        const Rendered r = render(floor, test::lookAt(eye, eye + dir, 70.0), w, h, options("high"));
         int floorPixels = 0;
         for (size_t i = 0; i < r.img.ao.size(); ++i) {
             ASSERT_TRUE(std::isfinite(r.img.ao[i]) && std::isfinite(r.img.aoRaw[i])) << degrees;
@@ -109,7 +101,7 @@ TEST_F(Gtao, CornerDarkensMonotonicallyAndSymmetrically) {
     });
     AoOptions ao = options("ultra", 4.0);
     ao.gtao.denoisePasses = 2;
-    const Rendered r = render(corner, lookAt({14, 14, 24}, {0, 0, 0}, 60.0), 320, 240, ao);
+    const Rendered r = render(corner, test::lookAt({14, 14, 24}, {0, 0, 0}, 60.0), 320, 240, ao);
     // Average AO by distance from the corner line, floor and wall apart.
     std::map<int, std::pair<double, int>> floorBins, wallBins;
     for (uint32_t y = 0; y < r.img.height; ++y)
@@ -161,7 +153,7 @@ TEST_F(Gtao, UpsampleLeaksNoAoAcrossASilhouette) {
         return bar || (y < 0 && x >= -40) || (x < 0 && y >= 0);
     });
     // Radius 6 (8.7 with the multiplier): the bar, 11 units from the corner, stays open.
-    const Rendered r = render(scene, lookAt({20.5, 20.5, 0.5}, {0.5, 0.5, 0.5}, 50.0), 256, 192, options("high", 6.0));
+    const Rendered r = render(scene, test::lookAt({20.5, 20.5, 0.5}, {0.5, 0.5, 0.5}, 50.0), 256, 192, options("high", 6.0));
     int barPixels = 0, darkNeighbours = 0;
     float barMin = 1.0f, behindMin = 1.0f;
     for (uint32_t y = 1; y + 1 < r.img.height; ++y)
@@ -203,7 +195,7 @@ TEST_F(Gtao, ThinOccluderCompensationOpensBehindPolesButKeepsWallContact) {
         EXPECT_GT(n, 50);
         return sum / std::max(n, 1);
     };
-    const voxel::CameraDesc cam = lookAt({-12, 9, 14}, {2, 0, -2}, 60.0);
+    const voxel::CameraDesc cam = test::lookAt({-12, 9, 14}, {2, 0, -2}, 60.0);
     AoOptions plain = options("ultra", 3.0);
     plain.gtao.thinOccluderCompensation = 0.0f;  // off against on (the default is 0.2)
     AoOptions thin = plain;
@@ -236,7 +228,7 @@ TEST_F(Gtao, CompositeTakesMaterialAoAndLeavesTheSunAlone) {
                                                     1.0, glm::dvec3(0.0), palette);
     const voxel::Material m = floor.desc().materials[0];
     const voxel::Lighting l = floor.desc().lighting;
-    const Rendered r = render(floor, lookAt({0, 10, 0.01}, {0, 0, 0}, 40.0), 32, 32, options("high"));
+    const Rendered r = render(floor, test::lookAt({0, 10, 0.01}, {0, 0, 0}, 40.0), 32, 32, options("high"));
     const size_t centre = (16 * 32 + 16) * 4;
     for (int c = 0; c < 3; ++c)
         EXPECT_NEAR(r.img.color[centre + c], m.albedo[c] * l.sunColor[c] * l.sunIntensity * l.sunDirection.y, 1e-4);
@@ -261,7 +253,7 @@ TEST_F(Gtao, NumericalExtremesStayFinite) {
         uint32_t width, height;
     };
     auto cam = [](glm::dvec3 p, glm::dvec3 t, double fov, double n = 0.05, double f = 0.0) {
-        voxel::CameraDesc c = lookAt(p, t, fov);
+        voxel::CameraDesc c = test::lookAt(p, t, fov);
         c.nearPlane = n;
         c.farPlane = f;
         return c;

@@ -35,14 +35,6 @@ Half half(const FrameImages& f) {
     return r;
 }
 
-voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov = 60.0) {
-    voxel::CameraDesc c;
-    c.position = position;
-    c.target = target;
-    c.fovDegrees = fov;
-    return c;
-}
-
 AoOptions options(uint32_t history = 16) {
     AoOptions o;
     o.gtao = gtaoPreset("high", 3.0);
@@ -83,6 +75,13 @@ protected:
         std::unique_ptr<GpuScene> scene;
         std::unique_ptr<Renderer> renderer;
     };
+    // Frames 0 and 1 from cameras a and b: the first output, and the second's.
+    static std::pair<Half, Half> twoFrames(Run& run, const Camera& a, const Camera& b) {
+        run.renderer->render(a, 0);
+        Half first = half(run.renderer->readback(a, true));
+        run.renderer->render(b, 1);
+        return {std::move(first), half(run.renderer->readback(b, true))};
+    }
     Run start(const voxel::World& world, const AoOptions& ao, uint32_t w, uint32_t h) {
         Run r;
         r.scene = uploadScene(ctx(), world.mesh(), world.desc());
@@ -118,14 +117,11 @@ TEST_F(Temporal, OnePixelPanReprojectsTheHistoryExactly) {
     Run run = start(world, options(), w, h);
     const double wallZ = world.origin().z;  // the top face of voxel layer z = -1
     const glm::dvec3 eye(0.31, 0.27, wallZ + 12.0);
-    const Camera a = makeCamera(lookAt(eye, eye - glm::dvec3(0, 0, 1)), w, h);
+    const Camera a = makeCamera(test::lookAt(eye, eye - glm::dvec3(0, 0, 1)), w, h);
     // One AO pixel at the wall's distance: the wall moves exactly one pixel left.
     const double pixel = 2.0 * 2.0 * std::tan(a.fovY / 2) * a.aspect() / w * 12.0;
-    const Camera b = makeCamera(lookAt(eye + glm::dvec3(pixel, 0, 0), eye + glm::dvec3(pixel, 0, -1)), w, h);
-    run.renderer->render(a, 0);
-    const Half first = half(run.renderer->readback(a, true));
-    run.renderer->render(b, 1);
-    const Half second = half(run.renderer->readback(b, true));
+    const Camera b = makeCamera(test::lookAt(eye + glm::dvec3(pixel, 0, 0), eye + glm::dvec3(pixel, 0, -1)), w, h);
+    const auto [first, second] = twoFrames(run, a, b);
     int checked = 0;
     for (int y = 2; y < int(second.h) - 2; ++y)
         for (int x = 2; x < int(second.w) - 3; ++x) {
@@ -149,14 +145,9 @@ TEST_F(Temporal, TurningCameraReprojectsThroughDepthAndBothCameras) {
     Run run = start(world, options(), w, h);
     const double wallZ = world.origin().z;
     const glm::dvec3 eye(0.31, 0.27, wallZ + 12.0);
-    const Camera a = makeCamera(lookAt(eye, eye + glm::dvec3(0.05, 0.02, -1)), w, h);
-    const Camera b = makeCamera(lookAt(eye + glm::dvec3(0.1, -0.05, 0.2), eye + glm::dvec3(0.09, 0.04, -1)), w, h);
-    run.renderer->render(a, 0);
-    const FrameImages fa = run.renderer->readback(a, true);
-    const Half first = half(fa);
-    run.renderer->render(b, 1);
-    const FrameImages fb = run.renderer->readback(b, true);
-    const Half second = half(fb);
+    const Camera a = makeCamera(test::lookAt(eye, eye + glm::dvec3(0.05, 0.02, -1)), w, h);
+    const Camera b = makeCamera(test::lookAt(eye + glm::dvec3(0.1, -0.05, 0.2), eye + glm::dvec3(0.09, 0.04, -1)), w, h);
+    const auto [first, second] = twoFrames(run, a, b);
     const glm::dmat4 clipA = a.projection() * a.viewFromWorld();
     int checked = 0;
     double worst = 0.0;
@@ -258,7 +249,7 @@ TEST_F(Temporal, DisoccludedPixelsShowNoGhostOfTheOccluder) {
         return y == -1 || z == -30 || (x >= -1 && x <= 1 && z >= -12 && z <= -10 && y < 12);
     });
     const uint32_t w = 160, h = 90;
-    auto cameraAt = [&](double x) { return makeCamera(lookAt({x, 6, 8}, {x, 4, -30}), w, h); };
+    auto cameraAt = [&](double x) { return makeCamera(test::lookAt({x, 6, 8}, {x, 4, -30}), w, h); };
     const AoOptions ao = options();
     Run moving = start(world, ao, w, h);
     uint32_t frame = 0;
