@@ -3,8 +3,10 @@
 // Renders a camera path to DIR/frame.NNNN.png (or .exr with AOVs) and
 // DIR/stats.json. Frame i (1-based) shows the path at time (i - 1) / fps and is
 // rendered with frame index i, so a run split by --frames across machines makes
-// the same frames as one whole run. The K frames before the first frame written
-// are rendered but not written, to warm up temporal history. Frames already on
+// the frames of one whole run: the K frames before the first frame written are
+// rendered but not written, to rebuild the temporal history. The history is a
+// running average, so a split frame converges to the whole run's rather than
+// matching it bit for bit (docs/paths.md states the measured difference). Frames already on
 // disk are skipped, so an interrupted run resumes: it re-renders from K frames
 // before the first missing one (history again) and writes only missing frames.
 // DIR/flythrough.json records the settings so a resume never mixes sequences.
@@ -24,6 +26,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 
 namespace grotto::app {
@@ -35,7 +38,8 @@ using nlohmann::json;
 
 struct Args {
     std::string world, path, size = "640x360", output, format = "png", frames;
-    int fps = 24, warmup = 8;
+    int fps = 24;
+    std::optional<int> warmup;  // default: twice the temporal history
     AoFlags ao;
 };
 
@@ -61,7 +65,9 @@ json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptio
     const gpu::GtaoSettings& g = ao.gtao;
     return {{"world", fs::absolute(a.world).lexically_normal().string()}, {"path", a.path},
             {"path_keys", pathJson(path)}, {"size", a.size}, {"fps", a.fps}, {"format", a.format},
-            {"ao", ao.enabled}, {"ao_full_res", ao.fullResolution},
+            {"ao", ao.enabled ? aoMethodName(ao.method) : "off"}, {"quality", ao.quality},
+            {"ao_full_res", ao.fullResolution}, {"ssao_samples", ao.ssaoSamples},
+            {"temporal_history", ao.gtao.temporalHistory},
             {"gtao", {g.radius, g.radiusMultiplier, g.falloffRange, g.sampleDistributionPower,
                       g.thinOccluderCompensation, g.finalValuePower, g.depthMipSamplingOffset, g.strength,
                       g.denoiseBlurBeta, g.sliceCount, g.stepsPerSlice, g.denoisePasses}}};
@@ -120,8 +126,10 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based (default: the whole path)");
-    cmd->add_option("--warmup", args->warmup, "Frames rendered but not written before the first one written")
-        ->capture_default_str()->check(CLI::Range(0, 10000));
+    cmd->add_option("--warmup", args->warmup,
+                    "Frames rendered but not written before the first one written (default: twice the temporal "
+                    "history, 32)")
+        ->check(CLI::Range(0, 10000));
     cmd->add_option("--format", args->format, "png, or exr with AOVs")->capture_default_str()->check(CLI::IsMember({"png", "exr"}));
     cmd->add_option("-o,--output", args->output, "Output directory")->required();
     addAoFlags(cmd, args->ao);
@@ -152,7 +160,9 @@ void addFlythroughCommand(CLI::App& app) {
             return;
         }
         // History: start K frames before the first frame to write.
-        const int start = std::max(1, missing.front() - args->warmup), end = missing.back();
+        // Twice the history length brings a split frame within 2/255 of the whole run's.
+        const int warmup = args->warmup.value_or(2 * int(ao.gtao.temporalHistory));
+        const int start = std::max(1, missing.front() - warmup), end = missing.back();
         vk::Context ctx;
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
         json frames = json::array();

@@ -164,10 +164,17 @@ void addStabilityCommand(CLI::App& app) {
         for (const auto& [k, bins] : ghosting)
             ghostCurve.push_back({{"frames_since_disocclusion", k}, {"pixels", bins.first.n},
                                   {"mae_temporal", bins.first.value()}, {"mae_spatial", bins.second.value()}});
+        // Steady state: the frames after the history could fill (all frames when
+        // the path is shorter than that).
+        int steadyFrom = int(ao.gtao.temporalHistory) + 1;
+        if (errors.empty() || errors.back()["frame"].get<int>() < steadyFrom) steadyFrom = 1;
+        size_t steadyFrames = 0;
+        for (const json& e : errors) steadyFrames += e["frame"].get<int>() >= steadyFrom;
         auto meanError = [&](const char* which, const char* metric) {
             Mean m;
             for (const json& e : errors)
-                if (e[which].contains(metric)) m.add(e[which][metric].get<double>());
+                if (e["frame"].get<int>() >= steadyFrom && e[which].contains(metric))
+                    m.add(e[which][metric].get<double>());
             return m.value();
         };
         json steady = json::object();
@@ -182,7 +189,7 @@ void addStabilityCommand(CLI::App& app) {
                            {"rays", rays}, {"radius", ao.gtao.radius}}},
             {"flicker", {{"raw", flickerRaw.value()}, {"spatial", flickerSpatial.value()},
                          {"temporal", flickerTemporal.value()}, {"reference", flickerReference.value()}}},
-            {"error_mean", steady}, {"error", errors}, {"ghosting", ghostCurve}, {"cost_ms", cost}};
+            {"error_mean", steady}, {"error_mean_from_frame", steadyFrom}, {"error", errors}, {"ghosting", ghostCurve}, {"cost_ms", cost}};
         writeAtomically(out, [&](const std::filesystem::path& tmp) {
             std::ofstream f(tmp);
             f << result.dump(2) << "\n";
@@ -191,8 +198,8 @@ void addStabilityCommand(CLI::App& app) {
         std::printf("flicker raw %.4f spatial %.4f temporal %.4f (%.2fx spatial) reference %.4f\n",
                     flickerRaw.value(), flickerSpatial.value(), flickerTemporal.value(),
                     flickerTemporal.value() / std::max(flickerSpatial.value(), 1e-12), flickerReference.value());
-        std::printf("error vs reference (%zu frames): spatial rmse %.4f psnr %.2f dB, temporal rmse %.4f psnr %.2f dB\n",
-                    errors.size(), meanError("spatial", "rmse"), meanError("spatial", "psnr"),
+        std::printf("error vs reference (%zu frames from frame %d): spatial rmse %.4f psnr %.2f dB, temporal rmse %.4f psnr %.2f dB\n",
+                    steadyFrames, steadyFrom, meanError("spatial", "rmse"), meanError("spatial", "psnr"),
                     meanError("temporal", "rmse"), meanError("temporal", "psnr"));
         std::printf("AO chain %.2f ms, temporal %.2f ms; wrote %s\n", chain,
                     cost.contains("temporal") ? cost["temporal"].get<double>() : 0.0, out.c_str());

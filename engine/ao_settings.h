@@ -29,7 +29,8 @@ const char* aoMethodName(AoMethod method);
 // Throws grotto::Error (input) naming `where` for anything but gtao, ssao, hbao.
 AoMethod parseAoMethod(const std::string& name, const std::string& where);
 
-// XeGTAO's defaults with the preset's slices and steps; radius in world units.
+// The defaults (XeGTAO's, three of them refitted to our reference: docs/tuning.md)
+// with the preset's slices and steps; radius in world units.
 gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius);
 
 // Preset and values from the world file; throws grotto::Error naming `where`.

@@ -66,12 +66,16 @@ gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& 
     return c;
 }
 
-gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* previous, uint32_t scale) {
+gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* previous) {
     gpu::TemporalConstants t{};
     t.reset = previous ? 0u : 1u;
     const Camera& prev = previous ? *previous : current;
-    t.currentToPrevious = glm::mat4(prev.viewFromWorld() * glm::inverse(current.viewFromWorld()));
-    const gpu::GtaoConstants g = gtaoConstants(prev, {}, 0, scale);
+    // Rotation and the camera's step, never an absolute position: exact far from the origin.
+    const glm::dmat3 rotation = glm::transpose(prev.basis) * current.basis;
+    glm::dmat4 m(rotation);
+    m[3] = glm::dvec4(glm::transpose(prev.basis) * (current.position - prev.position), 1.0);
+    t.currentToPrevious = glm::mat4(m);
+    const gpu::GtaoConstants g = gtaoConstants(prev, {}, 0);
     t.previousNdcToViewMul_Add = g.ndcToViewMul_Add;
     for (int f = 0; f < 6; ++f) t.previousViewNormals[f] = g.viewNormals[f];
     return t;
@@ -174,15 +178,6 @@ const vk::Image& Renderer::aoHalfOutput() const {
     return temporal() ? aoTargets_.history[historyIndex_] : aoTargets_.denoised(ao_.gtao.denoisePasses);
 }
 
-namespace {
-// A new sequence, or a change of the projection, leaves nothing to reproject.
-bool continues(const Camera& previous, uint32_t previousFrame, const Camera& camera, uint32_t frameIndex) {
-    return frameIndex == previousFrame + 1u && previous.width == camera.width && previous.height == camera.height &&
-           previous.fovY == camera.fovY && previous.nearPlane == camera.nearPlane &&
-           previous.farPlane == camera.farPlane;
-}
-}  // namespace
-
 void Renderer::recordAo(VkCommandBuffer cmd) {
     timestamps_.begin(cmd, "prefilter");
     prefilterPass_->record(cmd, gbuffer_.depth, aoTargets_, gtaoConstants_);
@@ -219,9 +214,11 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
         const gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, scale);
         std::memcpy(gtaoConstants_.mapped(), &constants, sizeof constants);
         if (temporal()) {
-            if (previousCamera_ && !continues(*previousCamera_, previousFrame_, camera, frameIndex))
-                previousCamera_.reset();
-            const gpu::TemporalConstants t = temporalConstants(camera, previousCamera_ ? &*previousCamera_ : nullptr, scale);
+            // A frame index that does not follow the last (wrapping) starts a new
+            // sequence. A zoom or new clip planes need no reset: the history is
+            // reprojected through the previous projection and holds linear depth.
+            if (frameIndex != previousFrame_ + 1u) previousCamera_.reset();
+            const gpu::TemporalConstants t = temporalConstants(camera, previousCamera_ ? &*previousCamera_ : nullptr);
             std::memcpy(temporalConstants_.mapped(), &t, sizeof t);
             previousCamera_ = camera;
             previousFrame_ = frameIndex;

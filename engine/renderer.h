@@ -56,8 +56,8 @@ public:
     ~Renderer();
 
     // Renders frame `frameIndex` (it advances the GTAO noise). The temporal pass
-    // accumulates over consecutive frame indices (wrapping); any other index, or a
-    // change of field of view, clip planes or size, starts the history afresh.
+    // accumulates over consecutive frame indices (wrapping); any other index starts
+    // the history afresh.
     FrameStats render(const Camera& camera, uint32_t frameIndex = 0);
     // A camera cut: the next frame starts without history.
     void resetHistory() { previousCamera_.reset(); }
@@ -100,8 +100,9 @@ private:
 // The GTAO constants for a camera (exposed for the CPU twin and its tests).
 gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex,
                                  uint32_t scale = 2);
-// How the current camera's view maps to the previous one's (camera-relative, built
-// in double so it stays exact far from the origin); reset when there is no history.
-gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* previous, uint32_t scale);
+// How the current camera's view maps to the previous one's (from the rotation and
+// the step between the cameras, in double, so it stays exact far from the origin);
+// reset when there is no history.
+gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* previous);
 
 }  // namespace grotto

@@ -48,14 +48,14 @@ Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& 
         const glm::dvec4 clip = clipFromView * glm::dvec4(view, 1.0);
         const double px = (clip.x / clip.w * 0.5 + 0.5) * beforeCamera.width;
         const double py = (clip.y / clip.w * 0.5 + 0.5) * beforeCamera.height;
-        // The AO pixel whose full-res pixel (scale x, scale y) is nearest.
-        const double qx = std::floor(px / before.scale), qy = std::floor(py / before.scale);
+        // In AO pixel units (AO pixel k sits at full-res scale k + 0.5); the nearest one.
+        const double u = (px - 0.5) / before.scale, v = (py - 0.5) / before.scale;
+        const double qx = std::floor(u + 0.5), qy = std::floor(v + 0.5);
         if (!(qx >= 0 && qy >= 0 && qx < before.width && qy < before.height)) continue;
         const size_t j = size_t(qy) * before.width + size_t(qx);
         if (!before.surface[j] || glm::length(before.world[j] - now.world[i]) > tolerance) continue;
         r.nearest[i] = int32_t(j);
-        // Bilinear taps around the exact position (AO pixel k sits at full-res scale k + 0.5).
-        const double u = (px - 0.5) / before.scale, v = (py - 0.5) / before.scale;
+        // Bilinear taps around the exact position.
         const double bx = std::floor(u), by = std::floor(v), fx = u - bx, fy = v - by;
         const double planeTolerance = 1e-3 * -view.z;
         float sum = 0.0f;

@@ -12,12 +12,6 @@ layout(constant_id = 0) const uint specSamples = 32u;  // low 8, medium 16, high
 #include "ao_estimator.glsl"
 
 // View position to (unrounded) AO pixel: gtaoViewPosition solved for the pixel.
-vec2 ssaoPixelOf(vec3 v) {
-    vec4 m = gtao.ndcToViewMul_Add;
-    vec2 full = (vec2(v.x, v.y) / -v.z - vec2(m.z, m.w)) / vec2(m.x, m.y) - 0.5f;
-    return full / float(gtao.scale);
-}
-
 vec2 ssaoPixel(ivec2 pixel) {
     float z = gtaoDepth(pixel, 0);
     float edges = gtaoPixelEdges(pixel);
@@ -43,7 +37,7 @@ vec2 ssaoPixel(ivec2 pixel) {
         float t = fract(noise.y + float(i) * 0.6180339887f);
         vec3 s = position + dir * (radius * mix(0.1f, 1.0f, t * t));
         if (s.z >= 0.0f) continue;  // behind the camera: unknown, open
-        ivec2 q = ivec2(floor(ssaoPixelOf(s) + 0.5f));
+        ivec2 q = ivec2(floor(gtaoPixelOf(s, gtao.ndcToViewMul_Add) + 0.5f));
         if (any(lessThan(q, ivec2(0))) || any(greaterThan(q, last))) continue;  // off-screen: open
         vec3 scene = gtaoSamplePosition(q, 0);
         vec3 delta = scene - position;

@@ -25,12 +25,6 @@ float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
 #include "shared/gtao_kernel.h"
 
-// AO pixel coordinates of a view-space point, the inverse of gtaoViewPosition.
-vec2 aoPixel(vec3 v, vec4 ndcToView) {
-    vec2 p = (vec2(v.x, v.y) / -v.z - vec2(ndcToView.z, ndcToView.w)) / vec2(ndcToView.x, ndcToView.y);
-    return (p - 0.5) / float(gtao.scale);
-}
-
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(uvec2(p), gtao.halfSize))) return;
@@ -57,7 +51,8 @@ void main() {
     if (temporal.reset == 0u && previousDepth > 0.0) {
         // The motion as a difference of two identical computations, so a camera
         // that did not move reprojects every pixel exactly onto itself.
-        vec2 uv = vec2(p) + (aoPixel(previous, temporal.previousNdcToViewMul_Add) - aoPixel(position, gtao.ndcToViewMul_Add));
+        vec2 uv = vec2(p) + (gtaoPixelOf(previous, temporal.previousNdcToViewMul_Add) -
+                             gtaoPixelOf(position, gtao.ndcToViewMul_Add));
         vec2 base = floor(uv), f = uv - base;
         for (int j = 0; j < 2; ++j)
             for (int i = 0; i < 2; ++i) {

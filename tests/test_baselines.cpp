@@ -34,14 +34,6 @@ protected:
     }
 };
 
-Camera lookAt(glm::dvec3 position, glm::dvec3 target, double fov, uint32_t w, uint32_t h) {
-    voxel::CameraDesc c;
-    c.position = position;
-    c.target = target;
-    c.fovDegrees = fov;
-    return makeCamera(c, w, h);
-}
-
 voxel::World openFloor() {
     return test::makeVoxelWorld({-256, -1, -256}, {255, -1, 255}, [](int, int, int) { return true; });
 }
@@ -49,7 +41,7 @@ voxel::World openFloor() {
 Camera floorCamera(double degrees, uint32_t w, uint32_t h) {
     const double a = glm::radians(degrees);
     const glm::dvec3 eye(0.0, 1.5, 0.0);
-    return lookAt(eye, eye + glm::dvec3(std::sin(a), -std::cos(a), 0.0), 70.0, w, h);
+    return makeCamera(test::lookAt(eye, eye + glm::dvec3(std::sin(a), -std::cos(a), 0.0), 70.0), w, h);
 }
 
 TEST_F(Baselines, FlatFloorStaysOpenFromStraightDownToGrazing) {
@@ -76,7 +68,7 @@ TEST_F(Baselines, CornerDarkensAndOpensBeyondTheRadius) {
     const voxel::World corner = test::makeVoxelWorld({-40, -40, -60}, {40, 40, 60}, [](int x, int y, int) {
         return (y < 0 && x >= -40) || (x < 0 && y >= 0);
     });
-    const Camera camera = lookAt({14, 14, 24}, {0, 0, 0}, 60.0, 320, 240);
+    const Camera camera = makeCamera(test::lookAt({14, 14, 24}, {0, 0, 0}, 60.0), 320, 240);
     for (AoMethod method : {AoMethod::Ssao, AoMethod::Hbao, AoMethod::Gtao}) {
         const FrameImages img = render(corner, camera, options(method, "high"));
         double nearSum = 0, farSum = 0;

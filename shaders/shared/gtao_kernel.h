@@ -78,6 +78,13 @@ vec3 gtaoViewPosition(vec2 halfPixel, float depth) {
     return vec3((p * vec2(m.x, m.y) + vec2(m.z, m.w)) * depth, -depth);
 }
 
+// The AO pixel coordinates of a view-space point: the inverse of gtaoViewPosition
+// for the projection given by ndcToView (a GtaoConstants::ndcToViewMul_Add).
+vec2 gtaoPixelOf(vec3 v, vec4 ndcToView) {
+    vec2 full = (vec2(v.x, v.y) / -v.z - vec2(ndcToView.z, ndcToView.w)) / vec2(ndcToView.x, ndcToView.y) - 0.5f;
+    return full / float(gtao.scale);
+}
+
 // The view position behind a sample: a coarse MIP's depth stands for its whole
 // block of half-res pixels, so it is placed at the block's centre.
 vec3 gtaoSamplePosition(ivec2 halfPixel, int mip) {
