@@ -53,7 +53,11 @@ fs::path cachePath(const std::string& kind, const std::string& key) {
 
 // Layout: magic, key length and key, array count, then per array its length and floats.
 std::optional<CachedArrays> loadCached(const std::string& kind, const std::string& key) {
-    std::ifstream in(cachePath(kind, key), std::ios::binary);
+    const fs::path path = cachePath(kind, key);
+    std::ifstream in(path, std::ios::binary);
+    std::error_code ec;
+    const uint64_t fileBytes = fs::file_size(path, ec);
+    if (ec) return std::nullopt;
     char magic[8];
     uint64_t keyLength = 0, count = 0;
     if (!in.read(magic, 8) || std::memcmp(magic, kMagic, 8) != 0 || !readValue(in, keyLength) ||
@@ -65,7 +69,8 @@ std::optional<CachedArrays> loadCached(const std::string& kind, const std::strin
     CachedArrays arrays(count);
     for (auto& a : arrays) {
         uint64_t n = 0;
-        if (!readValue(in, n) || n > (uint64_t(1) << 32)) return std::nullopt;
+        // A damaged length must not allocate more than the file could hold.
+        if (!readValue(in, n) || n > fileBytes / sizeof(float)) return std::nullopt;
         a.resize(n);
         if (!in.read(reinterpret_cast<char*>(a.data()), std::streamsize(n * sizeof(float)))) return std::nullopt;
     }
