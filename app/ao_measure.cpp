@@ -3,20 +3,25 @@
 #include "app/options.h"
 #include "engine/renderer.h"
 
+#include <memory>
+
 namespace grotto::app {
 
 AoMeasurement measureAo(vk::Context& ctx, const GpuScene& scene, const voxel::World& world, const Camera& camera,
-                        const AoOptions& ao, const ReferenceView& reference, int frames, int warmup) {
+                        const AoOptions& ao, const ReferenceView& reference, int frames, int warmup,
+                        bool timed) {
     // Costs as wall-time differences against the same frames without AO, rendered
     // interleaved: lavapipe's timestamps miss passes that follow a barrier.
     Renderer renderer(ctx, scene, world.desc().lighting, ao, camera.width, camera.height);
     AoOptions off = ao;
     off.enabled = false;
-    Renderer withoutAo(ctx, scene, world.desc().lighting, off, camera.width, camera.height);
+    std::unique_ptr<Renderer> withoutAo;
+    if (timed) withoutAo = std::make_unique<Renderer>(ctx, scene, world.desc().lighting, off, camera.width, camera.height);
     std::vector<double> aoMs, frameMs;
     for (int i = 0; i < frames; ++i) {
         const double wall = renderer.render(camera, uint32_t(i)).wallMs;
-        const double wallOff = withoutAo.render(camera, uint32_t(i)).wallMs;
+        if (!withoutAo) continue;
+        const double wallOff = withoutAo->render(camera, uint32_t(i)).wallMs;
         if (i < warmup) continue;
         aoMs.push_back(wall - wallOff);
         frameMs.push_back(wall);

@@ -19,8 +19,10 @@ struct AoMeasurement {
 };
 
 // Renders frames 0 .. frames-1 of a static camera (consecutive indices, so the
-// temporal pass accumulates); times are medians over the frames after `warmup`.
+// temporal pass accumulates); times are medians over the frames after `warmup`,
+// left at 0 when `timed` is false (no frames without AO are rendered then).
 AoMeasurement measureAo(vk::Context& ctx, const GpuScene& scene, const voxel::World& world, const Camera& camera,
-                        const AoOptions& ao, const ReferenceView& reference, int frames, int warmup);
+                        const AoOptions& ao, const ReferenceView& reference, int frames, int warmup,
+                        bool timed = true);
 
 }  // namespace grotto::app

@@ -78,7 +78,7 @@ void addTuneCommand(CLI::App& app) {
                 ao.gtao.finalValuePower = s.finalValuePower;
                 ao.gtao.thinOccluderCompensation = s.thinOccluderCompensation;
                 const Target& t = targets[i];
-                const AoError e = measureAo(ctx, *t.scene, *t.world, t.camera, ao, t.reference, 1, 0).error;
+                const AoError e = measureAo(ctx, *t.scene, *t.world, t.camera, ao, t.reference, 1, 0, false).error;
                 if (print)
                     std::printf("    %-8s rmse %.4f  psnr %6.2f dB  mae %.4f  bias %+.4f\n", t.name.c_str(), e.rmse,
                                 e.psnr, e.mae, e.bias);
@@ -93,9 +93,9 @@ void addTuneCommand(CLI::App& app) {
         std::printf("before: ");
         show(best);
         std::printf("\n");
-        double bestRmse = evaluate(best, true);
+        const double beforeRmse = evaluate(best, true);
+        double bestRmse = beforeRmse;
         std::printf("  mean rmse %.5f\n", bestRmse);
-        const gpu::GtaoSettings before = best;
 
         const std::vector<Parameter> parameters = {
             {"radius_multiplier", &gpu::GtaoSettings::radiusMultiplier, {0.8f, 1.0f, 1.2f, 1.457f, 1.7f, 2.0f, 2.4f}},
@@ -123,7 +123,7 @@ void addTuneCommand(CLI::App& app) {
         show(best);
         std::printf("\n");
         evaluate(best, true);
-        std::printf("  mean rmse %.5f (before %.5f)\n", bestRmse, evaluate(before, false));
+        std::printf("  mean rmse %.5f (before %.5f)\n", bestRmse, beforeRmse);
         targets.clear();
         requireNoValidationMessages(ctx);
     });
