@@ -19,18 +19,18 @@ BrickTable::BrickTable(const World& world) {
     if (box.empty()) return;
     lo_ = box.min >> 3;  // arithmetic shift: floor division for negative indices too
     dims_ = (box.max >> 3) - lo_ + 1;
-    const size_t range = size_t(dims_.x) * size_t(dims_.y) * size_t(dims_.z);
-    if (range <= kDenseLimit) dense_.assign(range, 0);
+    // In double: the product of the extents can exceed 64 bits.
+    const double range = double(dims_.x) * double(dims_.y) * double(dims_.z);
+    if (range <= double(kDenseLimit)) dense_.assign(size_t(range), 0);
     for (const Brick& b : world.bricks()) {
         bool any = false;
         for (uint64_t w : b.occupancy) any = any || w != 0;
         if (!any) continue;
         const glm::ivec3 r = (b.origin >> 3) - lo_;
-        const size_t key = (size_t(r.x) * size_t(dims_.y) + size_t(r.y)) * size_t(dims_.z) + size_t(r.z);
         const uint32_t index = uint32_t(masks_.size() / 8);
         masks_.insert(masks_.end(), b.occupancy, b.occupancy + 8);
-        if (dense()) dense_[key] = index;
-        else sparse_[key] = index;
+        if (dense()) dense_[denseIndex(r)] = index;
+        else sparse_[r] = index;
     }
 }
 

@@ -18,9 +18,8 @@ public:
     uint32_t find(glm::ivec3 brick) const {
         const glm::ivec3 r = brick - lo_;
         if (r.x < 0 || r.y < 0 || r.z < 0 || r.x >= dims_.x || r.y >= dims_.y || r.z >= dims_.z) return 0;
-        const size_t key = (size_t(r.x) * size_t(dims_.y) + size_t(r.y)) * size_t(dims_.z) + size_t(r.z);
-        if (!dense_.empty()) return dense_[key];
-        const auto it = sparse_.find(key);
+        if (!dense_.empty()) return dense_[denseIndex(r)];
+        const auto it = sparse_.find(r);
         return it == sparse_.end() ? 0 : it->second;
     }
     // Bit for voxel v of brick `index` (v's low three bits pick the voxel).
@@ -36,9 +35,21 @@ public:
     bool dense() const { return !dense_.empty(); }
 
 private:
+    size_t denseIndex(glm::ivec3 r) const {
+        return (size_t(r.x) * size_t(dims_.y) + size_t(r.y)) * size_t(dims_.z) + size_t(r.z);
+    }
+
     glm::ivec3 lo_{0}, dims_{0};          // brick coordinate range
     std::vector<uint32_t> dense_;         // over the whole range, when it is small enough
-    std::unordered_map<size_t, uint32_t> sparse_;  // otherwise, the non-empty bricks only
+    // Otherwise the non-empty bricks only, keyed by their coordinates relative to lo_
+    // (a product of the extents could overflow 64 bits for a far-flung sparse world).
+    struct KeyHash {
+        size_t operator()(glm::ivec3 r) const {
+            return size_t(uint32_t(r.x)) * 0x9E3779B97F4A7C15ull ^ size_t(uint32_t(r.y)) * 0xC2B2AE3D27D4EB4Full ^
+                   size_t(uint32_t(r.z)) * 0x165667B19E3779F9ull;
+        }
+    };
+    std::unordered_map<glm::ivec3, uint32_t, KeyHash> sparse_;
     std::vector<uint64_t> masks_;         // 8 words per brick; brick 0 is all empty
 };
 
