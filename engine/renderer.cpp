@@ -115,7 +115,7 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
                 h = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
             temporalConstants_ =
                 vk::createBuffer(ctx, sizeof(gpu::TemporalConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-            temporalPass_ = std::make_unique<TemporalPass>(ctx);
+            temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses);
         }
     } else {
         aoTargets_.full = vk::createImage(ctx, {1, 1}, VK_FORMAT_R32_SFLOAT, storage);
@@ -186,16 +186,18 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     gtaoPass_->record(cmd, gbuffer_.surface, aoTargets_, gtaoConstants_);
     timestamps_.end(cmd);
     computeToCompute(cmd);
+    // With the temporal pass, the final blur is part of it.
+    const uint32_t passes = ao_.gtao.denoisePasses;
     timestamps_.begin(cmd, "denoise");
-    denoisePass_->record(cmd, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);
+    denoisePass_->record(cmd, aoTargets_, passes, temporal() && passes > 0 ? passes - 1 : passes, gtaoConstants_);
     timestamps_.end(cmd);
     if (temporal()) {
         // Reads the last output, writes the other image, which becomes the last.
         const vk::Image& previous = aoTargets_.history[historyIndex_];
         historyIndex_ = 1 - historyIndex_;
         timestamps_.begin(cmd, "temporal");
-        temporalPass_->record(cmd, aoTargets_.raw, aoTargets_.denoised(ao_.gtao.denoisePasses), previous,
-                              aoTargets_.history[historyIndex_], gtaoConstants_, temporalConstants_);
+        temporalPass_->record(cmd, aoTargets_, previous, aoTargets_.history[historyIndex_], gtaoConstants_,
+                              temporalConstants_);
         timestamps_.end(cmd);
         computeToCompute(cmd);
     }
@@ -325,6 +327,12 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     const VkExtent2D h = aoTargets_.half;
     const auto general = VK_IMAGE_LAYOUT_GENERAL;
     f.ao = floats(vk::readImage(ctx_, aoTargets_.full, general, 4));
+    // The temporal pass blurs for itself and does not keep the spatial AO: produce it.
+    if (temporal() && ao_.gtao.denoisePasses > 0)
+        ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+            computeToCompute(cmd);  // after the frame's own writes
+            denoisePass_->recordFinal(cmd, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);
+        });
     const std::vector<float> raw = floats(vk::readImage(ctx_, aoTargets_.raw, general, 16));
     const std::vector<float> spatial =
         floats(vk::readImage(ctx_, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 16));

@@ -1,22 +1,29 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Temporal accumulation of the spatially denoised half-res AO. Each pixel's
-// surface point is carried into the previous view (the world is static, so the
-// camera change is the whole motion) and the previous output is read there,
-// bilinearly, from taps that lie on the same face plane: anything else is a
-// disocclusion and restarts the pixel's history. The history is clamped to the
-// range of this frame's raw (not yet denoised) AO over the 3x3 neighbourhood, so
-// the clamp allows for the estimator's own noise yet cuts off stale values (a
-// halo that moved on), then blended with weight 1 / length, the length capped at
-// temporalHistory frames.
+// The final spatial blur and temporal accumulation of half-res AO, in one pass so
+// the spatially denoised AO is never stored and loaded again (lavapipe pays for
+// every image access). Each pixel's surface point is carried into the previous
+// view (the world is static, so the camera change is the whole motion) and the
+// previous output is read there, bilinearly, from taps that lie on the same face
+// plane: anything else is a disocclusion and restarts the pixel's history. The
+// history is clamped to the range of this frame's raw (not yet denoised) AO over
+// the 3x3 neighbourhood, so the clamp allows for the estimator's own noise yet
+// cuts off stale values (a halo that moved on), then blended with weight
+// 1 / length, the length capped at temporalHistory frames.
 #include "shared/gtao.h"
 #include "shared/quad.h"
 #include "shared/temporal.h"
 
+// Set by TemporalPass from the number of denoise passes: whether this pass runs
+// the final blur (at least one), and whether its input is the raw AO (at most one),
+// whose nine values the blur reads anyway.
+layout(constant_id = 0) const bool blur = true;
+layout(constant_id = 1) const bool sourceIsRaw = true;
+
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
 layout(set = 0, binding = 1, std140) uniform Temporal { TemporalConstants temporal; };
-layout(set = 0, binding = 2, rgba32f) uniform readonly image2D current;  // AO, edges, view depth, face + 1
+layout(set = 0, binding = 2, rgba32f) uniform readonly image2D denoiseSource;  // the final blur's input
 layout(set = 0, binding = 3, rgba32f) uniform readonly image2D history;  // AO, history length, view depth, face + 1
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D target;  // same layout as history
 layout(set = 0, binding = 5, rgba32f) uniform readonly image2D raw;      // GTAO before denoising: the clamp's range
@@ -24,24 +31,27 @@ layout(set = 0, binding = 5, rgba32f) uniform readonly image2D raw;      // GTAO
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
 #include "shared/gtao_kernel.h"
+#include "denoise_blur.glsl"
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(uvec2(p), gtao.halfSize))) return;
-    vec4 c = imageLoad(current, p);
+    vec4 c = imageLoad(denoiseSource, p);
     uint face = uint(c.w);
     if (face == 0u) {  // sky: nothing to accumulate
         imageStore(target, p, vec4(1.0, 0.0, c.z, 0.0));
         return;
     }
     ivec2 last = ivec2(gtao.halfSize) - 1;
-    float lo = c.x, hi = c.x;
-    for (int j = -1; j <= 1; ++j)
-        for (int i = -1; i <= 1; ++i) {
-            float v = imageLoad(raw, clamp(p + ivec2(i, j), ivec2(0), last)).x;
-            lo = min(lo, v);
-            hi = max(hi, v);
-        }
+    vec2 range = vec2(1.0, 0.0);
+    float spatial = blur ? denoiseBlur(p, denoiseBeta(true), range) : c.x;
+    if (!(blur && sourceIsRaw))
+        for (int j = -1; j <= 1; ++j)
+            for (int i = -1; i <= 1; ++i) {
+                float v = imageLoad(raw, clamp(p + ivec2(i, j), ivec2(0), last)).x;
+                range = vec2(min(range.x, v), max(range.y, v));
+            }
+    float lo = min(range.x, spatial), hi = max(range.y, spatial);
 
     vec3 position = gtaoViewPosition(vec2(p), c.z);
     vec3 previous = (temporal.currentToPrevious * vec4(position, 1.0)).xyz;
@@ -70,11 +80,11 @@ void main() {
                 weight += w;
             }
     }
-    float ao = c.x, frames = 1.0;
+    float ao = spatial, frames = 1.0;
     if (weight > 1e-3) {
         float historyAo = clamp(sumAo / weight, lo, hi);
         frames = min(sumLength / weight + 1.0, float(max(gtao.settings.temporalHistory, 1u)));
-        ao = mix(historyAo, c.x, 1.0 / frames);
+        ao = mix(historyAo, spatial, 1.0 / frames);
     }
     imageStore(target, p, vec4(ao, frames, c.z, c.w));
 }

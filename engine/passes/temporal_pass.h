@@ -1,6 +1,7 @@
 #pragma once
-// Temporal accumulation at AO resolution. Reads: the raw and the spatially
-// denoised AO (with depth and face), the previous frame's output (history), GTAO and temporal
+// The final spatial blur and temporal accumulation at AO resolution, in one pass.
+// Reads: the final blur's input (AoTargets::denoised(passes - 1)), the raw AO (the
+// clamp's range), the previous frame's output (history), GTAO and temporal
 // constants. Writes: the next history, which the upsample reads. History: the
 // output image itself, kept by the renderer for the next frame.
 #include "engine/passes/ao_targets.h"
@@ -10,11 +11,13 @@ namespace grotto {
 
 class TemporalPass {
 public:
-    explicit TemporalPass(vk::Context& ctx);
-    void record(VkCommandBuffer cmd, const vk::Image& raw, const vk::Image& current, const vk::Image& history,
-                const vk::Image& target, const vk::Buffer& gtaoConstants, const vk::Buffer& temporalConstants);
+    // `denoisePasses`: the spatial denoise's pass count; this pass runs the last.
+    TemporalPass(vk::Context& ctx, uint32_t denoisePasses);
+    void record(VkCommandBuffer cmd, const AoTargets& ao, const vk::Image& history, const vk::Image& target,
+                const vk::Buffer& gtaoConstants, const vk::Buffer& temporalConstants);
 
 private:
+    uint32_t denoisePasses_;
     ComputePass pass_;
 };
 
