@@ -92,10 +92,11 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
     color_ = vk::createImage(ctx, extent, kColorFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
     gbufferPass_ = std::make_unique<GBufferPass>(ctx);
-    compositePass_ = std::make_unique<CompositePass>(ctx);
+    compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled);
+    gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
 
     // The AO chain's targets and passes exist only when AO is on; without it the
-    // composite reads a 1x1 image it ignores.
+    // composite is bound a 1x1 image (and the constants) it ignores.
     const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | read;
     if (ao_.enabled) {
         aoTargets_.half = ao_.fullResolution ? extent : halfOf(extent);
@@ -105,7 +106,6 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
         for (vk::Image& s : aoTargets_.spatial)
             s = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
         aoTargets_.full = vk::createImage(ctx, extent, VK_FORMAT_R32_SFLOAT, storage);
-        gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
         gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_);
         denoisePass_ = std::make_unique<DenoisePass>(ctx);
@@ -118,7 +118,7 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
             temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses);
         }
     } else {
-        aoTargets_.full = vk::createImage(ctx, {1, 1}, VK_FORMAT_R32_SFLOAT, storage);
+        aoTargets_.raw = vk::createImage(ctx, {1, 1}, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
     }
     // AO images live in GENERAL: written as storage, read as sampled images.
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
@@ -201,10 +201,6 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
         timestamps_.end(cmd);
         computeToCompute(cmd);
     }
-    timestamps_.begin(cmd, "upsample");
-    upsamplePass_->record(cmd, gbuffer_.depth, gbuffer_.surface, aoHalfOutput(), aoTargets_.full, gtaoConstants_);
-    timestamps_.end(cmd);
-    computeToCompute(cmd);
 }
 
 FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
@@ -260,7 +256,8 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     vk::transition(cmd, color_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, top, 0, compute,
                    VK_ACCESS_SHADER_WRITE_BIT);
     timestamps_.begin(cmd, "composite");
-    compositePass_->record(cmd, gbuffer_, aoTargets_.full, color_, frame_, scene_.palette);
+    compositePass_->record(cmd, gbuffer_, ao_.enabled ? aoHalfOutput() : aoTargets_.raw, color_, frame_,
+                           scene_.palette, gtaoConstants_);
     timestamps_.end(cmd);
 
     VK_CHECK(vkEndCommandBuffer(cmd));
@@ -326,13 +323,18 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     }
     const VkExtent2D h = aoTargets_.half;
     const auto general = VK_IMAGE_LAYOUT_GENERAL;
-    f.ao = floats(vk::readImage(ctx_, aoTargets_.full, general, 4));
-    // The temporal pass blurs for itself and does not keep the spatial AO: produce it.
-    if (temporal() && ao_.gtao.denoisePasses > 0)
-        ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-            computeToCompute(cmd);  // after the frame's own writes
+    // What the frame computed on the way without storing: the full-res AO (the
+    // composite upsamples for itself) and, when the temporal pass blurs for itself,
+    // the spatial AO. The same shaders on the same inputs give the same values.
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        computeToCompute(cmd);  // after the frame's own writes
+        if (temporal() && ao_.gtao.denoisePasses > 0)
             denoisePass_->recordFinal(cmd, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);
-        });
+        upsamplePass_->record(cmd, gbuffer_.depth, gbuffer_.surface, aoHalfOutput(), aoTargets_.full,
+                              gtaoConstants_);
+        computeToCompute(cmd);
+    });
+    f.ao = floats(vk::readImage(ctx_, aoTargets_.full, general, 4));
     const std::vector<float> raw = floats(vk::readImage(ctx_, aoTargets_.raw, general, 16));
     const std::vector<float> spatial =
         floats(vk::readImage(ctx_, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 16));

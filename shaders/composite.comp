@@ -1,15 +1,28 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Sun Lambert + ambient x AO on surfaces, a gradient sky where nothing was drawn.
+// With AO, one invocation per AO pixel shades its block of full-res pixels and
+// upsamples the AO for them on the way (upsample.glsl): a separate upsample pass
+// would store full-res AO only to load it again here.
 #include "shared/frame.h"
+#include "shared/gtao.h"
 #include "shared/quad.h"
+
+layout(constant_id = 0) const bool withAo = true;  // false: one invocation per pixel, no AO bound
 
 layout(local_size_x = GROTTO_COMPOSITE_GROUP, local_size_y = GROTTO_COMPOSITE_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1, std140) uniform Palette { vec4 albedo[GROTTO_MAX_MATERIALS]; };
 layout(set = 0, binding = 2) uniform usampler2D surfaceTex;
-layout(set = 0, binding = 3) uniform sampler2D aoTex;  // full-res visibility
-layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D outColor;
+layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D outColor;
+layout(set = 0, binding = 4, std140) uniform Constants { GtaoConstants gtao; };
+layout(set = 0, binding = 5, rgba32f) uniform readonly image2D aoHalf;  // the AO chain's half-res output
+layout(set = 0, binding = 6) uniform sampler2D depthBuffer;             // full-res D32, reverse-Z
+
+float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
+uint gtaoSurface(ivec2 pixel) { return 0u; }
+#include "shared/gtao_kernel.h"
+#include "upsample.glsl"
 
 // Multi-bounce fit (Jimenez et al. 2016): light bouncing between bright surfaces
 // brightens what plain visibility would leave dark.
@@ -27,23 +40,38 @@ vec3 sky(ivec2 pixel) {
     return up >= 0.0 ? mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, sqrt(up)) : frame.skyHorizon.rgb * 0.8;
 }
 
+vec3 shade(uint surface, float ao) {
+    uint face = surfaceFace(surface);
+    // The sun term for an axis normal is one component of the sun direction.
+    float cosSun = (facePositive(face) ? 1.0 : -1.0) * frame.sunDirection[faceAxis(face)];
+    vec4 material = albedo[surfaceMaterial(surface) - 1u];  // rgb albedo, a: material AO
+    vec3 base = material.rgb;
+    float visibility = min(mix(1.0, ao, frame.aoStrength.x), material.a);
+    return base * (frame.sunRadiance.rgb * max(cosSun, 0.0) + frame.ambient.rgb * multiBounce(visibility, base));
+}
+
+// Full-res pixel h * scale + offset of AO pixel h's block.
+void compositePixel(AoBlock block, ivec2 h, ivec2 offset) {
+    ivec2 q = h * int(gtao.scale) + offset;
+    if (any(greaterThanEqual(uvec2(q), frame.size))) return;
+    uint surface = texelFetch(surfaceTex, q, 0).r;
+    vec3 color = surface == 0u ? sky(q) : shade(surface, upsampledAo(block, h, offset, surface & 7u));
+    imageStore(outColor, q, vec4(color, 1.0));
+}
+
 void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(uvec2(pixel), frame.size))) return;
-    uint surface = texelFetch(surfaceTex, pixel, 0).r;
-    vec3 color;
-    if (surface == 0u) {
-        color = sky(pixel);
-    } else {
-        uint face = surfaceFace(surface);
-        // The sun term for an axis normal is one component of the sun direction.
-        float cosSun = (facePositive(face) ? 1.0 : -1.0) * frame.sunDirection[faceAxis(face)];
-        vec4 material = albedo[surfaceMaterial(surface) - 1u];  // rgb albedo, a: material AO
-        vec3 base = material.rgb;
-        // Without AO the bound image is a 1x1 placeholder: do not read it.
-        float visibility = frame.aoStrength.x > 0.0 ? mix(1.0, texelFetch(aoTex, pixel, 0).r, frame.aoStrength.x) : 1.0;
-        visibility = min(visibility, material.a);
-        color = base * (frame.sunRadiance.rgb * max(cosSun, 0.0) + frame.ambient.rgb * multiBounce(visibility, base));
+    ivec2 h = ivec2(gl_GlobalInvocationID.xy);
+    if (!withAo) {
+        if (any(greaterThanEqual(uvec2(h), frame.size))) return;
+        uint surface = texelFetch(surfaceTex, h, 0).r;
+        imageStore(outColor, h, vec4(surface == 0u ? sky(h) : shade(surface, 1.0), 1.0));
+        return;
     }
-    imageStore(outColor, pixel, vec4(color, 1.0));
+    if (any(greaterThanEqual(uvec2(h), gtao.halfSize))) return;
+    AoBlock block = loadAoBlock(h);
+    compositePixel(block, h, ivec2(0, 0));
+    if (gtao.scale == 1u) return;
+    compositePixel(block, h, ivec2(1, 0));
+    compositePixel(block, h, ivec2(0, 1));
+    compositePixel(block, h, ivec2(1, 1));
 }

@@ -219,6 +219,42 @@ TEST_F(Gtao, ThinOccluderCompensationOpensBehindPolesButKeepsWallContact) {
 namespace grotto {
 namespace {
 
+TEST_F(Gtao, CompositeShadesWithTheAoItReports) {
+    // The composite upsamples the AO for itself; the AO AOV comes from the
+    // standalone upsample. Every surface pixel's colour must follow from that AOV:
+    // albedo x (sun x max(n.l, 0) + ambient x multi-bounce(min(AO, material AO))),
+    // the multi-bounce fit being Jimenez et al.'s cubic.
+    const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
+    for (const bool temporal : {false, true}) {
+        AoOptions ao = options("high");
+        ao.gtao.temporalHistory = temporal ? 16 : 0;
+        const Rendered r = render(world, world.camera("table"), 161, 91, ao);
+        const voxel::Lighting& l = world.desc().lighting;
+        const glm::vec3 sun = l.sunColor * l.sunIntensity, ambient = l.ambientColor * l.ambientIntensity;
+        int shaded = 0, occluded = 0;
+        float worst = 0.0f;
+        for (size_t i = 0; i < r.img.ao.size(); ++i) {
+            const uint16_t id = r.img.surfaceIds[i];
+            if (id == 0) continue;
+            const float v = std::min(r.img.ao[i], world.desc().materials[gpu::surfaceMaterial(id) - 1].ao);
+            const glm::vec3 n(r.img.normal[3 * i], r.img.normal[3 * i + 1], r.img.normal[3 * i + 2]);
+            const float cosSun = std::max(glm::dot(n, l.sunDirection), 0.0f);
+            for (int c = 0; c < 3; ++c) {
+                const float a = r.img.albedo[3 * i + c];
+                const float bounce =
+                    std::max(v, (((2.0404f * a - 0.3324f) * v + (-4.7951f * a + 0.6417f)) * v + 2.7552f * a + 0.6903f) * v);
+                const float expected = a * (sun[c] * cosSun + ambient[c] * bounce);
+                worst = std::max(worst, std::abs(r.img.color[4 * i + c] - expected));
+            }
+            ++shaded;
+            occluded += r.img.ao[i] < 0.9f;
+        }
+        EXPECT_GT(shaded, 161 * 91 / 2);
+        EXPECT_GT(occluded, 100);  // there is AO to get wrong
+        EXPECT_LT(worst, 1e-5f) << (temporal ? "with" : "without") << " the temporal pass";
+    }
+}
+
 TEST_F(Gtao, CompositeTakesMaterialAoAndLeavesTheSunAlone) {
     // An open floor whose material is fully occluded: only the sun's Lambert term
     // remains, exactly albedo x sun x cos(sun elevation).

@@ -4,21 +4,27 @@
 
 namespace grotto {
 
-CompositePass::CompositePass(vk::Context& ctx)
+CompositePass::CompositePass(vk::Context& ctx, bool withAo)
     : ctx_(ctx),
+      withAo_(withAo),
       pass_(ctx, "composite.comp",
             {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-             VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}) {}
+             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+             VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+            0, {withAo ? 1u : 0u}) {}
 
-void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& ao, const vk::Image& color,
-                           const vk::Buffer& frame, const vk::Buffer& palette) {
+void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& aoHalf,
+                           const vk::Image& color, const vk::Buffer& frame, const vk::Buffer& palette,
+                           const vk::Buffer& gtaoConstants) {
+    const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     pass_.dispatch(cmd,
                    {vk::uniformBuffer(frame.buffer), vk::uniformBuffer(palette.buffer),
-                    vk::sampledImage(ctx_.pointSampler, g.surface.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
-                    vk::sampledImage(ctx_.pointSampler, ao.view, VK_IMAGE_LAYOUT_GENERAL),
-                    vk::storageImage(color.view)},
-                   color.extent, GROTTO_COMPOSITE_GROUP);
+                    vk::sampledImage(ctx_.pointSampler, g.surface.view, ro), vk::storageImage(color.view),
+                    vk::uniformBuffer(gtaoConstants.buffer), vk::storageImage(aoHalf.view),
+                    vk::sampledImage(ctx_.pointSampler, g.depth.view, ro)},
+                   withAo_ ? aoHalf.extent : color.extent,  // with AO, one thread per AO pixel
+                   GROTTO_COMPOSITE_GROUP);
 }
 
 }  // namespace grotto

@@ -1,7 +1,9 @@
 #pragma once
-// Composite pass. Reads: the surface id, the palette, full-res AO, frame uniforms.
-// Writes: linear RGBA32F colour: sun Lambert + ambient x AO (multi-bounce from
-// albedo; the sun is not occluded), and the sky. No history.
+// Composite pass. Reads: the surface id, the palette, frame uniforms and, with AO,
+// the AO chain's half-res output, full-res depth and the GTAO constants (it
+// upsamples the AO itself, see upsample.glsl). Writes: linear RGBA32F colour: sun
+// Lambert + ambient x AO (multi-bounce from albedo; the sun is not occluded), and
+// the sky. No history.
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 
@@ -9,12 +11,14 @@ namespace grotto {
 
 class CompositePass {
 public:
-    explicit CompositePass(vk::Context& ctx);
-    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& ao, const vk::Image& color,
-                const vk::Buffer& frame, const vk::Buffer& palette);
+    CompositePass(vk::Context& ctx, bool withAo);
+    // Without AO, `aoHalf` and `gtaoConstants` are placeholders the shader ignores.
+    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& aoHalf, const vk::Image& color,
+                const vk::Buffer& frame, const vk::Buffer& palette, const vk::Buffer& gtaoConstants);
 
 private:
     vk::Context& ctx_;
+    bool withAo_;
     ComputePass pass_;
 };
 
