@@ -165,8 +165,10 @@ void addStabilityCommand(CLI::App& app) {
             ghostCurve.push_back({{"frames_since_disocclusion", k}, {"pixels", bins.first.n},
                                   {"mae_temporal", bins.first.value()}, {"mae_spatial", bins.second.value()}});
         // Steady state: the frames after the history could fill (all frames when
-        // the path is shorter than that).
-        int steadyFrom = int(ao.gtao.temporalHistory) + 1;
+        // the path is shorter than that). A shorter history, or none, starts no
+        // earlier than the default one would, so a spatial-only run of the same path
+        // is averaged over the same frames.
+        int steadyFrom = int(std::max(ao.gtao.temporalHistory, kDefaultTemporalHistory)) + 1;
         if (errors.empty() || errors.back()["frame"].get<int>() < steadyFrom) steadyFrom = 1;
         size_t steadyFrames = 0;
         for (const json& e : errors) steadyFrames += e["frame"].get<int>() >= steadyFrom;

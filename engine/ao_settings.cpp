@@ -35,7 +35,7 @@ gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius) {
     s.strength = 1.0f;
     s.denoiseBlurBeta = 1.2f;
     s.denoisePasses = 1;
-    s.temporalHistory = 16;
+    s.temporalHistory = kDefaultTemporalHistory;
     if (quality == "low") s.sliceCount = 1, s.stepsPerSlice = 2;
     else if (quality == "medium") s.sliceCount = 2, s.stepsPerSlice = 2;
     else if (quality == "high" || quality == "custom") s.sliceCount = 3, s.stepsPerSlice = 3;

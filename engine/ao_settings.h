@@ -29,6 +29,9 @@ const char* aoMethodName(AoMethod method);
 // Throws grotto::Error (input) naming `where` for anything but gtao, ssao, hbao.
 AoMethod parseAoMethod(const std::string& name, const std::string& where);
 
+// Frames the temporal pass averages by default.
+inline constexpr uint32_t kDefaultTemporalHistory = 16;
+
 // The defaults (XeGTAO's, three of them refitted to our reference: docs/tuning.md)
 // with the preset's slices and steps; radius in world units.
 gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius);

@@ -40,6 +40,8 @@ struct Case {
     double nearPlane, farPlane;
     uint32_t width, height;
 };
+// What test listings print for a case (gtest would dump its bytes).
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 class GBuffer : public GpuTest, public ::testing::WithParamInterface<Case> {};
 

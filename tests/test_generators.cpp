@@ -102,6 +102,8 @@ struct KindCase {
     const char* gridName;
     const char* gridType;
 };
+// What test listings print for a case (gtest would dump its bytes).
+void PrintTo(const KindCase& c, std::ostream* os) { *os << c.kind; }
 
 class GeneratorDeterminism : public ::testing::TestWithParam<KindCase> {};
 

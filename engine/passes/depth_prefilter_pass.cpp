@@ -22,23 +22,18 @@ DepthPrefilterPass::DepthPrefilterPass(vk::Context& ctx)
     : ctx_(ctx),
       pass_(ctx, "depth_prefilter.comp",
             {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-            sizeof(int32_t)) {}
+             VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}) {}
 
 void DepthPrefilterPass::record(VkCommandBuffer cmd, const vk::Image& depth, const AoTargets& ao,
                                 const vk::Buffer& constants) {
-    const DepthMipLayout layout = depthMipLayout(ao.half);
-    for (int32_t level = 0; level < GROTTO_GTAO_DEPTH_MIPS; ++level) {
-        // Each level reads the one before from the atlas and writes its own region.
-        const glm::ivec4 rect = layout.mips[level];
-        pass_.dispatch(cmd,
-                       {vk::uniformBuffer(constants.buffer),
-                        vk::sampledImage(ctx_.pointSampler, depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
-                        vk::sampledImage(ctx_.pointSampler, ao.depthAtlas.view, VK_IMAGE_LAYOUT_GENERAL),
-                        vk::storageImage(ao.depthAtlas.view)},
-                       {uint32_t(rect.z), uint32_t(rect.w)}, GROTTO_GTAO_GROUP, &level);
-        computeToCompute(cmd);
-    }
+    // One thread per MIP-1 texel; each group writes its share of every MIP.
+    const glm::ivec4 mip1 = depthMipLayout(ao.half).mips[1];
+    pass_.dispatch(cmd,
+                   {vk::uniformBuffer(constants.buffer),
+                    vk::sampledImage(ctx_.pointSampler, depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
+                    vk::storageImage(ao.depthAtlas.view)},
+                   {uint32_t(mip1.z), uint32_t(mip1.w)}, GROTTO_GTAO_GROUP);
+    computeToCompute(cmd);
 }
 
 }  // namespace grotto
