@@ -80,9 +80,17 @@ void addBenchCommand(CLI::App& app) {
             if (ao.enabled && ao.gtao.temporalHistory > 0)
                 withoutTemporal = std::make_unique<Renderer>(ctx, *scene, light, noTemporal, size.width, size.height);
             for (int i = 0; i < args->warmup + args->frames; ++i) {
-                const FrameStats f = renderer.render(camera, uint32_t(i));  // consecutive: temporal runs as in a flythrough
-                const double off = withoutAo ? withoutAo->render(camera, uint32_t(i)).wallMs : 0.0;
-                const double noHistory = withoutTemporal ? withoutTemporal->render(camera, uint32_t(i)).wallMs : 0.0;
+                // Consecutive indices, so the temporal pass runs as in a flythrough. The
+                // three renderers take turns going first, so whatever one frame leaves
+                // behind (caches, clocks) does not always favour the same one.
+                FrameStats f;
+                double off = 0.0, noHistory = 0.0;
+                for (int turn = 0; turn < 3; ++turn) {
+                    const int which = (i + turn) % 3;
+                    if (which == 0) f = renderer.render(camera, uint32_t(i));
+                    if (which == 1 && withoutAo) off = withoutAo->render(camera, uint32_t(i)).wallMs;
+                    if (which == 2 && withoutTemporal) noHistory = withoutTemporal->render(camera, uint32_t(i)).wallMs;
+                }
                 if (i < args->warmup) continue;
                 double gpu = 0;
                 for (auto& [name, ms] : f.passMs) passMs[name].push_back(ms), gpu += ms;

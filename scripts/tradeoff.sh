@@ -7,4 +7,4 @@ cd "$(dirname "$0")/.."
 grotto=${GROTTO:-build/grotto}
 mkdir -p out
 "$grotto" tradeoff worlds/rooms.json worlds/caves.json worlds/thin.json worlds/city.json \
-  --size 640x360 --spp 1024 --frames 12 --warmup 2 --csv out/tradeoff.csv --plot docs/images/tradeoff.png
+  --size 640x360 --spp 1024 --frames 24 --warmup 4 --csv out/tradeoff.csv --plot docs/images/tradeoff.png
