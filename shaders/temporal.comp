@@ -7,9 +7,10 @@
 // previous output is read there, bilinearly, from taps that lie on the same face
 // plane: anything else is a disocclusion and restarts the pixel's history. The
 // history is clamped to the range of this frame's raw (not yet denoised) AO over
-// the 3x3 neighbourhood, so the clamp allows for the estimator's own noise yet
-// cuts off stale values (a halo that moved on), then blended with weight
-// 1 / length, the length capped at temporalHistory frames.
+// the 3x3 neighbourhood widened by GROTTO_TEMPORAL_CLAMP_MARGIN, so the clamp
+// allows for the estimator's own noise yet cuts off stale values (a halo that
+// moved on), then blended with weight 1 / length, the length capped at
+// temporalHistory frames.
 #include "shared/gtao.h"
 #include "shared/quad.h"
 #include "shared/temporal.h"
@@ -51,7 +52,8 @@ void main() {
                 float v = imageLoad(raw, clamp(p + ivec2(i, j), ivec2(0), last)).x;
                 range = vec2(min(range.x, v), max(range.y, v));
             }
-    float lo = min(range.x, spatial), hi = max(range.y, spatial);
+    float lo = min(range.x, spatial) - GROTTO_TEMPORAL_CLAMP_MARGIN;
+    float hi = max(range.y, spatial) + GROTTO_TEMPORAL_CLAMP_MARGIN;
 
     vec3 position = gtaoViewPosition(vec2(p), c.z);
     vec3 previous = (temporal.currentToPrevious * vec4(position, 1.0)).xyz;

@@ -51,8 +51,8 @@ voxel::World bumpyWall() {
 }
 
 // The pass's blend for one pixel, from the previous output at the reprojected
-// pixel and this frame's AO: clamp to the raw AO's 3x3 range, then move towards
-// the spatial AO with weight 1 / length.
+// pixel and this frame's AO: clamp to the raw AO's 3x3 range widened by the
+// margin, then move towards the spatial AO with weight 1 / length.
 float expectedBlend(const Half& now, int x, int y, float previous, float length) {
     float lo = 2.0f, hi = -1.0f;
     for (int j = -1; j <= 1; ++j)
@@ -60,7 +60,9 @@ float expectedBlend(const Half& now, int x, int y, float previous, float length)
             const float v = now.at(now.raw, std::clamp(x + i, 0, int(now.w) - 1), std::clamp(y + j, 0, int(now.h) - 1));
             lo = std::min(lo, v), hi = std::max(hi, v);
         }
-    return std::clamp(previous, lo, hi) + (now.at(now.spatial, x, y) - std::clamp(previous, lo, hi)) / length;
+    const float spatial = now.at(now.spatial, x, y);
+    lo = std::min(lo, spatial) - GROTTO_TEMPORAL_CLAMP_MARGIN, hi = std::max(hi, spatial) + GROTTO_TEMPORAL_CLAMP_MARGIN;
+    return std::clamp(previous, lo, hi) + (spatial - std::clamp(previous, lo, hi)) / length;
 }
 
 // World position seen at AO pixel (x, y).

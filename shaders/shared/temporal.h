@@ -6,6 +6,13 @@
 
 GROTTO_NAMESPACE_BEGIN
 
+// How far the history may lie outside this frame's raw 3x3 AO range before it is
+// clamped: beyond the estimator's noise by this much, it is stale (a halo that moved
+// on, an occluder that came into view). Clamping to the bare range cut into the
+// noise itself and cost both flicker and error on every shipped path
+// (docs/temporal.md).
+#define GROTTO_TEMPORAL_CLAMP_MARGIN 0.2f
+
 struct TemporalConstants {
     mat4 currentToPrevious;          // current view space -> previous view space, built in double
     vec4 previousNdcToViewMul_Add;   // as GtaoConstants::ndcToViewMul_Add, for the previous camera
