@@ -12,11 +12,9 @@ namespace grotto {
 class DenoisePass {
 public:
     explicit DenoisePass(vk::Context& ctx);
-    // Passes 0 .. count - 1 of `passes`, each followed by a barrier.
+    // Passes 0 .. count - 1 of `passes` (all, or all but the last when the temporal
+    // pass runs that), each followed by a barrier.
     void record(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, uint32_t count, const vk::Buffer& constants);
-    void record(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, const vk::Buffer& constants) {
-        record(cmd, ao, passes, passes, constants);
-    }
     // The last of `passes` alone, into ao.denoised(passes) (needs passes > 0).
     void recordFinal(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, const vk::Buffer& constants);
 
