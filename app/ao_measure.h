@@ -14,7 +14,7 @@ namespace grotto::app {
 
 struct AoMeasurement {
     AoError error;        // of the last frame's full-res AO against the reference
-    double msAo = 0.0;    // every AO pass: prefilter, estimator, denoise, temporal, upsample
+    double msAo = 0.0;    // all AO costs: prefilter, estimator, denoise, temporal, the composite's upsample
     double msFrame = 0.0; // the whole frame
 };
 

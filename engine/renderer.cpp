@@ -1,6 +1,6 @@
 // The whole frame on one screen: G-buffer, then (with AO) depth prefilter, GTAO,
-// spatial denoise and temporal accumulation at half resolution, the upsample,
-// then composite, with the barriers between them.
+// spatial denoise and temporal accumulation at half resolution, then the composite
+// (which upsamples the AO itself), with the barriers between them.
 #include "engine/renderer.h"
 
 #include "engine/vk/readback.h"
@@ -105,7 +105,6 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
         aoTargets_.raw = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
         for (vk::Image& s : aoTargets_.spatial)
             s = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
-        aoTargets_.full = vk::createImage(ctx, extent, VK_FORMAT_R32_SFLOAT, storage);
         prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
         gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_);
         denoisePass_ = std::make_unique<DenoisePass>(ctx);
@@ -326,7 +325,14 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     // What the frame computed on the way without storing: the full-res AO (the
     // composite upsamples for itself) and, when the temporal pass blurs for itself,
     // the spatial AO. The same shaders on the same inputs give the same values.
+    const bool firstAovs = !aoTargets_.full.image;  // made on first use: frames do not store it
+    if (firstAovs)
+        aoTargets_.full = vk::createImage(ctx_, color_.extent, VK_FORMAT_R32_SFLOAT,
+                                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        if (firstAovs)
+            vk::transition(cmd, aoTargets_.full, VK_IMAGE_LAYOUT_UNDEFINED, general, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                           0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
         computeToCompute(cmd);  // after the frame's own writes
         if (temporal() && ao_.gtao.denoisePasses > 0)
             denoisePass_->recordFinal(cmd, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);

@@ -70,7 +70,7 @@ public:
 private:
     void recordAo(VkCommandBuffer cmd);
     bool temporal() const { return ao_.enabled && ao_.gtao.temporalHistory > 0; }
-    const vk::Image& aoHalfOutput() const;  // what the upsample reads
+    const vk::Image& aoHalfOutput() const;  // the chain's last half-res output: what the composite reads
 
     vk::Context& ctx_;
     const GpuScene& scene_;

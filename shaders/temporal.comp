@@ -44,9 +44,12 @@ void main() {
         return;
     }
     ivec2 last = ivec2(gtao.halfSize) - 1;
-    vec2 range = vec2(1.0, 0.0);
-    float spatial = blur ? denoiseBlur(p, denoiseBeta(true), range) : c.x;
-    if (!(blur && sourceIsRaw))
+    // The clamp's range: the raw 3x3, which the blur has read when its input is raw.
+    vec2 range = vec2(1.0, 0.0), blurRange;
+    float spatial = blur ? denoiseBlur(p, denoiseBeta(true), blurRange) : c.x;
+    if (blur && sourceIsRaw)
+        range = blurRange;
+    else
         for (int j = -1; j <= 1; ++j)
             for (int i = -1; i <= 1; ++i) {
                 float v = imageLoad(raw, clamp(p + ivec2(i, j), ivec2(0), last)).x;

@@ -15,7 +15,8 @@ struct AoTargets {
     std::array<vk::Image, 2> spatial;                          // RGBA32F: denoiser ping-pong, same layout
     std::array<vk::Image, 2> history;                          // RGBA32F: temporal output, this frame's and the last
                                                                // (visibility, history length, depth, face + 1)
-    vk::Image full;                                            // R32F: upsampled visibility
+    vk::Image full;                                            // R32F: upsampled visibility, for the AO AOV
+                                                               // (made at the first read-back that wants it)
 
     // The denoiser's output after `passes` passes (the raw AO when there are none).
     const vk::Image& denoised(uint32_t passes) const { return passes == 0 ? raw : spatial[(passes - 1) % 2]; }

@@ -4,6 +4,10 @@
 
 namespace grotto {
 
+// depth_prefilter.comp: a group of GROUP x GROUP threads reduces 2 GROUP x 2 GROUP
+// MIP-0 texels to exactly one texel of the last MIP.
+static_assert(2 * GROTTO_GTAO_GROUP == 1u << (GROTTO_GTAO_DEPTH_MIPS - 1));
+
 // Mirrors gtaoMipRect in shaders/shared/gtao_kernel.h.
 DepthMipLayout depthMipLayout(VkExtent2D half) {
     DepthMipLayout l;

@@ -2,7 +2,7 @@
 // The final spatial blur and temporal accumulation at AO resolution, in one pass.
 // Reads: the final blur's input (AoTargets::denoised(passes - 1)), the raw AO (the
 // clamp's range), the previous frame's output (history), GTAO and temporal
-// constants. Writes: the next history, which the upsample reads. History: the
+// constants. Writes: the next history, which the composite reads. History: the
 // output image itself, kept by the renderer for the next frame.
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"

@@ -1,7 +1,8 @@
 #pragma once
-// Depth-aware upsample to full resolution. Reads: the half-res AO (with
-// its depth and face), full-res depth and surface ids, GTAO constants.
-// Writes: AoTargets::full. No history.
+// Depth-aware upsample to full resolution, for the AO AOV only: a frame's
+// composite upsamples for itself with the same code (upsample.glsl). Reads: the
+// half-res AO (with its depth and face), full-res depth and surface ids, GTAO
+// constants. Writes: AoTargets::full. No history.
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"
 
