@@ -7,6 +7,7 @@
 #include "shaders/shared/frame.h"
 #include "shaders/shared/quad.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
@@ -103,8 +104,10 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
         aoTargets_.depthAtlas =
             vk::createImage(ctx, depthMipLayout(aoTargets_.half).atlas, VK_FORMAT_R32_SFLOAT, storage);
         aoTargets_.raw = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
-        for (vk::Image& s : aoTargets_.spatial)
-            s = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
+        // One denoise pass needs one target (with the temporal pass, only for the
+        // AO_spatial AOV), more ping-pong between two.
+        for (uint32_t i = 0; i < std::min(ao_.gtao.denoisePasses, 2u); ++i)
+            aoTargets_.spatial[i] = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
         prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
         gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_);
         denoisePass_ = std::make_unique<DenoisePass>(ctx);

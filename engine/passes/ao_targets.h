@@ -12,7 +12,8 @@ struct AoTargets {
     VkExtent2D half{};                                         // ceil(full / 2)
     vk::Image depthAtlas;                                      // R32F view depth, every MIP (see depthMipLayout)
     vk::Image raw;                                             // RGBA32F: visibility, packed edges, depth, face + 1
-    std::array<vk::Image, 2> spatial;                          // RGBA32F: denoiser ping-pong, same layout
+    std::array<vk::Image, 2> spatial;                          // RGBA32F: denoiser ping-pong, same layout (as many
+                                                               // as the passes need: none, one, or two)
     std::array<vk::Image, 2> history;                          // RGBA32F: temporal output, this frame's and the last
                                                                // (visibility, history length, depth, face + 1)
     vk::Image full;                                            // R32F: upsampled visibility, for the AO AOV
