@@ -2,7 +2,7 @@
 # Temporal-stability figures for the shipped paths (docs/temporal.md): high with
 # the temporal pass against ultra without it, at 320x180 over 64 frames, the
 # reference (256 spp) on a pair of frames every 4. Writes out/stability/*.json.
-# SIZE=640x360 scripts/stability.sh runs the same at another size.
+# SIZE=640x360 (or 1280x720, ~10 min) scripts/stability.sh runs the same at another size.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 grotto=${GROTTO:-build/grotto}
