@@ -4,6 +4,12 @@
 
 namespace grotto {
 
+namespace {
+// Threads per group side, measured on lavapipe: with AO each thread shades a 2x2
+// block, and smaller groups of them run faster.
+uint32_t group(bool withAo) { return withAo ? 8u : 16u; }
+}  // namespace
+
 CompositePass::CompositePass(vk::Context& ctx, bool withAo)
     : ctx_(ctx),
       withAo_(withAo),
@@ -12,7 +18,7 @@ CompositePass::CompositePass(vk::Context& ctx, bool withAo)
              VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
              VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
              VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-            0, {withAo ? 1u : 0u}) {}
+            0, {withAo ? 1u : 0u, group(withAo), group(withAo)}) {}
 
 void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& aoHalf,
                            const vk::Image& color, const vk::Buffer& frame, const vk::Buffer& palette,
@@ -24,7 +30,7 @@ void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const v
                     vk::uniformBuffer(gtaoConstants.buffer), vk::storageImage(aoHalf.view),
                     vk::sampledImage(ctx_.pointSampler, g.depth.view, ro)},
                    withAo_ ? aoHalf.extent : color.extent,  // with AO, one thread per AO pixel
-                   GROTTO_COMPOSITE_GROUP);
+                   group(withAo_));
 }
 
 }  // namespace grotto

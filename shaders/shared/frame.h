@@ -30,7 +30,6 @@ struct ChunkPush {
 };
 GROTTO_STATIC_ASSERT(sizeof(ChunkPush) == 16);
 
-#define GROTTO_COMPOSITE_GROUP 8u
 #define GROTTO_MAX_MATERIALS 255
 
 GROTTO_NAMESPACE_END
