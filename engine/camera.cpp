@@ -66,4 +66,9 @@ glm::dvec3 Camera::rayDirection(double px, double py) const {
     return glm::normalize(basis * glm::dvec3(x, y, -1.0));
 }
 
+glm::dvec3 Camera::pointAt(double px, double py, double viewDepth) const {
+    const glm::dvec3 dir = rayDirection(px, py);
+    return position + dir * (viewDepth / glm::dot(dir, -basis[2]));
+}
+
 }  // namespace grotto

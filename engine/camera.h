@@ -24,6 +24,8 @@ struct Camera {
     double linearDepth(double depth) const;
     // World-space direction through a pixel position (pixel centres at +0.5).
     glm::dvec3 rayDirection(double px, double py) const;
+    // The world point seen through a pixel position at a view-axis distance.
+    glm::dvec3 pointAt(double px, double py, double viewDepth) const;
 };
 
 Camera makeCamera(const voxel::CameraDesc& desc, uint32_t width, uint32_t height);

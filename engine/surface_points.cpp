@@ -6,7 +6,6 @@ namespace grotto {
 
 SurfacePoints surfacePoints(const FrameImages& f, const Camera& camera, double voxelSize, glm::dvec3 origin) {
     SurfacePoints out;
-    const glm::dvec3 forward = -camera.basis[2];
     for (uint32_t y = 0; y < f.height; ++y)
         for (uint32_t x = 0; x < f.width; ++x) {
             const size_t i = size_t(y) * f.width + x;
@@ -14,8 +13,7 @@ SurfacePoints surfacePoints(const FrameImages& f, const Camera& camera, double v
             // The view-axis distance from the raw depth value, in double: f.depth is a float.
             const double z = camera.linearDepth(double(f.depthBuffer[i]));
             if (!std::isfinite(z)) continue;
-            const glm::dvec3 dir = camera.rayDirection(x + 0.5, y + 0.5);
-            glm::dvec3 p = camera.position + dir * (z / glm::dot(dir, forward));
+            glm::dvec3 p = camera.pointAt(x + 0.5, y + 0.5, z);
             const glm::dvec3 n(f.normal[3 * i], f.normal[3 * i + 1], f.normal[3 * i + 2]);
             const int a = n.x != 0.0 ? 0 : n.y != 0.0 ? 1 : 2;
             p[a] = origin[a] + std::round((p[a] - origin[a]) / voxelSize) * voxelSize;

@@ -16,7 +16,6 @@ AoFrame aoFrame(const FrameImages& f, const Camera& camera, uint32_t scale) {
     a.normal.resize(n);
     a.surface.assign(n, 0);
     a.raw.resize(n), a.spatial.resize(n), a.temporal.resize(n);
-    const glm::dvec3 forward = -camera.basis[2];
     for (uint32_t y = 0; y < a.height; ++y)
         for (uint32_t x = 0; x < a.width; ++x) {
             const size_t i = size_t(y) * a.width + x, full = size_t(scale * y) * f.width + scale * x;
@@ -25,8 +24,7 @@ AoFrame aoFrame(const FrameImages& f, const Camera& camera, uint32_t scale) {
             a.temporal[i] = f.aoTemporal[full];
             const double depth = f.depth[full];
             if (!std::isfinite(depth)) continue;
-            const glm::dvec3 dir = camera.rayDirection(scale * x + 0.5, scale * y + 0.5);
-            a.world[i] = camera.position + dir * (depth / glm::dot(dir, forward));
+            a.world[i] = camera.pointAt(scale * x + 0.5, scale * y + 0.5, depth);
             a.normal[i] = glm::dvec3(f.normal[3 * full], f.normal[3 * full + 1], f.normal[3 * full + 2]);
             a.surface[i] = 1;
         }

@@ -77,8 +77,7 @@ TEST_F(Baselines, CornerDarkensAndOpensBeyondTheRadius) {
             for (uint32_t x = 0; x < img.width; ++x) {
                 const size_t i = size_t(y) * img.width + x;
                 if (!std::isfinite(img.depth[i]) || img.normal[3 * i + 1] < 0.5f) continue;
-                const glm::dvec3 dir = camera.rayDirection(x + 0.5, y + 0.5);
-                const glm::dvec3 p = camera.position + dir * (img.depth[i] / glm::dot(dir, -camera.basis[2]));
+                const glm::dvec3 p = camera.pointAt(x + 0.5, y + 0.5, img.depth[i]);
                 if (std::abs(p.z) > 8) continue;
                 if (p.x < 1.0) nearSum += img.ao[i], ++nearN;
                 else if (p.x > 6.0 && p.x < 9.0) farSum += img.ao[i], ++farN;

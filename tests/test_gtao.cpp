@@ -41,9 +41,7 @@ protected:
     }
     // World position seen at a full-res pixel.
     static glm::dvec3 worldAt(const Rendered& r, uint32_t x, uint32_t y) {
-        const glm::dvec3 dir = r.camera.rayDirection(x + 0.5, y + 0.5);
-        const double z = r.img.depth[size_t(y) * r.img.width + x];
-        return r.camera.position + dir * (z / glm::dot(dir, -r.camera.basis[2]));
+        return r.camera.pointAt(x + 0.5, y + 0.5, r.img.depth[size_t(y) * r.img.width + x]);
     }
 };
 

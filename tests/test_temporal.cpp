@@ -67,8 +67,7 @@ float expectedBlend(const Half& now, int x, int y, float previous, float length)
 
 // World position seen at AO pixel (x, y).
 glm::dvec3 worldAt(const Camera& camera, const Half& f, int x, int y) {
-    const glm::dvec3 dir = camera.rayDirection(2 * x + 0.5, 2 * y + 0.5);
-    return camera.position + dir * (double(f.at(f.depth, x, y)) / glm::dot(dir, -camera.basis[2]));
+    return camera.pointAt(2 * x + 0.5, 2 * y + 0.5, f.at(f.depth, x, y));
 }
 
 class Temporal : public GpuTest {
