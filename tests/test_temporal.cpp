@@ -282,8 +282,7 @@ TEST_F(Temporal, DisoccludedPixelsShowNoGhostOfTheOccluder) {
         for (int x = 0; x < int(after.w); ++x) {
             const double z = after.at(after.depth, x, y);
             if (!(z > 30.0)) continue;
-            const glm::dvec3 dir = end.rayDirection(2 * x + 0.5, 2 * y + 0.5);
-            const glm::dvec3 world = end.position + dir * (z / glm::dot(dir, -end.basis[2]));
+            const glm::dvec3 world = end.pointAt(2 * x + 0.5, 2 * y + 0.5, z);
             const glm::dvec4 clip = firstClip * glm::dvec4(world, 1.0);
             const glm::dvec2 px = (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * glm::dvec2(w, h);
             const int bx = int(px.x) / 2, by = int(px.y) / 2;
