@@ -70,7 +70,7 @@ json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptio
             {"temporal_history", ao.gtao.temporalHistory},
             {"gtao", {g.radius, g.radiusMultiplier, g.falloffRange, g.sampleDistributionPower,
                       g.thinOccluderCompensation, g.finalValuePower, g.depthMipSamplingOffset, g.strength,
-                      g.denoiseBlurBeta, g.sliceCount, g.stepsPerSlice, g.denoisePasses}}};
+                      g.denoiseBlurBeta, g.sliceCount, g.stepsPerSlice, g.denoisePasses, g.maxDistance}}};
 }
 
 void writeJson(const fs::path& file, const json& j) {

@@ -35,6 +35,7 @@ void addAoFlags(CLI::App* cmd, AoFlags& f) {
         ->check(CLI::IsMember({"low", "medium", "high", "ultra"}));
     cmd->add_option("--radius", f.radius, "AO radius in world units (> 0)");
     cmd->add_option("--thin-occluder", f.thinOccluder, "Thin-occluder compensation, 0 to 0.7");
+    cmd->add_option("--max-distance", f.maxDistance, "View depth where AO has faded out, world units (0 = no limit)");
     cmd->add_option("--denoise", f.denoise, "Spatial denoise passes, 0 to 4");
     cmd->add_option("--temporal", f.temporal, "Most frames the temporal pass averages, 0 (off) to 64");
     cmd->add_flag("--ao-full-res", f.fullResolution, "Run the AO chain at full instead of half resolution");
@@ -53,6 +54,11 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
     o.fullResolution = f.fullResolution;
     if (f.radius) o.gtao.radius = float(*f.radius);
     if (f.thinOccluder) o.gtao.thinOccluderCompensation = float(*f.thinOccluder);
+    if (f.maxDistance) {
+        if (!(*f.maxDistance >= 0.0 && *f.maxDistance <= 1e7))
+            throw Error("--max-distance", std::to_string(*f.maxDistance) + " is out of range", "accepted: 0 (no limit) to 1e7 world units");
+        o.gtao.maxDistance = float(*f.maxDistance);
+    }
     if (f.denoise) {
         if (*f.denoise < 0 || *f.denoise > 4) throw Error("--denoise", std::to_string(*f.denoise) + " is out of range", "accepted: 0 to 4");
         o.gtao.denoisePasses = uint32_t(*f.denoise);

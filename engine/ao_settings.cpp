@@ -33,6 +33,7 @@ gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius) {
     s.finalValuePower = 1.9f;            // [2.2]
     s.depthMipSamplingOffset = 3.30f;
     s.strength = 1.0f;
+    s.maxDistance = 0.0f;                // no limit
     s.denoiseBlurBeta = 1.2f;
     s.denoisePasses = 1;
     s.temporalHistory = kDefaultTemporalHistory;
@@ -64,6 +65,8 @@ void validateGtao(const gpu::GtaoSettings& s, const std::string& where) {
     check(s.finalValuePower >= 0.5f && s.finalValuePower <= 5.0f, where, "final_value_power", s.finalValuePower, "0.5 to 5");
     check(s.depthMipSamplingOffset >= 0.0f && s.depthMipSamplingOffset <= 30.0f, where, "depth_mip_offset",
           s.depthMipSamplingOffset, "0 to 30");
+    check(finite(s.maxDistance) && s.maxDistance >= 0.0f && s.maxDistance <= 1e7f, where, "max_distance",
+          s.maxDistance, "0 (no limit) to 1e7 world units");
     check(s.strength >= 0.0f && s.strength <= 1.0f, where, "strength", s.strength, "0 to 1");
     check(s.denoiseBlurBeta >= 0.0f && s.denoiseBlurBeta <= 10.0f, where, "denoise_blur_beta", s.denoiseBlurBeta, "0 to 10");
     check(s.sliceCount >= 1 && s.sliceCount <= 32, where, "slices", s.sliceCount, "1 to 32");
@@ -87,6 +90,7 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
     if (d.finalValuePower) s.finalValuePower = float(*d.finalValuePower);
     if (d.depthMipOffset) s.depthMipSamplingOffset = float(*d.depthMipOffset);
     if (d.strength) s.strength = float(*d.strength);
+    if (d.maxDistance) s.maxDistance = float(*d.maxDistance);
     if (d.denoiseBlurBeta) s.denoiseBlurBeta = float(*d.denoiseBlurBeta);
     if (d.slices) s.sliceCount = uint32_t(*d.slices);
     if (d.steps) s.stepsPerSlice = uint32_t(*d.steps);

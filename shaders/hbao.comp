@@ -21,7 +21,8 @@ layout(constant_id = 1) const uint specSteps = 3u;
 vec2 hbaoPixel(ivec2 pixel) {
     float z = gtaoDepth(pixel, 0);
     float edges = gtaoPixelEdges(pixel);
-    if (z >= kGtaoSky) return vec2(1.0f, edges);
+    float distanceFade = gtaoDistanceFade(z);
+    if (z >= kGtaoSky || distanceFade >= 1.0f) return vec2(1.0f, edges);
     vec3 normal = gtaoViewNormal(pixel);
     vec3 position = gtaoViewPosition(vec2(pixel), z);
     float radius = gtao.settings.radius, radius2 = radius * radius;
@@ -51,7 +52,7 @@ vec2 hbaoPixel(ivec2 pixel) {
         }
     }
     occlusion /= float(specDirections) * (1.0f - kHbaoSinBias);
-    return vec2(gtaoSaturate(1.0f - occlusion), edges);
+    return vec2(mix(gtaoSaturate(1.0f - occlusion), 1.0f, distanceFade), edges);
 }
 
 void main() {

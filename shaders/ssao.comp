@@ -15,7 +15,8 @@ layout(constant_id = 0) const uint specSamples = 32u;  // low 8, medium 16, high
 vec2 ssaoPixel(ivec2 pixel) {
     float z = gtaoDepth(pixel, 0);
     float edges = gtaoPixelEdges(pixel);
-    if (z >= kGtaoSky) return vec2(1.0f, edges);
+    float distanceFade = gtaoDistanceFade(z);
+    if (z >= kGtaoSky || distanceFade >= 1.0f) return vec2(1.0f, edges);
     vec3 normal = gtaoViewNormal(pixel);
     vec3 position = gtaoViewPosition(vec2(pixel), z);
     float radius = gtao.settings.radius;
@@ -49,7 +50,7 @@ vec2 ssaoPixel(ivec2 pixel) {
         float range = gtaoSaturate((radius - sqrt(dist2)) / (0.25f * radius) + 1.0f);
         occluded += scene.z > s.z ? above * range : 0.0f;
     }
-    return vec2(gtaoSaturate(1.0f - occluded / float(specSamples)), edges);
+    return vec2(mix(gtaoSaturate(1.0f - occluded / float(specSamples)), 1.0f, distanceFade), edges);
 }
 
 void main() {

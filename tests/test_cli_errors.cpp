@@ -240,10 +240,13 @@ TEST_F(CliErrors, NonsenseAoSettings) {
     expectRefused(render(good_) + " --thin-occluder 0.9", "--thin-occluder", out());
     expectRefused(render(good_) + " --denoise 9", "--denoise", out());
     expectRefused(render(good_) + " --quality extreme", "--quality", out());
+    expectRefused(render(good_) + " --max-distance -5", "--max-distance", out());
     const auto world = writeText("ao.json", R"({"grid": {"file": "good.vdb"}, "ao": {"thin_occluder": 0.9}})");
     expectRefused(render(world), "ao.thin_occluder", out());
     const auto preset = writeText("q.json", R"({"grid": {"file": "good.vdb"}, "ao": {"quality": "extreme"}})");
     expectRefused(render(preset), "ao.quality", out());
+    const auto far = writeText("far.json", R"({"grid": {"file": "good.vdb"}, "ao": {"max_distance": -5}})");
+    expectRefused(render(far), "ao.max_distance", out());
 }
 
 TEST_F(CliErrors, ShowWritesOneAovAsPng) {

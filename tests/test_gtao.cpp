@@ -7,6 +7,7 @@
 #include "tests/scenes.h"
 #include "tests/test_util.h"
 
+#include <algorithm>
 #include <cmath>
 #include <map>
 
@@ -251,6 +252,51 @@ TEST_F(Gtao, CompositeShadesWithTheAoItReports) {
         EXPECT_GT(occluded, 100);  // there is AO to get wrong
         EXPECT_LT(worst, 1e-5f) << (temporal ? "with" : "without") << " the temporal pass";
     }
+}
+
+TEST_F(Gtao, MaxDistanceFadesAoOutOverItsLastTenth) {
+    // Nearer than 0.9 D the AO is untouched, beyond D it is open, and in between it
+    // is the linear blend towards open; the CPU twin agrees, with the search skipped.
+    const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
+    AoOptions unlimited = options("high");
+    const Rendered a = render(world, world.camera("table"), 160, 90, unlimited);
+    const glm::uvec2 half = a.constants.halfSize;
+    auto depthAt = [&](uint32_t x, uint32_t y) { return a.img.depth[size_t(2 * y) * a.img.width + 2 * x]; };
+    std::vector<float> depths;
+    for (uint32_t y = 0; y < half.y; ++y)
+        for (uint32_t x = 0; x < half.x; ++x)
+            if (std::isfinite(depthAt(x, y))) depths.push_back(depthAt(x, y));
+    std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
+    AoOptions limited = unlimited;
+    limited.gtao.maxDistance = depths[depths.size() / 2];  // half the surface pixels lie beyond
+    const float d = limited.gtao.maxDistance;
+    const Rendered b = render(world, world.camera("table"), 160, 90, limited);
+    const GtaoTwin twin(b.constants, b.img.depthBuffer, b.img.surfaceIds);
+    int nearer = 0, fading = 0, beyond = 0, occludedNearer = 0;
+    for (uint32_t y = 0; y < half.y; ++y)
+        for (uint32_t x = 0; x < half.x; ++x) {
+            const float z = depthAt(x, y);
+            if (!std::isfinite(z)) continue;
+            const size_t i = 2 * (size_t(y) * half.x + x);
+            const float va = a.img.aoRawHalf[i], vb = b.img.aoRawHalf[i];
+            EXPECT_EQ(a.img.aoRawHalf[i + 1], b.img.aoRawHalf[i + 1]) << "edges do not fade, pixel " << x << "," << y;
+            if (z <= 0.9f * d) {
+                EXPECT_EQ(vb, va) << "pixel " << x << "," << y << " at " << z << " of " << d;
+                ++nearer, occludedNearer += va < 0.9f;
+            } else if (z >= d) {
+                EXPECT_EQ(vb, 1.0f) << "pixel " << x << "," << y << " at " << z << " of " << d;
+                ++beyond;
+            } else {
+                const float fade = (z - 0.9f * d) / (0.1f * d);
+                EXPECT_NEAR(vb, va + (1.0f - va) * fade, 1e-5f) << "pixel " << x << "," << y;
+                ++fading;
+            }
+            if ((x + y) % 5 == 0) EXPECT_NEAR(twin.pixel(glm::ivec2(x, y)).x, vb, 1e-3f) << "twin at " << x << "," << y;
+        }
+    EXPECT_GT(nearer, 300);
+    EXPECT_GT(occludedNearer, 20);  // there is AO the limit must not touch
+    EXPECT_GT(beyond, 300);
+    EXPECT_GT(fading, 20);
 }
 
 TEST_F(Gtao, CompositeTakesMaterialAoAndLeavesTheSunAlone) {

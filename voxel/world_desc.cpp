@@ -103,6 +103,7 @@ void parseAo(Reader r, AoDesc& ao) {
     opt("final_value_power", ao.finalValuePower, 0.5, 5.0);
     opt("depth_mip_offset", ao.depthMipOffset, 0.0, 30.0);
     opt("strength", ao.strength, 0.0, 1.0);
+    opt("max_distance", ao.maxDistance, 0.0, 1e7);
     opt("denoise_blur_beta", ao.denoiseBlurBeta, 0.0, 10.0);
     optInt("slices", ao.slices, 1, 32);
     optInt("steps", ao.steps, 1, 32);

@@ -52,7 +52,7 @@ struct AoDesc {
     std::string method = "gtao";   // gtao, ssao, hbao (baselines) or off
     std::string quality = "high";  // low, medium, high, ultra, custom
     std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
-        finalValuePower, depthMipOffset, strength, denoiseBlurBeta;
+        finalValuePower, depthMipOffset, strength, denoiseBlurBeta, maxDistance;
     std::optional<int> slices, steps, denoisePasses, temporalHistory;
 };
 

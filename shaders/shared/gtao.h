@@ -25,7 +25,9 @@ struct GtaoSettings {
     uint stepsPerSlice;             // steps per side: low 2, medium 2, high 3, ultra 3 (1 .. 32)
     uint denoisePasses;             // 1 (0 .. 4): edge-aware spatial blur passes
     uint temporalHistory;           // 16 (0 .. 64): most frames the temporal pass averages; 0 = no temporal pass
-    uint pad0, pad1, pad2;
+    float maxDistance;              // 0 (0 .. 1e7): view depth, world units, where AO has faded out over the
+                                    // last tenth; farther pixels skip the search. 0 = no limit
+    uint pad1, pad2;
 };
 GROTTO_STATIC_ASSERT(sizeof(GtaoSettings) == 64);
 

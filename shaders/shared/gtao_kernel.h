@@ -144,6 +144,13 @@ float gtaoPixelEdges(ivec2 pixel) {
     return gtaoPackEdges(gtaoEdges(z, zl, zr, zt, zb));
 }
 
+// How far the max distance fades AO out at view depth z: 0 = full AO, 1 = open.
+// The fade spans the last tenth of the distance so no line shows where AO stops.
+float gtaoDistanceFade(float z) {
+    float d = gtao.settings.maxDistance;
+    return d > 0.0f ? gtaoSaturate((z - 0.9f * d) / (0.1f * d)) : 0.0f;
+}
+
 // The view-space normal of an AO pixel's surface (its full-res pixel's face).
 vec3 gtaoViewNormal(ivec2 pixel) {
     return vec3(gtao.viewNormals[surfaceFace(gtaoSurface(pixel * int(gtao.scale)))]);
@@ -155,7 +162,8 @@ vec2 gtaoPixel(ivec2 pixel) {
     ivec2 last = ivec2(gtao.halfSize) - 1;
     float z = gtaoDepth(pixel, 0);
     float edges = gtaoPixelEdges(pixel);
-    if (z >= kGtaoSky) return vec2(1.0f, edges);
+    float distanceFade = gtaoDistanceFade(z);
+    if (z >= kGtaoSky || distanceFade >= 1.0f) return vec2(1.0f, edges);
 
     vec3 normal = gtaoViewNormal(pixel);
     vec3 position = gtaoViewPosition(vec2(pixel), z);
@@ -251,6 +259,6 @@ vec2 gtaoPixel(ivec2 pixel) {
     // few slices swings between 0.77 and 1.21 per slice 40 degrees off-axis.) The
     // small-radius fade is added once, not per slice, so no preset dilutes it.
     visibility = gtaoSaturate(visible / max(unoccluded, 1e-6f) + visibility);
-    visibility = pow(visibility, s.finalValuePower);
-    return vec2(max(visibility, 0.03f), edges);
+    visibility = max(pow(visibility, s.finalValuePower), 0.03f);
+    return vec2(mix(visibility, 1.0f, distanceFade), edges);
 }
