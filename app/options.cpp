@@ -31,13 +31,25 @@ FrameRange parseFrameRange(const std::string& text, int count, const std::string
 void addAoFlags(CLI::App* cmd, AoFlags& f) {
     cmd->add_option("--ao", f.method, "Ambient occlusion: gtao, ssao, hbao (baselines) or off (default: the world's, else gtao)")
         ->check(CLI::IsMember({"gtao", "ssao", "hbao", "off"}));
-    cmd->add_option("--quality", f.quality, "Preset: low, medium, high, ultra (SSAO: 8, 16, 32, 64 samples)")
-        ->check(CLI::IsMember({"low", "medium", "high", "ultra"}));
-    cmd->add_option("--radius", f.radius, "AO radius in world units (> 0)");
-    cmd->add_option("--thin-occluder", f.thinOccluder, "Thin-occluder compensation, 0 to 0.7");
-    cmd->add_option("--max-distance", f.maxDistance, "View depth where AO has faded out, world units (0 = no limit)");
-    cmd->add_option("--denoise", f.denoise, "Spatial denoise passes, 0 to 4");
-    cmd->add_option("--temporal", f.temporal, "Most frames the temporal pass averages, 0 (off) to 64");
+    cmd->add_option("--quality", f.quality,
+                    "Preset: low, medium, high, ultra (SSAO: 8, 16, 32, 64 samples), or custom (high's, with --slices, --steps)")
+        ->check(CLI::IsMember({"low", "medium", "high", "ultra", "custom"}));
+    voxel::AoDesc& d = f.set;
+    // Ranges and defaults: shaders/shared/gtao.h; out-of-range values exit 2 naming the flag.
+    cmd->add_option("--radius", d.radius, "AO radius in world units (> 0)");
+    cmd->add_option("--thin-occluder", d.thinOccluder, "Thin-occluder compensation, 0 to 0.7");
+    cmd->add_option("--max-distance", d.maxDistance, "View depth where AO has faded out, world units (0 = no limit)");
+    cmd->add_option("--slices", d.slices, "GTAO slices per pixel, 1 to 32 (makes the quality custom)");
+    cmd->add_option("--steps", d.steps, "GTAO steps per side of a slice, 1 to 32 (makes the quality custom)");
+    cmd->add_option("--radius-multiplier", d.radiusMultiplier, "Screen-space radius compensation, 0.3 to 3");
+    cmd->add_option("--falloff-range", d.falloffRange, "Fraction of the radius over which occluders fade, 0 to 1");
+    cmd->add_option("--sample-distribution-power", d.sampleDistributionPower, "Step spacing power, 1 to 3");
+    cmd->add_option("--final-value-power", d.finalValuePower, "Contrast of the final visibility, 0.5 to 5");
+    cmd->add_option("--depth-mip-offset", d.depthMipOffset, "Higher = coarser depth MIPs later, 0 to 30");
+    cmd->add_option("--strength", d.strength, "AO strength in the composite, 0 (none) to 1");
+    cmd->add_option("--denoise", d.denoisePasses, "Spatial denoise passes, 0 to 4");
+    cmd->add_option("--denoise-blur-beta", d.denoiseBlurBeta, "Centre weight of the denoise blur, 0 to 10");
+    cmd->add_option("--temporal", d.temporalHistory, "Most frames the temporal pass averages, 0 (off) to 64");
     cmd->add_flag("--ao-full-res", f.fullResolution, "Run the AO chain at full instead of half resolution");
 }
 
@@ -52,26 +64,18 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
     }
     AoOptions o = aoOptionsFor(desc, world.voxelSize(), world.desc().source.string());
     o.fullResolution = f.fullResolution;
-    if (f.radius) o.gtao.radius = float(*f.radius);
-    if (f.thinOccluder) o.gtao.thinOccluderCompensation = float(*f.thinOccluder);
-    if (f.maxDistance) {
-        if (!(*f.maxDistance >= 0.0 && *f.maxDistance <= 1e7))
-            throw Error("--max-distance", std::to_string(*f.maxDistance) + " is out of range", "accepted: 0 (no limit) to 1e7 world units");
-        o.gtao.maxDistance = float(*f.maxDistance);
-    }
-    if (f.denoise) {
-        if (*f.denoise < 0 || *f.denoise > 4) throw Error("--denoise", std::to_string(*f.denoise) + " is out of range", "accepted: 0 to 4");
-        o.gtao.denoisePasses = uint32_t(*f.denoise);
-    }
-    if (f.temporal) {
-        if (*f.temporal < 0 || *f.temporal > 64) throw Error("--temporal", std::to_string(*f.temporal) + " is out of range", "accepted: 0 (off) to 64");
-        o.gtao.temporalHistory = uint32_t(*f.temporal);
-    }
-    if (f.radius && !(*f.radius > 0.0 && *f.radius <= 1e6))
-        throw Error("--radius", std::to_string(*f.radius) + " is out of range", "accepted: > 0 world units");
-    if (f.thinOccluder && !(*f.thinOccluder >= 0.0 && *f.thinOccluder <= 0.7))
-        throw Error("--thin-occluder", std::to_string(*f.thinOccluder) + " is out of range", "accepted: 0 to 0.7");
-    validateGtao(o.gtao, "command line");
+    // Negative counts would wrap in the unsigned settings, so they are refused here.
+    struct Count {
+        const std::optional<int>& value;
+        const char *flag, *range;
+    };
+    for (const Count& c : {Count{f.set.slices, "--slices", "1 to 32"}, Count{f.set.steps, "--steps", "1 to 32"},
+                           Count{f.set.denoisePasses, "--denoise", "0 to 4"}, Count{f.set.temporalHistory, "--temporal", "0 (off) to 64"}})
+        if (c.value && *c.value < 0)
+            throw Error(c.flag, std::to_string(*c.value) + " is out of range", std::string("accepted: ") + c.range);
+    applyAoOverrides(f.set, o.gtao);
+    if (f.set.slices || f.set.steps) o.quality = "custom";
+    validateGtao(o.gtao, kCommandLine);
     return o;
 }
 

@@ -34,8 +34,7 @@ voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::strin
 // The AO flags every rendering subcommand takes; unset ones keep the world's values.
 struct AoFlags {
     std::string method, quality;
-    std::optional<double> radius, thinOccluder, maxDistance;
-    std::optional<int> denoise, temporal;
+    voxel::AoDesc set;  // the settings given, each flag named after its world-file key
     bool fullResolution = false;
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);

@@ -26,7 +26,7 @@ void addReferenceCommand(CLI::App& app) {
     cmd->add_option("--size", args->size, "Image size WxH")->required();
     cmd->add_option("--spp", args->spp, "Rays per pixel (>= 1; 10000 keeps every standard error below 0.005)")
         ->required();
-    cmd->add_option("--radius", args->ao.radius, "AO radius R in world units (default: the world's GTAO radius)");
+    cmd->add_option("--radius", args->ao.set.radius, "AO radius R in world units (default: the world's GTAO radius)");
     cmd->add_option("-o,--output", args->output, "Output .exr")->required();
     cmd->callback([args] {
         const Size size = parseSize(args->size);

@@ -141,7 +141,7 @@ void addTradeoffCommand(CLI::App& app) {
                 AoFlags flags;
                 flags.method = s.method == "gtao+temporal" ? "gtao" : s.method;
                 flags.quality = s.quality;
-                flags.temporal = s.temporal;
+                flags.set.temporalHistory = s.temporal;
                 const AoOptions ao = resolveAo(world, flags);
                 const int frames = std::max(args->warmup + args->frames, s.temporal ? kTemporalFrames : 0);
                 Row row{name, s.method, s.quality, measureAo(ctx, *scene, world, camera, ao, ref, frames, args->warmup)};

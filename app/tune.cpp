@@ -63,7 +63,7 @@ void addTuneCommand(CLI::App& app) {
         AoFlags flags;
         flags.method = "gtao";
         flags.quality = args->quality;
-        flags.temporal = 0;
+        flags.set.temporalHistory = 0;
         // Each world keeps its own radius; the four heuristics are shared.
         std::vector<AoOptions> base;
         for (const Target& t : targets) base.push_back(resolveAo(*t.world, flags));

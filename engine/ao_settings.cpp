@@ -2,7 +2,9 @@
 
 #include "common/error.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace grotto {
 
@@ -45,44 +47,47 @@ gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius) {
     return s;
 }
 
-namespace {
-void check(bool ok, const std::string& where, const std::string& name, double value, const char* range) {
-    if (!ok)
-        throw Error(where, "AO setting '" + name + "' = " + std::to_string(value) + " is out of range",
-                    std::string("accepted: ") + range);
+std::string aoFlagName(const std::string& setting) {
+    if (setting == "temporal_history") return "--temporal";
+    std::string flag = "--" + setting;
+    std::replace(flag.begin(), flag.end(), '_', '-');
+    return flag;
 }
-}  // namespace
 
 void validateGtao(const gpu::GtaoSettings& s, const std::string& where) {
+    // From the command line the error names the flag; from a file, file and setting.
+    const bool flags = where == kCommandLine;
+    auto check = [&](bool ok, const char* name, double value, const char* range) {
+        if (ok) return;
+        const std::string accepted = std::string("accepted: ") + range;
+        char text[32];
+        std::snprintf(text, sizeof text, "%g", value);
+        if (flags) throw Error(aoFlagName(name), std::string(text) + " is out of range", accepted);
+        throw Error(where, "AO setting '" + std::string(name) + "' = " + text + " is out of range", accepted);
+    };
     auto finite = [](double v) { return std::isfinite(v); };
-    check(finite(s.radius) && s.radius > 0 && s.radius <= 1e6, where, "radius", s.radius, "> 0 world units");
-    check(s.radiusMultiplier >= 0.3f && s.radiusMultiplier <= 3.0f, where, "radius_multiplier", s.radiusMultiplier, "0.3 to 3");
-    check(s.falloffRange >= 0.0f && s.falloffRange <= 1.0f, where, "falloff_range", s.falloffRange, "0 to 1");
-    check(s.sampleDistributionPower >= 1.0f && s.sampleDistributionPower <= 3.0f, where, "sample_distribution_power",
+    check(finite(s.radius) && s.radius > 0 && s.radius <= 1e6, "radius", s.radius, "> 0 world units");
+    check(s.radiusMultiplier >= 0.3f && s.radiusMultiplier <= 3.0f, "radius_multiplier", s.radiusMultiplier, "0.3 to 3");
+    check(s.falloffRange >= 0.0f && s.falloffRange <= 1.0f, "falloff_range", s.falloffRange, "0 to 1");
+    check(s.sampleDistributionPower >= 1.0f && s.sampleDistributionPower <= 3.0f, "sample_distribution_power",
           s.sampleDistributionPower, "1 to 3");
-    check(s.thinOccluderCompensation >= 0.0f && s.thinOccluderCompensation <= 0.7f, where, "thin_occluder",
+    check(s.thinOccluderCompensation >= 0.0f && s.thinOccluderCompensation <= 0.7f, "thin_occluder",
           s.thinOccluderCompensation, "0 to 0.7");
-    check(s.finalValuePower >= 0.5f && s.finalValuePower <= 5.0f, where, "final_value_power", s.finalValuePower, "0.5 to 5");
-    check(s.depthMipSamplingOffset >= 0.0f && s.depthMipSamplingOffset <= 30.0f, where, "depth_mip_offset",
+    check(s.finalValuePower >= 0.5f && s.finalValuePower <= 5.0f, "final_value_power", s.finalValuePower, "0.5 to 5");
+    check(s.depthMipSamplingOffset >= 0.0f && s.depthMipSamplingOffset <= 30.0f, "depth_mip_offset",
           s.depthMipSamplingOffset, "0 to 30");
-    check(finite(s.maxDistance) && s.maxDistance >= 0.0f && s.maxDistance <= 1e7f, where, "max_distance",
+    check(finite(s.maxDistance) && s.maxDistance >= 0.0f && s.maxDistance <= 1e7f, "max_distance",
           s.maxDistance, "0 (no limit) to 1e7 world units");
-    check(s.strength >= 0.0f && s.strength <= 1.0f, where, "strength", s.strength, "0 to 1");
-    check(s.denoiseBlurBeta >= 0.0f && s.denoiseBlurBeta <= 10.0f, where, "denoise_blur_beta", s.denoiseBlurBeta, "0 to 10");
-    check(s.sliceCount >= 1 && s.sliceCount <= 32, where, "slices", s.sliceCount, "1 to 32");
-    check(s.stepsPerSlice >= 1 && s.stepsPerSlice <= 32, where, "steps", s.stepsPerSlice, "1 to 32");
-    check(s.denoisePasses <= 4, where, "denoise", s.denoisePasses, "0 to 4");
-    check(s.temporalHistory <= 64, where, "temporal_history", s.temporalHistory, "0 to 64");
+    check(s.strength >= 0.0f && s.strength <= 1.0f, "strength", s.strength, "0 to 1");
+    check(s.denoiseBlurBeta >= 0.0f && s.denoiseBlurBeta <= 10.0f, "denoise_blur_beta", s.denoiseBlurBeta, "0 to 10");
+    check(s.sliceCount >= 1 && s.sliceCount <= 32, "slices", s.sliceCount, "1 to 32");
+    check(s.stepsPerSlice >= 1 && s.stepsPerSlice <= 32, "steps", s.stepsPerSlice, "1 to 32");
+    check(s.denoisePasses <= 4, "denoise", s.denoisePasses, "0 to 4");
+    check(s.temporalHistory <= 64, "temporal_history", s.temporalHistory, "0 to 64");
 }
 
-AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::string& where) {
-    AoOptions o;
-    o.enabled = d.method != "off";
-    if (o.enabled) o.method = parseAoMethod(d.method, where);
-    o.quality = d.quality;
-    o.ssaoSamples = d.quality == "low" ? 8 : d.quality == "medium" ? 16 : d.quality == "ultra" ? 64 : 32;
-    o.gtao = gtaoPreset(d.quality, d.radius ? *d.radius : 4.0 * voxelSize);
-    gpu::GtaoSettings& s = o.gtao;
+void applyAoOverrides(const voxel::AoDesc& d, gpu::GtaoSettings& s) {
+    if (d.radius) s.radius = float(*d.radius);
     if (d.radiusMultiplier) s.radiusMultiplier = float(*d.radiusMultiplier);
     if (d.falloffRange) s.falloffRange = float(*d.falloffRange);
     if (d.sampleDistributionPower) s.sampleDistributionPower = float(*d.sampleDistributionPower);
@@ -96,7 +101,17 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
     if (d.steps) s.stepsPerSlice = uint32_t(*d.steps);
     if (d.denoisePasses) s.denoisePasses = uint32_t(*d.denoisePasses);
     if (d.temporalHistory) s.temporalHistory = uint32_t(*d.temporalHistory);
-    validateGtao(s, where);
+}
+
+AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::string& where) {
+    AoOptions o;
+    o.enabled = d.method != "off";
+    if (o.enabled) o.method = parseAoMethod(d.method, where);
+    o.quality = d.quality;
+    o.ssaoSamples = d.quality == "low" ? 8 : d.quality == "medium" ? 16 : d.quality == "ultra" ? 64 : 32;
+    o.gtao = gtaoPreset(d.quality, d.radius ? *d.radius : 4.0 * voxelSize);
+    applyAoOverrides(d, o.gtao);
+    validateGtao(o.gtao, where);
     return o;
 }
 

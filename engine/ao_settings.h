@@ -36,10 +36,18 @@ inline constexpr uint32_t kDefaultTemporalHistory = 16;
 // with the preset's slices and steps; radius in world units.
 gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius);
 
+// The settings `desc` sets, over those in `s` (unset ones stay); unchecked.
+void applyAoOverrides(const voxel::AoDesc& desc, gpu::GtaoSettings& s);
+
 // Preset and values from the world file; throws grotto::Error naming `where`.
 AoOptions aoOptionsFor(const voxel::AoDesc& desc, double voxelSize, const std::string& where);
 
-// Throws grotto::Error (input) naming the setting and its accepted range.
+// Throws grotto::Error (input) naming the setting and its accepted range: as
+// `where`'s field, or as its flag when `where` is kCommandLine.
+inline const std::string kCommandLine = "command line";
 void validateGtao(const gpu::GtaoSettings& s, const std::string& where);
+
+// The command-line flag of a world-file AO setting: radius_multiplier -> --radius-multiplier.
+std::string aoFlagName(const std::string& setting);
 
 }  // namespace grotto

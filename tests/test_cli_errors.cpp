@@ -241,6 +241,9 @@ TEST_F(CliErrors, NonsenseAoSettings) {
     expectRefused(render(good_) + " --denoise 9", "--denoise", out());
     expectRefused(render(good_) + " --quality extreme", "--quality", out());
     expectRefused(render(good_) + " --max-distance -5", "--max-distance", out());
+    expectRefused(render(good_) + " --radius-multiplier 9", "--radius-multiplier", out());
+    expectRefused(render(good_) + " --quality custom --slices 0", "--slices", out());
+    expectRefused(render(good_) + " --temporal -1", "--temporal", out());
     const auto world = writeText("ao.json", R"({"grid": {"file": "good.vdb"}, "ao": {"thin_occluder": 0.9}})");
     expectRefused(render(world), "ao.thin_occluder", out());
     const auto preset = writeText("q.json", R"({"grid": {"file": "good.vdb"}, "ao": {"quality": "extreme"}})");
