@@ -23,7 +23,7 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("world", args->world, "World .json or .vdb")->required();
     cmd->add_option("--camera", args->camera, "Named camera from the world file (default: its default)");
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
-    cmd->add_flag("--aov", args->aov, "EXR only: also write Z, N.xyz and albedo.RGB channels");
+    cmd->add_flag("--aov", args->aov, "EXR only: also write Z, N.xyz, albedo.RGB, AO, AO_raw, AO_spatial, edges (and AO_temporal, AO_history with the temporal pass)");
     cmd->add_option("-o,--output", args->output, "Output .png or .exr")->required();
     cmd->add_option("--show", args->show, "PNG only: write one AOV instead of colour (ao, normal, depth, edges)")
         ->check(CLI::IsMember({"ao", "normal", "depth", "edges"}));

@@ -8,10 +8,12 @@
 #include "common/error.h"
 #include "engine/reference_view.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <tuple>
 
 namespace grotto::app {
 namespace {
@@ -22,15 +24,17 @@ struct Row {
 };
 
 // Every setting measured: the baselines and GTAO without temporal accumulation,
-// then GTAO high with it, after enough static frames to fill its history.
+// then GTAO high with it, after enough static frames to fill its history. SSAO's
+// presets are labelled by their sample counts.
 struct Setting {
-    std::string method, quality;
+    std::string method, quality, label;
     int temporal;
 };
 const std::vector<Setting> kSettings = {
-    {"ssao", "low", 0},  {"ssao", "medium", 0}, {"ssao", "high", 0},  {"hbao", "low", 0},
-    {"hbao", "medium", 0}, {"hbao", "high", 0}, {"hbao", "ultra", 0}, {"gtao", "low", 0},
-    {"gtao", "medium", 0}, {"gtao", "high", 0}, {"gtao", "ultra", 0}, {"gtao+temporal", "high", 16},
+    {"ssao", "low", "8", 0},        {"ssao", "medium", "16", 0},    {"ssao", "high", "32", 0},
+    {"hbao", "low", "low", 0},      {"hbao", "medium", "medium", 0}, {"hbao", "high", "high", 0},
+    {"hbao", "ultra", "ultra", 0},  {"gtao", "low", "low", 0},      {"gtao", "medium", "medium", 0},
+    {"gtao", "high", "high", 0},    {"gtao", "ultra", "ultra", 0},  {"gtao+temporal", "high", "high", 16},
 };
 constexpr int kTemporalFrames = 32;
 
@@ -54,13 +58,34 @@ void writeCsv(const std::filesystem::path& file, const std::vector<Row>& rows) {
     });
 }
 
+// The rows as a Markdown table, for docs/tradeoff.md (scripts/tradeoff.sh splices it in).
+void writeMarkdown(const std::filesystem::path& file, const std::vector<Row>& rows) {
+    writeAtomically(file, [&](const std::filesystem::path& tmp) {
+        std::ofstream out(tmp);
+        out << "| world | method | quality | ms_ao | ms_frame | MAE | RMSE | PSNR dB | bias |\n"
+               "|---|---|---|---|---|---|---|---|---|\n";
+        char line[256];
+        for (const Row& r : rows) {
+            std::snprintf(line, sizeof line, "| %s | %s | %s | %.2f | %.2f | %.4f | %.4f | %.2f | %+.4f |\n",
+                          r.world.c_str(), r.method.c_str(), r.quality.c_str(), r.m.msAo, r.m.msFrame, r.m.error.mae,
+                          r.m.error.rmse, r.m.error.psnr, r.m.error.bias);
+            out << line;
+        }
+        out.close();
+        if (!out) throw Error(file.string(), "write failed", "is the disk full?");
+    });
+}
+
 // RMSE against AO-chain time, both averaged over the worlds, one line per method
 // through its presets: the Pareto view. Drawn by gnuplot, into a temporary file.
 void writePlot(const std::filesystem::path& file, const std::vector<Row>& rows, size_t worlds) {
-    std::map<std::string, std::map<std::string, std::pair<double, double>>> mean;  // method -> quality -> (ms, rmse)
+    // method -> its presets in measuring order, each (label, ms, rmse)
+    std::map<std::string, std::vector<std::tuple<std::string, double, double>>> mean;
     for (const Row& r : rows) {
-        auto& p = mean[r.method][r.quality];
-        p.first += r.m.msAo / worlds, p.second += r.m.error.rmse / worlds;
+        auto& presets = mean[r.method];
+        auto it = std::find_if(presets.begin(), presets.end(), [&](auto& p) { return std::get<0>(p) == r.quality; });
+        if (it == presets.end()) it = presets.insert(presets.end(), {r.quality, 0.0, 0.0});
+        std::get<1>(*it) += r.m.msAo / worlds, std::get<2>(*it) += r.m.error.rmse / worlds;
     }
     writeAtomically(file, [&](const std::filesystem::path& tmp) {
         std::string script = "set terminal pngcairo size 900,600\nset output '" + tmp.string() + "'\n"
@@ -71,9 +96,8 @@ void writePlot(const std::filesystem::path& file, const std::vector<Row>& rows, 
         int index = 0;
         for (const auto& [method, presets] : mean) {
             data += "$m" + std::to_string(index) + " << EOD\n";
-            for (const char* q : {"low", "medium", "high", "ultra"})
-                if (auto it = presets.find(q); it != presets.end())
-                    data += std::to_string(it->second.first) + " " + std::to_string(it->second.second) + " " + q + "\n";
+            for (const auto& [label, ms, rmse] : presets)
+                data += std::to_string(ms) + " " + std::to_string(rmse) + " " + label + "\n";
             data += "EOD\n";
             plot += std::string(index ? "," : "") + " $m" + std::to_string(index) + " using 1:2 with linespoints pt 7 title '" +
                     method + "', $m" + std::to_string(index) + " using 1:2:3 with labels offset 1,0.6 font ',8' notitle";
@@ -92,7 +116,7 @@ void writePlot(const std::filesystem::path& file, const std::vector<Row>& rows, 
 void addTradeoffCommand(CLI::App& app) {
     struct Args {
         std::vector<std::string> worlds;
-        std::string camera, size = "640x360", csv, plot;
+        std::string camera, size = "640x360", csv, plot, markdown;
         int64_t spp = 1024;
         int frames = 5, warmup = 2;
     };
@@ -107,12 +131,14 @@ void addTradeoffCommand(CLI::App& app) {
     cmd->add_option("--warmup", args->warmup, "Frames not timed")->capture_default_str()->check(CLI::Range(0, 1000));
     cmd->add_option("--csv", args->csv, "Output CSV")->required();
     cmd->add_option("--plot", args->plot, "Also draw error against cost to this PNG (needs gnuplot)");
+    cmd->add_option("--markdown", args->markdown, "Also write the rows as a Markdown table to this file");
     cmd->callback([args] {
         const Size size = parseSize(args->size);
         if (args->spp < 1 || args->spp > (int64_t(1) << 24))
             throw Error("--spp", std::to_string(args->spp) + " is out of range", "accepted: 1 to 16777216 rays per pixel");
         // Everything that can be refused is refused before minutes of rendering.
         requireWritableDirectory(args->csv);
+        if (!args->markdown.empty()) requireWritableDirectory(args->markdown);
         if (!args->plot.empty()) {
             if (std::filesystem::path(args->plot).extension() != ".png")
                 throw Error(args->plot, "the plot is written as PNG", "name a .png file");
@@ -144,7 +170,7 @@ void addTradeoffCommand(CLI::App& app) {
                 flags.set.temporalHistory = s.temporal;
                 const AoOptions ao = resolveAo(world, flags);
                 const int frames = std::max(args->warmup + args->frames, s.temporal ? kTemporalFrames : 0);
-                Row row{name, s.method, s.quality, measureAo(ctx, *scene, world, camera, ao, ref, frames, args->warmup)};
+                Row row{name, s.method, s.label, measureAo(ctx, *scene, world, camera, ao, ref, frames, args->warmup)};
                 std::printf("  %-14s %-6s ao %7.2f ms  frame %7.2f ms  mae %.4f  rmse %.4f  psnr %6.2f dB  bias %+.4f\n",
                             row.method.c_str(), row.quality.c_str(), row.m.msAo, row.m.msFrame, row.m.error.mae,
                             row.m.error.rmse, row.m.error.psnr, row.m.error.bias);
@@ -155,6 +181,10 @@ void addTradeoffCommand(CLI::App& app) {
         requireNoValidationMessages(ctx);
         writeCsv(args->csv, rows);
         std::printf("wrote %s (%zu rows)\n", args->csv.c_str(), rows.size());
+        if (!args->markdown.empty()) {
+            writeMarkdown(args->markdown, rows);
+            std::printf("wrote %s\n", args->markdown.c_str());
+        }
         if (!args->plot.empty()) {
             writePlot(args->plot, rows, worlds.size());
             std::printf("wrote %s\n", args->plot.c_str());

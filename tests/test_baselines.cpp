@@ -112,12 +112,16 @@ protected:
 
 TEST_F(AgainstReference, GtaoOnAnOpenFloorIsWithinAHundredthOfTheReference) {
     const voxel::World floor = openFloor();
-    for (double degrees : {0.0, 60.0, 85.0}) {
+    for (double degrees : {0.0, 60.0, 85.0, 89.5}) {
         const Camera camera = floorCamera(degrees, 160, 90);
         const ReferenceView ref = referenceView(floor, camera, 4.0, 64, &ctx());
-        const AoError e = aoError(render(floor, camera, options(AoMethod::Gtao, "high")).ao, ref.ao, ref.surface);
+        const std::vector<float> ao = render(floor, camera, options(AoMethod::Gtao, "high")).ao;
+        const AoError e = aoError(ao, ref.ao, ref.surface);
         EXPECT_GT(e.pixels, 1000u) << degrees;
-        EXPECT_LT(e.mae, 0.01) << degrees << " degrees";
+        float worst = 0.0f;  // every pixel, not only the mean
+        for (size_t i = 0; i < ao.size(); ++i)
+            if (ref.surface[i]) worst = std::max(worst, std::abs(ao[i] - ref.ao[i]));
+        EXPECT_LT(worst, 0.01f) << degrees << " degrees";
         EXPECT_LT(std::abs(e.bias), 0.01) << degrees << " degrees";
     }
 }
@@ -133,7 +137,7 @@ TEST_F(AgainstReference, GtaoHighOnRoomsKeepsItsPsnr) {
                               ref.ao, ref.surface);
     RecordProperty("psnr", std::to_string(e.psnr));
     std::printf("rooms 160x90 GTAO high: psnr %.2f dB, rmse %.4f, bias %+.4f\n", e.psnr, e.rmse, e.bias);
-    EXPECT_GT(e.psnr, 20.0);
+    EXPECT_GT(e.psnr, 21.5);  // measured 22.04 dB
 }
 
 }  // namespace

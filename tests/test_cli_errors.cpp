@@ -407,9 +407,10 @@ TEST_F(CliErrors, UnknownAoMethodAndTradeoffNonsense) {
 TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
     const auto world = writeText("cam.json", R"({"grid": {"file": "good.vdb"},
         "cameras": {"c": {"position": [30, 12, 30], "target": [8, 0, 8]}}})");
-    const fs::path csv = dir_ / "t.csv";
+    const fs::path csv = dir_ / "t.csv", markdown = dir_ / "t.md";
     const test::RunResult r = runGrotto("tradeoff " + world.string() + " --size 32x24 --spp 64 --frames 1 --warmup 0 --csv " +
-                                            csv.string(), "GROTTO_CACHE_DIR=" + (dir_ / "cache").string());
+                                            csv.string() + " --markdown " + markdown.string(),
+                                        "GROTTO_CACHE_DIR=" + (dir_ / "cache").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     std::ifstream in(csv);
     std::string line;
@@ -422,6 +423,14 @@ TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
         EXPECT_EQ(std::count(line.begin(), line.end(), ','), 8) << line;
     }
     EXPECT_EQ(rows, 12);  // ssao x3, hbao x4, gtao x4, gtao+temporal
+    // The same rows as a Markdown table (header, rule, 12 rows), SSAO by sample count.
+    std::ifstream md(markdown);
+    std::vector<std::string> table;
+    while (std::getline(md, line)) table.push_back(line);
+    ASSERT_EQ(table.size(), 14u);
+    EXPECT_EQ(table[0].rfind("| world | method | quality |", 0), 0u);
+    EXPECT_EQ(table[2].rfind("| cam | ssao | 8 |", 0), 0u) << table[2];
+    EXPECT_EQ(table[13].rfind("| cam | gtao+temporal | high |", 0), 0u) << table[13];
 }
 
 }  // namespace
