@@ -50,6 +50,7 @@ json pathJson(const voxel::CameraPathDesc& p) {
         if (k.target) key["target"] = {k.target->x, k.target->y, k.target->z};
         if (k.rotation) key["quaternion"] = {k.rotation->x, k.rotation->y, k.rotation->z, k.rotation->w};
         if (k.fovDegrees) key["fov"] = *k.fovDegrees;
+        if (k.cut) key["cut"] = true;
         keys.push_back(key);
     }
     json j = {{"keys", keys}, {"constant_speed", p.constantSpeed}};
@@ -172,6 +173,7 @@ void addFlythroughCommand(CLI::App& app) {
             for (int i = start; i <= end; ++i) {
                 const double time = double(i - 1) / args->fps;
                 const Camera camera = path.camera(time, size.width, size.height);
+                if (i > start && path.shotAt(time) != path.shotAt(double(i - 2) / args->fps)) renderer.resetHistory();
                 const FrameStats stats = renderer.render(camera, uint32_t(i));
                 const bool write = std::binary_search(missing.begin(), missing.end(), i);
                 if (write) {

@@ -10,18 +10,34 @@ constexpr int kArcSamples = 128;  // per segment; polyline error ~ (curvature * 
 }
 
 CameraPath::CameraPath(const voxel::CameraPathDesc& desc, const voxel::CameraDesc& defaults)
-    : constantSpeed_(desc.constantSpeed),
+    : duration_(desc.keys.back().time),
       nearPlane_(desc.nearPlane.value_or(defaults.nearPlane)),
       farPlane_(desc.farPlane.value_or(defaults.farPlane)) {
+    const std::span<const voxel::PathKey> keys(desc.keys);
+    const double defaultFov = desc.fovDegrees.value_or(defaults.fovDegrees);
+    size_t first = 0;
+    for (size_t i = 1; i <= keys.size(); ++i)
+        if (i == keys.size() || keys[i].cut) {
+            shots_.emplace_back(keys.subspan(first, i - first), desc, defaultFov);
+            first = i;
+        }
+}
+
+CameraPath::Shot::Shot(std::span<const voxel::PathKey> keys, const voxel::CameraPathDesc& desc, double defaultFov)
+    : constantSpeed_(desc.constantSpeed) {
     std::vector<glm::dvec3> points;
     std::vector<glm::dquat> rotations;
     std::vector<double> fovs;
-    for (const voxel::PathKey& k : desc.keys) {
+    for (const voxel::PathKey& k : keys) {
         times_.push_back(k.time);
         points.push_back(k.position);
         rollFree_ = rollFree_ && k.target.has_value();
         rotations.push_back(k.rotation ? *k.rotation : glm::quat_cast(lookAtBasis(k.position, *k.target)));
-        fovs.push_back(k.fovDegrees.value_or(desc.fovDegrees.value_or(defaults.fovDegrees)));
+        fovs.push_back(k.fovDegrees.value_or(defaultFov));
+    }
+    if (keys.size() == 1) {
+        still_ = {points[0], glm::mat3_cast(rotations[0]), fovs[0]};
+        return;
     }
     curve_ = spline::CentripetalCurve(points);
     rotations_ = spline::RotationSpline(rotations);
@@ -44,7 +60,7 @@ CameraPath::CameraPath(const voxel::CameraPathDesc& desc, const voxel::CameraDes
         }
 }
 
-double CameraPath::curveParameter(double time) const {
+double CameraPath::Shot::curveParameter(double time) const {
     if (!constantSpeed_ || arcLength_.back() <= 0.0) return timeToCurve_(time);
     const double span = times_.back() - times_.front();
     const double length = arcLength_.back() * std::clamp((time - times_.front()) / span, 0.0, 1.0);
@@ -56,7 +72,16 @@ double CameraPath::curveParameter(double time) const {
     return arcKnot_[i - 1] + f * (arcKnot_[i] - arcKnot_[i - 1]);
 }
 
-CameraPose CameraPath::pose(double time) const {
+size_t CameraPath::shotAt(double time) const {
+    size_t shot = 0;
+    while (shot + 1 < shots_.size() && shots_[shot + 1].start() <= time) ++shot;
+    return shot;
+}
+
+CameraPose CameraPath::pose(double time) const { return shots_[shotAt(time)].pose(time); }
+
+CameraPose CameraPath::Shot::pose(double time) const {
+    if (times_.size() == 1) return still_;
     const double s = curveParameter(time);
     CameraPose pose;
     pose.position = curve_(s);

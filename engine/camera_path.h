@@ -3,11 +3,13 @@
 // position on a centripetal Catmull-Rom curve through the keys, rotation by squad
 // between the keys' rotations (look-at keys stay roll-free, Y up), fov by a
 // monotone cubic. Keys are met at their times, unless the path asks for constant
-// speed, which spreads the whole curve evenly over [first time, last time].
+// speed, which spreads each shot's curve evenly over its keys' time span. A key
+// marked "cut" starts a new shot: the camera jumps there and the curve restarts.
 #include "engine/camera.h"
 #include "engine/spline.h"
 #include "voxel/camera_path_desc.h"
 
+#include <span>
 #include <vector>
 
 namespace grotto {
@@ -24,23 +26,39 @@ public:
     // (the world's default camera: World::camera("")).
     CameraPath(const voxel::CameraPathDesc& desc, const voxel::CameraDesc& defaults);
 
-    double duration() const { return times_.back(); }  // the last key's time
+    double duration() const { return duration_; }  // the last key's time
     CameraPose pose(double time) const;
     Camera camera(double time, uint32_t width, uint32_t height) const;
+
+    // The shot (0-based) that shows `time`. Where it changes between two frames the
+    // view jumped, so temporal history must restart (Renderer::resetHistory).
+    size_t shotAt(double time) const;
 
     // Frame i (1-based) shows time (i - 1) / fps; frames cover [0, duration].
     int frameCount(double fps) const;
 
 private:
-    double curveParameter(double time) const;
+    // The keys from one cut to the next: one curve. A single key holds still.
+    class Shot {
+    public:
+        Shot(std::span<const voxel::PathKey> keys, const voxel::CameraPathDesc& desc, double defaultFov);
+        double start() const { return times_.front(); }
+        CameraPose pose(double time) const;
 
-    std::vector<double> times_;
-    spline::CentripetalCurve curve_;
-    spline::RotationSpline rotations_;
-    spline::MonotoneCubic timeToCurve_, fov_;
-    std::vector<double> arcKnot_, arcLength_;  // cumulative length along the curve, for constant speed
-    bool constantSpeed_ = false, rollFree_ = true;
-    double nearPlane_ = 0.05, farPlane_ = 0.0;
+    private:
+        double curveParameter(double time) const;
+
+        std::vector<double> times_;
+        spline::CentripetalCurve curve_;
+        spline::RotationSpline rotations_;
+        spline::MonotoneCubic timeToCurve_, fov_;
+        std::vector<double> arcKnot_, arcLength_;  // cumulative length along the curve, for constant speed
+        bool constantSpeed_ = false, rollFree_ = true;
+        CameraPose still_;  // a one-key shot's pose
+    };
+
+    std::vector<Shot> shots_;  // in time order
+    double duration_ = 0.0, nearPlane_ = 0.05, farPlane_ = 0.0;
 };
 
 }  // namespace grotto

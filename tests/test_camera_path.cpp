@@ -185,6 +185,38 @@ TEST(CameraPath, ConstantSpeedGivesEqualArcsPerEqualTime) {
     EXPECT_LT(glm::length(path.pose(path.duration()).position - d.keys.back().position), 1e-9);
 }
 
+TEST(CameraPath, ACutStartsANewShotThatJumps) {
+    // Keys 0-2 are one shot, key 3 (a cut) starts a still one-key shot and key 4
+    // (another cut) a moving one. Each shot is the path its own keys make: later
+    // keys do not bend earlier curves, and between a shot's last key and the cut
+    // the camera holds still.
+    voxel::CameraPathDesc d = awkwardPath();
+    d.keys[3].cut = true;
+    d.keys.push_back(key(5.0, {20, 5, 20}, {0, 0, 0}));
+    d.keys[4].cut = true;
+    const CameraPath path(d, {});
+    voxel::CameraPathDesc first = d, last = d;
+    first.keys.resize(3);
+    last.keys = {d.keys[4], d.keys[5]};
+    last.keys[0].cut = false;
+    const CameraPath firstShot(first, {}), lastShot(last, {});
+    for (double t : {0.0, 0.3, 0.7, 0.95, 1.0, 2.0, 3.49})
+        EXPECT_LT(glm::length(path.pose(t).position - firstShot.pose(t).position), 1e-12) << "t " << t;
+    for (double t : {3.5, 3.9, 3.999}) {
+        EXPECT_LT(glm::length(path.pose(t).position - d.keys[3].position), 1e-12) << "t " << t;
+        EXPECT_LT(angleBetween(path.pose(t).basis, lookAtBasis(d.keys[3].position, *d.keys[3].target)), 1e-9);
+    }
+    for (double t : {4.0, 4.5, 5.0, 6.0})
+        EXPECT_LT(glm::length(path.pose(t).position - lastShot.pose(t).position), 1e-12) << "t " << t;
+    EXPECT_EQ(path.shotAt(-1.0), 0u);
+    EXPECT_EQ(path.shotAt(3.4999), 0u);
+    EXPECT_EQ(path.shotAt(3.5), 1u);
+    EXPECT_EQ(path.shotAt(3.9999), 1u);
+    EXPECT_EQ(path.shotAt(4.0), 2u);
+    EXPECT_EQ(path.shotAt(99.0), 2u);
+    EXPECT_EQ(CameraPath(awkwardPath(), {}).shotAt(4.0), 0u);  // no cut, one shot
+}
+
 TEST(CameraPath, QuaternionKeysAreWorldFromCamera) {
     voxel::CameraPathDesc d;
     // A quarter turn left about +Y: the camera, looking down -Z, then looks down -X.
@@ -267,6 +299,12 @@ TEST_F(PathFiles, BadPathsNameFileAndField) {
     expectError(write("zeroq.json", R"({"keys": [{"time": 0, "position": [0, 0, 0], "quaternion": [0, 0, 0, 0]},
         {"time": 1, "position": [1, 0, 0], "target": [2, 0, 0]}]})"),
                 {"zeroq.json", "keys[0].quaternion", "zero"});
+    expectError(write("cut0.json", R"({"keys": [{"time": 0, "position": [0, 0, 0], "target": [1, 0, 0], "cut": true},
+        {"time": 1, "position": [1, 0, 0], "target": [2, 0, 0]}]})"),
+                {"cut0.json", "keys[0].cut", "first key"});
+    expectError(write("cuttype.json", R"({"keys": [{"time": 0, "position": [0, 0, 0], "target": [1, 0, 0]},
+        {"time": 1, "position": [1, 0, 0], "target": [2, 0, 0], "cut": 1}]})"),
+                {"cuttype.json", "keys[1].cut"});
     expectError(dir_ / "absent.json", {"absent.json", "no such file"});
     expectError(write("world-unknown.json", R"({"grid": {"file": "x.vdb"}, "paths": {"p": {"keys": [], "speed": 2}}})"),
                 {"world-unknown.json", "paths.p"});

@@ -42,6 +42,7 @@ PathKey parseKey(Reader r) {
         k.rotation = quaternion(r, "quaternion");
     }
     if (r.has("fov")) k.fovDegrees = r.number("fov", 60.0, 1.0, 170.0);
+    k.cut = r.boolean("cut", false);
     return k;
 }
 
@@ -65,6 +66,9 @@ CameraPathDesc parseCameraPath(Reader& r, const fs::path& file, const std::strin
     for (size_t i = 0; i < keys.size(); ++i) {
         const std::string name = (field.empty() ? "" : field + ".") + "keys[" + std::to_string(i) + "]";
         p.keys.push_back(parseKey(Reader(file, keys[i], name)));
+        if (i == 0 && p.keys[0].cut)
+            throw Error(file.string(), "field '" + name + ".cut': the first key cannot be a cut",
+                        "a cut jumps from the previous key's shot; the first key starts the first shot");
         if (i > 0 && !(p.keys[i].time > p.keys[i - 1].time))
             throw Error(file.string(), "field '" + name + ".time': " + Reader::format(p.keys[i].time) +
                                            " does not come after the previous key's " +

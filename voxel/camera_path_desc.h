@@ -20,6 +20,7 @@ struct PathKey {
     std::optional<glm::dvec3> target;    // look-at point (roll-free, Y up) ...
     std::optional<glm::dquat> rotation;  // ... or world-from-camera rotation, unit length
     std::optional<double> fovDegrees;    // vertical; unset = the path's fov
+    bool cut = false;                    // starts a new shot: the camera jumps here, history restarts
 };
 
 struct CameraPathDesc {

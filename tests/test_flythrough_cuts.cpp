@@ -1,0 +1,50 @@
+// A path key marked "cut" restarts the temporal history in `grotto flythrough`:
+// the frame at the cut has one frame of history everywhere, although its view
+// overlaps the one before (so reprojection alone would have kept history).
+#include "tests/test_util.h"
+
+#include <OpenImageIO/imageio.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <fstream>
+#include <vector>
+
+namespace grotto {
+namespace {
+
+namespace fs = std::filesystem;
+
+// The largest AO_history in a flythrough EXR frame.
+float mostHistory(const fs::path& exr) {
+    auto in = OIIO::ImageInput::open(exr.string());
+    if (!in) return -1.0f;
+    const OIIO::ImageSpec spec = in->spec();
+    const int channel = spec.channelindex("AO_history");
+    if (channel < 0) return -1.0f;
+    std::vector<float> v(size_t(spec.width) * spec.height);
+    if (!in->read_image(0, 0, channel, channel + 1, OIIO::TypeDesc::FLOAT, v.data())) return -1.0f;
+    return *std::max_element(v.begin(), v.end());
+}
+
+TEST(FlythroughCuts, ACutKeyRestartsTheHistory) {
+    const test::ScratchDir dir;
+    // Two shots of the same table from nearby viewpoints; the cut is at t = 1.5,
+    // frame 4 at 2 frames a second.
+    const fs::path path = dir / "cut.json";
+    std::ofstream(path) << R"({"keys": [
+        {"time": 0,   "position": [-4, 12, 26], "target": [4, 3, 11]},
+        {"time": 1,   "position": [-3, 12, 26], "target": [4, 3, 11]},
+        {"time": 1.5, "position": [-3, 11, 25], "target": [4, 3, 11], "cut": true},
+        {"time": 2.5, "position": [-2, 11, 25], "target": [4, 3, 11]}]})";
+    const fs::path out = dir / "frames";
+    const test::RunResult r = test::runGrotto("flythrough " + (test::worldsDir() / "rooms.json").string() + " --path " +
+                                        path.string() + " --size 64x36 --fps 2 --format exr -o " + out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(mostHistory(out / "frame.0003.exr"), 3.0f);  // three frames into the first shot
+    EXPECT_EQ(mostHistory(out / "frame.0004.exr"), 1.0f);  // the cut: history restarted
+    EXPECT_EQ(mostHistory(out / "frame.0005.exr"), 2.0f);
+}
+
+}  // namespace
+}  // namespace grotto
