@@ -299,20 +299,19 @@ TEST_F(CliErrors, FlythroughResumesButNeverMixesSequences) {
 }
 
 TEST_F(CliErrors, FlythroughSplitRunMatchesTheWholeRun) {
-    const fs::path world = writeText("fly.json", std::string(R"({"grid": {"file": "good.vdb"}, "paths": {"p": )") + kFlyPath + "}}");
-    const std::string base = "flythrough " + world.string() + " --path p --size 48x32 --fps 8 ";
-    test::RunResult r = runGrotto(base + "-o " + (dir_ / "whole").string());
+    // Caves (the path with the most disocclusion) at 160x90: frames 69-70 with the
+    // default warm-up (64) start at frame 5, so the split run's history really is
+    // cut short, and must still land within docs/paths.md's 2/255 of the whole run.
+    const std::string base = "flythrough " + (test::worldsDir() / "caves.json").string() + " --path walk --size 160x90 ";
+    test::RunResult r = runGrotto(base + "--frames 1-70 -o " + (dir_ / "whole").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_TRUE(fs::exists(dir_ / "whole" / "frame.0009.png"));
-    r = runGrotto(base + "--frames 5-8 --warmup 4 -o " + (dir_ / "part").string());
+    r = runGrotto(base + "--frames 69-70 -o " + (dir_ / "part").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.out.find("frame 0001 warm-up"), std::string::npos) << r.out;
-    EXPECT_FALSE(fs::exists(dir_ / "part" / "frame.0004.png"));
-    EXPECT_FALSE(fs::exists(dir_ / "part" / "frame.0009.png"));
-    // Bit-for-bit today; temporal history may differ slightly after a finite
-    // warm-up, so the contract is a max abs difference of 2/255 per channel.
-    for (int i = 5; i <= 8; ++i) {
-        const std::string name = "frame.000" + std::to_string(i) + ".png";
+    EXPECT_NE(r.out.find("frame 0005 warm-up"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("frame 0004"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(dir_ / "part" / "frame.0068.png"));
+    for (int i = 69; i <= 70; ++i) {
+        const std::string name = "frame.00" + std::to_string(i) + ".png";
         std::vector<uint8_t> a, b;
         for (auto [dir, pixels] : {std::pair<const char*, std::vector<uint8_t>*>{"whole", &a}, {"part", &b}}) {
             auto in = OIIO::ImageInput::open((dir_ / dir / name).string());
@@ -323,6 +322,7 @@ TEST_F(CliErrors, FlythroughSplitRunMatchesTheWholeRun) {
         ASSERT_EQ(a.size(), b.size());
         int worst = 0;
         for (size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(int(a[k]) - int(b[k])));
+        // Measured 1/255 here (2/255 with --warmup 32, 12/255 with 8).
         EXPECT_LE(worst, 2) << name;
     }
 }
