@@ -4,6 +4,7 @@
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
@@ -419,6 +420,77 @@ TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
         EXPECT_EQ(std::count(line.begin(), line.end(), ','), 8) << line;
     }
     EXPECT_EQ(rows, 12);  // ssao x3, hbao x4, gtao x4, gtao+temporal
+}
+
+}  // namespace
+}  // namespace grotto
+
+namespace grotto {
+namespace {
+
+using nlohmann::json;
+
+json readJson(const fs::path& file) {
+    std::ifstream in(file);
+    return json::parse(in);
+}
+
+// `grotto stability` on a tiny run: every DESIGN.md metric is there, finite and in range.
+TEST_F(CliErrors, StabilityReportsEveryMetric) {
+    const fs::path out = dir_ / "stability.json";
+    const test::RunResult r = runGrotto("stability " + (test::worldsDir() / "rooms.json").string() +
+                                        " --path orbit --size 160x90 --frames 4 --spp 16 --reference-every 2 --json " +
+                                        out.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json j = readJson(out);
+    for (const char* which : {"raw", "spatial", "temporal", "reference"}) {
+        const double f = j["flicker"][which].get<double>();
+        EXPECT_GT(f, 0.0) << which;  // noisy AO and a 16-spp reference both change between frames
+        EXPECT_LT(f, 0.5) << which;
+    }
+    EXPECT_LT(j["flicker"]["temporal"].get<double>(), j["flicker"]["spatial"].get<double>());
+    // --reference-every 2: a reference on every frame.
+    ASSERT_EQ(j["error"].size(), 4u);
+    for (int i = 0; i < 4; ++i) {
+        const json& e = j["error"][i];
+        EXPECT_EQ(e["frame"].get<int>(), i + 1);
+        for (const char* which : {"spatial", "temporal"}) {
+            const double mae = e[which]["mae"].get<double>(), rmse = e[which]["rmse"].get<double>();
+            EXPECT_GT(mae, 0.0) << which;
+            EXPECT_LE(mae, rmse) << which;
+            EXPECT_LT(rmse, 0.5) << which;
+            EXPECT_NEAR(e[which]["psnr"].get<double>(), -20.0 * std::log10(rmse), 1e-6) << which;
+        }
+    }
+    // Ghosting: the cumulative curve adds up the per-age one; the first frame
+    // counts as disoccluded everywhere, so k = 0 has pixels.
+    const json& within = j["ghosting"]["within"];
+    const json& byAge = j["ghosting"]["by_age"];
+    ASSERT_FALSE(within.empty());
+    EXPECT_EQ(within[0]["disoccluded_within_frames"].get<int>(), 0);
+    EXPECT_GT(within[0]["pixels"].get<size_t>(), 1000u);
+    size_t pixels = 0;
+    double sumMae = 0.0;
+    ASSERT_EQ(within.size(), byAge.size());  // four frames: every age is below the cap
+    for (size_t k = 0; k < within.size(); ++k) {
+        pixels += byAge[k]["pixels"].get<size_t>();
+        sumMae += byAge[k]["pixels"].get<size_t>() * byAge[k]["mae_temporal"].get<double>();
+        EXPECT_EQ(within[k]["disoccluded_within_frames"].get<int>(), byAge[k]["frames_since_disocclusion"].get<int>());
+        EXPECT_EQ(within[k]["pixels"].get<size_t>(), pixels) << k;
+        EXPECT_NEAR(within[k]["mae_temporal"].get<double>(), sumMae / double(pixels), 1e-9) << k;
+        EXPECT_LT(within[k]["mae_spatial"].get<double>(), 0.5) << k;
+    }
+    EXPECT_GT(j["cost_ms"]["frame_wall"].get<double>(), 0.0);
+    for (auto& [pass, ms] : j["cost_ms"].items()) EXPECT_TRUE(ms.get<double>() >= 0.0 && std::isfinite(ms.get<double>())) << pass;
+}
+
+TEST_F(CliErrors, StabilityRefusesNonsense) {
+    const fs::path out = dir_ / "stability.json";
+    const std::string base = "stability " + (test::worldsDir() / "rooms.json").string() + " --size 16x8 --json " + out.string();
+    expectRefused(base + " --path orbit --frames 0", "--frames", out);
+    expectRefused(base + " --path orbit --reference-every 1", "--reference-every", out);
+    expectRefused(base + " --path nowhere", "paths: orbit", out);
+    expectRefused(base + " --path orbit --ao off", "--ao", out);
 }
 
 }  // namespace
