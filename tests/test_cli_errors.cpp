@@ -495,3 +495,22 @@ TEST_F(CliErrors, StabilityRefusesNonsense) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+// A path file is found as given, else beside the world file (where the shipped
+// ones live); otherwise the error names it and lists the world's paths.
+TEST_F(CliErrors, PathFileIsFoundBesideTheWorld) {
+    ASSERT_FALSE(fs::exists("caves-walk.json")) << "the test needs a working directory without it";
+    const std::string base = "flythrough " + (test::worldsDir() / "caves.json").string() + " --size 16x8 --frames 1 ";
+    const test::RunResult r = runGrotto(base + "--path caves-walk.json -o " + (dir_ / "seq").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(dir_ / "seq" / "frame.0001.png"));
+    expectRefused(base + "--path no-such-walk.json -o " + (dir_ / "none").string(), "paths: walk", dir_ / "none");
+    const test::RunResult missing = runGrotto(base + "--path no-such-walk.json -o " + (dir_ / "none").string());
+    EXPECT_NE(missing.err.find("no-such-walk.json"), std::string::npos) << missing.err;
+}
+
+}  // namespace
+}  // namespace grotto
