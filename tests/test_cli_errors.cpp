@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include <fstream>
+#include <map>
 #include <random>
 
 namespace grotto {
@@ -510,6 +511,53 @@ TEST_F(CliErrors, PathFileIsFoundBesideTheWorld) {
     expectRefused(base + "--path no-such-walk.json -o " + (dir_ / "none").string(), "paths: walk", dir_ / "none");
     const test::RunResult missing = runGrotto(base + "--path no-such-walk.json -o " + (dir_ / "none").string());
     EXPECT_NE(missing.err.find("no-such-walk.json"), std::string::npos) << missing.err;
+}
+
+}  // namespace
+}  // namespace grotto
+
+namespace grotto {
+namespace {
+
+// Resuming keeps the earlier runs' entries in DIR/stats.json (one per frame,
+// merged by frame number), and refuses a damaged one before writing anything.
+TEST_F(CliErrors, FlythroughResumeKeepsEarlierStats) {
+    const fs::path world = writeText("fly.json", std::string(R"({"grid": {"file": "good.vdb"}, "paths": {"p": )") + kFlyPath + "}}");
+    const fs::path seq = dir_ / "seq";
+    const std::string base = "flythrough " + world.string() + " --path p --size 16x8 --fps 2 -o " + seq.string();
+    auto framesOf = [&] {
+        std::map<int, nlohmann::json> byFrame;
+        const nlohmann::json stats = readJson(seq / "stats.json");
+        for (const nlohmann::json& f : stats["frames"]) byFrame[f["frame"].get<int>()] = f;
+        return byFrame;
+    };
+    ASSERT_EQ(runGrotto(base).exitCode, 0);
+    const auto first = framesOf();
+    ASSERT_EQ(first.size(), 3u);
+
+    fs::remove(seq / "frame.0002.png");
+    test::RunResult r = runGrotto(base + " --warmup 0");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto now = framesOf();
+    ASSERT_EQ(now.size(), 3u);
+    EXPECT_EQ(now[1], first.at(1));
+    EXPECT_EQ(now[3], first.at(3));
+    EXPECT_TRUE(now[2]["written"].get<bool>());
+    const nlohmann::json second = now[2];
+
+    // Frames 1 and 2 rendered again as warm-up keep the entries of the runs that wrote them.
+    fs::remove(seq / "frame.0003.png");
+    r = runGrotto(base + " --warmup 4");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    now = framesOf();
+    ASSERT_EQ(now.size(), 3u);
+    EXPECT_EQ(now[1], first.at(1));
+    EXPECT_EQ(now[2], second);
+    EXPECT_TRUE(now[3]["written"].get<bool>());
+
+    std::ofstream(seq / "stats.json") << R"({"frames": [{"frame": 1}]})";
+    fs::remove(seq / "frame.0003.png");
+    expectRefused(base, "stats.json", seq / "frame.0003.png");
 }
 
 }  // namespace
