@@ -9,7 +9,8 @@
 // matching it bit for bit (docs/paths.md states the measured difference). Frames already on
 // disk are skipped, so an interrupted run resumes: it re-renders from K frames
 // before the first missing one (history again) and writes only missing frames.
-// DIR/flythrough.json records the settings so a resume never mixes sequences.
+// DIR/flythrough.json records the settings so a resume never mixes sequences,
+// and DIR/stats.json keeps every run's frame times, merged by frame number.
 #include "app/commands.h"
 #include "app/options.h"
 #include "app/progress.h"
@@ -39,7 +40,7 @@ using nlohmann::json;
 struct Args {
     std::string world, path, size = "640x360", output, format = "png", frames;
     int fps = 24;
-    std::optional<int> warmup;  // default: twice the temporal history
+    std::optional<int> warmup;  // default: four times the temporal history
     AoFlags ao;
 };
 
@@ -104,8 +105,43 @@ void requireSameRun(const fs::path& dir, const json& manifest) {
     writeJson(file, manifest);
 }
 
-// Per-frame times of this run and their medians.
-json statsJson(const json& frames) {
+// The per-frame entries of earlier runs into the directory (DIR/stats.json), by
+// frame number, so a resumed run adds to them rather than dropping them. Read
+// before rendering, so a damaged file is refused before anything is written.
+std::map<int, json> earlierFrames(const fs::path& file) {
+    std::map<int, json> frames;
+    if (!fs::exists(file)) return frames;
+    std::ifstream in(file);
+    const json doc = json::parse(in, nullptr, false);
+    const std::string hint = "delete it to start the stats afresh";
+    if (doc.is_discarded() || !doc.is_object() || !doc.contains("frames") || !doc["frames"].is_array())
+        throw Error(file.string(), "is not a flythrough stats file (no \"frames\" array)", hint);
+    for (size_t k = 0; k < doc["frames"].size(); ++k) {
+        const json& f = doc["frames"][k];
+        bool ok = f.is_object() && f.contains("frame") && f["frame"].is_number_integer() && f.contains("wall_ms") &&
+                  f["wall_ms"].is_number() && f.contains("pass_ms") && f["pass_ms"].is_object() &&
+                  f.contains("written") && f["written"].is_boolean();
+        if (ok)
+            for (const auto& [name, ms] : f["pass_ms"].items()) ok = ok && ms.is_number();
+        if (!ok)
+            throw Error(file.string(), "frames[" + std::to_string(k) + "] is not a frame entry",
+                        "expected {\"frame\", \"written\", \"wall_ms\", \"pass_ms\"}; " + hint);
+        frames[f["frame"].get<int>()] = f;
+    }
+    return frames;
+}
+
+// This run's entry replaces an earlier one of the same frame, except that a
+// warm-up render keeps the entry of the run that wrote the frame.
+void mergeFrame(std::map<int, json>& frames, const json& entry) {
+    json& slot = frames[entry["frame"].get<int>()];
+    if (slot.is_null() || entry["written"].get<bool>() || !slot["written"].get<bool>()) slot = entry;
+}
+
+// Per-frame times, in frame order, and their medians.
+json statsJson(const std::map<int, json>& byFrame) {
+    json frames = json::array();
+    for (const auto& [i, f] : byFrame) frames.push_back(f);
     std::vector<double> wall;
     std::map<std::string, std::vector<double>> passes;
     for (const json& f : frames) {
@@ -128,8 +164,8 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based (default: the whole path)");
     cmd->add_option("--warmup", args->warmup,
-                    "Frames rendered but not written before the first one written (default: twice the temporal "
-                    "history, 32)")
+                    "Frames rendered but not written before the first one written; the default (four times the "
+                    "temporal history, 64) keeps a split run within 2/255 of the whole run")
         ->check(CLI::Range(0, 10000));
     cmd->add_option("--format", args->format, "png, or exr with AOVs")->capture_default_str()->check(CLI::IsMember({"png", "exr"}));
     cmd->add_option("-o,--output", args->output, "Output directory")->required();
@@ -147,6 +183,7 @@ void addFlythroughCommand(CLI::App& app) {
         fs::create_directories(dir, ec);
         if (!fs::is_directory(dir)) throw Error(dir.string(), "cannot create the output directory", ec ? ec.message() : "");
         requireSameRun(dir, runManifest(*args, desc, ao));
+        std::map<int, json> frames = earlierFrames(dir / "stats.json");
 
         auto frameFile = [&](int i) {
             char name[32];
@@ -160,13 +197,15 @@ void addFlythroughCommand(CLI::App& app) {
             std::printf("all %d frames already in %s\n", range.last - range.first + 1, dir.c_str());
             return;
         }
-        // History: start K frames before the first frame to write.
-        // Twice the history length brings a split frame within 2/255 of the whole run's.
-        const int warmup = args->warmup.value_or(2 * int(ao.gtao.temporalHistory));
+        // History: start K frames before the first frame to write. A split run's
+        // history starts afresh where the whole run's is full; the difference
+        // shrinks by (n-1)/n a frame (n = the history length, 16), so measured at
+        // four times n the split frames are within 1/255 of the whole run's
+        // (twice n: 3/255); docs/paths.md.
+        const int warmup = args->warmup.value_or(4 * int(ao.gtao.temporalHistory));
         const int start = std::max(1, missing.front() - warmup), end = missing.back();
         vk::Context ctx;
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
-        json frames = json::array();
         {
             Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
             Progress progress(end - start + 1, stdout);
@@ -182,8 +221,8 @@ void addFlythroughCommand(CLI::App& app) {
                 }
                 json passMs = json::object();
                 for (const auto& [name, ms] : stats.passMs) passMs[name] = ms;
-                frames.push_back({{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", stats.wallMs},
-                                  {"pass_ms", passMs}});
+                mergeFrame(frames, {{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", stats.wallMs},
+                                    {"pass_ms", passMs}});
                 char what[96];
                 std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i, write ? "written" : "warm-up",
                               stats.wallMs);

@@ -82,11 +82,18 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
 voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name) {
     const auto& paths = world.desc().paths;
     if (auto it = paths.find(name); it != paths.end()) return it->second;
-    if (std::filesystem::path(name).extension() == ".json") return voxel::loadCameraPath(name);
     std::string known;
     for (auto& [n, p] : paths) known += (known.empty() ? "" : ", ") + n;
-    throw Error(world.desc().source.string(), "has no path named '" + name + "'",
-                known.empty() ? "the world defines no paths; give --path FILE.json" : "paths: " + known);
+    const std::string hint = known.empty() ? "the world defines no paths; give --path FILE.json" : "paths: " + known;
+    if (std::filesystem::path(name).extension() == ".json") {
+        // As given (relative to the current directory), else beside the world
+        // file, where the shipped path files live.
+        const std::filesystem::path beside = world.desc().source.parent_path() / name;
+        if (std::filesystem::exists(name)) return voxel::loadCameraPath(name);
+        if (std::filesystem::exists(beside)) return voxel::loadCameraPath(beside);
+        throw Error(name, "no such path file in the current directory or beside " + world.desc().source.string(), hint);
+    }
+    throw Error(world.desc().source.string(), "has no path named '" + name + "'", hint);
 }
 
 double median(std::vector<double> v) {

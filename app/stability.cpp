@@ -2,9 +2,10 @@
 //                  [--reference-every K] --json FILE
 // Renders a camera path and measures DESIGN.md's temporal metrics at AO
 // resolution: flicker of the raw, spatial and temporal AO and of the reference,
-// error against the reference per frame, the ghosting curve (error by frames
-// since disocclusion) and the cost per pass. The reference is traced on pairs of
-// consecutive frames, one pair every K frames (K = 2: every frame).
+// error against the reference per frame, the ghosting curves (error over pixels
+// disoccluded within the last k frames, and at each age) and the cost per pass.
+// The reference is traced on pairs of consecutive frames, one pair every K
+// frames (K = 2: every frame).
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
@@ -62,6 +63,9 @@ std::vector<float> referenceAt(const voxel::World& world, const FrameImages& fra
     for (size_t k = 0; k < index.size(); ++k) v[index[k]] = r.visibility[k];
     return v;
 }
+
+// Ages from here on share one ghosting bin: history is full long before.
+constexpr int kGhostAgeCap = 32;
 
 struct Mean {
     double sum = 0.0;
@@ -139,7 +143,7 @@ void addStabilityCommand(CLI::App& app) {
                         flickerReference.add(flicker(reference, beforeReference, match));
                     for (size_t p = 0; p < age.size(); ++p)
                         if (now.surface[p]) {
-                            auto& bin = ghosting[std::min<int>(age[p], 32)];
+                            auto& bin = ghosting[std::min<int>(age[p], kGhostAgeCap)];
                             bin.first.add(std::abs(now.temporal[p] - reference[p]));
                             bin.second.add(std::abs(now.spatial[p] - reference[p]));
                         }
@@ -157,10 +161,21 @@ void addStabilityCommand(CLI::App& app) {
         json cost = json::object();
         for (const auto& [name, ms] : passMs) cost[name] = median(ms);
         cost["frame_wall"] = median(wallMs);
-        json ghostCurve = json::array();
-        for (const auto& [k, bins] : ghosting)
-            ghostCurve.push_back({{"frames_since_disocclusion", k}, {"pixels", bins.first.n},
-                                  {"mae_temporal", bins.first.value()}, {"mae_spatial", bins.second.value()}});
+        // DESIGN.md's curve: error over the pixels disoccluded within the last k
+        // frames (age <= k), cumulative over the exact ages below the cap; and the
+        // error at each age on its own (the last bin: kGhostAgeCap and older).
+        json byAge = json::array(), within = json::array();
+        Mean temporalWithin, spatialWithin;
+        for (const auto& [k, bins] : ghosting) {
+            byAge.push_back({{"frames_since_disocclusion", k}, {"pixels", bins.first.n},
+                             {"mae_temporal", bins.first.value()}, {"mae_spatial", bins.second.value()}});
+            if (k >= kGhostAgeCap) continue;
+            temporalWithin.sum += bins.first.sum, temporalWithin.n += bins.first.n;
+            spatialWithin.sum += bins.second.sum, spatialWithin.n += bins.second.n;
+            within.push_back({{"disoccluded_within_frames", k}, {"pixels", temporalWithin.n},
+                              {"mae_temporal", temporalWithin.value()}, {"mae_spatial", spatialWithin.value()}});
+        }
+        const json ghostCurve = {{"within", within}, {"by_age", byAge}};
         // Steady state: the frames after the history could fill (all frames when
         // the path is shorter than that). A shorter history, or none, starts no
         // earlier than the default one would, so a spatial-only run of the same path
