@@ -212,7 +212,7 @@ void addFlythroughCommand(CLI::App& app) {
             for (int i = start; i <= end; ++i) {
                 const double time = double(i - 1) / args->fps;
                 const Camera camera = path.camera(time, size.width, size.height);
-                if (i > start && path.shotAt(time) != path.shotAt(double(i - 2) / args->fps)) renderer.resetHistory();
+                if (i > start && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
                 const FrameStats stats = renderer.render(camera, uint32_t(i));
                 const bool write = std::binary_search(missing.begin(), missing.end(), i);
                 if (write) {

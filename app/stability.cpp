@@ -118,7 +118,7 @@ void addStabilityCommand(CLI::App& app) {
             for (int i = 1; i <= count; ++i) {
                 const double time = double(i - 1) / args->fps;
                 const Camera camera = path.camera(time, size.width, size.height);
-                if (i > 1 && path.shotAt(time) != path.shotAt(double(i - 2) / args->fps)) renderer.resetHistory();
+                if (i > 1 && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
                 const FrameStats stats = renderer.render(camera, uint32_t(i));
                 for (const auto& [name, ms] : stats.passMs) passMs[name].push_back(ms);
                 wallMs.push_back(stats.wallMs);

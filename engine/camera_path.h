@@ -33,6 +33,7 @@ public:
     // The shot (0-based) that shows `time`. Where it changes between two frames the
     // view jumped, so temporal history must restart (Renderer::resetHistory).
     size_t shotAt(double time) const;
+    bool cutBetween(double from, double to) const { return shotAt(from) != shotAt(to); }
 
     // Frame i (1-based) shows time (i - 1) / fps; frames cover [0, duration].
     int frameCount(double fps) const;
