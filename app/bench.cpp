@@ -6,6 +6,7 @@
 // pass's costs are also measured as wall-time differences: the same frames are
 // rendered, interleaved, by a renderer without AO and one without the temporal
 // pass, and the median of the per-frame differences is reported.
+#include "app/ao_cost.h"
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
@@ -71,35 +72,19 @@ void addBenchCommand(CLI::App& app) {
             const voxel::Lighting& light = world.desc().lighting;
             Renderer renderer(ctx, *scene, light, ao, size.width, size.height);
             targetBytes = renderer.targetBytes();
-            // The same frames without AO, and without the temporal pass.
-            AoOptions noAo = ao, noTemporal = ao;
-            noAo.enabled = false;
-            noTemporal.gtao.temporalHistory = 0;
-            std::unique_ptr<Renderer> withoutAo, withoutTemporal;
-            if (ao.enabled) withoutAo = std::make_unique<Renderer>(ctx, *scene, light, noAo, size.width, size.height);
-            if (ao.enabled && ao.gtao.temporalHistory > 0)
-                withoutTemporal = std::make_unique<Renderer>(ctx, *scene, light, noTemporal, size.width, size.height);
+            AoCostTimer costs(ctx, *scene, light, ao, size.width, size.height);
             for (int i = 0; i < args->warmup + args->frames; ++i) {
-                // Consecutive indices, so the temporal pass runs as in a flythrough. The
-                // three renderers take turns going first, so whatever one frame leaves
-                // behind (caches, clocks) does not always favour the same one.
-                FrameStats f;
-                double off = 0.0, noHistory = 0.0;
-                for (int turn = 0; turn < 3; ++turn) {
-                    const int which = (i + turn) % 3;
-                    if (which == 0) f = renderer.render(camera, uint32_t(i));
-                    if (which == 1 && withoutAo) off = withoutAo->render(camera, uint32_t(i)).wallMs;
-                    if (which == 2 && withoutTemporal) noHistory = withoutTemporal->render(camera, uint32_t(i)).wallMs;
-                }
+                // Consecutive indices, so the temporal pass runs as in a flythrough.
+                const FrameStats f = costs.render(renderer, camera, uint32_t(i), i >= args->warmup);
                 if (i < args->warmup) continue;
                 double gpu = 0;
                 for (auto& [name, ms] : f.passMs) passMs[name].push_back(ms), gpu += ms;
                 frameGpuMs.push_back(gpu);
                 wallMs.push_back(f.wallMs);
-                if (withoutAo) chainWallMs.push_back(f.wallMs - off);
-                if (withoutTemporal) temporalWallMs.push_back(f.wallMs - noHistory);
                 drawn = f.quadsDrawn;
             }
+            chainWallMs = costs.chainMs();
+            temporalWallMs = costs.temporalMs();
         }
         const size_t hostBytes = stats.hostBytes + scene->hostBytes();
         const size_t gpuBytes = scene->gpuBytes();
