@@ -14,5 +14,6 @@ void addReferenceCommand(CLI::App& app);
 void addStabilityCommand(CLI::App& app);
 void addTradeoffCommand(CLI::App& app);
 void addTuneCommand(CLI::App& app);
+void addCompareCommand(CLI::App& app);
 
 }  // namespace grotto::app

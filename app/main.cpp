@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     grotto::app::addStabilityCommand(app);
     grotto::app::addTradeoffCommand(app);
     grotto::app::addTuneCommand(app);
+    grotto::app::addCompareCommand(app);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,0 +1,62 @@
+// grotto compare WORLD [--camera NAME] [--size WxH] [--spp N] [AO flags]: one AO
+// setting against the ray-traced reference, as one row of `grotto tradeoff` but for
+// any settings the flags give (e.g. far more slices and steps than a preset, to see
+// how close screen space can come at all; docs/tradeoff.md).
+#include "app/ao_measure.h"
+#include "app/commands.h"
+#include "app/options.h"
+#include "common/error.h"
+#include "engine/reference_view.h"
+
+#include <algorithm>
+#include <cstdio>
+
+namespace grotto::app {
+
+void addCompareCommand(CLI::App& app) {
+    struct Args {
+        std::string world, camera, size = "640x360";
+        int64_t spp = 1024;
+        int frames = 5, warmup = 2;
+        AoFlags ao;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("compare", "Error and cost of one AO setting against the ray-traced reference");
+    cmd->add_option("world", args->world, "World .json or .vdb")->required();
+    cmd->add_option("--camera", args->camera, "Named camera from the world file (default: its default)");
+    cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
+    cmd->add_option("--spp", args->spp, "Reference rays per pixel (cached; 10000 keeps every standard error below 0.005)")
+        ->capture_default_str()->check(CLI::Range(1, 1 << 24));
+    cmd->add_option("--frames", args->frames, "Frames timed after warm-up (with --temporal, at least 32 are rendered)")
+        ->capture_default_str()->check(CLI::Range(1, 1000));
+    cmd->add_option("--warmup", args->warmup, "Frames not timed")->capture_default_str()->check(CLI::Range(0, 1000));
+    addAoFlags(cmd, args->ao);
+    cmd->callback([args] {
+        const Size size = parseSize(args->size);
+        const voxel::World world = voxel::World::load(args->world);
+        const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        const AoOptions ao = resolveAo(world, args->ao);
+        if (!ao.enabled) throw Error("--ao", "off has no AO to compare", "pick gtao, ssao or hbao");
+        // The reference's R is the radius the method is given, before GTAO's multiplier.
+        const double radius = double(ao.gtao.radius);
+        vk::Context ctx;
+        const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx);
+        double maxError = 0.0;
+        for (float e : ref.stderror) maxError = std::max(maxError, double(e));
+        auto scene = uploadScene(ctx, world.mesh(), world.desc());
+        // As `tradeoff` does: a temporal history gets static frames enough to fill.
+        const int frames = std::max(args->warmup + args->frames, ao.gtao.temporalHistory > 0 ? 32 : 0);
+        const AoMeasurement m = measureAo(ctx, *scene, world, camera, ao, ref, frames, args->warmup);
+        scene.reset();
+        requireNoValidationMessages(ctx);
+        const gpu::GtaoSettings& s = ao.gtao;
+        std::printf("%s: %s %s (%u slices x %u steps%s, temporal %u), reference R %g, %u spp (%s, stderr max %.4f)\n",
+                    world.desc().source.stem().c_str(), aoMethodName(ao.method), ao.quality.c_str(), s.sliceCount,
+                    s.stepsPerSlice, ao.fullResolution ? ", full resolution" : "", s.temporalHistory, radius,
+                    uint32_t(args->spp), ref.cacheHit ? "from the cache" : "traced", maxError);
+        std::printf("pixels %zu  mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f  ao %.2f ms  frame %.2f ms\n",
+                    m.error.pixels, m.error.mae, m.error.rmse, m.error.psnr, m.error.bias, m.msAo, m.msFrame);
+    });
+}
+
+}  // namespace grotto::app
