@@ -96,7 +96,13 @@ void addStabilityCommand(CLI::App& app) {
         requireWritableDirectory(out);
         const voxel::World world = voxel::World::load(args->world);
         const CameraPath path(findCameraPath(world, args->path), world.camera(""));
-        const int count = args->frames ? args->frames : path.frameCount(args->fps);
+        const int pathFrames = path.frameCount(args->fps);
+        // Past the last key the camera stands still, which would flatter every metric.
+        if (args->frames > pathFrames)
+            throw Error("--frames", std::to_string(args->frames) + " is beyond the path's end",
+                        "path '" + args->path + "' has " + std::to_string(pathFrames) + " frames at " +
+                            std::to_string(args->fps) + " fps");
+        const int count = args->frames ? args->frames : pathFrames;
         const AoOptions ao = resolveAo(world, args->ao);
         if (!ao.enabled) throw Error("--ao", "stability measures AO; it is off", "use --ao gtao");
         const uint32_t scale = ao.fullResolution ? 1 : 2;

@@ -509,6 +509,7 @@ TEST_F(CliErrors, StabilityRefusesNonsense) {
     const fs::path out = dir_ / "stability.json";
     const std::string base = "stability " + (test::worldsDir() / "rooms.json").string() + " --size 16x8 --json " + out.string();
     expectRefused(base + " --path orbit --frames 0", "--frames", out);
+    expectRefused(base + " --path orbit --fps 1 --frames 1000", "--frames", out);  // past the path's end
     expectRefused(base + " --path orbit --reference-every 1", "--reference-every", out);
     expectRefused(base + " --path nowhere", "paths: orbit", out);
     expectRefused(base + " --path orbit --ao off", "--ao", out);
