@@ -1,4 +1,4 @@
-# Compiles GLSL to SPIR-V at build time. glslangValidator writes a depfile, so a
+# Compiles GLSL to SPIR-V at build time and builds it into the library `target`. glslangValidator writes a depfile, so a
 # change to any included header under shaders/shared/ rebuilds the shaders using it.
 function(grotto_add_shaders target)
   set(outputs)
@@ -16,5 +16,15 @@ function(grotto_add_shaders target)
       VERBATIM)
     list(APPEND outputs ${out})
   endforeach()
-  add_custom_target(${target} ALL DEPENDS ${outputs})
+  # The SPIR-V built into a static library (engine/vk/embedded_shaders.h); the .spv
+  # files stay for GROTTO_SHADER_DIR, which loads shaders from a directory instead.
+  set(embedded ${CMAKE_CURRENT_BINARY_DIR}/${target}_embedded.cpp)
+  add_custom_command(
+    OUTPUT ${embedded}
+    COMMAND ${CMAKE_COMMAND} -DOUTPUT=${embedded} "-DSPIRV=${outputs}" -P ${PROJECT_SOURCE_DIR}/cmake/EmbedShaders.cmake
+    DEPENDS ${outputs} ${PROJECT_SOURCE_DIR}/cmake/EmbedShaders.cmake
+    COMMENT "embedding ${target}"
+    VERBATIM)
+  add_library(${target} STATIC ${embedded})
+  target_include_directories(${target} PRIVATE ${PROJECT_SOURCE_DIR})
 endfunction()

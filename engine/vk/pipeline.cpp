@@ -1,22 +1,47 @@
 #include "engine/vk/pipeline.h"
 
+#include "engine/vk/embedded_shaders.h"
+
+#include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <iterator>
+#include <span>
 
 namespace grotto::vk {
 
-VkShaderModule loadShader(Context& ctx, const std::string& name) {
-    const char* env = std::getenv("GROTTO_SHADER_DIR");
-    const std::string path = std::string(env && *env ? env : GROTTO_SHADER_DIR_DEFAULT) + "/" + name + ".spv";
+namespace {
+
+// GROTTO_SHADER_DIR/<name>.spv: shaders compiled elsewhere, for experiments.
+std::vector<char> shaderFile(const std::string& dir, const std::string& name) {
+    const std::string path = dir + "/" + name + ".spv";
     std::ifstream in(path, std::ios::binary);
-    if (!in)
-        throw Error::internal(path, "compiled shader not found",
-                              "build the project, or point GROTTO_SHADER_DIR at the .spv files");
-    std::vector<char> code((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in) throw Error::internal(path, "compiled shader not found", "GROTTO_SHADER_DIR names a directory without it");
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+}  // namespace
+
+VkShaderModule loadShader(Context& ctx, const std::string& name) {
+    std::vector<char> file;
+    std::span<const unsigned char> code;
+    if (const char* dir = std::getenv("GROTTO_SHADER_DIR"); dir && *dir) {
+        file = shaderFile(dir, name);
+        code = {reinterpret_cast<const unsigned char*>(file.data()), file.size()};
+    } else {
+        const auto shaders = embeddedShaders();
+        const auto it = std::find_if(shaders.begin(), shaders.end(), [&](const EmbeddedShader& s) { return s.name == name; });
+        if (it == shaders.end()) throw Error::internal(name, "no such shader is built in");
+        code = {it->bytes, it->size};
+    }
+    // The module copies the code; a file's bytes are copied into words first, as
+    // std::vector<char> promises no 4-byte alignment.
+    std::vector<uint32_t> words((code.size() + 3) / 4);
+    std::memcpy(words.data(), code.data(), code.size());
     VkShaderModuleCreateInfo ci{.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO,
                                 .codeSize = code.size(),
-                                .pCode = reinterpret_cast<const uint32_t*>(code.data())};
+                                .pCode = words.data()};
     VkShaderModule module;
     VK_CHECK(vkCreateShaderModule(ctx.device, &ci, nullptr, &module));
     return module;
