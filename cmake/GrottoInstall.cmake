@@ -1,0 +1,26 @@
+# `cmake --install build [--prefix DIR]`: the grotto command, the libraries with
+# their headers (include/grotto/, the same paths as in the source tree) and a CMake
+# package, so another project embeds the renderer with find_package(Grotto) and
+# links Grotto::engine (examples/embed). The shaders are built into the libraries.
+include(CMakePackageConfigHelpers)
+
+set_target_properties(grotto_common PROPERTIES EXPORT_NAME common)
+set_target_properties(grotto_voxel PROPERTIES EXPORT_NAME voxel)
+set_target_properties(grotto_vk PROPERTIES EXPORT_NAME vk)
+set_target_properties(grotto_engine PROPERTIES EXPORT_NAME engine)
+set_target_properties(grotto_shaders PROPERTIES EXPORT_NAME shaders)
+set_target_properties(grotto_oiio PROPERTIES EXPORT_NAME oiio)
+
+install(TARGETS grotto RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+install(TARGETS grotto_common grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_oiio
+        EXPORT GrottoTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
+install(DIRECTORY common engine voxel DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY shaders/shared DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto/shaders FILES_MATCHING PATTERN "*.h")
+
+set(package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/Grotto)
+install(EXPORT GrottoTargets NAMESPACE Grotto:: DESTINATION ${package_dir})
+configure_package_config_file(cmake/GrottoConfig.cmake.in ${CMAKE_CURRENT_BINARY_DIR}/GrottoConfig.cmake
+                              INSTALL_DESTINATION ${package_dir})
+write_basic_package_version_file(${CMAKE_CURRENT_BINARY_DIR}/GrottoConfigVersion.cmake COMPATIBILITY SameMinorVersion)
+install(FILES ${CMAKE_CURRENT_BINARY_DIR}/GrottoConfig.cmake ${CMAKE_CURRENT_BINARY_DIR}/GrottoConfigVersion.cmake
+        DESTINATION ${package_dir})
