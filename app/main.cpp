@@ -1,5 +1,6 @@
 // grotto: the command line. Exit codes: 0 success, 2 bad input or usage,
-// 1 internal failure; errors are one line, never a raw exception trace.
+// 1 internal failure, 3 a measurement worse than its baseline (stability
+// --baseline); errors are one line, never a raw exception trace.
 #include "app/commands.h"
 #include "common/error.h"
 
@@ -30,7 +31,8 @@ int main(int argc, char** argv) {
         const int code = app.exit(e);
         return code == 0 ? 0 : 2;
     } catch (const grotto::Error& e) {
-        std::fprintf(stderr, "grotto: error: %s\n", e.what());
+        const bool regression = e.kind() == grotto::Error::Kind::Regression;
+        std::fprintf(stderr, "grotto: %s: %s\n", regression ? "regression" : "error", e.what());
         return e.exitCode();
     } catch (const std::exception& e) {
         std::fprintf(stderr, "grotto: internal error: %s\n", e.what());

@@ -1,14 +1,17 @@
 // grotto stability WORLD --path NAME [--size WxH] [--fps N] [--frames N] [--spp N]
-//                  [--reference-every K] --json FILE
+//                  [--reference-every K] --json FILE [--baseline FILE]
 // Renders a camera path and measures DESIGN.md's temporal metrics at AO
 // resolution: flicker of the raw, spatial and temporal AO and of the reference,
 // error against the reference per frame, the ghosting curves (error over pixels
 // disoccluded within the last k frames, and at each age) and the cost per pass.
 // The reference is traced on pairs of consecutive frames, one pair every K
-// frames (K = 2: every frame).
+// frames (K = 2: every frame). With --baseline, the flicker and error figures
+// are checked against an earlier run's (app/stability_baseline.h): exit code 3
+// when one regressed.
 #include "app/ao_cost.h"
 #include "app/commands.h"
 #include "app/options.h"
+#include "app/stability_baseline.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "engine/ao_metrics.h"
@@ -32,8 +35,9 @@ namespace {
 using json = nlohmann::json;
 
 struct Args {
-    std::string world, path, size = "320x180", output;
+    std::string world, path, size = "320x180", output, baseline;
     int fps = 24, frames = 0, spp = 256, referenceEvery = 4;
+    Tolerance tolerance;
     AoFlags ao;
 };
 
@@ -89,6 +93,12 @@ void addStabilityCommand(CLI::App& app) {
     cmd->add_option("--reference-every", args->referenceEvery, "Trace the reference on a pair of frames every K frames")
         ->capture_default_str()->check(CLI::Range(2, 100000));
     cmd->add_option("--json", args->output, "Write the metrics to this JSON file")->required();
+    cmd->add_option("--baseline", args->baseline,
+                    "An earlier run's --json: exit 3 if a flicker or error figure exceeds it by more than the tolerance");
+    cmd->add_option("--tolerance", args->tolerance.relative, "Relative tolerance against the baseline")
+        ->capture_default_str()->check(CLI::Range(0.0, 10.0));
+    cmd->add_option("--tolerance-absolute", args->tolerance.absolute, "Absolute tolerance added to it")
+        ->capture_default_str()->check(CLI::Range(0.0, 1.0));
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -107,6 +117,12 @@ void addStabilityCommand(CLI::App& app) {
         if (!ao.enabled) throw Error("--ao", "stability measures AO; it is off", "use --ao gtao");
         const uint32_t scale = ao.fullResolution ? 1 : 2;
         const double tolerance = 0.5 * world.voxelSize();
+        // What was measured; a baseline must have measured the same.
+        const json run = {{"world", args->world}, {"path", args->path}, {"size", {size.width, size.height}},
+                          {"fps", args->fps}, {"frames", count}, {"ao_resolution", scale == 2 ? "half" : "full"},
+                          {"quality", ao.quality}, {"temporal_history", ao.gtao.temporalHistory},
+                          {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}}}};
+        const json baseline = args->baseline.empty() ? json() : loadBaseline(args->baseline, run);
 
         vk::Context ctx;
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
@@ -209,15 +225,23 @@ void addStabilityCommand(CLI::App& app) {
         for (const char* which : {"spatial", "temporal"})
             for (const char* metric : {"mae", "rmse", "psnr", "bias"})
                 steady[which][metric] = meanError(which, metric);
-        const json result = {
-            {"world", args->world}, {"path", args->path}, {"size", {size.width, size.height}}, {"fps", args->fps},
-            {"frames", count}, {"device", ctx.deviceName()}, {"ao_resolution", scale == 2 ? "half" : "full"},
-            {"quality", ao.quality}, {"temporal_history", ao.gtao.temporalHistory},
-            {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}, {"frames", errors.size()},
-                           {"rays", rays}, {"radius", ao.gtao.radius}}},
-            {"flicker", {{"raw", flickerRaw.value()}, {"spatial", flickerSpatial.value()},
-                         {"temporal", flickerTemporal.value()}, {"reference", flickerReference.value()}}},
-            {"error_mean", steady}, {"error_mean_from_frame", steadyFrom}, {"error", errors}, {"ghosting", ghostCurve}, {"cost_ms", cost}};
+        json result = run;
+        result["device"] = ctx.deviceName();
+        result["reference"].update({{"frames", errors.size()}, {"rays", rays}, {"radius", ao.gtao.radius}});
+        result.update({{"flicker", {{"raw", flickerRaw.value()}, {"spatial", flickerSpatial.value()},
+                                    {"temporal", flickerTemporal.value()}, {"reference", flickerReference.value()}}},
+                       {"error_mean", steady}, {"error_mean_from_frame", steadyFrom}, {"error", errors},
+                       {"ghosting", ghostCurve}, {"cost_ms", cost}});
+        std::vector<BaselineCheck> checks;
+        if (!baseline.is_null()) {
+            checks = checkBaseline(baseline, result, args->tolerance);
+            json listed = json::array();
+            for (const BaselineCheck& c : checks)
+                listed.push_back({{"metric", c.metric}, {"was", c.was}, {"is", c.is}, {"limit", c.limit},
+                                  {"regressed", c.regressed()}});
+            result["baseline"] = {{"file", args->baseline}, {"relative", args->tolerance.relative},
+                                  {"absolute", args->tolerance.absolute}, {"checks", listed}};
+        }
         writeAtomically(out, [&](const std::filesystem::path& tmp) {
             std::ofstream f(tmp);
             f << result.dump(2) << "\n";
@@ -232,6 +256,18 @@ void addStabilityCommand(CLI::App& app) {
         // Per-pass timestamps stay in the JSON only: lavapipe's miss passes that follow a barrier.
         std::printf("frame %.1f ms wall, AO chain %.1f ms, temporal pass %.1f ms (wall-time differences); wrote %s\n",
                     median(wallMs), median(chainMs), median(temporalMs), out.c_str());
+        // The figures are written either way, so a regression can be looked at (or blessed).
+        std::string regressed;
+        for (const BaselineCheck& c : checks) {
+            std::printf("baseline %-24s %.5f -> %.5f (limit %.5f)%s\n", c.metric.c_str(), c.was, c.is, c.limit,
+                        c.regressed() ? "  REGRESSED" : "");
+            char line[160];
+            std::snprintf(line, sizeof line, "%s%s %.5f -> %.5f", regressed.empty() ? "" : ", ", c.metric.c_str(), c.was, c.is);
+            if (c.regressed()) regressed += line;
+        }
+        if (!regressed.empty())
+            throw Error::regression(args->baseline, "exceeded by more than the tolerance: " + regressed,
+                                    "this run's figures are in " + out.string());
     });
 }
 

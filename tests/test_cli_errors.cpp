@@ -515,6 +515,43 @@ TEST_F(CliErrors, StabilityRefusesNonsense) {
     expectRefused(base + " --path orbit --ao off", "--ao", out);
 }
 
+// `stability --baseline`: the same run passes, a figure above its baseline exits 3
+// naming it (the run's own figures still written), and a baseline of another run or
+// no JSON at all is refused before anything is measured.
+TEST_F(CliErrors, StabilityBaselineCatchesARegressionAndRefusesAnotherRun) {
+    const std::string run = "stability " + (test::worldsDir() / "rooms.json").string() +
+                            " --path orbit --size 64x36 --frames 8 --spp 16 --json ";
+    const fs::path baseline = dir_ / "baseline.json", again = dir_ / "again.json";
+    ASSERT_EQ(runGrotto(run + baseline.string()).exitCode, 0);
+    const test::RunResult same = runGrotto(run + again.string() + " --baseline " + baseline.string());
+    EXPECT_EQ(same.exitCode, 0) << same.err;
+
+    std::ifstream in(baseline);
+    json doctored = json::parse(in);
+    in.close();
+    const double temporal = doctored["flicker"]["temporal"];
+    ASSERT_GT(temporal, 0.001) << "the run must flicker a little for the check to mean anything";
+    doctored["flicker"]["temporal"] = temporal / 2.0;  // as if the last build had halved it
+    std::ofstream(dir_ / "better.json") << doctored.dump();
+    fs::remove(again);
+    const test::RunResult worse = runGrotto(run + again.string() + " --baseline " + (dir_ / "better.json").string());
+    EXPECT_EQ(worse.exitCode, 3) << worse.err;
+    EXPECT_NE(worse.err.find("flicker/temporal"), std::string::npos) << worse.err;
+    EXPECT_EQ(std::count(worse.err.begin(), worse.err.end(), '\n'), 1) << worse.err;
+    EXPECT_TRUE(fs::exists(again)) << "a regressed run keeps its figures";
+    // A relative tolerance above 100 % lets the doubling through.
+    const test::RunResult tolerant = runGrotto(run + (dir_ / "tolerant.json").string() + " --baseline " +
+                                               (dir_ / "better.json").string() + " --tolerance 1.1");
+    EXPECT_EQ(tolerant.exitCode, 0) << tolerant.err;
+
+    const std::string other = "stability " + (test::worldsDir() / "rooms.json").string() +
+                              " --path orbit --size 64x32 --frames 8 --spp 16 --json ";
+    expectRefused(other + (dir_ / "o.json").string() + " --baseline " + baseline.string(), "size", dir_ / "o.json");
+    std::ofstream(dir_ / "garbage.json") << "{";
+    expectRefused(run + (dir_ / "g.json").string() + " --baseline " + (dir_ / "garbage.json").string(), "garbage.json",
+                  dir_ / "g.json");
+}
+
 }  // namespace
 }  // namespace grotto
 

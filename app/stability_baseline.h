@@ -1,0 +1,35 @@
+#pragma once
+// `grotto stability --baseline FILE`: this run's metrics against an earlier run's
+// JSON, by the rule the regression tests use (tests/baselines/): a figure regresses
+// when it exceeds was * (1 + relative) + absolute. Lower is better for every
+// figure compared, so improvements pass (and are worth re-blessing).
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace grotto::app {
+
+struct Tolerance {
+    double relative = 0.05;    // 5 %
+    double absolute = 0.0005;  // so a figure near zero may wobble
+};
+
+struct BaselineCheck {
+    std::string metric;     // e.g. "flicker/temporal"
+    double was, is, limit;  // the baseline's figure, this run's, and the most it may be
+    bool regressed() const { return is > limit; }
+};
+
+// The baseline, read and checked against `run`: the fields of a stability JSON that
+// say what was measured (world file name, path, size, fps, frames, quality, ...),
+// every one of which must match. Throws grotto::Error (input) naming the file, and
+// the field that differs, for anything else.
+nlohmann::json loadBaseline(const std::filesystem::path& file, const nlohmann::json& run);
+
+// Flicker (raw, spatial, temporal) and steady-state error (spatial and temporal
+// RMSE, temporal MAE) of `result` against the same figures of `baseline`.
+std::vector<BaselineCheck> checkBaseline(const nlohmann::json& baseline, const nlohmann::json& result, Tolerance t);
+
+}  // namespace grotto::app
