@@ -120,6 +120,16 @@ TEST_F(CliErrors, GridOverMemoryBudget) {
     expectRefused(render(world), "memory budget", out());
 }
 
+// One active tile is a few bytes in OpenVDB but 2^27 full bricks here: refused with
+// the estimate before any brick is made (not by running out of memory).
+TEST_F(CliErrors, HugeActiveTileOverMemoryBudget) {
+    auto grid = openvdb::MaskGrid::create(false);
+    grid->setName("solid");
+    grid->tree().addTile(3, openvdb::Coord(0), true, true);  // a root child: 4096^3 voxels
+    writeGrids(dir_ / "tile.vdb", {grid});
+    expectRefused(render(dir_ / "tile.vdb"), "134217728 bricks", out());
+}
+
 TEST_F(CliErrors, MalformedJson) {
     expectRefused(render(writeText("bad.json", R"({"grid": {"file": "good.vdb"},)")), "malformed JSON", out());
 }

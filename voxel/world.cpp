@@ -6,8 +6,27 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
+#include <cstdio>
 
 namespace grotto::voxel {
+
+namespace {
+
+// Bricks the solid tree stands for: its leaves, and every active tile as the full
+// bricks World::bricks() splits it into. Tiles only: leaves are counted, not walked.
+uint64_t brickCount(const openvdb::MaskTree& tree) {
+    uint64_t bricks = tree.leafCount();
+    auto it = tree.cbeginValueOn();
+    it.setMaxDepth(openvdb::MaskTree::ValueOnCIter::LEAF_DEPTH - 1);
+    for (; it; ++it) bricks += it.getVoxelCount() / 512;
+    return bricks;
+}
+
+// What one brick costs on the way to the GPU: its entry in the brick list and its
+// occupancy in the reference's brick table.
+constexpr uint64_t kBytesPerBrick = sizeof(Brick) + 64;
+
+}  // namespace
 
 World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     auto impl = std::make_shared<World::Impl>();
@@ -16,6 +35,17 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     readTransform(*grid, file, *impl);
     impl->sourceGridBytes = grid->memUsage();
     buildSolid(grid, *impl);
+    // A huge active tile, or a level set's interior, is small in OpenVDB but
+    // expands into full bricks here: refused before any of them is made.
+    const uint64_t bricks = brickCount(impl->solid->tree());
+    const double bytes = double(bricks) * double(kBytesPerBrick);
+    if (bytes > double(impl->desc.memoryBudgetBytes)) {
+        char what[160];
+        std::snprintf(what, sizeof what, "grid '%s' is solid over %llu bricks of 8^3 voxels, an estimated %.1f MiB, more than the memory budget of %.1f MiB",
+                      grid->getName().c_str(), (unsigned long long)bricks, bytes / (1 << 20),
+                      double(impl->desc.memoryBudgetBytes) / (1 << 20));
+        throw Error(file, what, "raise 'memory_budget_mib' in the world file, or make the grid smaller or sparser");
+    }
     openvdb::CoordBBox box;
     if (impl->solid->tree().evalActiveVoxelBoundingBox(box))
         impl->bounds = {{box.min().x(), box.min().y(), box.min().z()}, {box.max().x(), box.max().y(), box.max().z()}};
@@ -38,9 +68,7 @@ WorldStats World::stats() const {
     WorldStats s;
     const auto& tree = impl_->solid->tree();
     s.solidVoxels = tree.activeVoxelCount();
-    s.bricks = tree.leafCount();
-    for (auto it = tree.cbeginValueOn(); it; ++it)
-        if (it.isTileValue()) s.bricks += it.getVoxelCount() / 512;
+    s.bricks = brickCount(tree);
     s.hostBytes = impl_->solid->memUsage() + (impl_->materials ? impl_->materials->memUsage() : 0);
     s.sourceGridBytes = impl_->sourceGridBytes;
     return s;
