@@ -6,6 +6,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <array>
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -21,11 +23,49 @@ ImageFormat imageFormatFor(const std::filesystem::path& path) {
     throw Error(path.string(), "unsupported image extension '" + ext + "'", "use .png or .exr");
 }
 
-uint8_t toSrgb8(float v) {
+namespace {
+
+// The sRGB transfer function, rounded to 8 bits: the definition toSrgb8 follows.
+uint8_t srgb8ByFormula(float v) {
     if (!(v > 0.0f)) return 0;
     if (v >= 1.0f) return 255;
     const float s = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
     return uint8_t(std::lround(s * 255.0f));
+}
+
+// The formula is monotone, so 255 thresholds decide it: thresholds[k] is the least
+// float it takes to k + 1 or more, found by bisection on the bit patterns (which
+// order non-negative floats as their values). bucketStart[b] is the formula's value
+// at the least float whose top bits are b, from where a step or two up the
+// thresholds finds the answer: the same bytes as the formula, without a pow.
+struct Srgb8Table {
+    static constexpr int kShift = 16;
+    std::array<float, 255> thresholds;
+    std::vector<uint8_t> bucketStart;
+    Srgb8Table() {
+        const uint32_t one = std::bit_cast<uint32_t>(1.0f);
+        for (int k = 0; k < 255; ++k) {
+            uint32_t lo = 0, hi = one;  // formula(lo) <= k < formula(hi)
+            while (hi - lo > 1) {
+                const uint32_t mid = lo + (hi - lo) / 2;
+                (srgb8ByFormula(std::bit_cast<float>(mid)) > k ? hi : lo) = mid;
+            }
+            thresholds[k] = std::bit_cast<float>(hi);
+        }
+        bucketStart.resize((one >> kShift) + 1);
+        for (uint32_t b = 0; b < bucketStart.size(); ++b) bucketStart[b] = srgb8ByFormula(std::bit_cast<float>(b << kShift));
+    }
+};
+
+}  // namespace
+
+uint8_t toSrgb8(float v) {
+    if (!(v > 0.0f)) return 0;  // NaN too
+    if (v >= 1.0f) return 255;
+    static const Srgb8Table table;
+    int k = table.bucketStart[std::bit_cast<uint32_t>(v) >> Srgb8Table::kShift];
+    while (k < 255 && v >= table.thresholds[k]) ++k;
+    return uint8_t(k);
 }
 
 namespace {
