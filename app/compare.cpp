@@ -27,7 +27,7 @@ void addCompareCommand(CLI::App& app) {
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--spp", args->spp, "Reference rays per pixel (cached; 10000 keeps every standard error below 0.005)")
         ->capture_default_str()->check(CLI::Range(1, 1 << 24));
-    cmd->add_option("--frames", args->frames, "Frames timed after warm-up (with --temporal, at least 32 are rendered)")
+    cmd->add_option("--frames", args->frames, "Frames timed after warm-up (at least 32 are rendered while the temporal pass is on)")
         ->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--warmup", args->warmup, "Frames not timed")->capture_default_str()->check(CLI::Range(0, 1000));
     addAoFlags(cmd, args->ao);
@@ -50,10 +50,14 @@ void addCompareCommand(CLI::App& app) {
         scene.reset();
         requireNoValidationMessages(ctx);
         const gpu::GtaoSettings& s = ao.gtao;
-        std::printf("%s: %s %s (%u slices x %u steps%s, temporal %u), reference R %g, %u spp (%s, stderr max %.4f)\n",
-                    world.desc().source.stem().c_str(), aoMethodName(ao.method), ao.quality.c_str(), s.sliceCount,
-                    s.stepsPerSlice, ao.fullResolution ? ", full resolution" : "", s.temporalHistory, radius,
-                    uint32_t(args->spp), ref.cacheHit ? "from the cache" : "traced", maxError);
+        char shape[64];
+        if (ao.method == AoMethod::Ssao) std::snprintf(shape, sizeof shape, "%u samples", ao.ssaoSamples);
+        else if (ao.method == AoMethod::Hbao) std::snprintf(shape, sizeof shape, "%u directions x %u steps", 2 * s.sliceCount, s.stepsPerSlice);
+        else std::snprintf(shape, sizeof shape, "%u slices x %u steps", s.sliceCount, s.stepsPerSlice);
+        std::printf("%s: %s %s (%s%s, temporal %u), reference R %g, %u spp (%s, stderr max %.4f)\n",
+                    world.desc().source.stem().c_str(), aoMethodName(ao.method), ao.quality.c_str(), shape,
+                    ao.fullResolution ? ", full resolution" : "", s.temporalHistory, radius, uint32_t(args->spp),
+                    ref.cacheHit ? "from the cache" : "traced", maxError);
         std::printf("pixels %zu  mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f  ao %.2f ms  frame %.2f ms\n",
                     m.error.pixels, m.error.mae, m.error.rmse, m.error.psnr, m.error.bias, m.msAo, m.msFrame);
     });

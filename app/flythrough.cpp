@@ -64,15 +64,9 @@ json pathJson(const voxel::CameraPathDesc& p) {
 // Everything that decides a frame's pixels: a resumed run must match it. The
 // frame range and warm-up are not in it: ranges are parts of one sequence.
 json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptions& ao) {
-    const gpu::GtaoSettings& g = ao.gtao;
     return {{"world", fs::absolute(a.world).lexically_normal().string()}, {"path", a.path},
             {"path_keys", pathJson(path)}, {"size", a.size}, {"fps", a.fps}, {"format", a.format},
-            {"ao", ao.enabled ? aoMethodName(ao.method) : "off"}, {"quality", ao.quality},
-            {"ao_full_res", ao.fullResolution}, {"ssao_samples", ao.ssaoSamples},
-            {"temporal_history", ao.gtao.temporalHistory},
-            {"gtao", {g.radius, g.radiusMultiplier, g.falloffRange, g.sampleDistributionPower,
-                      g.thinOccluderCompensation, g.finalValuePower, g.depthMipSamplingOffset, g.strength,
-                      g.denoiseBlurBeta, g.sliceCount, g.stepsPerSlice, g.denoisePasses, g.maxDistance}}};
+            {"ao", aoSettingsJson(ao)}};
 }
 
 void writeJson(const fs::path& file, const json& j) {

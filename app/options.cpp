@@ -79,6 +79,18 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
     return o;
 }
 
+nlohmann::json aoSettingsJson(const AoOptions& ao) {
+    const gpu::GtaoSettings& g = ao.gtao;
+    return {{"method", ao.enabled ? aoMethodName(ao.method) : "off"}, {"quality", ao.quality},
+            {"full_resolution", ao.fullResolution}, {"ssao_samples", ao.ssaoSamples}, {"radius", g.radius},
+            {"radius_multiplier", g.radiusMultiplier}, {"falloff_range", g.falloffRange},
+            {"sample_distribution_power", g.sampleDistributionPower}, {"thin_occluder", g.thinOccluderCompensation},
+            {"final_value_power", g.finalValuePower}, {"depth_mip_offset", g.depthMipSamplingOffset},
+            {"strength", g.strength}, {"denoise_blur_beta", g.denoiseBlurBeta}, {"slices", g.sliceCount},
+            {"steps", g.stepsPerSlice}, {"denoise", g.denoisePasses}, {"temporal", g.temporalHistory},
+            {"max_distance", g.maxDistance}};
+}
+
 voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name) {
     const auto& paths = world.desc().paths;
     if (auto it = paths.find(name); it != paths.end()) return it->second;

@@ -5,6 +5,7 @@
 #include "voxel/world.h"
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <optional>
@@ -41,6 +42,10 @@ void addAoFlags(CLI::App* cmd, AoFlags& flags);
 
 // Preset, world file, then flags; throws grotto::Error (input) for nonsense.
 AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
+
+// Everything about the AO that decides the pixels, with the world file's keys:
+// what a resumed flythrough or a stability baseline must match.
+nlohmann::json aoSettingsJson(const AoOptions& ao);
 
 // The median (0 for none): per-pass and frame times are reported as medians.
 double median(std::vector<double> v);

@@ -95,10 +95,11 @@ void addStabilityCommand(CLI::App& app) {
     cmd->add_option("--json", args->output, "Write the metrics to this JSON file")->required();
     cmd->add_option("--baseline", args->baseline,
                     "An earlier run's --json: exit 3 if a flicker or error figure exceeds it by more than the tolerance");
+    CLI::Option* baseline = cmd->get_option("--baseline");
     cmd->add_option("--tolerance", args->tolerance.relative, "Relative tolerance against the baseline")
-        ->capture_default_str()->check(CLI::Range(0.0, 10.0));
+        ->capture_default_str()->check(CLI::Range(0.0, 10.0))->needs(baseline);
     cmd->add_option("--tolerance-absolute", args->tolerance.absolute, "Absolute tolerance added to it")
-        ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+        ->capture_default_str()->check(CLI::Range(0.0, 1.0))->needs(baseline);
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -121,7 +122,11 @@ void addStabilityCommand(CLI::App& app) {
         const json run = {{"world", args->world}, {"path", args->path}, {"size", {size.width, size.height}},
                           {"fps", args->fps}, {"frames", count}, {"ao_resolution", scale == 2 ? "half" : "full"},
                           {"quality", ao.quality}, {"temporal_history", ao.gtao.temporalHistory},
-                          {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}}}};
+                          {"ao", aoSettingsJson(ao)},
+                          {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}, {"radius", ao.gtao.radius}}}};
+        std::error_code same;
+        if (!args->baseline.empty() && std::filesystem::equivalent(args->baseline, out, same))
+            throw Error("--json", out.string() + " is also the --baseline", "write this run's figures elsewhere");
         const json baseline = args->baseline.empty() ? json() : loadBaseline(args->baseline, run);
 
         vk::Context ctx;
@@ -227,7 +232,7 @@ void addStabilityCommand(CLI::App& app) {
                 steady[which][metric] = meanError(which, metric);
         json result = run;
         result["device"] = ctx.deviceName();
-        result["reference"].update({{"frames", errors.size()}, {"rays", rays}, {"radius", ao.gtao.radius}});
+        result["reference"].update({{"frames", errors.size()}, {"rays", rays}});
         result.update({{"flicker", {{"raw", flickerRaw.value()}, {"spatial", flickerSpatial.value()},
                                     {"temporal", flickerTemporal.value()}, {"reference", flickerReference.value()}}},
                        {"error_mean", steady}, {"error_mean_from_frame", steadyFrom}, {"error", errors},

@@ -19,9 +19,16 @@ std::string metricName(const char* pointer) { return pointer + 1; }
 }  // namespace
 
 json loadBaseline(const std::filesystem::path& file, const json& run) {
-    std::ifstream in(file);
+    std::error_code ec;
+    std::ifstream in;
+    if (std::filesystem::is_regular_file(file, ec)) in.open(file);
     if (!in) throw Error(file.string(), "cannot be read", "give the --json output of an earlier stability run");
-    json baseline = json::parse(in, nullptr, false);
+    json baseline;
+    try {
+        baseline = json::parse(in, nullptr, false);
+    } catch (const std::exception&) {  // a read error, not bad JSON
+        throw Error(file.string(), "cannot be read", "give the --json output of an earlier stability run");
+    }
     if (baseline.is_discarded() || !baseline.is_object())
         throw Error(file.string(), "is not JSON", "give the --json output of an earlier stability run");
     auto require = [&](const std::string& field, json was, json is) {

@@ -19,7 +19,7 @@ struct Tolerance {
 struct BaselineCheck {
     std::string metric;     // e.g. "flicker/temporal"
     double was, is, limit;  // the baseline's figure, this run's, and the most it may be
-    bool regressed() const { return is > limit; }
+    bool regressed() const { return !(is <= limit); }  // a NaN figure too
 };
 
 // The baseline, read and checked against `run`: the fields of a stability JSON that

@@ -2,12 +2,18 @@
 # writes the compiled shaders into a C++ source as byte arrays, so the libraries
 # carry their own shaders and an installed or embedded renderer needs no files
 # beside it (see engine/vk/embedded_shaders.h).
+if(NOT SPIRV)
+  message(FATAL_ERROR "EmbedShaders: no SPIR-V files given")
+endif()
 set(body "")
 set(table "")
 set(index 0)
 foreach(spv IN LISTS SPIRV)
   get_filename_component(name ${spv} NAME_WLE)  # gtao.comp.spv -> gtao.comp
   file(READ ${spv} hex HEX)
+  if(hex STREQUAL "")
+    message(FATAL_ERROR "EmbedShaders: ${spv} is empty")
+  endif()
   string(REGEX REPLACE "([0-9a-f][0-9a-f])" "0x\\1," bytes "${hex}")
   string(REGEX REPLACE "(0x..,0x..,0x..,0x..,0x..,0x..,0x..,0x..,0x..,0x..,0x..,0x..,0x..,0x..,0x..,0x..,)" "\\1\n" bytes "${bytes}")
   string(APPEND body "alignas(4) const unsigned char k${index}[] = {\n${bytes}};\n")

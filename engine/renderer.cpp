@@ -85,6 +85,16 @@ gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* pr
 Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                    uint32_t width, uint32_t height)
     : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), timestamps_(ctx, 16) {
+    try {
+        create(width, height);
+    } catch (...) {  // e.g. a shader that fails to load: free what was made before it
+        release();
+        throw;
+    }
+}
+
+void Renderer::create(uint32_t width, uint32_t height) {
+    vk::Context& ctx = ctx_;
     validateGtao(ao_.gtao, "AO settings");
     const VkExtent2D extent{width, height};
     const VkImageUsageFlags read = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
@@ -146,7 +156,9 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
     VK_CHECK(vkCreateFence(ctx.device, &fci, nullptr, &fence_));
 }
 
-Renderer::~Renderer() {
+Renderer::~Renderer() { release(); }
+
+void Renderer::release() {
     vkDeviceWaitIdle(ctx_.device);
     vkDestroyFence(ctx_.device, fence_, nullptr);
     vkFreeCommandBuffers(ctx_.device, ctx_.commandPool, 1, &cmd_);

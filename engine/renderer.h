@@ -68,6 +68,8 @@ public:
     const AoOptions& ao() const { return ao_; }
 
 private:
+    void create(uint32_t width, uint32_t height);
+    void release();  // frees whatever exists; null handles are skipped
     void recordAo(VkCommandBuffer cmd);
     bool temporal() const { return ao_.enabled && ao_.gtao.temporalHistory > 0; }
     const vk::Image& aoHalfOutput() const;  // the chain's last half-res output: what the composite reads

@@ -48,13 +48,18 @@ TEST(Compare, MeasuresWhatTradeoffMeasuresForTheSameSetting) {
 }
 
 TEST(Compare, TracesTheReferenceWithTheMethodsRadius) {
+    // compare's reference lands in the cache under its radius: `grotto reference`
+    // with that radius then finds it, and with the world's own radius does not.
     const test::ScratchDir dir;
-    const test::RunResult r = test::runGrotto("compare " + (test::worldsDir() / "rooms.json").string() +
-                                                  " --size 48x27 --spp 16 --frames 1 --warmup 0 --radius 2.5",
-                                              "GROTTO_CACHE_DIR=" + dir.path.string());
+    const std::string env = "GROTTO_CACHE_DIR=" + dir.path.string();
+    const std::string world = (test::worldsDir() / "rooms.json").string(), view = " --size 48x27 --spp 16";
+    const test::RunResult r = test::runGrotto("compare " + world + view + " --frames 1 --warmup 0 --radius 2.5", env);
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("reference R 2.5,"), std::string::npos) << r.out;
-    EXPECT_GT(compareRmse(r.out), 0.0) << r.out;
+    const test::RunResult same = test::runGrotto("reference " + world + view + " --radius 2.5 -o " + (dir / "a.exr").string(), env);
+    EXPECT_NE(same.out.find("cache hit"), std::string::npos) << same.out;
+    const test::RunResult other = test::runGrotto("reference " + world + view + " -o " + (dir / "b.exr").string(), env);
+    EXPECT_EQ(other.out.find("cache hit"), std::string::npos) << other.out;
 }
 
 TEST(Compare, RefusesASettingWithoutAo) {

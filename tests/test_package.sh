@@ -9,7 +9,7 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 unset GROTTO_SHADER_DIR
 cmake --install "$build" --prefix "$scratch/prefix" >/dev/null
-cmake -S "$source/examples/embed" -B "$scratch/build" -DCMAKE_PREFIX_PATH="$scratch/prefix" \
+cmake -S "$source/examples/embed" -B "$scratch/build" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" \
       -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$scratch/build" >/dev/null
 GROTTO_VALIDATION=1 "$scratch/build/walk_path" "$source/worlds/rooms.json" orbit 3 "$scratch/out.png"

@@ -22,8 +22,8 @@ uint64_t brickCount(const openvdb::MaskTree& tree) {
     return bricks;
 }
 
-// What one brick costs on the way to the GPU: its entry in the brick list and its
-// occupancy in the reference's brick table.
+// What one brick costs while the world is built: its entry in World::bricks()'s
+// list and its occupancy in the reference's brick table.
 constexpr uint64_t kBytesPerBrick = sizeof(Brick) + 64;
 
 }  // namespace
@@ -40,11 +40,11 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     const uint64_t bricks = brickCount(impl->solid->tree());
     const double bytes = double(bricks) * double(kBytesPerBrick);
     if (bytes > double(impl->desc.memoryBudgetBytes)) {
-        char what[160];
-        std::snprintf(what, sizeof what, "grid '%s' is solid over %llu bricks of 8^3 voxels, an estimated %.1f MiB, more than the memory budget of %.1f MiB",
-                      grid->getName().c_str(), (unsigned long long)bricks, bytes / (1 << 20),
-                      double(impl->desc.memoryBudgetBytes) / (1 << 20));
-        throw Error(file, what, "raise 'memory_budget_mib' in the world file, or make the grid smaller or sparser");
+        char figures[128];
+        std::snprintf(figures, sizeof figures, "%llu bricks of 8^3 voxels, an estimated %.1f MiB, more than the memory budget of %.1f MiB",
+                      (unsigned long long)bricks, bytes / (1 << 20), double(impl->desc.memoryBudgetBytes) / (1 << 20));
+        throw Error(file, "grid '" + grid->getName() + "' is solid over " + figures,
+                    "raise 'memory_budget_mib' in the world file, or make the grid smaller or sparser");
     }
     openvdb::CoordBBox box;
     if (impl->solid->tree().evalActiveVoxelBoundingBox(box))
@@ -77,7 +77,7 @@ WorldStats World::stats() const {
 std::vector<Brick> World::bricks() const {
     std::vector<Brick> out;
     const auto& tree = impl_->solid->tree();
-    out.reserve(tree.leafCount());
+    out.reserve(brickCount(tree));  // tiles included: no regrowth at the size the budget allowed
     for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) {
         Brick b;
         const openvdb::Coord o = leaf->origin();

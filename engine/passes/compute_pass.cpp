@@ -6,11 +6,18 @@ ComputePass::ComputePass(vk::Context& ctx, const std::string& shader, const std:
                          uint32_t pushBytes, const std::vector<uint32_t>& specialization)
     : ctx_(ctx), pushBytes_(pushBytes) {
     setLayout_ = vk::pushDescriptorLayout(ctx, bindings, VK_SHADER_STAGE_COMPUTE_BIT);
-    layout_ = vk::pipelineLayout(ctx, setLayout_, pushBytes, VK_SHADER_STAGE_COMPUTE_BIT);
-    pipeline_ = vk::computePipeline(ctx, layout_, shader, specialization);
+    try {  // a shader that fails to load must not leak the layouts
+        layout_ = vk::pipelineLayout(ctx, setLayout_, pushBytes, VK_SHADER_STAGE_COMPUTE_BIT);
+        pipeline_ = vk::computePipeline(ctx, layout_, shader, specialization);
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
-ComputePass::~ComputePass() {
+ComputePass::~ComputePass() { release(); }
+
+void ComputePass::release() {
     vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
     vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
     vkDestroyDescriptorSetLayout(ctx_.device, setLayout_, nullptr);

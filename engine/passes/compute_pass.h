@@ -22,11 +22,13 @@ public:
                   const void* push = nullptr) const;
 
 private:
+    void release();  // handles not made yet are null, which Vulkan ignores
+
     vk::Context& ctx_;
     uint32_t pushBytes_;
-    VkDescriptorSetLayout setLayout_;
-    VkPipelineLayout layout_;
-    VkPipeline pipeline_;
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
 // A global barrier: compute writes so far are visible to later compute reads.

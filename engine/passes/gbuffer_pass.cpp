@@ -9,13 +9,13 @@ namespace grotto {
 namespace {
 
 VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout) {
-    VkShaderModule vs = vk::loadShader(ctx, "gbuffer.vert");
-    VkShaderModule fs = vk::loadShader(ctx, "gbuffer.frag");
+    const vk::ShaderModule vs = vk::loadShader(ctx, "gbuffer.vert");
+    const vk::ShaderModule fs = vk::loadShader(ctx, "gbuffer.frag");
     VkPipelineShaderStageCreateInfo stages[2] = {
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, .stage = VK_SHADER_STAGE_VERTEX_BIT,
-         .module = vs, .pName = "main"},
+         .module = vs.handle(), .pName = "main"},
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, .stage = VK_SHADER_STAGE_FRAGMENT_BIT,
-         .module = fs, .pName = "main"}};
+         .module = fs.handle(), .pName = "main"}};
     VkVertexInputBindingDescription vertexBinding{.binding = 0, .stride = 4, .inputRate = VK_VERTEX_INPUT_RATE_VERTEX};
     VkVertexInputAttributeDescription vertexAttribute{.location = 0, .binding = 0, .format = VK_FORMAT_R32_UINT};
     VkPipelineVertexInputStateCreateInfo vertexInput{.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO,
@@ -69,8 +69,6 @@ VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout) {
                                     .layout = layout};
     VkPipeline pipeline;
     VK_CHECK(vkCreateGraphicsPipelines(ctx.device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline));
-    vkDestroyShaderModule(ctx.device, vs, nullptr);
-    vkDestroyShaderModule(ctx.device, fs, nullptr);
     return pipeline;
 }
 
@@ -102,11 +100,18 @@ struct Frustum {
 
 GBufferPass::GBufferPass(vk::Context& ctx) : ctx_(ctx) {
     setLayout_ = vk::pushDescriptorLayout(ctx, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, VK_SHADER_STAGE_VERTEX_BIT);
-    layout_ = vk::pipelineLayout(ctx, setLayout_, sizeof(gpu::ChunkPush), VK_SHADER_STAGE_VERTEX_BIT);
-    pipeline_ = createPipeline(ctx, layout_);
+    try {  // a shader that fails to load must not leak the layouts
+        layout_ = vk::pipelineLayout(ctx, setLayout_, sizeof(gpu::ChunkPush), VK_SHADER_STAGE_VERTEX_BIT);
+        pipeline_ = createPipeline(ctx, layout_);
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
-GBufferPass::~GBufferPass() {
+GBufferPass::~GBufferPass() { release(); }
+
+void GBufferPass::release() {
     vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
     vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
     vkDestroyDescriptorSetLayout(ctx_.device, setLayout_, nullptr);

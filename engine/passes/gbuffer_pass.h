@@ -26,10 +26,12 @@ public:
                     const vk::Buffer& frame, const Camera& camera);
 
 private:
+    void release();  // handles not made yet are null, which Vulkan ignores
+
     vk::Context& ctx_;
-    VkDescriptorSetLayout setLayout_;
-    VkPipelineLayout layout_;
-    VkPipeline pipeline_;
+    VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
 };
 
 }  // namespace grotto

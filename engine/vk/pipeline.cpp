@@ -13,17 +13,24 @@ namespace grotto::vk {
 
 namespace {
 
-// GROTTO_SHADER_DIR/<name>.spv: shaders compiled elsewhere, for experiments.
+// GROTTO_SHADER_DIR/<name>.spv: shaders compiled elsewhere, for experiments. What
+// the driver would reject with a bare error code is refused here, naming the file.
 std::vector<char> shaderFile(const std::string& dir, const std::string& name) {
     const std::string path = dir + "/" + name + ".spv";
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error::internal(path, "compiled shader not found", "GROTTO_SHADER_DIR names a directory without it");
-    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (!in) throw Error(path, "no such compiled shader", "GROTTO_SHADER_DIR names a directory without it");
+    std::vector<char> code{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    uint32_t magic = 0;
+    if (code.size() >= 4) std::memcpy(&magic, code.data(), 4);
+    if (code.size() < 20 || code.size() % 4 != 0 || magic != 0x07230203u)
+        throw Error(path, "is not SPIR-V (" + std::to_string(code.size()) + " bytes)",
+                    "compile it with glslangValidator -V, or unset GROTTO_SHADER_DIR");
+    return code;
 }
 
 }  // namespace
 
-VkShaderModule loadShader(Context& ctx, const std::string& name) {
+ShaderModule loadShader(Context& ctx, const std::string& name) {
     std::vector<char> file;
     std::span<const unsigned char> code;
     if (const char* dir = std::getenv("GROTTO_SHADER_DIR"); dir && *dir) {
@@ -44,7 +51,7 @@ VkShaderModule loadShader(Context& ctx, const std::string& name) {
                                 .pCode = words.data()};
     VkShaderModule module;
     VK_CHECK(vkCreateShaderModule(ctx.device, &ci, nullptr, &module));
-    return module;
+    return ShaderModule(ctx, module);
 }
 
 VkDescriptorSetLayout pushDescriptorLayout(Context& ctx, const std::vector<VkDescriptorType>& types,
@@ -76,7 +83,7 @@ VkPipelineLayout pipelineLayout(Context& ctx, VkDescriptorSetLayout set, uint32_
 
 VkPipeline computePipeline(Context& ctx, VkPipelineLayout layout, const std::string& shader,
                            const std::vector<uint32_t>& specialization) {
-    VkShaderModule module = loadShader(ctx, shader);
+    const ShaderModule module = loadShader(ctx, shader);
     std::vector<VkSpecializationMapEntry> entries;
     for (uint32_t i = 0; i < specialization.size(); ++i) entries.push_back({i, 4 * i, 4});
     const VkSpecializationInfo spec{.mapEntryCount = uint32_t(entries.size()),
@@ -86,13 +93,12 @@ VkPipeline computePipeline(Context& ctx, VkPipelineLayout layout, const std::str
     VkComputePipelineCreateInfo ci{.sType = VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO,
                                    .stage = {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO,
                                              .stage = VK_SHADER_STAGE_COMPUTE_BIT,
-                                             .module = module,
+                                             .module = module.handle(),
                                              .pName = "main",
                                              .pSpecializationInfo = specialization.empty() ? nullptr : &spec},
                                    .layout = layout};
     VkPipeline pipeline;
     VK_CHECK(vkCreateComputePipelines(ctx.device, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline));
-    vkDestroyShaderModule(ctx.device, module, nullptr);
     return pipeline;
 }
 

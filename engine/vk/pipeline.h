@@ -1,6 +1,7 @@
 #pragma once
-// Shader modules from the SPIR-V compiled at build time, push-descriptor set
-// layouts and compute pipelines. Graphics pipelines are built by their pass.
+// Shader modules from the SPIR-V built into the library (embedded_shaders.h), push-
+// descriptor set layouts and compute pipelines. Graphics pipelines are built by
+// their pass.
 #include "engine/vk/context.h"
 
 #include <string>
@@ -8,9 +9,26 @@
 
 namespace grotto::vk {
 
-// Loads <shader dir>/<name>.spv; the directory is GROTTO_SHADER_DIR if set, else
-// the build's shader directory.
-VkShaderModule loadShader(Context& ctx, const std::string& name);
+// The built-in shader `name` (e.g. "gtao.comp"), or GROTTO_SHADER_DIR/<name>.spv
+// when that variable names a directory (for shader experiments); a missing or
+// malformed file there is refused naming it (grotto::Error, input).
+class ShaderModule;
+ShaderModule loadShader(Context& ctx, const std::string& name);
+
+// A loaded shader, destroyed with this object (a pipeline keeps what it needs), so
+// a pipeline that fails to build leaks no module.
+class ShaderModule {
+public:
+    ShaderModule(Context& ctx, VkShaderModule module) : device_(ctx.device), module_(module) {}
+    ~ShaderModule() { vkDestroyShaderModule(device_, module_, nullptr); }
+    ShaderModule(const ShaderModule&) = delete;
+    ShaderModule& operator=(const ShaderModule&) = delete;
+    VkShaderModule handle() const { return module_; }
+
+private:
+    VkDevice device_;
+    VkShaderModule module_;
+};
 
 // A set layout for push descriptors: binding i has types[i], visible to stages.
 VkDescriptorSetLayout pushDescriptorLayout(Context& ctx, const std::vector<VkDescriptorType>& types,

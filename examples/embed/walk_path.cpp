@@ -12,6 +12,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <exception>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -51,5 +52,8 @@ int main(int argc, char** argv) {
     } catch (const grotto::Error& e) {
         std::fprintf(stderr, "walk_path: error: %s\n", e.what());
         return e.exitCode();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "walk_path: internal error: %s\n", e.what());
+        return 1;
     }
 }
