@@ -1,0 +1,58 @@
+#pragma once
+// The CLI tests' fixture: a scratch directory with a small good world in it, and
+// the check every refusal must pass (exit code 2, one stderr line naming the
+// problem, no output and no temporary file left behind).
+#include "tests/test_util.h"
+
+#include <gtest/gtest.h>
+#include <openvdb/openvdb.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace grotto::test {
+
+namespace fs = std::filesystem;
+
+class CliErrors : public ::testing::Test {
+protected:
+    void SetUp() override {
+        openvdb::initialize();
+        auto grid = openvdb::BoolGrid::create(false);
+        grid->setName("solid");
+        for (int x = 0; x < 16; ++x)
+            for (int z = 0; z < 16; ++z) grid->tree().setValueOn(openvdb::Coord(x, 0, z), true);
+        good_ = dir_ / "good.vdb";
+        writeGrids(good_, {grid});
+    }
+
+    static void writeGrids(const fs::path& p, openvdb::GridPtrVec grids) { openvdb::io::File(p.string()).write(grids); }
+
+    fs::path writeText(const std::string& name, const std::string& text) {
+        std::ofstream(dir_ / name) << text;
+        return dir_ / name;
+    }
+
+    // Exit code 2, a single stderr line naming `mention`, and no output written.
+    void expectRefused(const std::string& args, const std::string& mention, const fs::path& output,
+                       const std::string& env = "") {
+        const RunResult r = runGrotto(args, env);
+        EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(mention), std::string::npos) << "expected '" << mention << "' in: " << r.err;
+        EXPECT_EQ(r.err.find("terminate"), std::string::npos);
+        EXPECT_FALSE(fs::exists(output)) << output;
+        for (auto& e : fs::directory_iterator(dir_.path))
+            EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "left behind: " << e.path();
+    }
+
+    std::string render(const fs::path& world) { return "render " + world.string() + " --size 32x16 -o " + out().string(); }
+    fs::path out() const { return dir_ / "out.png"; }
+
+    ScratchDir dir_;
+    fs::path good_;
+};
+
+}  // namespace grotto::test
