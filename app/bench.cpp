@@ -49,7 +49,7 @@ void addBenchCommand(CLI::App& app) {
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
-        if (!args->json.empty()) requireWritableDirectory(args->json);
+        if (!args->json.empty()) requireOutputPath(args->json);
         auto t = std::chrono::steady_clock::now();
         const voxel::World world = voxel::World::load(args->world);
         const double loadMs = msSince(t);

@@ -3,6 +3,7 @@
 // --baseline); errors are one line, never a raw exception trace.
 #include "app/commands.h"
 #include "common/error.h"
+#include "common/printable.h"
 
 #include <cstdio>
 #include <exception>
@@ -12,7 +13,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     // Usage errors get one line too, like every other error.
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
-        return "grotto: error: " + std::string(e.what()) + " (see --help)\n";
+        return "grotto: error: " + grotto::printable(e.what()) + " (see --help)\n";
     });
     grotto::app::addRenderCommand(app);
     grotto::app::addInfoCommand(app);
@@ -32,10 +33,10 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     } catch (const grotto::Error& e) {
         const bool regression = e.kind() == grotto::Error::Kind::Regression;
-        std::fprintf(stderr, "grotto: %s: %s\n", regression ? "regression" : "error", e.what());
+        std::fprintf(stderr, "grotto: %s: %s\n", regression ? "regression" : "error", grotto::printable(e.what()).c_str());
         return e.exitCode();
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "grotto: internal error: %s\n", e.what());
+        std::fprintf(stderr, "grotto: internal error: %s\n", grotto::printable(e.what()).c_str());
         return 1;
     }
     return 0;

@@ -36,7 +36,7 @@ void addReferenceCommand(CLI::App& app) {
         const std::filesystem::path out = args->output;
         if (imageFormatFor(out) != ImageFormat::Exr)
             throw Error(out.string(), "the reference needs an .exr output", "it holds the float channels AO and AO_stderr");
-        requireWritableDirectory(out);
+        requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
         const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
         // R is the radius GTAO is given (before its radius multiplier), so both measure the same thing.

@@ -36,7 +36,7 @@ void addRenderCommand(CLI::App& app) {
             throw Error(out.string(), "--aov needs an .exr output", "PNG holds colour only; try --show");
         if (imageFormatFor(out) != ImageFormat::Png && !args->show.empty())
             throw Error(out.string(), "--show needs a .png output", "EXR holds every AOV with --aov");
-        requireWritableDirectory(out);
+        requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
         const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
         const AoOptions ao = resolveAo(world, args->ao);

@@ -104,7 +104,7 @@ void addStabilityCommand(CLI::App& app) {
     cmd->callback([args] {
         const Size size = parseSize(args->size);
         const std::filesystem::path out = args->output;
-        requireWritableDirectory(out);
+        requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
         const CameraPath path(findCameraPath(world, args->path), world.camera(""));
         const int pathFrames = path.frameCount(args->fps);

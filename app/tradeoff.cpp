@@ -137,12 +137,12 @@ void addTradeoffCommand(CLI::App& app) {
         if (args->spp < 1 || args->spp > (int64_t(1) << 24))
             throw Error("--spp", std::to_string(args->spp) + " is out of range", "accepted: 1 to 16777216 rays per pixel");
         // Everything that can be refused is refused before minutes of rendering.
-        requireWritableDirectory(args->csv);
-        if (!args->markdown.empty()) requireWritableDirectory(args->markdown);
+        requireOutputPath(args->csv);
+        if (!args->markdown.empty()) requireOutputPath(args->markdown);
         if (!args->plot.empty()) {
             if (std::filesystem::path(args->plot).extension() != ".png")
                 throw Error(args->plot, "the plot is written as PNG", "name a .png file");
-            requireWritableDirectory(args->plot);
+            requireOutputPath(args->plot);
             if (!onPath("gnuplot"))
                 throw Error("--plot", "gnuplot is not installed", "install gnuplot-nox (scripts/setup.sh)");
         }
