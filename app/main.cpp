@@ -8,7 +8,7 @@
 #include <exception>
 
 int main(int argc, char** argv) {
-    CLI::App app{"grotto: voxel deferred renderer with temporal GTAO"};
+    CLI::App app{"grotto: voxel deferred renderer with temporal GTAO", "grotto"};
     app.require_subcommand(1);
     app.set_version_flag("--version", "grotto " GROTTO_VERSION);
     // Usage errors get one line too, like every other error.
