@@ -8,7 +8,8 @@
 // frames (K = 2: every frame). With --baseline, the flicker and error figures
 // are checked against an earlier run's (app/stability_baseline.h): exit code 3
 // when one regressed. A run that measured no surface pixels (sky only, an empty
-// world, an image too small to match any pixel between frames) is refused.
+// world, no pixel matching between frames) is refused, as is, up front, an AO
+// image under 8x8.
 #include "app/ao_cost.h"
 #include "app/commands.h"
 #include "app/cost_difference.h"
