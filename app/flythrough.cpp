@@ -19,6 +19,7 @@
 #include "common/file_lock.h"
 #include "engine/camera_path.h"
 #include "engine/image_output.h"
+#include "engine/render_memory.h"
 #include "engine/renderer.h"
 #include "voxel/world.h"
 
@@ -166,7 +167,7 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->add_option("--path", args->path, "Path named in the world file, or a path .json")->required();
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
-    cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based (default: the whole path)");
+    cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based, or N for the first N (default: the whole path)");
     cmd->add_option("--warmup", args->warmup,
                     "Frames rendered but not written before the first one written; the default (four times the "
                     "temporal history, 64) keeps a split run within 2/255 of the whole run")
@@ -179,9 +180,11 @@ void addFlythroughCommand(CLI::App& app) {
         const voxel::World world = voxel::World::load(args->world);
         const voxel::CameraPathDesc desc = findCameraPath(world, args->path);
         const CameraPath path(desc, world.camera(""));
-        const int count = path.frameCount(args->fps);
+        const int count = pathFrameCount(path, args->fps, args->path);
         const FrameRange range = args->frames.empty() ? FrameRange{1, count} : parseFrameRange(args->frames, count);
         const AoOptions ao = resolveAo(world, args->ao);
+        vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
+        requireRenderFits(ctx, size.width, size.height, ao, "--size");
         const fs::path dir = args->output;
         std::error_code ec;
         fs::create_directories(dir, ec);
@@ -216,7 +219,6 @@ void addFlythroughCommand(CLI::App& app) {
         const int warmup = args->warmup.value_or(4 * int(ao.gtao.temporalHistory));
         const int start = std::max(1, missing.front() - warmup), end = missing.back();
         std::vector<json> rendered;  // this run's frame entries
-        vk::Context ctx;
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
         {
             Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);

@@ -9,8 +9,9 @@
 #include <exception>
 
 int main(int argc, char** argv) {
-    CLI::App app{"grotto: voxel deferred renderer with temporal GTAO"};
+    CLI::App app{"grotto: voxel deferred renderer with temporal GTAO", "grotto"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", "grotto " GROTTO_VERSION);
     // Usage errors get one line too, like every other error.
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
         return "grotto: error: " + grotto::printable(e.what()) + " (see --help)\n";
@@ -26,6 +27,13 @@ int main(int argc, char** argv) {
     grotto::app::addTradeoffCommand(app);
     grotto::app::addTuneCommand(app);
     grotto::app::addCompareCommand(app);
+    // Bare `grotto` is a usage error, but one worth the whole usage: on stdout,
+    // with the usual one line on stderr.
+    if (argc < 2) {
+        std::fputs(app.help().c_str(), stdout);
+        std::fprintf(stderr, "grotto: error: a subcommand is required (usage above)\n");
+        return 2;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
