@@ -74,9 +74,6 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
         desc.slices.reset();
         desc.steps.reset();
     }
-    // --radius replaces the world's radius below: a placeholder keeps the voxel
-    // size from deciding a default radius that would never be used.
-    if (f.set.radius && !desc.radius) desc.radius = 1.0;
     AoOptions o = aoOptionsFor(desc, world.voxelSize(), world.desc().source.string());
     o.fullResolution = f.fullResolution;
     // Negative counts would wrap in the unsigned settings, so they are refused here.

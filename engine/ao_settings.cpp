@@ -1,6 +1,7 @@
 #include "engine/ao_settings.h"
 
 #include "common/error.h"
+#include "voxel/world.h"
 
 #include <algorithm>
 #include <cmath>
@@ -109,19 +110,11 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
     if (o.enabled) o.method = parseAoMethod(d.method, where);
     o.quality = d.quality;
     o.ssaoSamples = d.quality == "low" ? 8 : d.quality == "medium" ? 16 : d.quality == "ultra" ? 64 : 32;
-    // Without a radius of its own the world gets four voxels; the voxel size is
-    // then what decides whether it is in range, so the error names that.
-    const double radius = d.radius ? *d.radius : kDefaultRadiusVoxels * voxelSize;
-    if (!d.radius && !(radius >= kMinAoRadius && radius <= kMaxAoRadius)) {
-        char text[96], accepted[160];
-        std::snprintf(text, sizeof text, "voxel size %g is out of range for the default AO radius (%g voxels)",
-                      voxelSize, kDefaultRadiusVoxels);
-        std::snprintf(accepted, sizeof accepted,
-                      "accepted: voxel sizes %g to %g world units, or give the radius (ao.radius, --radius)",
-                      kMinAoRadius / kDefaultRadiusVoxels, kMaxAoRadius / kDefaultRadiusVoxels);
-        throw Error(where, text, accepted);
-    }
-    o.gtao = gtaoPreset(d.quality, radius);
+    // Without a radius of its own the world gets four voxels: always in range,
+    // since a world's voxel size is (voxel/world.h).
+    static_assert(kDefaultRadiusVoxels * voxel::kMinVoxelSize >= kMinAoRadius &&
+                  kDefaultRadiusVoxels * voxel::kMaxVoxelSize <= kMaxAoRadius);
+    o.gtao = gtaoPreset(d.quality, d.radius ? *d.radius : kDefaultRadiusVoxels * voxelSize);
     applyAoOverrides(d, o.gtao);
     validateGtao(o.gtao, where);
     return o;

@@ -4,17 +4,38 @@
 // problem, no output and no temporary file left behind).
 #include "tests/test_util.h"
 
+#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <openvdb/openvdb.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace grotto::test {
 
 namespace fs = std::filesystem;
+
+// An image's pixels as 8-bit channels, interleaved; empty if it cannot be read.
+inline std::vector<uint8_t> readPixels8(const fs::path& file) {
+    auto in = OIIO::ImageInput::open(file.string());
+    if (!in) return {};
+    std::vector<uint8_t> pixels(size_t(in->spec().image_pixels()) * size_t(in->spec().nchannels));
+    if (!in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::UINT8, pixels.data())) return {};
+    return pixels;
+}
+
+// The largest difference of any channel of two images of one size (256 if the sizes differ).
+inline int worstDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+    if (a.size() != b.size()) return 256;
+    int worst = 0;
+    for (size_t k = 0; k < a.size(); ++k) worst = std::max(worst, std::abs(int(a[k]) - int(b[k])));
+    return worst;
+}
 
 class CliErrors : public ::testing::Test {
 protected:

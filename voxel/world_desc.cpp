@@ -95,7 +95,7 @@ void parseAo(Reader r, AoDesc& ao) {
     auto optInt = [&](const char* key, std::optional<int>& v, int lo, int hi) {
         if (r.has(key)) v = int(r.number(key, 0.0, lo, hi));
     };
-    opt("radius", ao.radius, 1e-6, 1e6);
+    opt("radius", ao.radius, 1e-15, 1e15);  // what the shaders' floats hold (engine/ao_settings.h)
     opt("radius_multiplier", ao.radiusMultiplier, 0.3, 3.0);
     opt("falloff_range", ao.falloffRange, 0.0, 1.0);
     opt("sample_distribution_power", ao.sampleDistributionPower, 1.0, 3.0);

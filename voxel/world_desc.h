@@ -38,7 +38,7 @@ struct CameraDesc {
 };
 
 struct Lighting {
-    glm::vec3 sunDirection = glm::vec3(0.45f, 0.8f, 0.3f);  // toward the sun, normalised on load
+    glm::vec3 sunDirection{0.466002f, 0.828449f, 0.310668f};  // toward the sun, unit length ((0.45, 0.8, 0.3) normalised)
     glm::vec3 sunColor{1.0f, 0.95f, 0.85f};
     float sunIntensity = 1.0f;  // the shipped worlds' daylight, so an untuned .vdb looks like them
     glm::vec3 ambientColor{0.55f, 0.65f, 0.85f};
