@@ -1,6 +1,6 @@
 // grotto stability WORLD --path NAME [--size WxH] [--fps N] [--frames A-B|N] [--spp N]
 //                  [--reference-every K] [--quiet] --json FILE [--baseline FILE]
-// Renders a camera path and measures DESIGN.md's temporal metrics at AO
+// Renders a camera path and measures the temporal metrics (docs/metrics.md) at AO
 // resolution: flicker of the raw, spatial and temporal AO and of the reference,
 // error against the reference per frame, the ghosting curves (error over pixels
 // disoccluded within the last k frames, and at each age) and the cost per pass.
@@ -48,7 +48,7 @@ struct Args {
     AoFlags ao;
 };
 
-// DESIGN.md's error over surface pixels, as JSON.
+// The error over surface pixels (docs/metrics.md), as JSON.
 json errorJson(const std::vector<float>& ao, const std::vector<float>& reference, const std::vector<uint8_t>& mask) {
     const AoError e = aoError(ao, reference, mask);
     if (e.pixels == 0) return {{"pixels", 0}};
@@ -231,7 +231,7 @@ void addStabilityCommand(CLI::App& app) {
         cost["ao_chain_wall"] = chain.ms;
         cost["ao_chain_wall_noise"] = chain.noiseMs;
         if (!temporalMs.empty()) cost["temporal_wall"] = temporalPass.ms, cost["temporal_wall_noise"] = temporalPass.noiseMs;
-        // DESIGN.md's curve: error over the pixels disoccluded within the last k
+        // The cumulative curve (docs/metrics.md): error over the pixels disoccluded within the last k
         // frames (age <= k), cumulative over the exact ages below the cap; and the
         // error at each age on its own (the last bin: kGhostAgeCap and older).
         json byAge = json::array(), within = json::array();

@@ -1,5 +1,5 @@
 #pragma once
-// Error of an AO image against the reference (DESIGN.md, "What we measure"):
+// Error of an AO image against the reference (docs/metrics.md):
 // over the pixels the mask marks (non-sky), MAE, RMSE, PSNR with peak 1.0 and the
 // mean signed bias (method - reference). Plain arithmetic, no Vulkan: the tradeoff
 // and stability commands and the tests all use it.

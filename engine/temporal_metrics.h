@@ -1,5 +1,5 @@
 #pragma once
-// DESIGN.md's temporal metrics at AO resolution. An AO pixel (x, y) stands for
+// The temporal metrics (docs/metrics.md) at AO resolution. An AO pixel (x, y) stands for
 // full-res pixel (2x, 2y) exactly (1:1 with --ao-full-res), so its world position,
 // and the reference there, are that pixel's.
 //   flicker: mean |V_t(p) - V_t-1(q)| over pixels p whose reprojection q shows the

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Regenerates docs/tradeoff.md's table and plot: every AO method and preset against
 # the ray-traced reference (10000 rays per pixel, so every pixel's standard error is
-# below 0.005 as DESIGN.md asks; cached) on the standard worlds at 640x360, default
+# at most 0.005, docs/metrics.md; cached) on the standard worlds at 640x360, default
 # cameras. CSV in out/tradeoff.csv, plot in docs/images/tradeoff.png; the table is
 # spliced into docs/tradeoff.md between its two "tradeoff table" markers.
 set -euo pipefail

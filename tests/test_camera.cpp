@@ -1,4 +1,4 @@
-// Projection and depth linearisation at DESIGN.md's extremes: near 1e-4 to 10,
+// Projection and depth linearisation at the numerical extremes we support: near 1e-4 to 10,
 // infinite and finite (1e7) far planes, a camera 1e6 units from the origin.
 #include "engine/camera.h"
 

@@ -198,7 +198,7 @@ json readJson(const fs::path& file) {
     return json::parse(in);
 }
 
-// `grotto stability` on a tiny run: every DESIGN.md metric is there, finite and in range.
+// `grotto stability` on a tiny run: every metric of docs/metrics.md is there, finite and in range.
 TEST_F(CliErrors, StabilityReportsEveryMetric) {
     const fs::path out = dir_ / "stability.json";
     const test::RunResult r = runGrotto("stability " + (test::worldsDir() / "rooms.json").string() +

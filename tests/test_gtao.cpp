@@ -353,7 +353,7 @@ TEST_F(Gtao, CompositeTakesMaterialAoAndLeavesTheSunAlone) {
 namespace grotto {
 namespace {
 
-// DESIGN.md's numerical extremes: no NaN or Inf may reach an output.
+// The numerical extremes we support: no NaN or Inf may reach an output.
 TEST_F(Gtao, NumericalExtremesStayFinite) {
     auto hills = [](int x, int y, int z) { return y < 0 || (y < 6 && (x * 7 + z * 13) % 11 == 0); };
     const voxel::World near = test::makeVoxelWorld({-48, -2, -48}, {47, 6, 47}, hills);

@@ -1,5 +1,5 @@
 #pragma once
-// The ray-traced reference AO (DESIGN.md, "What we measure"): from each surface
+// The ray-traced reference AO (docs/metrics.md): from each surface
 // point p with normal n, N cosine-weighted rays leave p + epsilon * n and a ray is
 // occluded when it enters a solid voxel within the radius R. V = unoccluded / N.
 // OpenVDB-free interface, so the engine and every command can use it.

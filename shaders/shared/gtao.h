@@ -1,6 +1,6 @@
 // GTAO settings and per-frame constants, shared by C++ and GLSL. Every setting
 // carries its default and range; the defaults are XeGTAO's published values
-// (DESIGN.md) except three fitted to our ray-traced reference (docs/tuning.md),
+// except three fitted to our ray-traced reference (docs/tuning.md),
 // and thin-occluder compensation is compiled in and exposed.
 #ifndef GROTTO_SHARED_GTAO_H
 #define GROTTO_SHARED_GTAO_H
