@@ -11,9 +11,9 @@ namespace grotto::voxel {
 namespace {
 
 // The reader's memory for a grid whose size is unknown, and its CPU time: one
-// second plus one per this much file (real files read far faster).
+// second plus one per this much file (a 9 MiB world reads in 0.25 s here).
 constexpr size_t kReaderMemoryBytes = size_t(512) << 20;
-constexpr uintmax_t kReaderBytesPerCpuSecond = uintmax_t(16) << 20;
+constexpr uintmax_t kReaderBytesPerCpuSecond = uintmax_t(8) << 20;
 
 std::string gridNames(openvdb::io::File& file) {
     std::string s;
