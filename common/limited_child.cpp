@@ -55,7 +55,8 @@ void report(int fd, char kind, const std::string& where = {}, const std::string&
 [[noreturn]] void runChild(int fd, const ChildLimits& limits, const std::function<void()>& work) {
     // What the child prints (a library's warnings, a sanitizer's report) is not
     // the user's business: the parent turns the outcome into one line.
-    if (std::FILE* null = std::freopen("/dev/null", "w", stderr); !null) {}
+    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
+    if (null >= 0) dup2(null, STDERR_FILENO);
     g_inheritedBytes = addressSpaceBytes();
     limitAddressSpace(limits.memoryBytes);
     rlimit cpu{};
