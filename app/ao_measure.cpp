@@ -1,11 +1,21 @@
 #include "app/ao_measure.h"
 
 #include "app/options.h"
+#include "common/error.h"
 #include "engine/renderer.h"
+
+#include <algorithm>
 
 #include <memory>
 
 namespace grotto::app {
+
+void requireSurface(const ReferenceView& reference, const voxel::World& world, const std::string& camera) {
+    if (std::find(reference.surface.begin(), reference.surface.end(), uint8_t(1)) != reference.surface.end()) return;
+    const std::string view = camera.empty() ? "the default camera" : "camera '" + camera + "'";
+    throw Error(world.desc().source.string(), view + " sees no surface: there is nothing to measure",
+                "accepted: a view that shows the world's surfaces; pick another --camera");
+}
 
 AoMeasurement measureAo(vk::Context& ctx, const GpuScene& scene, const voxel::World& world, const Camera& camera,
                         const AoOptions& ao, const ReferenceView& reference, int frames, int warmup,
@@ -30,7 +40,7 @@ AoMeasurement measureAo(vk::Context& ctx, const GpuScene& scene, const voxel::Wo
         frameMs.push_back(wall);
     }
     const FrameImages img = renderer.readback(camera, true);
-    return {aoError(img.ao, reference.ao, reference.surface), median(aoMs), median(frameMs)};
+    return {aoError(img.ao, reference.ao, reference.surface), costDifference(aoMs), median(frameMs)};
 }
 
 }  // namespace grotto::app

@@ -3,6 +3,7 @@
 // (the frame minus the same frame without AO) and of the whole frame, medians
 // after warm-up, and the error of the final AO. Shared
 // by `grotto tradeoff` and `grotto tune`.
+#include "app/cost_difference.h"
 #include "engine/ao_metrics.h"
 #include "engine/ao_settings.h"
 #include "engine/camera.h"
@@ -14,9 +15,13 @@ namespace grotto::app {
 
 struct AoMeasurement {
     AoError error;        // of the last frame's full-res AO against the reference
-    double msAo = 0.0;    // all AO costs: prefilter, estimator, denoise, temporal, the composite's upsample
+    CostDifference ao;    // all AO costs: prefilter, estimator, denoise, temporal, the composite's upsample
     double msFrame = 0.0; // the whole frame
 };
+
+// Throws grotto::Error (input) naming the world and camera when the view shows no
+// surface (sky only, an empty world): every error would be a perfect score over no pixels.
+void requireSurface(const ReferenceView& reference, const voxel::World& world, const std::string& camera);
 
 // Renders frames 0 .. frames-1 of a static camera (consecutive indices, so the
 // temporal pass accumulates); times are medians over the frames after `warmup`,

@@ -8,9 +8,11 @@
 // pass, and the median of the per-frame differences is reported.
 #include "app/ao_cost.h"
 #include "app/commands.h"
+#include "app/cost_difference.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "engine/render_memory.h"
 #include "engine/renderer.h"
 #include "voxel/world.h"
 
@@ -49,7 +51,7 @@ void addBenchCommand(CLI::App& app) {
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
-        if (!args->json.empty()) requireWritableDirectory(args->json);
+        if (!args->json.empty()) requireOutputPath(args->json);
         auto t = std::chrono::steady_clock::now();
         const voxel::World world = voxel::World::load(args->world);
         const double loadMs = msSince(t);
@@ -61,6 +63,7 @@ void addBenchCommand(CLI::App& app) {
         const AoOptions ao = resolveAo(world, args->ao);
 
         vk::Context ctx;
+        requireRenderFits(ctx, size.width, size.height, ao, "--size");
         auto scene = uploadScene(ctx, mesh, world.desc());
         const size_t quadCount = mesh.quads.size();
         mesh = {};  // the GPU holds the quads now
@@ -109,13 +112,18 @@ void addBenchCommand(CLI::App& app) {
             std::printf("  %-10s %8.3f ms GPU\n", name.c_str(), median(v));
         }
         std::printf("  frame      %8.3f ms GPU, %.3f ms wall\n", median(frameGpuMs), median(wallMs));
+        // Differences of two renders: 0 beside their noise when below it, never negative.
         if (!chainWallMs.empty()) {
-            j["ao_chain_wall_ms_median"] = median(chainWallMs);
-            std::printf("  AO chain   %8.3f ms wall (frame minus the same frame without AO)\n", median(chainWallMs));
+            const CostDifference chain = costDifference(chainWallMs);
+            j["ao_chain_wall_ms_median"] = chain.ms;
+            j["ao_chain_wall_ms_noise"] = chain.noiseMs;
+            std::printf("  AO chain   %s wall (frame minus the same frame without AO)\n", formatCost(chain).c_str());
         }
         if (!temporalWallMs.empty()) {
-            j["temporal_wall_ms_median"] = median(temporalWallMs);
-            std::printf("  temporal   %8.3f ms wall (frame minus the same frame without it)\n", median(temporalWallMs));
+            const CostDifference temporal = costDifference(temporalWallMs);
+            j["temporal_wall_ms_median"] = temporal.ms;
+            j["temporal_wall_ms_noise"] = temporal.noiseMs;
+            std::printf("  temporal   %s wall (frame minus the same frame without it)\n", formatCost(temporal).c_str());
         }
         std::printf("  memory: grid memUsage %zu B; world host %zu B + GPU %zu B = %.2fx; targets %zu B\n",
                     stats.sourceGridBytes, hostBytes, gpuBytes,

@@ -7,6 +7,7 @@
 #include "app/options.h"
 #include "common/error.h"
 #include "engine/reference_view.h"
+#include "engine/render_memory.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -40,7 +41,9 @@ void addCompareCommand(CLI::App& app) {
         // The reference's R is the radius the method is given, before GTAO's multiplier.
         const double radius = double(ao.gtao.radius);
         vk::Context ctx;
+        requireRenderFits(ctx, size.width, size.height, ao, "--size");  // before minutes of tracing
         const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx);
+        requireSurface(ref, world, args->camera);
         double maxError = 0.0;
         for (float e : ref.stderror) maxError = std::max(maxError, double(e));
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
@@ -58,8 +61,9 @@ void addCompareCommand(CLI::App& app) {
                     world.desc().source.stem().c_str(), aoMethodName(ao.method), ao.quality.c_str(), shape,
                     ao.fullResolution ? ", full resolution" : "", s.temporalHistory, radius, uint32_t(args->spp),
                     ref.cacheHit ? "from the cache" : "traced", maxError);
-        std::printf("pixels %zu  mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f  ao %.2f ms  frame %.2f ms\n",
-                    m.error.pixels, m.error.mae, m.error.rmse, m.error.psnr, m.error.bias, m.msAo, m.msFrame);
+        std::printf("pixels %zu  mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f  ao %s  frame %.2f ms\n",
+                    m.error.pixels, m.error.mae, m.error.rmse, m.error.psnr, m.error.bias, formatCost(m.ao).c_str(),
+                    m.msFrame);
     });
 }
 

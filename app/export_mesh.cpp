@@ -19,7 +19,7 @@ void addExportMeshCommand(CLI::App& app) {
     cmd->callback([args] {
         const std::filesystem::path out = args->output;
         if (out.extension() != ".ply") throw Error(out.string(), "output must end in .ply");
-        requireWritableDirectory(out);
+        requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
         const voxel::Mesh mesh = world.mesh({.greedy = !args->faces});
         voxel::writePly(mesh, out);

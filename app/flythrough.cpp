@@ -16,8 +16,10 @@
 #include "app/progress.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/file_lock.h"
 #include "engine/camera_path.h"
 #include "engine/image_output.h"
+#include "engine/render_memory.h"
 #include "engine/renderer.h"
 #include "voxel/world.h"
 
@@ -147,6 +149,15 @@ json statsJson(const std::map<int, json>& byFrame) {
     return {{"frames", frames}, {"median", medians}};
 }
 
+// Serialises the runs that share a directory while they read and write its
+// manifest and stats; hidden, like the temporary files.
+constexpr const char* kLockFile = ".flythrough.lock";
+
+// The files a flythrough writes into its directory.
+bool isOurs(const std::string& name) {
+    return name.rfind("frame.", 0) == 0 || name == "stats.json" || name == "flythrough.json";
+}
+
 }  // namespace
 
 void addFlythroughCommand(CLI::App& app) {
@@ -156,7 +167,7 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->add_option("--path", args->path, "Path named in the world file, or a path .json")->required();
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
-    cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based (default: the whole path)");
+    cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based, or N for the first N (default: the whole path)");
     cmd->add_option("--warmup", args->warmup,
                     "Frames rendered but not written before the first one written; the default (four times the "
                     "temporal history, 64) keeps a split run within 2/255 of the whole run")
@@ -169,15 +180,24 @@ void addFlythroughCommand(CLI::App& app) {
         const voxel::World world = voxel::World::load(args->world);
         const voxel::CameraPathDesc desc = findCameraPath(world, args->path);
         const CameraPath path(desc, world.camera(""));
-        const int count = path.frameCount(args->fps);
+        const int count = pathFrameCount(path, args->fps, args->path);
         const FrameRange range = args->frames.empty() ? FrameRange{1, count} : parseFrameRange(args->frames, count);
         const AoOptions ao = resolveAo(world, args->ao);
+        vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
+        requireRenderFits(ctx, size.width, size.height, ao, "--size");
         const fs::path dir = args->output;
         std::error_code ec;
         fs::create_directories(dir, ec);
         if (!fs::is_directory(dir)) throw Error(dir.string(), "cannot create the output directory", ec ? ec.message() : "");
-        requireSameRun(dir, runManifest(*args, desc, ao));
-        std::map<int, json> frames = earlierFrames(dir / "stats.json");
+        {
+            // Chunks of one sequence may start together in one directory (a render
+            // farm): they agree on the manifest one at a time, and each clears
+            // only the temporary files of runs that died (a live run's are locked).
+            FileLock lock(dir / kLockFile);
+            requireSameRun(dir, runManifest(*args, desc, ao));
+            removeAbandonedTemporaries(dir, isOurs);
+        }
+        earlierFrames(dir / "stats.json");  // a damaged stats file is refused now, not after rendering
 
         auto frameFile = [&](int i) {
             char name[32];
@@ -198,7 +218,7 @@ void addFlythroughCommand(CLI::App& app) {
         // (twice n: 3/255); docs/paths.md.
         const int warmup = args->warmup.value_or(4 * int(ao.gtao.temporalHistory));
         const int start = std::max(1, missing.front() - warmup), end = missing.back();
-        vk::Context ctx;
+        std::vector<json> rendered;  // this run's frame entries
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
         {
             Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
@@ -215,7 +235,7 @@ void addFlythroughCommand(CLI::App& app) {
                 }
                 json passMs = json::object();
                 for (const auto& [name, ms] : stats.passMs) passMs[name] = ms;
-                mergeFrame(frames, {{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", stats.wallMs},
+                rendered.push_back({{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", stats.wallMs},
                                     {"pass_ms", passMs}});
                 char what[96];
                 std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i, write ? "written" : "warm-up",
@@ -226,7 +246,14 @@ void addFlythroughCommand(CLI::App& app) {
         }
         scene.reset();
         requireNoValidationMessages(ctx);
-        writeJson(dir / "stats.json", statsJson(frames));
+        {
+            // Other chunks may have written stats since this run read them: merge
+            // this run's frames into what is there now, one writer at a time.
+            FileLock lock(dir / kLockFile);
+            std::map<int, json> frames = earlierFrames(dir / "stats.json");
+            for (const json& entry : rendered) mergeFrame(frames, entry);
+            writeJson(dir / "stats.json", statsJson(frames));
+        }
         std::printf("wrote %zu frames to %s (%d rendered, %d already there)\n", missing.size(), dir.c_str(),
                     end - start + 1, range.last - range.first + 1 - int(missing.size()));
     });

@@ -1,15 +1,18 @@
-// grotto info WORLD: what a world holds and what it costs, without a GPU.
+// grotto info WORLD: what a world holds and what it costs, without a GPU. Names
+// from the file are printed escaped (common/printable.h).
 #include "app/commands.h"
+#include "common/printable.h"
 #include "engine/scene.h"
 #include "voxel/world.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace grotto::app {
 
 void addInfoCommand(CLI::App& app) {
     auto world = std::make_shared<std::string>();
-    CLI::App* cmd = app.add_subcommand("info", "Print a world's voxels, bricks, quads, memory and bounds");
+    CLI::App* cmd = app.add_subcommand("info", "Print a world's voxels, bricks, quads, memory, bounds, cameras, paths and materials");
     cmd->add_option("world", *world, "World .json or .vdb")->required();
     cmd->callback([world] {
         const voxel::World w = voxel::World::load(*world);
@@ -20,8 +23,8 @@ void addInfoCommand(CLI::App& app) {
         const size_t host = s.hostBytes + mesh.chunks.size() * sizeof(GpuChunk);
         const glm::dvec3 lo = w.origin() + glm::dvec3(b.min) * w.voxelSize();
         const glm::dvec3 hi = w.origin() + glm::dvec3(b.max + 1) * w.voxelSize();
-        std::printf("world          %s\n", w.desc().source.c_str());
-        std::printf("grid           %s (rule %s)\n", w.desc().gridFile.c_str(), voxel::solidRuleName(w.desc().rule));
+        std::printf("world          %s\n", printable(w.desc().source.string()).c_str());
+        std::printf("grid           %s (rule %s)\n", printable(w.desc().gridFile.string()).c_str(), voxel::solidRuleName(w.desc().rule));
         std::printf("voxel size     %g\n", w.voxelSize());
         std::printf("active voxels  %llu\n", (unsigned long long)s.solidVoxels);
         std::printf("bricks         %llu\n", (unsigned long long)s.bricks);
@@ -34,6 +37,23 @@ void addInfoCommand(CLI::App& app) {
         else
             std::printf("bounds         index [%d %d %d]..[%d %d %d], world (%g %g %g)..(%g %g %g)\n", b.min.x,
                         b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+        // What --camera and --path accept, and what each material id draws as.
+        const voxel::WorldDesc& d = w.desc();
+        if (d.cameras.empty()) std::printf("cameras        none (the default view frames the bounds)\n");
+        for (const auto& [name, c] : d.cameras)
+            std::printf("camera         %s%s: position (%g %g %g), target (%g %g %g), fov %g\n", printable(name).c_str(),
+                        name == d.defaultCamera ? " (default)" : "", c.position.x, c.position.y, c.position.z,
+                        c.target.x, c.target.y, c.target.z, c.fovDegrees);
+        if (d.paths.empty()) std::printf("paths          none\n");
+        for (const auto& [name, p] : d.paths) {
+            const size_t cuts = size_t(std::count_if(p.keys.begin(), p.keys.end(), [](const voxel::PathKey& k) { return k.cut; }));
+            std::printf("path           %s: %zu keys over %g s, %zu shot%s\n", printable(name).c_str(), p.keys.size(),
+                        p.keys.empty() ? 0.0 : p.keys.back().time, cuts + 1, cuts ? "s" : "");
+        }
+        for (size_t i = 0; i < d.materials.size(); ++i) {
+            const voxel::Material& m = d.materials[i];
+            std::printf("material %-5zu %s: albedo (%g %g %g)\n", i + 1, printable(m.name).c_str(), m.albedo.r, m.albedo.g, m.albedo.b);
+        }
     });
 }
 

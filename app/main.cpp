@@ -3,16 +3,18 @@
 // --baseline); errors are one line, never a raw exception trace.
 #include "app/commands.h"
 #include "common/error.h"
+#include "common/printable.h"
 
 #include <cstdio>
 #include <exception>
 
 int main(int argc, char** argv) {
-    CLI::App app{"grotto: voxel deferred renderer with temporal GTAO"};
+    CLI::App app{"grotto: voxel deferred renderer with temporal GTAO", "grotto"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", "grotto " GROTTO_VERSION);
     // Usage errors get one line too, like every other error.
     app.failure_message([](const CLI::App*, const CLI::Error& e) {
-        return "grotto: error: " + std::string(e.what()) + " (see --help)\n";
+        return "grotto: error: " + grotto::printable(e.what()) + " (see --help)\n";
     });
     grotto::app::addRenderCommand(app);
     grotto::app::addInfoCommand(app);
@@ -25,6 +27,13 @@ int main(int argc, char** argv) {
     grotto::app::addTradeoffCommand(app);
     grotto::app::addTuneCommand(app);
     grotto::app::addCompareCommand(app);
+    // Bare `grotto` is a usage error, but one worth the whole usage: on stdout,
+    // with the usual one line on stderr.
+    if (argc < 2) {
+        std::fputs(app.help().c_str(), stdout);
+        std::fprintf(stderr, "grotto: error: a subcommand is required (usage above)\n");
+        return 2;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -32,10 +41,10 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : 2;
     } catch (const grotto::Error& e) {
         const bool regression = e.kind() == grotto::Error::Kind::Regression;
-        std::fprintf(stderr, "grotto: %s: %s\n", regression ? "regression" : "error", e.what());
+        std::fprintf(stderr, "grotto: %s: %s\n", regression ? "regression" : "error", grotto::printable(e.what()).c_str());
         return e.exitCode();
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "grotto: internal error: %s\n", e.what());
+        std::fprintf(stderr, "grotto: internal error: %s\n", grotto::printable(e.what()).c_str());
         return 1;
     }
     return 0;

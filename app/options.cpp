@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 namespace grotto::app {
@@ -21,11 +22,22 @@ FrameRange parseFrameRange(const std::string& text, int count, const std::string
     const char* s = text.c_str();
     const bool range = std::sscanf(s, "%d-%d%n", &a, &b, &n) == 2 && s[n] == 0;
     const bool single = !range && std::sscanf(s, "%d%n", &a, &n) == 1 && s[n] == 0;
-    if (single) b = a;
-    const std::string accepted = "expected A-B with 1 <= A <= B <= " + std::to_string(count) + " (the path's frames)";
+    if (single) b = a, a = 1;  // N: the first N frames
+    const std::string accepted = "expected A-B with 1 <= A <= B <= " + std::to_string(count) +
+                                 " (the path's frames), or N for the first N";
     if (!range && !single) throw Error(option, "'" + text + "' is not a frame range", accepted);
     if (a < 1 || b < a || b > count) throw Error(option, "'" + text + "' is out of range", accepted);
     return {a, b};
+}
+
+int pathFrameCount(const CameraPath& path, int fps, const std::string& name) {
+    const int64_t count = path.frameCount(fps);
+    if (count <= kMaxPathFrames) return int(count);
+    char text[160];
+    std::snprintf(text, sizeof text, "path '%s' lasts %g s, which makes %lld frames at %d fps", name.c_str(),
+                  path.duration(), (long long)count, fps);
+    throw Error("--fps", text,
+                "accepted: at most " + std::to_string(kMaxPathFrames) + " frames; lower --fps or shorten the path");
 }
 
 void addAoFlags(CLI::App* cmd, AoFlags& f) {
@@ -62,6 +74,9 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
         desc.slices.reset();
         desc.steps.reset();
     }
+    // --radius replaces the world's radius below: a placeholder keeps the voxel
+    // size from deciding a default radius that would never be used.
+    if (f.set.radius && !desc.radius) desc.radius = 1.0;
     AoOptions o = aoOptionsFor(desc, world.voxelSize(), world.desc().source.string());
     o.fullResolution = f.fullResolution;
     // Negative counts would wrap in the unsigned settings, so they are refused here.
@@ -106,6 +121,21 @@ voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::strin
         throw Error(name, "no such path file in the current directory or beside " + world.desc().source.string(), hint);
     }
     throw Error(world.desc().source.string(), "has no path named '" + name + "'", hint);
+}
+
+CLI::Validator finiteRange(double min, double max) {
+    char range[64];
+    std::snprintf(range, sizeof range, "%g to %g", min, max);
+    const std::string accepted = range;
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            char* end = nullptr;
+            const double v = std::strtod(text.c_str(), &end);
+            if (end == text.c_str() || *end != 0 || !(v >= min && v <= max))
+                return "'" + text + "' is out of range (accepted: a number from " + accepted + ")";
+            return {};
+        },
+        "FLOAT in " + accepted);
 }
 
 double median(std::vector<double> v) {

@@ -1,6 +1,7 @@
 #pragma once
 // Small pieces the subcommands share: image sizes and the checks that end a run.
 #include "engine/ao_settings.h"
+#include "engine/camera_path.h"
 #include "engine/vk/context.h"
 #include "voxel/world.h"
 
@@ -21,12 +22,21 @@ struct Size {
 // "WxH" with both in 1..16384; throws grotto::Error (input) naming the option.
 Size parseSize(const std::string& text, const std::string& option = "--size");
 
-// "A-B" or "A": an inclusive range of 1-based frame numbers within 1..count;
-// throws grotto::Error (input) naming the option.
+// "A-B": frames A to B, or "N": the first N frames (1-N); 1-based, inclusive,
+// within 1..count. Throws grotto::Error (input) naming the option.
 struct FrameRange {
     int first = 1, last = 1;
+    int count() const { return last - first + 1; }
 };
 FrameRange parseFrameRange(const std::string& text, int count, const std::string& option = "--frames");
+
+// The most frames a path may have (11.5 hours at 24 fps): frame numbers stay
+// well inside int, and a typo in --fps or a key time is caught before rendering.
+inline constexpr int64_t kMaxPathFrames = 1'000'000;
+
+// The path's frames at `fps`; throws grotto::Error (input) naming --fps and the
+// path's duration when there would be more than kMaxPathFrames.
+int pathFrameCount(const CameraPath& path, int fps, const std::string& name);
 
 // A path named in the world file, or a path .json given directly; throws
 // grotto::Error (input) listing the world's paths when there is no such one.
@@ -46,6 +56,10 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
 // Everything about the AO that decides the pixels, with the world file's keys:
 // what a resumed flythrough or a stability baseline must match.
 nlohmann::json aoSettingsJson(const AoOptions& ao);
+
+// CLI::Range for floating options that also refuses NaN (which compares false
+// with both bounds, so CLI::Range lets it through) and infinities.
+CLI::Validator finiteRange(double min, double max);
 
 // The median (0 for none): per-pass and frame times are reported as medians.
 double median(std::vector<double> v);

@@ -4,6 +4,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "engine/image_output.h"
+#include "engine/render_memory.h"
 #include "engine/renderer.h"
 #include "voxel/world.h"
 
@@ -22,7 +23,7 @@ void addRenderCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("render", "Render one frame of a world to a PNG or EXR");
     cmd->add_option("world", args->world, "World .json or .vdb")->required();
     cmd->add_option("--camera", args->camera, "Named camera from the world file (default: its default)");
-    cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
+    cmd->add_option("--size", args->size, "Image size WxH (refused when it cannot fit the device's memory)")->capture_default_str();
     cmd->add_flag("--aov", args->aov, "EXR only: also write Z, N.xyz, albedo.RGB, AO, AO_raw, AO_spatial, edges (and AO_temporal, AO_history with the temporal pass)");
     cmd->add_option("-o,--output", args->output, "Output .png or .exr")->required();
     cmd->add_option("--show", args->show, "PNG only: write one AOV instead of colour (ao, normal, depth, edges)")
@@ -36,12 +37,13 @@ void addRenderCommand(CLI::App& app) {
             throw Error(out.string(), "--aov needs an .exr output", "PNG holds colour only; try --show");
         if (imageFormatFor(out) != ImageFormat::Png && !args->show.empty())
             throw Error(out.string(), "--show needs a .png output", "EXR holds every AOV with --aov");
-        requireWritableDirectory(out);
+        requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
         const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
         const AoOptions ao = resolveAo(world, args->ao);
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
+        requireRenderFits(ctx, size.width, size.height, ao, "--size");
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
         {
             Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);

@@ -1,5 +1,5 @@
-// grotto stability WORLD --path NAME [--size WxH] [--fps N] [--frames N] [--spp N]
-//                  [--reference-every K] --json FILE [--baseline FILE]
+// grotto stability WORLD --path NAME [--size WxH] [--fps N] [--frames A-B|N] [--spp N]
+//                  [--reference-every K] [--quiet] --json FILE [--baseline FILE]
 // Renders a camera path and measures DESIGN.md's temporal metrics at AO
 // resolution: flicker of the raw, spatial and temporal AO and of the reference,
 // error against the reference per frame, the ghosting curves (error over pixels
@@ -7,15 +7,20 @@
 // The reference is traced on pairs of consecutive frames, one pair every K
 // frames (K = 2: every frame). With --baseline, the flicker and error figures
 // are checked against an earlier run's (app/stability_baseline.h): exit code 3
-// when one regressed.
+// when one regressed. A run that measured no surface pixels (sky only, an empty
+// world, no pixel matching between frames) is refused, as is, up front, an AO
+// image under 8x8.
 #include "app/ao_cost.h"
 #include "app/commands.h"
+#include "app/cost_difference.h"
 #include "app/options.h"
+#include "app/progress.h"
 #include "app/stability_baseline.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "engine/ao_metrics.h"
 #include "engine/camera_path.h"
+#include "engine/render_memory.h"
 #include "engine/renderer.h"
 #include "engine/surface_points.h"
 #include "engine/temporal_metrics.h"
@@ -28,6 +33,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <optional>
 
 namespace grotto::app {
 namespace {
@@ -35,8 +41,9 @@ namespace {
 using json = nlohmann::json;
 
 struct Args {
-    std::string world, path, size = "320x180", output, baseline;
-    int fps = 24, frames = 0, spp = 256, referenceEvery = 4;
+    std::string world, path, size = "320x180", output, baseline, frames;
+    int fps = 24, spp = 256, referenceEvery = 4;
+    bool quiet = false;
     Tolerance tolerance;
     AoFlags ao;
 };
@@ -69,6 +76,9 @@ std::vector<float> referenceAt(const voxel::World& world, const FrameImages& fra
     return v;
 }
 
+// The smallest AO image (each side) a stability run measures.
+constexpr uint32_t kMinAoPixels = 8;
+
 // Ages from here on share one ghosting bin: history is full long before.
 constexpr int kGhostAgeCap = 32;
 
@@ -88,7 +98,8 @@ void addStabilityCommand(CLI::App& app) {
     cmd->add_option("--path", args->path, "Path named in the world file, or a path .json")->required();
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
-    cmd->add_option("--frames", args->frames, "Frames from the path's start (default: the whole path)")->check(CLI::Range(2, 100000));
+    cmd->add_option("--frames", args->frames,
+                    "Frames A-B to measure, 1-based, or N for the first N; at least 2 (default: the whole path)");
     cmd->add_option("--spp", args->spp, "Reference rays per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 20));
     cmd->add_option("--reference-every", args->referenceEvery, "Trace the reference on a pair of frames every K frames")
         ->capture_default_str()->check(CLI::Range(2, 100000));
@@ -97,30 +108,39 @@ void addStabilityCommand(CLI::App& app) {
                     "An earlier run's --json: exit 3 if a flicker or error figure exceeds it by more than the tolerance");
     CLI::Option* baseline = cmd->get_option("--baseline");
     cmd->add_option("--tolerance", args->tolerance.relative, "Relative tolerance against the baseline")
-        ->capture_default_str()->check(CLI::Range(0.0, 10.0))->needs(baseline);
+        ->capture_default_str()->check(finiteRange(0.0, 10.0))->needs(baseline);
     cmd->add_option("--tolerance-absolute", args->tolerance.absolute, "Absolute tolerance added to it")
-        ->capture_default_str()->check(CLI::Range(0.0, 1.0))->needs(baseline);
+        ->capture_default_str()->check(finiteRange(0.0, 1.0))->needs(baseline);
+    cmd->add_flag("--quiet", args->quiet, "No progress lines, only the results");
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
         const std::filesystem::path out = args->output;
-        requireWritableDirectory(out);
+        requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
         const CameraPath path(findCameraPath(world, args->path), world.camera(""));
-        const int pathFrames = path.frameCount(args->fps);
-        // Past the last key the camera stands still, which would flatter every metric.
-        if (args->frames > pathFrames)
-            throw Error("--frames", std::to_string(args->frames) + " is beyond the path's end",
-                        "path '" + args->path + "' has " + std::to_string(pathFrames) + " frames at " +
-                            std::to_string(args->fps) + " fps");
-        const int count = args->frames ? args->frames : pathFrames;
+        // Within the path: past its last key the camera stands still, which would flatter every metric.
+        const int pathFrames = pathFrameCount(path, args->fps, args->path);
+        const FrameRange range = args->frames.empty() ? FrameRange{1, pathFrames} : parseFrameRange(args->frames, pathFrames);
+        if (range.count() < 2)
+            throw Error("--frames", "'" + (args->frames.empty() ? std::to_string(pathFrames) : args->frames) +
+                                        "' is a single frame", "stability compares consecutive frames: give at least 2");
+        const int first = range.first, count = range.count();
         const AoOptions ao = resolveAo(world, args->ao);
         if (!ao.enabled) throw Error("--ao", "stability measures AO; it is off", "use --ao gtao");
         const uint32_t scale = ao.fullResolution ? 1 : 2;
+        // Below an 8x8 AO image the horizon search has next to no neighbours and the
+        // reprojection next to no pixels: the figures would measure nothing.
+        if ((size.width + scale - 1) / scale < kMinAoPixels || (size.height + scale - 1) / scale < kMinAoPixels)
+            throw Error("--size", args->size + " is too small to measure AO stability",
+                        "accepted: an AO image of at least 8x8 pixels: 15x15 or more (8x8 with --ao-full-res)");
         const double tolerance = 0.5 * world.voxelSize();
         // What was measured; a baseline must have measured the same.
+        // "frames": N from the path's start, else "A-B", so a baseline tells them apart.
+        const json frames = first == 1 ? json(count) : json(std::to_string(first) + "-" + std::to_string(range.last));
         const json run = {{"world", args->world}, {"path", args->path}, {"size", {size.width, size.height}},
-                          {"fps", args->fps}, {"frames", count}, {"ao_resolution", scale == 2 ? "half" : "full"},
+                          {"fps", args->fps}, {"frames", frames},
+                          {"ao_resolution", scale == 2 ? "half" : "full"},
                           {"quality", ao.quality}, {"temporal_history", ao.gtao.temporalHistory},
                           {"ao", aoSettingsJson(ao)},
                           {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}, {"radius", ao.gtao.radius}}}};
@@ -130,10 +150,12 @@ void addStabilityCommand(CLI::App& app) {
         const json baseline = args->baseline.empty() ? json() : loadBaseline(args->baseline, run);
 
         vk::Context ctx;
+        requireRenderFits(ctx, size.width, size.height, ao, "--size");
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
         std::map<std::string, std::vector<double>> passMs;
         std::vector<double> wallMs, chainMs, temporalMs;
         Mean flickerRaw, flickerSpatial, flickerTemporal, flickerReference;
+        size_t matchedPixels = 0, referencePixels = 0;  // what the flicker and error figures were measured over
         std::map<int, std::pair<Mean, Mean>> ghosting;  // age -> temporal, spatial MAE
         json errors = json::array();
         uint64_t rays = 0;
@@ -144,31 +166,35 @@ void addStabilityCommand(CLI::App& app) {
             Camera beforeCamera;
             std::vector<float> beforeReference;
             std::vector<uint16_t> age;
-            for (int i = 1; i <= count; ++i) {
+            std::optional<Progress> progress;
+            if (!args->quiet) progress.emplace(count, stdout);
+            for (int i = first; i <= range.last; ++i) {
                 const double time = double(i - 1) / args->fps;
                 const Camera camera = path.camera(time, size.width, size.height);
-                if (i > 1 && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
-                const FrameStats stats = costs.render(renderer, camera, uint32_t(i), i > 2);  // 2 frames of warm-up
+                if (i > first && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
+                const FrameStats stats = costs.render(renderer, camera, uint32_t(i), i > first + 1);  // 2 frames of warm-up
                 for (const auto& [name, ms] : stats.passMs) passMs[name].push_back(ms);
                 wallMs.push_back(stats.wallMs);
                 const FrameImages frame = renderer.readback(camera, true);
                 AoFrame now = aoFrame(frame, camera, scale);
                 Reprojection match;
-                if (i > 1) {
+                if (i > first) {
                     match = reproject(now, before, beforeCamera, tolerance);
+                    matchedPixels += size_t(std::count_if(match.nearest.begin(), match.nearest.end(), [](int32_t q) { return q >= 0; }));
                     flickerRaw.add(flicker(now.raw, before.raw, match));
                     flickerSpatial.add(flicker(now.spatial, before.spatial, match));
                     flickerTemporal.add(flicker(now.temporal, before.temporal, match));
                 }
                 // The sequence's first frame counts as disoccluded everywhere.
-                age = i > 1 ? disocclusionAge(match, age, now.world.size()) : std::vector<uint16_t>(now.world.size(), 0);
+                age = i > first ? disocclusionAge(match, age, now.world.size()) : std::vector<uint16_t>(now.world.size(), 0);
                 std::vector<float> reference;
-                if ((i - 1) % args->referenceEvery < 2) {
+                if ((i - first) % args->referenceEvery < 2) {
                     reference = referenceAt(world, frame, camera, now, ao.gtao.radius, args->spp, rays);
                     errors.push_back({{"frame", i},
                                       {"spatial", errorJson(now.spatial, reference, now.surface)},
                                       {"temporal", errorJson(now.temporal, reference, now.surface)}});
-                    if (!beforeReference.empty() && i > 1)
+                    referencePixels += size_t(std::count_if(now.surface.begin(), now.surface.end(), [](uint8_t v) { return v != 0; }));
+                    if (!beforeReference.empty() && i > first)
                         flickerReference.add(flicker(reference, beforeReference, match));
                     for (size_t p = 0; p < age.size(); ++p)
                         if (now.surface[p]) {
@@ -177,25 +203,34 @@ void addStabilityCommand(CLI::App& app) {
                             bin.second.add(std::abs(now.spatial[p] - reference[p]));
                         }
                 }
+                const bool traced = !reference.empty();
                 beforeReference = std::move(reference);
                 before = std::move(now);
                 beforeCamera = camera;
-                std::printf("frame %d/%d\n", i, count);
-                std::fflush(stdout);
+                if (progress) progress->step("frame " + std::to_string(i) + (traced ? " + reference" : ""));
             }
+            if (progress) progress->finish();
             chainMs = costs.chainMs();
             temporalMs = costs.temporalMs();
         }
         scene.reset();
         requireNoValidationMessages(ctx);
+        // Perfect scores over no pixels would pass any baseline: refuse them.
+        if (matchedPixels == 0 || referencePixels == 0)
+            throw Error(args->world, "path '" + args->path + "' at " + args->size + " measured no surface pixels (" +
+                                         (referencePixels == 0 ? "every frame shows only sky" : "no pixel matched the frame before") + ")",
+                        "accepted: a path that sees the world's surfaces in consecutive frames; check the path, or raise --size");
 
         json cost = json::object();
         for (const auto& [name, ms] : passMs) cost[name] = median(ms);
         cost["frame_wall"] = median(wallMs);
         // Wall-time differences against the same frames without AO and without the
         // temporal pass: the reliable figures where timestamps miss passes (lavapipe).
-        cost["ao_chain_wall"] = median(chainMs);
-        if (!temporalMs.empty()) cost["temporal_wall"] = median(temporalMs);
+        // Below their noise they read 0, with the noise beside them (app/cost_difference.h).
+        const CostDifference chain = costDifference(chainMs), temporalPass = costDifference(temporalMs);
+        cost["ao_chain_wall"] = chain.ms;
+        cost["ao_chain_wall_noise"] = chain.noiseMs;
+        if (!temporalMs.empty()) cost["temporal_wall"] = temporalPass.ms, cost["temporal_wall_noise"] = temporalPass.noiseMs;
         // DESIGN.md's curve: error over the pixels disoccluded within the last k
         // frames (age <= k), cumulative over the exact ages below the cap; and the
         // error at each age on its own (the last bin: kGhostAgeCap and older).
@@ -215,8 +250,8 @@ void addStabilityCommand(CLI::App& app) {
         // the path is shorter than that). A shorter history, or none, starts no
         // earlier than the default one would, so a spatial-only run of the same path
         // is averaged over the same frames.
-        int steadyFrom = int(std::max(ao.gtao.temporalHistory, kDefaultTemporalHistory)) + 1;
-        if (errors.empty() || errors.back()["frame"].get<int>() < steadyFrom) steadyFrom = 1;
+        int steadyFrom = first + int(std::max(ao.gtao.temporalHistory, kDefaultTemporalHistory));
+        if (errors.empty() || errors.back()["frame"].get<int>() < steadyFrom) steadyFrom = first;
         size_t steadyFrames = 0;
         for (const json& e : errors) steadyFrames += e["frame"].get<int>() >= steadyFrom;
         auto meanError = [&](const char* which, const char* metric) {
@@ -259,8 +294,9 @@ void addStabilityCommand(CLI::App& app) {
                     steadyFrames, steadyFrom, meanError("spatial", "rmse"), meanError("spatial", "psnr"),
                     meanError("temporal", "rmse"), meanError("temporal", "psnr"));
         // Per-pass timestamps stay in the JSON only: lavapipe's miss passes that follow a barrier.
-        std::printf("frame %.1f ms wall, AO chain %.1f ms, temporal pass %.1f ms (wall-time differences); wrote %s\n",
-                    median(wallMs), median(chainMs), median(temporalMs), out.c_str());
+        std::printf("frame %.1f ms wall, AO chain %s, temporal pass %s (wall-time differences); wrote %s\n",
+                    median(wallMs), formatCost(chain).c_str(), temporalMs.empty() ? "off" : formatCost(temporalPass).c_str(),
+                    out.c_str());
         // The figures are written either way, so a regression can be looked at (or blessed).
         std::string regressed;
         for (const BaselineCheck& c : checks) {

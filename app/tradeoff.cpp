@@ -7,6 +7,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "engine/reference_view.h"
+#include "engine/render_memory.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -45,12 +46,13 @@ bool onPath(const std::string& tool) {
 void writeCsv(const std::filesystem::path& file, const std::vector<Row>& rows) {
     writeAtomically(file, [&](const std::filesystem::path& tmp) {
         std::ofstream out(tmp);
-        out << "world,method,quality,ms_ao,ms_frame,mae,rmse,psnr,bias\n";
+        // ms_ao is 0 where it was below its noise, ms_ao_noise (app/cost_difference.h).
+        out << "world,method,quality,ms_ao,ms_frame,mae,rmse,psnr,bias,ms_ao_noise\n";
         char line[256];
         for (const Row& r : rows) {
-            std::snprintf(line, sizeof line, "%s,%s,%s,%.3f,%.3f,%.5f,%.5f,%.3f,%.5f\n", r.world.c_str(),
-                          r.method.c_str(), r.quality.c_str(), r.m.msAo, r.m.msFrame, r.m.error.mae, r.m.error.rmse,
-                          r.m.error.psnr, r.m.error.bias);
+            std::snprintf(line, sizeof line, "%s,%s,%s,%.3f,%.3f,%.5f,%.5f,%.3f,%.5f,%.3f\n", r.world.c_str(),
+                          r.method.c_str(), r.quality.c_str(), r.m.ao.ms, r.m.msFrame, r.m.error.mae, r.m.error.rmse,
+                          r.m.error.psnr, r.m.error.bias, r.m.ao.noiseMs);
             out << line;
         }
         out.close();
@@ -64,11 +66,13 @@ void writeMarkdown(const std::filesystem::path& file, const std::vector<Row>& ro
         std::ofstream out(tmp);
         out << "| world | method | quality | ms_ao | ms_frame | MAE | RMSE | PSNR dB | bias |\n"
                "|---|---|---|---|---|---|---|---|---|\n";
-        char line[256];
+        char line[256], ms[48];
         for (const Row& r : rows) {
-            std::snprintf(line, sizeof line, "| %s | %s | %s | %.2f | %.2f | %.4f | %.4f | %.2f | %+.4f |\n",
-                          r.world.c_str(), r.method.c_str(), r.quality.c_str(), r.m.msAo, r.m.msFrame, r.m.error.mae,
-                          r.m.error.rmse, r.m.error.psnr, r.m.error.bias);
+            std::snprintf(ms, sizeof ms, "%.2f", r.m.ao.ms);
+            std::snprintf(line, sizeof line, "| %s | %s | %s | %s | %.2f | %.4f | %.4f | %.2f | %+.4f |\n",
+                          r.world.c_str(), r.method.c_str(), r.quality.c_str(),
+                          r.m.ao.belowNoise ? formatCost(r.m.ao).c_str() : ms, r.m.msFrame,
+                          r.m.error.mae, r.m.error.rmse, r.m.error.psnr, r.m.error.bias);
             out << line;
         }
         out.close();
@@ -85,7 +89,7 @@ void writePlot(const std::filesystem::path& file, const std::vector<Row>& rows, 
         auto& presets = mean[r.method];
         auto it = std::find_if(presets.begin(), presets.end(), [&](auto& p) { return std::get<0>(p) == r.quality; });
         if (it == presets.end()) it = presets.insert(presets.end(), {r.quality, 0.0, 0.0});
-        std::get<1>(*it) += r.m.msAo / worlds, std::get<2>(*it) += r.m.error.rmse / worlds;
+        std::get<1>(*it) += r.m.ao.ms / worlds, std::get<2>(*it) += r.m.error.rmse / worlds;
     }
     writeAtomically(file, [&](const std::filesystem::path& tmp) {
         std::string script = "set terminal pngcairo size 900,600\nset output '" + tmp.string() + "'\n"
@@ -137,12 +141,12 @@ void addTradeoffCommand(CLI::App& app) {
         if (args->spp < 1 || args->spp > (int64_t(1) << 24))
             throw Error("--spp", std::to_string(args->spp) + " is out of range", "accepted: 1 to 16777216 rays per pixel");
         // Everything that can be refused is refused before minutes of rendering.
-        requireWritableDirectory(args->csv);
-        if (!args->markdown.empty()) requireWritableDirectory(args->markdown);
+        requireOutputPath(args->csv);
+        if (!args->markdown.empty()) requireOutputPath(args->markdown);
         if (!args->plot.empty()) {
             if (std::filesystem::path(args->plot).extension() != ".png")
                 throw Error(args->plot, "the plot is written as PNG", "name a .png file");
-            requireWritableDirectory(args->plot);
+            requireOutputPath(args->plot);
             if (!onPath("gnuplot"))
                 throw Error("--plot", "gnuplot is not installed", "install gnuplot-nox (scripts/setup.sh)");
         }
@@ -157,7 +161,9 @@ void addTradeoffCommand(CLI::App& app) {
             const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
             // R is GTAO's radius before its multiplier, as for `grotto reference`.
             const double radius = double(resolveAo(world, {}).gtao.radius);
+            requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing
             const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx);
+            requireSurface(ref, world, args->camera);
             double maxError = 0.0;
             for (float e : ref.stderror) maxError = std::max(maxError, double(e));
             std::printf("%s: reference %s, %u spp, stderr max %.4f\n", name.c_str(),
@@ -171,8 +177,8 @@ void addTradeoffCommand(CLI::App& app) {
                 const AoOptions ao = resolveAo(world, flags);
                 const int frames = std::max(args->warmup + args->frames, s.temporal ? kTemporalFrames : 0);
                 Row row{name, s.method, s.label, measureAo(ctx, *scene, world, camera, ao, ref, frames, args->warmup)};
-                std::printf("  %-14s %-6s ao %7.2f ms  frame %7.2f ms  mae %.4f  rmse %.4f  psnr %6.2f dB  bias %+.4f\n",
-                            row.method.c_str(), row.quality.c_str(), row.m.msAo, row.m.msFrame, row.m.error.mae,
+                std::printf("  %-14s %-6s ao %s  frame %7.2f ms  mae %.4f  rmse %.4f  psnr %6.2f dB  bias %+.4f\n",
+                            row.method.c_str(), row.quality.c_str(), formatCost(row.m.ao).c_str(), row.m.msFrame, row.m.error.mae,
                             row.m.error.rmse, row.m.error.psnr, row.m.error.bias);
                 std::fflush(stdout);
                 rows.push_back(row);

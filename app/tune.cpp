@@ -7,6 +7,7 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/error.h"
+#include "engine/render_memory.h"
 
 #include <cstdio>
 #include <memory>
@@ -56,7 +57,9 @@ void addTuneCommand(CLI::App& app) {
         for (const voxel::World& world : worlds) {
             Target t{world.desc().source.stem().string(), &world,
                      makeCamera(world.camera(args->camera), size.width, size.height), {}, {}};
+            requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing
             t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).gtao.radius), uint32_t(args->spp), &ctx);
+            requireSurface(t.reference, world, args->camera);
             t.scene = uploadScene(ctx, world.mesh(), world.desc());
             targets.push_back(std::move(t));
         }

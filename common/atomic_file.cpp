@@ -1,18 +1,35 @@
 #include "atomic_file.h"
 
 #include "error.h"
+#include "file_kind.h"
+#include "file_lock.h"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <unistd.h>
 
 #include <atomic>
+#include <regex>
 #include <string>
 #include <system_error>
 
 namespace grotto {
 namespace fs = std::filesystem;
 
-void requireWritableDirectory(const fs::path& file) {
+namespace {
+
+// ".NAME.tmpPID-N.EXT" for target NAME.EXT: hidden, unique per process and call.
+fs::path temporaryFor(const fs::path& target) {
+    static std::atomic<int> counter{0};
+    fs::path tmp = target;
+    tmp.replace_filename("." + target.stem().string() + ".tmp" + std::to_string(getpid()) + "-" +
+                         std::to_string(counter++) + target.extension().string());
+    return tmp;
+}
+
+}  // namespace
+
+void requireOutputPath(const fs::path& file) {
     fs::path dir = file.parent_path();
     if (dir.empty()) dir = ".";
     std::error_code ec;
@@ -22,18 +39,21 @@ void requireWritableDirectory(const fs::path& file) {
     if (access(dir.c_str(), W_OK) != 0)
         throw Error(file.string(), "output directory '" + dir.string() + "' is not writable",
                     "choose a directory you can write to");
+    if (const std::string kind = irregularKind(file); !kind.empty())
+        throw Error(file.string(), "is " + kind + ", not a regular file",
+                    "an output may only replace a regular file; name a file path");
 }
 
 void writeAtomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
-    requireWritableDirectory(target);
-    static std::atomic<int> counter{0};
-    fs::path tmp = target;
-    tmp.replace_filename("." + target.stem().string() + ".tmp" + std::to_string(getpid()) + "-" +
-                         std::to_string(counter++) + target.extension().string());
+    requireOutputPath(target);
+    const fs::path tmp = temporaryFor(target);
+    const int lock = open(tmp.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (lock < 0) throw Error(target.string(), "cannot create a temporary file beside it");
+    flock(lock, LOCK_EX);  // held until the rename: the file is not abandoned
     try {
         write(tmp);
         // Flush to disk before the rename, so a crash never leaves an empty target.
-        if (int fd = open(tmp.c_str(), O_RDONLY); fd >= 0) {
+        if (int fd = open(tmp.c_str(), O_RDONLY | O_CLOEXEC); fd >= 0) {
             fsync(fd);
             close(fd);
         }
@@ -43,8 +63,27 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
     } catch (...) {
         std::error_code ec;
         fs::remove(tmp, ec);
+        close(lock);
         throw;
     }
+    close(lock);
+}
+
+int removeAbandonedTemporaries(const fs::path& dir, const std::function<bool(const std::string&)>& ours) {
+    static const std::regex pattern(R"(\.(.*)\.tmp[0-9]+-[0-9]+(\.[^.]*)?)");
+    int removed = 0;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        std::smatch m;
+        if (!std::regex_match(name, m, pattern) || !ours(m[1].str() + m[2].str())) continue;
+        int fd = -1;
+        if (!FileLock::tryHold(entry.path(), fd)) continue;  // a live run is writing it
+        std::error_code rm;
+        if (fs::remove(entry.path(), rm)) ++removed;
+        close(fd);
+    }
+    return removed;
 }
 
 }  // namespace grotto

@@ -66,7 +66,7 @@ void validateGtao(const gpu::GtaoSettings& s, const std::string& where) {
         throw Error(where, "AO setting '" + std::string(name) + "' = " + text + " is out of range", accepted);
     };
     auto finite = [](double v) { return std::isfinite(v); };
-    check(finite(s.radius) && s.radius > 0 && s.radius <= 1e6, "radius", s.radius, "> 0 world units");
+    check(s.radius >= kMinAoRadius && s.radius <= kMaxAoRadius, "radius", s.radius, "1e-15 to 1e15 world units");
     check(s.radiusMultiplier >= 0.3f && s.radiusMultiplier <= 3.0f, "radius_multiplier", s.radiusMultiplier, "0.3 to 3");
     check(s.falloffRange >= 0.0f && s.falloffRange <= 1.0f, "falloff_range", s.falloffRange, "0 to 1");
     check(s.sampleDistributionPower >= 1.0f && s.sampleDistributionPower <= 3.0f, "sample_distribution_power",
@@ -109,7 +109,19 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
     if (o.enabled) o.method = parseAoMethod(d.method, where);
     o.quality = d.quality;
     o.ssaoSamples = d.quality == "low" ? 8 : d.quality == "medium" ? 16 : d.quality == "ultra" ? 64 : 32;
-    o.gtao = gtaoPreset(d.quality, d.radius ? *d.radius : 4.0 * voxelSize);
+    // Without a radius of its own the world gets four voxels; the voxel size is
+    // then what decides whether it is in range, so the error names that.
+    const double radius = d.radius ? *d.radius : kDefaultRadiusVoxels * voxelSize;
+    if (!d.radius && !(radius >= kMinAoRadius && radius <= kMaxAoRadius)) {
+        char text[96], accepted[160];
+        std::snprintf(text, sizeof text, "voxel size %g is out of range for the default AO radius (%g voxels)",
+                      voxelSize, kDefaultRadiusVoxels);
+        std::snprintf(accepted, sizeof accepted,
+                      "accepted: voxel sizes %g to %g world units, or give the radius (ao.radius, --radius)",
+                      kMinAoRadius / kDefaultRadiusVoxels, kMaxAoRadius / kDefaultRadiusVoxels);
+        throw Error(where, text, accepted);
+    }
+    o.gtao = gtaoPreset(d.quality, radius);
     applyAoOverrides(d, o.gtao);
     validateGtao(o.gtao, where);
     return o;

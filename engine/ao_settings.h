@@ -29,6 +29,13 @@ const char* aoMethodName(AoMethod method);
 // Throws grotto::Error (input) naming `where` for anything but gtao, ssao, hbao.
 AoMethod parseAoMethod(const std::string& name, const std::string& where);
 
+// The AO radius's range in world units: the shaders square it (and its product
+// with the radius multiplier) in 32-bit floats, which stay finite and normal
+// within these bounds. The default radius is four voxels, so a world without its
+// own radius takes voxel sizes from a quarter of each.
+inline constexpr double kMinAoRadius = 1e-15, kMaxAoRadius = 1e15;
+inline constexpr double kDefaultRadiusVoxels = 4.0;
+
 // Frames the temporal pass averages by default.
 inline constexpr uint32_t kDefaultTemporalHistory = 16;
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace grotto {
 
@@ -106,9 +107,10 @@ Camera CameraPath::camera(double time, uint32_t width, uint32_t height) const {
     return c;
 }
 
-int CameraPath::frameCount(double fps) const {
+int64_t CameraPath::frameCount(double fps) const {
     // The small slack keeps a path of exactly n/fps seconds at n + 1 frames despite rounding.
-    return int(std::floor(duration() * fps + 1e-9)) + 1;
+    const double n = std::floor(duration() * fps + 1e-9) + 1.0;
+    return n < 9e18 ? int64_t(n) : std::numeric_limits<int64_t>::max();
 }
 
 }  // namespace grotto

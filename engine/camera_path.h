@@ -9,6 +9,7 @@
 #include "engine/spline.h"
 #include "voxel/camera_path_desc.h"
 
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -36,7 +37,8 @@ public:
     bool cutBetween(double from, double to) const { return shotAt(from) != shotAt(to); }
 
     // Frame i (1-based) shows time (i - 1) / fps; frames cover [0, duration].
-    int frameCount(double fps) const;
+    // 64-bit, saturating: a long path at a high rate must not wrap to a negative count.
+    int64_t frameCount(double fps) const;
 
 private:
     // The keys from one cut to the next: one curve. A single key holds still.

@@ -3,6 +3,7 @@
 // (which upsamples the AO itself), with the barriers between them.
 #include "engine/renderer.h"
 
+#include "engine/render_memory.h"
 #include "engine/vk/readback.h"
 #include "shaders/shared/frame.h"
 #include "shaders/shared/quad.h"
@@ -96,6 +97,7 @@ Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lightin
 void Renderer::create(uint32_t width, uint32_t height) {
     vk::Context& ctx = ctx_;
     validateGtao(ao_.gtao, "AO settings");
+    requireRenderFits(ctx, width, height, ao_, "image size");  // before any allocation can fail halfway
     const VkExtent2D extent{width, height};
     const VkImageUsageFlags read = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     gbuffer_.depth = vk::createImage(ctx, extent, VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | read);

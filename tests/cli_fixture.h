@@ -36,9 +36,9 @@ protected:
     }
 
     // Exit code 2, a single stderr line naming `mention`, and no output written.
-    void expectRefused(const std::string& args, const std::string& mention, const fs::path& output,
-                       const std::string& env = "") {
-        const RunResult r = runGrotto(args, env);
+    RunResult expectRefused(const std::string& args, const std::string& mention, const fs::path& output,
+                       const std::string& env = "", const RunLimits& limits = {}) {
+        const RunResult r = runGrotto(args, env, limits);
         EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
         EXPECT_NE(r.err.find(mention), std::string::npos) << "expected '" << mention << "' in: " << r.err;
@@ -46,6 +46,7 @@ protected:
         EXPECT_FALSE(fs::exists(output)) << output;
         for (auto& e : fs::directory_iterator(dir_.path))
             EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "left behind: " << e.path();
+        return r;
     }
 
     std::string render(const fs::path& world) { return "render " + world.string() + " --size 32x16 -o " + out().string(); }

@@ -1,12 +1,13 @@
 #include "voxel/json_reader.h"
 
+#include "common/file_kind.h"
+
 #include <fstream>
 
 namespace grotto::voxel {
 
 json readJsonFile(const std::filesystem::path& path, const std::string& hint) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw Error(path.string(), "no such file", hint);
+    requireInputFile(path, hint);
     std::ifstream in(path);
     if (!in) throw Error(path.string(), "cannot be read");
     try {

@@ -16,7 +16,8 @@
 
 namespace grotto::voxel {
 
-using nlohmann::json;
+// Objects keep their fields in file order ("the first camera" is the first written).
+using json = nlohmann::ordered_json;
 
 // Parses a whole JSON file; a missing, unreadable or malformed file throws
 // grotto::Error (input) naming it, with `hint` saying what the file should hold.

@@ -5,6 +5,7 @@
 #include <openvdb/tools/LevelSetUtil.h>
 
 #include <atomic>
+#include <cmath>
 
 namespace grotto::voxel {
 namespace {
@@ -58,6 +59,22 @@ openvdb::MaskGrid::Ptr activeWhere(const GridT& grid, Keep keep) {
     return solid;
 }
 
+// A NaN or infinite value has no side of a level set or threshold: the grid is
+// damaged, and guessing would make holes or walls out of it.
+template <typename FloatT>
+void requireFinite(const FloatT& grid, const std::string& where) {
+    auto refuse = [&](const std::string& at) {
+        throw Error(where, "holds a NaN or infinite value " + at, "every value of a float grid must be finite");
+    };
+    if (!std::isfinite(grid.background())) refuse("as its background");
+    for (auto it = grid.cbeginValueAll(); it; ++it)
+        if (!std::isfinite(*it)) {
+            const openvdb::Coord c = it.getCoord();
+            refuse("at index (" + std::to_string(c.x()) + ", " + std::to_string(c.y()) + ", " +
+                   std::to_string(c.z()) + ")");
+        }
+}
+
 template <typename FloatT>
 openvdb::MaskGrid::Ptr levelSetInterior(const FloatT& grid) {
     // sdfInteriorMask follows the sign into inactive interior tiles and voxels.
@@ -79,6 +96,8 @@ void buildSolid(const openvdb::GridBase::Ptr& grid, World::Impl& impl) {
         throw Error(d.source.string(), "field 'grid.material': id " + std::to_string(d.material) +
                     " has no entry in 'materials'", "the palette has " +
                     std::to_string(d.materials.size()) + " materials");
+    if (auto f = openvdb::gridPtrCast<openvdb::FloatGrid>(grid)) requireFinite(*f, where);
+    if (auto f = openvdb::gridPtrCast<openvdb::DoubleGrid>(grid)) requireFinite(*f, where);
     switch (rule) {
         case SolidRule::LevelSet:
             if (auto f = openvdb::gridPtrCast<openvdb::FloatGrid>(grid)) impl.solid = levelSetInterior(*f);

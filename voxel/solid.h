@@ -4,6 +4,8 @@
 
 #include <openvdb/openvdb.h>
 
+#include <functional>
+
 namespace grotto::voxel {
 
 struct World::Impl {
@@ -19,7 +21,14 @@ struct World::Impl {
 
 // Opens desc.gridFile and reads the named grid (or the first). Checks the voxel
 // transform and the memory budget before reading voxels. Throws grotto::Error.
+// A damaged or hostile file is refused within bounded memory and CPU time: it is
+// read by a child process under limits first.
 openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc);
+
+// loadGrid's reading without the child's limits (what the child runs; fuzzers call
+// it directly so that a crash shows). onEstimate gets the size the grid's metadata
+// states, once it is known to be within the budget.
+openvdb::GridBase::Ptr readGridUnguarded(const WorldDesc& desc, const std::function<void(size_t)>& onEstimate = {});
 
 // Applies the solid rule; fills impl.solid, impl.materials, impl.uniformMaterial.
 void buildSolid(const openvdb::GridBase::Ptr& grid, World::Impl& impl);

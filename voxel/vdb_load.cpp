@@ -1,12 +1,19 @@
+// Reading a .vdb: checked in a child process under limits, then read for real.
 #include "common/error.h"
+#include "common/file_kind.h"
+#include "common/limited_child.h"
 #include "voxel/solid.h"
-
 
 #include <cmath>
 #include <mutex>
 
 namespace grotto::voxel {
 namespace {
+
+// The reader's memory for a grid whose size is unknown, and its CPU time: one
+// second plus one per this much file (real files read far faster).
+constexpr size_t kReaderMemoryBytes = size_t(512) << 20;
+constexpr uintmax_t kReaderBytesPerCpuSecond = uintmax_t(16) << 20;
 
 std::string gridNames(openvdb::io::File& file) {
     std::string s;
@@ -20,6 +27,12 @@ size_t estimatedBytes(const openvdb::GridBase& meta) {
     if (auto m = meta.getMetadata<openvdb::Int64Metadata>("file_mem_bytes"))
         return size_t(m->value());
     return 0;
+}
+
+std::string num(double d) {
+    char buf[32];
+    snprintf(buf, sizeof buf, "%g", d);
+    return buf;
 }
 
 std::string mib(size_t bytes) {
@@ -49,27 +62,30 @@ void readTransform(const openvdb::GridBase& grid, const std::string& file, World
         throw Error(where, "has non-uniform voxel size (" + std::to_string(vs.x()) + ", " +
                     std::to_string(vs.y()) + ", " + std::to_string(vs.z()) + ")",
                     "Grotto needs cubic voxels; resample with a uniform voxel size");
-    if (!(vs.x() > 0.0) || !std::isfinite(vs.x()))
-        throw Error(where, "has an invalid voxel size", "a positive, finite voxel size is needed");
+    if (!(vs.x() >= kMinVoxelSize && vs.x() <= kMaxVoxelSize))
+        throw Error(where, "has voxel size " + num(vs.x()) + ", outside the supported range",
+                    "supported: " + num(kMinVoxelSize) + " to " + num(kMaxVoxelSize) +
+                        " world units; rescale the grid's transform");
     impl.voxelSize = vs.x();
     // OpenVDB puts voxel centres at integer index coordinates; our voxel i spans [i, i+1).
     openvdb::Vec3d corner = xf.indexToWorld(openvdb::Vec3d(-0.5));
+    for (int axis = 0; axis < 3; ++axis)
+        if (!(std::abs(corner[axis]) <= kMaxWorldOffset))
+            throw Error(where, "places voxel 0 at " + num(corner[axis]) + " on " + "xyz"[axis] +
+                                   ", outside the supported range",
+                        "supported: translations within +-" + num(kMaxWorldOffset) + " world units");
     impl.origin = glm::dvec3(corner.x(), corner.y(), corner.z());
 }
 
-openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc) {
+openvdb::GridBase::Ptr readGridUnguarded(const WorldDesc& desc, const std::function<void(size_t)>& onEstimate) {
     static std::once_flag once;
     std::call_once(once, [] { openvdb::initialize(); });
     const std::string path = desc.gridFile.string();
-    std::error_code ec;
-    if (!std::filesystem::exists(desc.gridFile, ec))
-        throw Error(path, "no such file" + (desc.source != desc.gridFile
-                                                ? " (named by '" + desc.source.string() + "' field 'grid.file')"
-                                                : std::string()),
-                    "give the path of an OpenVDB .vdb file");
     openvdb::io::File file(path);
     try {
         file.open(false);  // no delayed loading: a truncated file fails here or in readGrid
+    } catch (const std::bad_alloc&) {
+        throw;  // the reader's memory limit: reported as such
     } catch (const std::exception& e) {
         throw Error(path, std::string("is not a readable OpenVDB file: ") + e.what(),
                     "expected a .vdb written by OpenVDB");
@@ -93,15 +109,39 @@ openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc) {
             throw Error(path, "grid '" + name + "' needs an estimated " + mib(estimate) +
                         ", more than the memory budget of " + mib(desc.memoryBudgetBytes),
                         "raise 'memory_budget_mib' in the world file or use a smaller grid");
+        if (onEstimate) onEstimate(estimate);
         grid = file.readGrid(name);
     } catch (const Error&) {
         throw;
+    } catch (const std::bad_alloc&) {
+        throw;  // the reader's memory limit: reported as such
     } catch (const std::exception& e) {
         throw Error(path, "grid '" + name + "' cannot be read: " + e.what(),
                     "the file may be truncated or damaged");
     }
     file.close();
     return grid;
+}
+
+openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc) {
+    const std::string path = desc.gridFile.string();
+    requireInputFile(desc.gridFile, desc.source != desc.gridFile
+                                        ? "named by '" + desc.source.string() + "' field 'grid.file'; give an OpenVDB .vdb file"
+                                        : "give the path of an OpenVDB .vdb file");
+    // OpenVDB allocates whatever sizes a stream claims before anything can check
+    // them, so the file is first read by a child process under limits: a damaged
+    // or hostile file ends there, in a clear error, at a bounded cost. A grid
+    // whose metadata states its size (OpenVDB writes it) may use that, within
+    // the world's budget, plus room for the reader's own buffers.
+    std::error_code ec;
+    const uintmax_t fileBytes = std::filesystem::file_size(desc.gridFile, ec);
+    ChildLimits limits;
+    limits.memoryBytes = kReaderMemoryBytes;
+    limits.cpuSeconds = 1 + int(std::min<uintmax_t>(ec ? 0 : fileBytes / kReaderBytesPerCpuSecond, 3600));
+    runInLimitedChild(path, limits, [&] {
+        readGridUnguarded(desc, [](size_t estimate) { allowChildMemory(estimate + estimate / 2 + kReaderMemoryBytes); });
+    });
+    return readGridUnguarded(desc);
 }
 
 }  // namespace grotto::voxel

@@ -35,6 +35,18 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     readTransform(*grid, file, *impl);
     impl->sourceGridBytes = grid->memUsage();
     buildSolid(grid, *impl);
+    openvdb::CoordBBox box;
+    if (impl->solid->tree().evalActiveVoxelBoundingBox(box)) {
+        // Past this range the index arithmetic downstream (bricks, chunks, bounds
+        // + 1) would overflow int32; refused before any of it runs.
+        for (int axis = 0; axis < 3; ++axis)
+            if (box.min()[axis] < -kMaxVoxelIndex || box.max()[axis] >= kMaxVoxelIndex)
+                throw Error(file, "grid '" + grid->getName() + "' has solid voxels at index " +
+                                      std::to_string(box.min()[axis] < -kMaxVoxelIndex ? box.min()[axis] : box.max()[axis]) +
+                                      " on " + "xyz"[axis] + ", outside the supported index range",
+                            "supported: -2^30 <= index < 2^30 on every axis; move the grid nearer the origin");
+        impl->bounds = {{box.min().x(), box.min().y(), box.min().z()}, {box.max().x(), box.max().y(), box.max().z()}};
+    }
     // A huge active tile, or a level set's interior, is small in OpenVDB but
     // expands into full bricks here: refused before any of them is made.
     const uint64_t bricks = brickCount(impl->solid->tree());
@@ -46,16 +58,20 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
         throw Error(file, "grid '" + grid->getName() + "' is solid over " + figures,
                     "raise 'memory_budget_mib' in the world file, or make the grid smaller or sparser");
     }
-    openvdb::CoordBBox box;
-    if (impl->solid->tree().evalActiveVoxelBoundingBox(box))
-        impl->bounds = {{box.min().x(), box.min().y(), box.min().z()}, {box.max().x(), box.max().y(), box.max().z()}};
     return World(std::move(impl));
 }
 
 World World::load(const std::filesystem::path& path) {
     WorldDesc desc = loadWorldDesc(path);
     openvdb::GridBase::Ptr grid = loadGrid(desc);
-    return makeWorld(grid, std::move(desc));
+    World world = makeWorld(grid, std::move(desc));
+    // Nothing solid would render sky and measure nothing: a file meant to be a
+    // world is wrong (an empty world can still be made in memory and built up).
+    if (world.bounds().empty())
+        throw Error(world.desc().gridFile.string(), "grid '" + grid->getName() + "' has no solid voxels",
+                    std::string("the solid rule is '") + solidRuleName(world.desc().rule) +
+                        "'; check 'grid.rule' and 'grid.threshold' in the world file");
+    return world;
 }
 
 const WorldDesc& World::desc() const { return impl_->desc; }

@@ -14,6 +14,17 @@
 
 namespace grotto::voxel {
 
+// Solid voxels must lie within -kMaxVoxelIndex <= index < kMaxVoxelIndex on
+// every axis (2^30): a grid reaching further is refused on load, so no index
+// computation (bricks, chunks, bounds) can overflow.
+constexpr int kMaxVoxelIndex = 1 << 30;
+
+// The voxel sizes and grid translations a world may have (world units): within
+// them every position stays finite and well resolved in doubles, and the
+// camera's near plane (1e-4 at least) fits the smallest world.
+constexpr double kMinVoxelSize = 1e-4, kMaxVoxelSize = 1e6;
+constexpr double kMaxWorldOffset = 1e12;
+
 // Inclusive range of solid voxel indices; empty() when the world has none.
 struct IndexBox {
     glm::ivec3 min{0}, max{-1};

@@ -1,6 +1,7 @@
 #include "voxel/world_desc.h"
 
 #include "common/error.h"
+#include "common/file_kind.h"
 #include "voxel/json_reader.h"
 
 #include <glm/geometric.hpp>
@@ -10,7 +11,6 @@
 
 namespace grotto::voxel {
 namespace fs = std::filesystem;
-using nlohmann::json;
 
 const char* solidRuleName(SolidRule rule) {
     switch (rule) {
@@ -163,11 +163,14 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
     }
     if (r.has("lighting")) parseLighting(r.child("lighting"), w.lighting);
     if (r.has("ao")) parseAo(r.child("ao"), w.ao);
+    std::string firstCamera;  // in file order: the default unless 'default_camera' says otherwise
     if (r.has("cameras")) {
         const json& cams = r.at("cameras");
         if (!cams.is_object()) r.fail("cameras", "expected an object of named cameras");
-        for (auto& [name, cam] : cams.items())
+        for (auto& [name, cam] : cams.items()) {
             w.cameras[name] = parseCamera(Reader(file, cam, "cameras." + name));
+            if (firstCamera.empty()) firstCamera = name;
+        }
     }
     if (r.has("paths")) {
         const json& paths = r.at("paths");
@@ -175,7 +178,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
         for (auto& [name, path] : paths.items())
             w.paths[name] = parsePathEntry(file, path, "paths." + name);
     }
-    w.defaultCamera = r.string("default_camera", w.cameras.empty() ? "" : w.cameras.begin()->first);
+    w.defaultCamera = r.string("default_camera", firstCamera);
     if (!w.defaultCamera.empty() && !w.cameras.count(w.defaultCamera))
         r.fail("default_camera", "names no camera '" + w.defaultCamera + "'");
     double budgetMiB = r.number("memory_budget_mib", double(w.memoryBudgetBytes >> 20), 1, 1 << 20);
@@ -186,9 +189,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
 }  // namespace
 
 WorldDesc loadWorldDesc(const fs::path& path) {
-    std::error_code ec;
-    if (!fs::exists(path, ec))
-        throw Error(path.string(), "no such file", "give a world .json or a .vdb grid file");
+    requireInputFile(path, "give a world .json or a .vdb grid file");
     if (path.extension() == ".vdb") {
         WorldDesc w;
         w.source = path;

@@ -39,10 +39,10 @@ struct CameraDesc {
 
 struct Lighting {
     glm::vec3 sunDirection = glm::vec3(0.45f, 0.8f, 0.3f);  // toward the sun, normalised on load
-    glm::vec3 sunColor{1.0f, 0.96f, 0.88f};
-    float sunIntensity = 2.6f;
+    glm::vec3 sunColor{1.0f, 0.95f, 0.85f};
+    float sunIntensity = 1.0f;  // the shipped worlds' daylight, so an untuned .vdb looks like them
     glm::vec3 ambientColor{0.55f, 0.65f, 0.85f};
-    float ambientIntensity = 0.6f;
+    float ambientIntensity = 0.7f;
     glm::vec3 skyZenith{0.28f, 0.45f, 0.78f};
     glm::vec3 skyHorizon{0.75f, 0.82f, 0.92f};
 };

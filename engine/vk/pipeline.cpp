@@ -13,6 +13,35 @@ namespace grotto::vk {
 
 namespace {
 
+// What a driver would choke on (some crash on malformed SPIR-V rather than fail),
+// checked by the module's structure: the header, every instruction's length, a
+// capability first, one memory model, and a "main" entry point for the stage the
+// name says (.comp, .vert, .frag). Empty when it passes.
+std::string spirvProblem(const std::vector<uint32_t>& w, const std::string& name) {
+    const uint32_t version = w[1];
+    if ((version & 0xff0000ffu) != 0 || version < 0x00010000u || version > 0x00010600u)
+        return "unknown SPIR-V version word " + std::to_string(version);
+    if (w[3] == 0 || w[4] != 0) return "bad header (id bound or schema)";
+    const std::string stage = name.substr(name.rfind('.') + 1);
+    const uint32_t model = stage == "comp" ? 5u : stage == "vert" ? 0u : stage == "frag" ? 4u : ~0u;  // GLCompute, Vertex, Fragment
+    int memoryModels = 0;
+    bool entry = false;
+    for (size_t i = 5; i < w.size();) {
+        const uint32_t count = w[i] >> 16, opcode = w[i] & 0xffffu;
+        if (count == 0 || i + count > w.size()) return "instruction at word " + std::to_string(i) + " overruns the module";
+        if (i == 5 && opcode != 17) return "it does not start with OpCapability";
+        memoryModels += opcode == 14;
+        // OpEntryPoint: model, function id, then the name as a nul-terminated string.
+        if (opcode == 15 && count >= 5 && w[i + 1] == model &&
+            std::strncmp(reinterpret_cast<const char*>(&w[i + 3]), "main", 5) == 0)
+            entry = true;
+        i += count;
+    }
+    if (memoryModels != 1) return "it has " + std::to_string(memoryModels) + " memory models (1 expected)";
+    if (!entry) return "no \"main\" entry point for a ." + stage + " shader";
+    return {};
+}
+
 // GROTTO_SHADER_DIR/<name>.spv: shaders compiled elsewhere, for experiments. What
 // the driver would reject with a bare error code is refused here, naming the file.
 std::vector<char> shaderFile(const std::string& dir, const std::string& name) {
@@ -25,6 +54,11 @@ std::vector<char> shaderFile(const std::string& dir, const std::string& name) {
     if (code.size() < 20 || code.size() % 4 != 0 || magic != 0x07230203u)
         throw Error(path, "is not SPIR-V (" + std::to_string(code.size()) + " bytes)",
                     "compile it with glslangValidator -V, or unset GROTTO_SHADER_DIR");
+    std::vector<uint32_t> words(code.size() / 4);
+    std::memcpy(words.data(), code.data(), code.size());
+    if (const std::string why = spirvProblem(words, name); !why.empty())
+        throw Error(path, "is not a usable SPIR-V shader: " + why,
+                    "compile " + name + " with glslangValidator -V, or unset GROTTO_SHADER_DIR");
     return code;
 }
 

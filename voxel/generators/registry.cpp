@@ -102,7 +102,7 @@ void makeWorldFile(const std::string& kind, const GeneratorOptions& options,
                    [](unsigned char c) { return std::tolower(c); });
     if (ext != ".vdb")
         throw Error(out.string(), "the output of mkworld is an OpenVDB file", "name it with .vdb");
-    requireWritableDirectory(out);  // fail before a long generation, not after
+    requireOutputPath(out);  // fail before a long generation, not after
     openvdb::GridBase::Ptr grid = generateWorld(kind, options);
     writeAtomically(out, [&](const std::filesystem::path& tmp) {
         try {

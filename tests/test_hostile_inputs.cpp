@@ -1,0 +1,202 @@
+// Damaged and hostile input files: each is refused with exit code 2 and one line,
+// nothing written, within 2 s of CPU time (RLIMIT_CPU on the grotto process: a
+// run that needs more is killed and fails) and 512 MiB of memory beyond what
+// grotto needs for a good world (its peak resident set, measured; RLIMIT_AS at
+// 2 GiB only keeps a failing run from taking the machine).
+#include "tests/cli_fixture.h"
+
+#include <gtest/gtest.h>
+#include <openvdb/openvdb.h>
+
+#include <sys/stat.h>
+
+#include <climits>
+#include <cmath>
+#include <fstream>
+#include <random>
+
+namespace grotto {
+namespace {
+
+namespace fs = std::filesystem;
+using test::CliErrors;
+using test::runGrotto;
+
+const test::RunLimits kCaps{.memoryMiB = 2048, .cpuSeconds = 2, .hangSeconds = 60};
+constexpr double kReadingMiB = 512;
+
+class HostileInputs : public CliErrors {
+protected:
+    // `grotto info` loads and meshes the world: the whole way a file is read.
+    void expectRefusedWithinCaps(const fs::path& file, const std::string& mention) {
+        SCOPED_TRACE(file.filename().string());
+        const test::RunResult r = expectRefused("info " + file.string(), mention, dir_ / "no-output", "", kCaps);
+        if (!test::kAddressSanitizer) EXPECT_LE(r.peakMiB, goodWorldMiB() + kReadingMiB);
+    }
+
+    // What `grotto info` of a small good world takes, measured once.
+    double goodWorldMiB() {
+        static const double mib = [&] {
+            const test::RunResult r = runGrotto("info " + good_.string(), "", kCaps);
+            EXPECT_EQ(r.exitCode, 0) << r.err;
+            return r.peakMiB;
+        }();
+        return mib;
+    }
+
+    std::string bytesOf(const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return {std::istreambuf_iterator<char>(in), {}};
+    }
+
+    fs::path writeBytes(const std::string& name, const std::string& bytes) {
+        std::ofstream(dir_ / name, std::ios::binary) << bytes;
+        return dir_ / name;
+    }
+
+    fs::path oneVoxelGrid(const std::string& name, openvdb::Coord at, openvdb::math::Transform::Ptr xf = nullptr) {
+        auto grid = openvdb::BoolGrid::create(false);
+        grid->setName("solid");
+        grid->tree().setValueOn(at, true);
+        if (xf) grid->setTransform(xf);
+        writeGrids(dir_ / name, {grid});
+        return dir_ / name;
+    }
+};
+
+TEST_F(HostileInputs, TruncationsAtManyOffsets) {
+    const std::string real = bytesOf(test::worldsDir() / "rooms.vdb");
+    for (size_t cut : {size_t(0), size_t(1), size_t(7), size_t(8), size_t(16), size_t(40), size_t(64), size_t(100),
+                       size_t(150), size_t(200), size_t(300), size_t(500), size_t(1000), size_t(3000), size_t(10000),
+                       size_t(30000), size_t(60000), size_t(90000), size_t(120000), real.size() - 100})
+        expectRefusedWithinCaps(writeBytes("cut" + std::to_string(cut) + ".vdb", real.substr(0, cut)), "cut");
+}
+
+TEST_F(HostileInputs, RandomBytesAfterARealHeader) {
+    // A megabyte of noise after a real file's first bytes: OpenVDB reads sizes
+    // from the noise and tries to allocate them.
+    const std::string real = bytesOf(test::worldsDir() / "rooms.vdb");
+    std::mt19937 rng(7);
+    for (size_t header : {8, 16, 32, 60, 100, 200, 400, 1000}) {
+        std::string bytes = real.substr(0, header);
+        bytes.resize(header + (1 << 20));
+        for (size_t i = header; i < bytes.size(); ++i) bytes[i] = char(rng());
+        expectRefusedWithinCaps(writeBytes("noise" + std::to_string(header) + ".vdb", bytes), "noise");
+    }
+}
+
+TEST_F(HostileInputs, ExtremeTransforms) {
+    using openvdb::math::Transform;
+    expectRefusedWithinCaps(oneVoxelGrid("tiny.vdb", openvdb::Coord(0), Transform::createLinearTransform(5e-5)),
+                            "voxel size 5e-05, outside the supported range");
+    expectRefusedWithinCaps(oneVoxelGrid("huge.vdb", openvdb::Coord(0), Transform::createLinearTransform(1e9)),
+                            "voxel size 1e+09, outside the supported range");
+    auto far = Transform::createLinearTransform(1.0);
+    far->postTranslate(openvdb::Vec3d(0, 1e15, 0));
+    expectRefusedWithinCaps(oneVoxelGrid("far.vdb", openvdb::Coord(0), far), "on y, outside the supported range");
+    auto rotated = Transform::createLinearTransform(1.0);
+    rotated->postRotate(0.3, openvdb::math::Y_AXIS);
+    expectRefusedWithinCaps(oneVoxelGrid("rotated.vdb", openvdb::Coord(0), rotated), "not an axis-aligned");
+    auto mirrored = Transform::createLinearTransform(openvdb::Mat4R(-1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1));
+    expectRefusedWithinCaps(oneVoxelGrid("mirrored.vdb", openvdb::Coord(0), mirrored), "not an axis-aligned");
+}
+
+TEST_F(HostileInputs, IndicesOutsideTheSupportedRange) {
+    const int top = INT_MAX, bottom = INT_MIN, edge = 1 << 30;
+    expectRefusedWithinCaps(oneVoxelGrid("top.vdb", openvdb::Coord(0, top, 0)), "outside the supported index range");
+    expectRefusedWithinCaps(oneVoxelGrid("bottom.vdb", openvdb::Coord(bottom, 0, 0)), "outside the supported index range");
+    expectRefusedWithinCaps(oneVoxelGrid("edge.vdb", openvdb::Coord(0, 0, edge)), "index 1073741824 on z");
+    expectRefusedWithinCaps(oneVoxelGrid("below.vdb", openvdb::Coord(0, -edge - 1, 0)), "index -1073741825 on y");
+    // One active 8^3 tile ending at the top of the int32 range: a 10 KB file
+    // whose brick and meshing loops once overflowed and never ended.
+    auto tile = openvdb::BoolGrid::create(false);
+    tile->setName("solid");
+    tile->tree().addTile(1, openvdb::Coord(top - 7), true, true);
+    writeGrids(dir_ / "tile.vdb", {tile});
+    expectRefusedWithinCaps(dir_ / "tile.vdb", "outside the supported index range");
+    // The range's own ends are inside it.
+    for (auto [name, at] : {std::pair{"low.vdb", openvdb::Coord(-edge)}, std::pair{"high.vdb", openvdb::Coord(edge - 1)}}) {
+        const test::RunResult r = runGrotto("info " + oneVoxelGrid(name, at).string(), "", kCaps);
+        EXPECT_EQ(r.exitCode, 0) << name << ": " << r.err;
+        EXPECT_NE(r.out.find("quads          6"), std::string::npos) << r.out;
+    }
+}
+
+TEST_F(HostileInputs, EmptyGridsAndNothingSolid) {
+    auto empty = openvdb::BoolGrid::create(false);
+    empty->setName("solid");
+    writeGrids(dir_ / "empty.vdb", {empty});
+    expectRefusedWithinCaps(dir_ / "empty.vdb", "has no solid voxels");
+    auto thin = openvdb::FloatGrid::create(0.0f);
+    thin->setName("density");
+    thin->setGridClass(openvdb::GRID_FOG_VOLUME);
+    thin->tree().setValueOn(openvdb::Coord(0), 0.1f);  // below the default threshold of 0.5
+    writeGrids(dir_ / "thin.vdb", {thin});
+    expectRefusedWithinCaps(dir_ / "thin.vdb", "has no solid voxels");
+}
+
+TEST_F(HostileInputs, VectorGrids) {
+    auto vec = openvdb::Vec3SGrid::create();
+    vec->setName("velocity");
+    vec->tree().setValueOn(openvdb::Coord(0), openvdb::Vec3s(1));
+    writeGrids(dir_ / "vec.vdb", {vec});
+    expectRefusedWithinCaps(dir_ / "vec.vdb", "unsupported grid type 'vec3s'");
+}
+
+TEST_F(HostileInputs, NanValues) {
+    auto fog = openvdb::FloatGrid::create(0.0f);
+    fog->setName("density");
+    fog->setGridClass(openvdb::GRID_FOG_VOLUME);
+    fog->tree().setValueOn(openvdb::Coord(0), 1.0f);
+    fog->tree().setValueOn(openvdb::Coord(3, 4, 5), std::nanf(""));
+    writeGrids(dir_ / "nan.vdb", {fog});
+    expectRefusedWithinCaps(dir_ / "nan.vdb", "NaN or infinite value at index (3, 4, 5)");
+    auto ls = openvdb::DoubleGrid::create(std::numeric_limits<double>::infinity());
+    ls->setName("surface");
+    ls->setGridClass(openvdb::GRID_LEVEL_SET);
+    ls->tree().setValueOn(openvdb::Coord(0), -1.0);
+    writeGrids(dir_ / "inf.vdb", {ls});
+    expectRefusedWithinCaps(dir_ / "inf.vdb", "NaN or infinite value as its background");
+}
+
+TEST_F(HostileInputs, InputsThatAreNotRegularFiles) {
+    ASSERT_EQ(mkfifo((dir_ / "pipe.vdb").c_str(), 0644), 0);
+    expectRefusedWithinCaps(dir_ / "pipe.vdb", "is a FIFO, not a regular file");  // once, it waited forever
+    ASSERT_EQ(mkfifo((dir_ / "pipe.json").c_str(), 0644), 0);
+    expectRefusedWithinCaps(dir_ / "pipe.json", "is a FIFO, not a regular file");
+    fs::create_directory(dir_ / "folder.vdb");
+    expectRefusedWithinCaps(dir_ / "folder.vdb", "is a directory, not a regular file");
+    expectRefusedWithinCaps("/dev/zero", "is a character device, not a regular file");
+    const fs::path world = writeText("w.json", R"({"grid": {"file": "/dev/zero"}})");
+    expectRefusedWithinCaps(world, "is a character device");
+}
+
+TEST_F(HostileInputs, OutputsOnlyReplaceRegularFiles) {
+    // A link to a device: renaming onto the path would replace the link, but it
+    // names a device, and the device is what the user pointed at.
+    fs::create_symlink("/dev/null", dir_ / "device.png");
+    const std::string render = "render " + good_.string() + " --size 8x8 -o ";
+    expectRefused(render + (dir_ / "device.png").string(), "is a character device, not a regular file",
+                  dir_ / "no-output");
+    EXPECT_TRUE(fs::is_symlink(dir_ / "device.png"));
+    ASSERT_EQ(mkfifo((dir_ / "pipe.json").c_str(), 0644), 0);
+    expectRefused("bench " + good_.string() + " --size 8x8 --frames 1 --json " + (dir_ / "pipe.json").string(),
+                  "is a FIFO, not a regular file", dir_ / "no-output");
+    EXPECT_EQ(fs::status(dir_ / "pipe.json").type(), fs::file_type::fifo);
+    fs::create_directory(dir_ / "folder.png");
+    expectRefused(render + (dir_ / "folder.png").string(), "is a directory", dir_ / "no-output");
+}
+
+TEST_F(HostileInputs, TextFromFilesIsPrintedEscaped) {
+    auto grid = openvdb::BoolGrid::create(false);
+    grid->setName("evil\n\x1b[2J\x07name");
+    grid->tree().setValueOn(openvdb::Coord(0), true);
+    writeGrids(dir_ / "evil.vdb", {grid});
+    const fs::path world = writeText("w.json", R"({"grid": {"file": "evil.vdb", "name": "plain"}})");
+    expectRefused("info " + world.string(), "grids in the file: evil\\n\\x1B[2J\\x07name", dir_ / "no-output");
+    const test::RunResult r = runGrotto("info " + world.string());
+    EXPECT_EQ(r.err.find('\x1b'), std::string::npos);
+}
+
+}  // namespace
+}  // namespace grotto
