@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs exactly the Debian 12 packages Grotto builds, runs and tests with.
 # Idempotent: prints nothing and touches nothing when all are present.
+# Arguments name extra packages for optional tools (scripts/fuzz.sh passes its own).
 set -euo pipefail
 
 packages=(
@@ -11,6 +12,7 @@ packages=(
   libopenimageio-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
   gnuplot-nox                                                     # grotto tradeoff --plot
+  "$@"
 )
 
 missing=()

@@ -1,6 +1,7 @@
 // Bad input gets one clear line naming the file and field, exit code 2 and no
 // output file; the CLI runs with the validation layer on. (The commands that run
 // paths and references: test_cli_runs.cpp.)
+#include "common/sanitizers.h"
 #include "tests/cli_fixture.h"
 
 #include <OpenImageIO/imageio.h>
@@ -31,10 +32,29 @@ TEST_F(CliErrors, GoodWorldRenders) {
 TEST_F(CliErrors, MissingVdb) { expectRefused(render(dir_ / "nope.vdb"), "nope.vdb", out()); }
 
 TEST_F(CliErrors, TruncatedVdb) {
+#if GROTTO_ASAN
+    // OpenVDB allocates whatever size the cut stream claims (terabytes here): a
+    // release build gets std::bad_alloc and refuses the file, AddressSanitizer aborts.
+    GTEST_SKIP() << "AddressSanitizer aborts on OpenVDB's allocation where a release build refuses the file";
+#endif
     const auto size = fs::file_size(good_);
     fs::copy_file(good_, dir_ / "cut.vdb");
     fs::resize_file(dir_ / "cut.vdb", size / 2);
     expectRefused(render(dir_ / "cut.vdb"), "cut.vdb", out());
+}
+
+// Found by fuzz_vdb: one byte of the shipped rooms grid changed, inside the grid's
+// data, so OpenVDB throws partway through reading it. Refused like any damaged
+// file; OpenVDB leaks the node it was reading, so the leak check would fail it.
+TEST_F(CliErrors, VdbDamagedInsideAGrid) {
+#if GROTTO_ASAN
+    GTEST_SKIP() << "OpenVDB leaks the node it was reading when the damaged file makes it throw";
+#endif
+    std::ifstream in(test::worldsDir() / "rooms.vdb", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(bytes.size(), 71940u);
+    bytes[71940] = 4;
+    expectRefused(render(writeText("damaged.vdb", bytes)), "damaged.vdb", out());
 }
 
 TEST_F(CliErrors, RandomBytesVdb) {

@@ -57,7 +57,8 @@ Points floorPoints(const WallScene& s, double d, int count) {
 TEST(ReferenceAo, BrickTraversalAgreesWithExactRaycast) {
     // Scattered voxels, solid blocks and empty bricks, off the origin, half-voxel size.
     const voxel::World world = test::makeVoxelWorld({-40, -40, -40}, {40, 40, 40}, [](int x, int y, int z) {
-        const uint32_t h = uint32_t(x * 73856093) ^ uint32_t(y * 19349663) ^ uint32_t(z * 83492791);
+        // Unsigned products: the hash wraps by design (signed overflow would be undefined).
+        const uint32_t h = uint32_t(x) * 73856093u ^ uint32_t(y) * 19349663u ^ uint32_t(z) * 83492791u;
         const bool block = std::abs(x - 10) < 6 && std::abs(y + 5) < 9 && std::abs(z) < 4;
         return block || (x < 0 && h % 97 < 3) || (y > 20 && h % 13 == 0);
     }, 0.5, {12.25, -3.0, 0.75});

@@ -80,8 +80,12 @@ CameraPathDesc parseCameraPath(Reader& r, const fs::path& file, const std::strin
 
 CameraPathDesc loadCameraPath(const fs::path& file) {
     const json doc = readJsonFile(file, "a path file is a JSON object with \"keys\": [{\"time\", \"position\", \"target\"}, ...]");
-    Reader r(file, doc, "");
-    return parseCameraPath(r, file, "");
+    CameraPathDesc p;
+    {
+        Reader r(file, doc, "");
+        p = parseCameraPath(r, file, "");
+    }  // r refuses unknown fields here, before p is returned (clang leaks a returned object if a destructor throws)
+    return p;
 }
 
 }  // namespace grotto::voxel

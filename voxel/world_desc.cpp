@@ -114,8 +114,12 @@ void parseAo(Reader r, AoDesc& ao) {
 // A path inline, or the name of a path .json beside the world file.
 CameraPathDesc parsePathEntry(const fs::path& file, const json& entry, const std::string& field) {
     if (!entry.is_string()) {
-        Reader r(file, entry, field);
-        return parseCameraPath(r, file, field);
+        CameraPathDesc p;
+        {
+            Reader r(file, entry, field);
+            p = parseCameraPath(r, file, field);
+        }  // r refuses unknown fields here, before p is returned (clang leaks a returned object if a destructor throws)
+        return p;
     }
     const std::string name = entry.get<std::string>();
     const fs::path pathFile = fs::path(name).is_absolute() ? fs::path(name) : file.parent_path() / name;

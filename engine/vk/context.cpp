@@ -1,5 +1,7 @@
 #include "engine/vk/context.h"
 
+#include "engine/vk/pin_libraries.h"
+
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -117,6 +119,7 @@ void Context::create(const ContextOptions& options) {
     if (r == VK_ERROR_INCOMPATIBLE_DRIVER || r == VK_ERROR_INITIALIZATION_FAILED)
         throw Error("vulkan", std::string("no Vulkan driver could be loaded (") + resultName(r) + ")", kNoDevice);
     VK_CHECK(r);
+    pinLoadedLibraries();  // sanitizer builds: the driver and layers stay loaded for the leak check
     if (validate) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance, "vkCreateDebugUtilsMessengerEXT"));
