@@ -1,6 +1,7 @@
 #include "app/stability_baseline.h"
 
 #include "common/error.h"
+#include "common/file_kind.h"
 
 #include <fstream>
 
@@ -19,9 +20,8 @@ std::string metricName(const char* pointer) { return pointer + 1; }
 }  // namespace
 
 json loadBaseline(const std::filesystem::path& file, const json& run) {
-    std::error_code ec;
-    std::ifstream in;
-    if (std::filesystem::is_regular_file(file, ec)) in.open(file);
+    requireInputFile(file, "give the --json output of an earlier stability run");
+    std::ifstream in(file);
     if (!in) throw Error(file.string(), "cannot be read", "give the --json output of an earlier stability run");
     json baseline;
     try {

@@ -1,5 +1,6 @@
 #include "engine/vk/pipeline.h"
 
+#include "common/file_kind.h"
 #include "engine/vk/embedded_shaders.h"
 
 #include <algorithm>
@@ -46,6 +47,7 @@ std::string spirvProblem(const std::vector<uint32_t>& w, const std::string& name
 // the driver would reject with a bare error code is refused here, naming the file.
 std::vector<char> shaderFile(const std::string& dir, const std::string& name) {
     const std::string path = dir + "/" + name + ".spv";
+    requireInputFile(path, "GROTTO_SHADER_DIR names a directory without it as a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path, "no such compiled shader", "GROTTO_SHADER_DIR names a directory without it");
     std::vector<char> code{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
