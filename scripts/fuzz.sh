@@ -56,7 +56,8 @@ for t in "${targets[@]}"; do
     # The last status line: "#RUNS: cov: C ft: F corp: N exec/s S oom/timeout/crash: O/T/C time: Ts ..."
     status=$(grep -E '^#[0-9]+: cov:' "$out/log.txt" | tail -1)
     execs=$(sed -E 's/^#([0-9]+):.*/\1/' <<<"$status")
-    speed=$(sed -E 's/.*exec\/s ([0-9]+).*/\1/' <<<"$status")
+    secs=$(sed -E 's/.* time: ([0-9]+)s.*/\1/' <<<"$status")
+    speed=$(( ${execs:-0} / (${secs:-0} > 0 ? secs : 1) ))  # the status line's own exec/s is the last job's
     counts=$(sed -E 's/.*oom\/timeout\/crash: ([0-9\/]+).*/\1/' <<<"$status")
     found=$(find "$out" -maxdepth 1 -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' \
                  -o -name 'oom-*' \) | wc -l)
