@@ -27,8 +27,10 @@ openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc);
 
 // loadGrid's reading without the child's limits (what the child runs; fuzzers call
 // it directly so that a crash shows). onEstimate gets the size the grid's metadata
-// states, once it is known to be within the budget.
-openvdb::GridBase::Ptr readGridUnguarded(const WorldDesc& desc, const std::function<void(size_t)>& onEstimate = {});
+// states, once it is known to be within the budget; openAs, when given, is the
+// path opened instead of desc.gridFile (errors still name desc.gridFile).
+openvdb::GridBase::Ptr readGridUnguarded(const WorldDesc& desc, const std::function<void(size_t)>& onEstimate = {},
+                                         const std::filesystem::path& openAs = {});
 
 // Applies the solid rule; fills impl.solid, impl.materials, impl.uniformMaterial.
 void buildSolid(const openvdb::GridBase::Ptr& grid, World::Impl& impl);

@@ -4,7 +4,13 @@
 #include "common/limited_child.h"
 #include "voxel/solid.h"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <mutex>
 
 namespace grotto::voxel {
@@ -77,11 +83,12 @@ void readTransform(const openvdb::GridBase& grid, const std::string& file, World
     impl.origin = glm::dvec3(corner.x(), corner.y(), corner.z());
 }
 
-openvdb::GridBase::Ptr readGridUnguarded(const WorldDesc& desc, const std::function<void(size_t)>& onEstimate) {
+openvdb::GridBase::Ptr readGridUnguarded(const WorldDesc& desc, const std::function<void(size_t)>& onEstimate,
+                                         const std::filesystem::path& openAs) {
     static std::once_flag once;
     std::call_once(once, [] { openvdb::initialize(); });
     const std::string path = desc.gridFile.string();
-    openvdb::io::File file(path);
+    openvdb::io::File file(openAs.empty() ? path : openAs.string());
     try {
         file.open(false);  // no delayed loading: a truncated file fails here or in readGrid
     } catch (const std::bad_alloc&) {
@@ -133,15 +140,28 @@ openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc) {
     // or hostile file ends there, in a clear error, at a bounded cost. A grid
     // whose metadata states its size (OpenVDB writes it) may use that, within
     // the world's budget, plus room for the reader's own buffers.
-    std::error_code ec;
-    const uintmax_t fileBytes = std::filesystem::file_size(desc.gridFile, ec);
+    // Both reads go through one open descriptor, so a file replaced between
+    // them cannot reach the second read unchecked.
+    const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) throw Error(path, std::string("cannot be opened: ") + std::strerror(errno));
+    struct stat st {};
+    fstat(fd, &st);
+    const std::filesystem::path pinned = "/proc/self/fd/" + std::to_string(fd);
     ChildLimits limits;
     limits.memoryBytes = kReaderMemoryBytes;
-    limits.cpuSeconds = 1 + int(std::min<uintmax_t>(ec ? 0 : fileBytes / kReaderBytesPerCpuSecond, 3600));
-    runInLimitedChild(path, limits, [&] {
-        readGridUnguarded(desc, [](size_t estimate) { allowChildMemory(estimate + estimate / 2 + kReaderMemoryBytes); });
-    });
-    return readGridUnguarded(desc);
+    limits.cpuSeconds = 1 + int(std::min<uintmax_t>(uintmax_t(st.st_size) / kReaderBytesPerCpuSecond, 3600));
+    try {
+        runInLimitedChild(path, limits, [&] {
+            readGridUnguarded(desc, [](size_t estimate) { allowChildMemory(estimate + estimate / 2 + kReaderMemoryBytes); },
+                              pinned);
+        });
+        openvdb::GridBase::Ptr grid = readGridUnguarded(desc, {}, pinned);
+        close(fd);
+        return grid;
+    } catch (...) {
+        close(fd);
+        throw;
+    }
 }
 
 }  // namespace grotto::voxel
