@@ -14,6 +14,11 @@ class BrickTable {
 public:
     explicit BrickTable(const World& world);
 
+    // Brings the bricks holding `changed` up to date with the world, in place
+    // (a brick that turns empty or a new one outside the table's range included),
+    // so the table equals a fresh BrickTable(world).
+    void update(const World& world, const IndexBox& changed);
+
     // 0 for an empty (or absent) brick, else an index for mask().
     uint32_t find(glm::ivec3 brick) const {
         const glm::ivec3 r = brick - lo_;

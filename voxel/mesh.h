@@ -26,6 +26,13 @@ struct MeshChunk {
     }
 };
 
+// One chunk's quads on their own, for meshes updated chunk by chunk.
+struct MeshChunkQuads {
+    glm::ivec3 origin{0};
+    std::array<uint32_t, 6> faceCount{};
+    std::vector<gpu::PackedQuad> quads;  // in face order
+};
+
 struct Mesh {
     std::vector<gpu::PackedQuad> quads;
     std::vector<MeshChunk> chunks;

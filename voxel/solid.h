@@ -11,7 +11,7 @@ namespace grotto::voxel {
 struct World::Impl {
     WorldDesc desc;
     openvdb::MaskGrid::Ptr solid;            // active = solid; tiles kept as tiles
-    openvdb::Int32Grid::ConstPtr materials;  // int32 worlds only: per-voxel material id
+    openvdb::Int32Grid::Ptr materials;       // int32 worlds (and painted ones): per-voxel material id
     int uniformMaterial = 1;                 // every other world
     IndexBox bounds;                         // of the solid voxels, cached once built
     double voxelSize = 1.0;

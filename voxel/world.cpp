@@ -74,6 +74,22 @@ World World::load(const std::filesystem::path& path) {
     return world;
 }
 
+World::World(std::shared_ptr<Impl> impl) : impl_(std::move(impl)) {}
+World::World(World&&) noexcept = default;
+World& World::operator=(World&&) noexcept = default;
+World::~World() = default;
+
+// Deep: the grids are copied, so edits on one world never show in another.
+World::World(const World& other) : impl_(std::make_shared<Impl>(*other.impl_)) {
+    impl_->solid = other.impl_->solid->deepCopy();
+    if (other.impl_->materials) impl_->materials = other.impl_->materials->deepCopy();
+}
+
+World& World::operator=(const World& other) {
+    if (this != &other) *this = World(other);
+    return *this;
+}
+
 const WorldDesc& World::desc() const { return impl_->desc; }
 double World::voxelSize() const { return impl_->voxelSize; }
 glm::dvec3 World::origin() const { return impl_->origin; }

@@ -1,6 +1,7 @@
 #pragma once
 // A loaded voxel world: solid occupancy, materials and everything its file says.
 // OpenVDB stays behind this interface, so the engine can use it without OpenVDB.
+#include "voxel/edit.h"
 #include "voxel/mesh.h"
 #include "voxel/world_desc.h"
 
@@ -25,12 +26,6 @@ constexpr int kMaxVoxelIndex = 1 << 30;
 constexpr double kMinVoxelSize = 1e-4, kMaxVoxelSize = 1e6;
 constexpr double kMaxWorldOffset = 1e12;
 
-// Inclusive range of solid voxel indices; empty() when the world has none.
-struct IndexBox {
-    glm::ivec3 min{0}, max{-1};
-    bool empty() const { return max.x < min.x; }
-};
-
 // An 8^3 brick: one OpenVDB leaf node (or one block of an active tile) with its
 // occupancy as 512 bits, bit x*64 + y*8 + z as OpenVDB orders leaf voxels.
 struct Brick {
@@ -51,10 +46,16 @@ struct WorldStats {
     size_t sourceGridBytes = 0;  // OpenVDB's memUsage() of the grid as loaded
 };
 
+// A world is live: edits change its grid in place. Copies are deep (an edited
+// copy leaves the original as it was); moves are cheap.
 class World {
 public:
     // Loads a world .json or a bare .vdb. Throws grotto::Error (input) on bad input.
     static World load(const std::filesystem::path& path);
+    // A world from memory: a dense array of material ids (0 = empty), x fastest,
+    // then y, then z, with voxel (0,0,0) at `origin` (world units). Error on bad sizes.
+    static World fromDense(glm::ivec3 size, const uint8_t* materials, double voxelSize, glm::dvec3 origin,
+                           WorldDesc desc = {});
 
     const WorldDesc& desc() const;
     double voxelSize() const;
@@ -69,15 +70,45 @@ public:
     bool solid(glm::ivec3 voxel) const;
     std::optional<RayHit> raycast(glm::dvec3 origin, glm::dvec3 direction, double maxDistance) const;
 
+    // Material id of a voxel, 0 when empty.
+    int material(glm::ivec3 voxel) const;
+
     // A named camera, or the default one framed from the bounds when name is empty.
     CameraDesc camera(const std::string& name) const;
 
+    // Edits (voxel/edit.h). Each returns what it changed; an edit that changes
+    // nothing returns an empty result and is not recorded. Throws grotto::Error
+    // (input) for an edit out of range (material, radius, index limits).
+    EditResult apply(const Edit& edit);
+    // Reverts the last recorded edit; an empty result when there is none.
+    EditResult undo();
+    size_t undoDepth() const;
+    // Edits applied since load, in order, minus those undone: what the world's
+    // voxels differ from its file by (the reference cache keys on it).
+    const std::vector<Edit>& editLog() const;
+
+    // Writes the grid (voxels, materials, transform and the source grid's metadata)
+    // as a .vdb, atomically; World::load of it gives the same voxels and materials.
+    void save(const std::filesystem::path& path) const;
+
+    // Chunks (origins, GROTTO_CHUNK_SIZE aligned) whose mesh may differ after the
+    // voxels in `changed` did: those holding the box grown by one voxel.
+    std::vector<glm::ivec3> chunksTouching(const IndexBox& changed) const;
+    // The quads of one chunk, as World::mesh() would make them.
+    MeshChunkQuads meshChunk(glm::ivec3 chunkOrigin, const MeshOptions& options = {}) const;
+
+    World(const World& other);
+    World& operator=(const World& other);
+    World(World&&) noexcept;
+    World& operator=(World&&) noexcept;
+    ~World();
+
     struct Impl;
-    explicit World(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
+    explicit World(std::shared_ptr<Impl> impl);
     const Impl& impl() const { return *impl_; }
 
 private:
-    std::shared_ptr<const Impl> impl_;
+    std::shared_ptr<Impl> impl_;
 };
 
 }  // namespace grotto::voxel
