@@ -19,6 +19,8 @@
 #include "common/file_lock.h"
 #include "engine/camera_path.h"
 #include "engine/image_output.h"
+#include "engine/live_scene.h"
+#include "engine/path_edits.h"
 #include "engine/render_memory.h"
 #include "engine/renderer.h"
 #include "voxel/world.h"
@@ -57,6 +59,19 @@ json pathJson(const voxel::CameraPathDesc& p) {
         keys.push_back(key);
     }
     json j = {{"keys", keys}, {"constant_speed", p.constantSpeed}};
+    if (!p.edits.empty()) {  // only then: a resumed run of a path without edits keeps its manifest
+        json edits = json::array();
+        for (const voxel::TimedEdit& t : p.edits) {
+            const voxel::Edit& e = t.edit;
+            json edit = {{"time", t.time}, {"op", int(e.op)}, {"material", e.material}};
+            if (e.shape == voxel::Edit::Shape::Box)
+                edit["voxels"] = {{e.box.min.x, e.box.min.y, e.box.min.z}, {e.box.max.x, e.box.max.y, e.box.max.z}};
+            else
+                edit["sphere"] = {e.centre.x, e.centre.y, e.centre.z, e.radius};
+            edits.push_back(edit);
+        }
+        j["edits"] = edits;
+    }
     if (p.fovDegrees) j["fov"] = *p.fovDegrees;
     if (p.nearPlane) j["near"] = *p.nearPlane;
     if (p.farPlane) j["far"] = *p.farPlane;
@@ -177,7 +192,7 @@ void addFlythroughCommand(CLI::App& app) {
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
-        const voxel::World world = voxel::World::load(args->world);
+        voxel::World world = voxel::World::load(args->world);
         const voxel::CameraPathDesc desc = findCameraPath(world, args->path);
         const CameraPath path(desc, world.camera(""));
         const int count = pathFrameCount(path, args->fps, args->path);
@@ -219,14 +234,20 @@ void addFlythroughCommand(CLI::App& app) {
         const int warmup = args->warmup.value_or(4 * int(ao.gtao.temporalHistory));
         const int start = std::max(1, missing.front() - warmup), end = missing.back();
         std::vector<json> rendered;  // this run's frame entries
-        auto scene = uploadScene(ctx, world.mesh(), world.desc());
+        // The world as the path's edits have made it by the first frame rendered;
+        // later edits are applied as their frames come.
+        std::optional<LiveScene> scene;
+        scene.emplace(ctx, std::move(world));
+        PathEdits edits(desc, scene->world());
+        edits.applyUpTo(double(start - 1) / args->fps, *scene);
         {
-            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
+            Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height);
             Progress progress(end - start + 1, stdout);
             for (int i = start; i <= end; ++i) {
                 const double time = double(i - 1) / args->fps;
                 const Camera camera = path.camera(time, size.width, size.height);
                 if (i > start && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
+                edits.applyUpTo(time, *scene, &renderer);
                 const FrameStats stats = renderer.render(camera, uint32_t(i));
                 const bool write = std::binary_search(missing.begin(), missing.end(), i);
                 if (write) {

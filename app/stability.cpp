@@ -9,7 +9,9 @@
 // are checked against an earlier run's (app/stability_baseline.h): exit code 3
 // when one regressed. A run that measured no surface pixels (sky only, an empty
 // world, no pixel matching between frames) is refused, as is, up front, an AO
-// image under 8x8.
+// image under 8x8. A path with an "edits" track has them applied at their times;
+// the pixels near each edit are measured against references traced on the world
+// before and after it (engine/edit_metrics.h): error, stale share and recovery.
 #include "app/ao_cost.h"
 #include "app/commands.h"
 #include "app/cost_difference.h"
@@ -20,6 +22,9 @@
 #include "common/error.h"
 #include "engine/ao_metrics.h"
 #include "engine/camera_path.h"
+#include "engine/edit_metrics.h"
+#include "engine/live_scene.h"
+#include "engine/path_edits.h"
 #include "engine/render_memory.h"
 #include "engine/renderer.h"
 #include "engine/surface_points.h"
@@ -56,24 +61,78 @@ json errorJson(const std::vector<float>& ao, const std::vector<float>& reference
     return {{"pixels", e.pixels}, {"mae", e.mae}, {"rmse", e.rmse}, {"psnr", std::min(e.psnr, 99.0)}, {"bias", e.bias}};
 }
 
-// The reference at the AO pixels: the G-buffer's points there, traced.
-std::vector<float> referenceAt(const voxel::World& world, const FrameImages& frame, const Camera& camera,
-                               const AoFrame& ao, double radius, int spp, uint64_t& rays) {
-    const SurfacePoints sp = surfacePoints(frame, camera, world.voxelSize(), world.origin());
+// The G-buffer's surface points at the AO pixels, with the AO pixel each stands for.
+struct AoPoints {
     std::vector<glm::dvec3> points, normals;
     std::vector<size_t> index;
+};
+
+AoPoints aoPoints(const voxel::World& world, const FrameImages& frame, const Camera& camera, const AoFrame& ao) {
+    const SurfacePoints sp = surfacePoints(frame, camera, world.voxelSize(), world.origin());
+    AoPoints out;
     for (size_t k = 0; k < sp.pixels.size(); ++k) {
         const uint32_t x = sp.pixels[k] % frame.width, y = sp.pixels[k] / frame.width;
         if (x % ao.scale || y % ao.scale) continue;
-        points.push_back(sp.points[k]);
-        normals.push_back(sp.normals[k]);
-        index.push_back(size_t(y / ao.scale) * ao.width + x / ao.scale);
+        out.points.push_back(sp.points[k]);
+        out.normals.push_back(sp.normals[k]);
+        out.index.push_back(size_t(y / ao.scale) * ao.width + x / ao.scale);
     }
-    const voxel::ReferenceAo r = voxel::referenceAo(world, points, normals, {.radius = radius, .spp = uint32_t(spp)});
+    return out;
+}
+
+// The reference on `world` (its brick table `bricks`) at the points whose AO pixel
+// is set in `only` (all when empty); 1 elsewhere.
+std::vector<float> referenceAt(const voxel::BrickTable& bricks, const voxel::World& world, const AoPoints& at,
+                               size_t pixels, double radius, int spp, uint64_t& rays,
+                               const std::vector<uint8_t>& only = {}) {
+    std::vector<glm::dvec3> points, normals;
+    std::vector<size_t> index;
+    for (size_t k = 0; k < at.index.size(); ++k)
+        if (only.empty() || only[at.index[k]]) {
+            points.push_back(at.points[k]);
+            normals.push_back(at.normals[k]);
+            index.push_back(at.index[k]);
+        }
+    const voxel::ReferenceAo r =
+        voxel::referenceAo(bricks, world, points, normals, {.radius = radius, .spp = uint32_t(spp)});
     rays += r.rays;
-    std::vector<float> v(ao.world.size(), 1.0f);
+    std::vector<float> v(pixels, 1.0f);
     for (size_t k = 0; k < index.size(); ++k) v[index[k]] = r.visibility[k];
     return v;
+}
+
+// An edit event of the run: the frame the path's edits were applied before, what
+// they changed, and the world as it was, for the pre-edit reference.
+struct EditEvent {
+    int frame;
+    voxel::WorldBox box;
+    voxel::World before;
+    voxel::BrickTable beforeBricks;
+    std::vector<EditFrame> frames;
+};
+
+json editsJson(const std::vector<EditEvent>& events, double& staleMax, int& recoveryMax,
+               bool& recoveryMeasured) {
+    json out = json::array();
+    for (const EditEvent& e : events) {
+        const EditRecovery r = editRecovery(e.frames, e.frame);
+        json frames = json::array();
+        for (const EditFrame& f : e.frames)
+            frames.push_back({{"frame", f.frame}, {"pixels", f.pixels}, {"mae", f.mae}, {"stale", f.stale}});
+        out.push_back({{"frame", e.frame},
+                       {"box", {{"min", {e.box.min.x, e.box.min.y, e.box.min.z}}, {"max", {e.box.max.x, e.box.max.y, e.box.max.z}}}},
+                       {"frames", frames},
+                       {"stale_after_edit_frame", r.staleAfter},
+                       {"steady_mae", r.steadyMae ? json(*r.steadyMae) : json()},
+                       {"recovered_within_frames", r.recoveredWithin ? json(*r.recoveredWithin) : json()}});
+        staleMax = std::max(staleMax, r.staleAfter);
+        if (r.steadyMae) {
+            recoveryMeasured = true;
+            // Never recovering within the window counts as the whole window.
+            recoveryMax = std::max(recoveryMax, r.recoveredWithin.value_or(kEditWindow));
+        }
+    }
+    return out;
 }
 
 // The smallest AO image (each side) a stability run measures.
@@ -117,8 +176,9 @@ void addStabilityCommand(CLI::App& app) {
         const Size size = parseSize(args->size);
         const std::filesystem::path out = args->output;
         requireOutputPath(out);
-        const voxel::World world = voxel::World::load(args->world);
-        const CameraPath path(findCameraPath(world, args->path), world.camera(""));
+        voxel::World world = voxel::World::load(args->world);
+        const voxel::CameraPathDesc pathDesc = findCameraPath(world, args->path);
+        const CameraPath path(pathDesc, world.camera(""));
         // Within the path: past its last key the camera stands still, which would flatter every metric.
         const int pathFrames = pathFrameCount(path, args->fps, args->path);
         const FrameRange range = args->frames.empty() ? FrameRange{1, pathFrames} : parseFrameRange(args->frames, pathFrames);
@@ -151,7 +211,13 @@ void addStabilityCommand(CLI::App& app) {
 
         vk::Context ctx;
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
-        auto scene = uploadScene(ctx, world.mesh(), world.desc());
+        // The path's edits due before the first frame measured are the world it starts from.
+        std::optional<LiveScene> scene;
+        scene.emplace(ctx, std::move(world));
+        PathEdits edits(pathDesc, scene->world());
+        LiveScene& live = *scene;
+        edits.applyUpTo(double(first - 1) / args->fps, live);
+        std::vector<EditEvent> events;
         std::map<std::string, std::vector<double>> passMs;
         std::vector<double> wallMs, chainMs, temporalMs;
         Mean flickerRaw, flickerSpatial, flickerTemporal, flickerReference;
@@ -160,8 +226,9 @@ void addStabilityCommand(CLI::App& app) {
         json errors = json::array();
         uint64_t rays = 0;
         {
-            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
-            AoCostTimer costs(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
+            const voxel::World& world = live.world();
+            Renderer renderer(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height);
+            AoCostTimer costs(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height);
             AoFrame before;
             Camera beforeCamera;
             std::vector<float> beforeReference;
@@ -172,6 +239,14 @@ void addStabilityCommand(CLI::App& app) {
                 const double time = double(i - 1) / args->fps;
                 const Camera camera = path.camera(time, size.width, size.height);
                 if (i > first && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
+                if (edits.pending(time)) {
+                    voxel::World before = live.world();  // a deep copy: the pre-edit reference traces it
+                    const voxel::WorldBox box = edits.applyUpTo(time, live, &renderer);
+                    if (!box.empty()) {
+                        voxel::BrickTable bricks(before);
+                        events.push_back({i, box, std::move(before), std::move(bricks), {}});
+                    }
+                }
                 const FrameStats stats = costs.render(renderer, camera, uint32_t(i), i > first + 1);  // 2 frames of warm-up
                 for (const auto& [name, ms] : stats.passMs) passMs[name].push_back(ms);
                 wallMs.push_back(stats.wallMs);
@@ -188,8 +263,17 @@ void addStabilityCommand(CLI::App& app) {
                 // The sequence's first frame counts as disoccluded everywhere.
                 age = i > first ? disocclusionAge(match, age, now.world.size()) : std::vector<uint16_t>(now.world.size(), 0);
                 std::vector<float> reference;
+                const AoPoints points = aoPoints(world, frame, camera, now);
+                for (EditEvent& e : events) {
+                    if (i - e.frame >= kEditWindow) continue;
+                    // Only the pixels near the edit: the pre- and post-edit references differ nowhere else.
+                    const std::vector<uint8_t> near = nearBox(now, e.box, ao.gtao.radius);
+                    const auto pre = referenceAt(e.beforeBricks, e.before, points, near.size(), ao.gtao.radius, args->spp, rays, near);
+                    const auto post = referenceAt(live.bricks(), world, points, near.size(), ao.gtao.radius, args->spp, rays, near);
+                    e.frames.push_back(editFrame(i, now.temporal, pre, post, near));
+                }
                 if ((i - first) % args->referenceEvery < 2) {
-                    reference = referenceAt(world, frame, camera, now, ao.gtao.radius, args->spp, rays);
+                    reference = referenceAt(live.bricks(), world, points, now.world.size(), ao.gtao.radius, args->spp, rays);
                     errors.push_back({{"frame", i},
                                       {"spatial", errorJson(now.spatial, reference, now.surface)},
                                       {"temporal", errorJson(now.temporal, reference, now.surface)}});
@@ -272,6 +356,15 @@ void addStabilityCommand(CLI::App& app) {
                                     {"temporal", flickerTemporal.value()}, {"reference", flickerReference.value()}}},
                        {"error_mean", steady}, {"error_mean_from_frame", steadyFrom}, {"error", errors},
                        {"ghosting", ghostCurve}, {"cost_ms", cost}});
+        if (!pathDesc.edits.empty()) {
+            // The worst over the run's edits; a run whose windows were cut short has no recovery figure.
+            double staleMax = 0.0;
+            int recoveryMax = 0;
+            bool recoveryMeasured = false;
+            result["edits"] = editsJson(events, staleMax, recoveryMax, recoveryMeasured);
+            result["edit_recovery"] = {{"stale_after_edit_frame", staleMax},
+                                       {"recovered_within_frames", recoveryMeasured ? json(recoveryMax) : json()}};
+        }
         std::vector<BaselineCheck> checks;
         if (!baseline.is_null()) {
             checks = checkBaseline(baseline, result, args->tolerance);
@@ -293,6 +386,10 @@ void addStabilityCommand(CLI::App& app) {
         std::printf("error vs reference (%zu frames from frame %d): spatial rmse %.4f psnr %.2f dB, temporal rmse %.4f psnr %.2f dB\n",
                     steadyFrames, steadyFrom, meanError("spatial", "rmse"), meanError("spatial", "psnr"),
                     meanError("temporal", "rmse"), meanError("temporal", "psnr"));
+        if (result.contains("edit_recovery"))
+            std::printf("edits: %zu measured; stale after the edit frame %.4f, recovered within %s frames (target %d)\n",
+                        events.size(), result["edit_recovery"]["stale_after_edit_frame"].get<double>(),
+                        result["edit_recovery"]["recovered_within_frames"].dump().c_str(), kEditRecoveryTarget);
         // Per-pass timestamps stay in the JSON only: lavapipe's miss passes that follow a barrier.
         std::printf("frame %.1f ms wall, AO chain %s, temporal pass %s (wall-time differences); wrote %s\n",
                     median(wallMs), formatCost(chain).c_str(), temporalMs.empty() ? "off" : formatCost(temporalPass).c_str(),

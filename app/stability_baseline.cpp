@@ -3,6 +3,7 @@
 #include "common/error.h"
 #include "common/file_kind.h"
 
+#include <cmath>
 #include <fstream>
 
 namespace grotto::app {
@@ -13,6 +14,9 @@ using json = nlohmann::json;
 // The figures compared, as JSON pointers; every one is better lower.
 const char* const kMetrics[] = {"/flicker/raw",           "/flicker/spatial",          "/flicker/temporal",
                                 "/error_mean/spatial/rmse", "/error_mean/temporal/rmse", "/error_mean/temporal/mae"};
+
+// Compared when the baseline has them: a path with edits (docs/metrics.md).
+const char* const kEditMetrics[] = {"/edit_recovery/stale_after_edit_frame", "/edit_recovery/recovered_within_frames"};
 
 // "/error_mean/spatial/rmse" -> "error_mean/spatial/rmse"
 std::string metricName(const char* pointer) { return pointer + 1; }
@@ -60,6 +64,13 @@ std::vector<BaselineCheck> checkBaseline(const json& baseline, const json& resul
     std::vector<BaselineCheck> checks;
     for (const char* m : kMetrics) {
         const double was = baseline[json::json_pointer(m)], is = result[json::json_pointer(m)];
+        checks.push_back({metricName(m), was, is, was * (1.0 + t.relative) + t.absolute});
+    }
+    for (const char* m : kEditMetrics) {
+        const json::json_pointer p(m);
+        if (!baseline.contains(p) || !baseline[p].is_number()) continue;
+        // A run whose edits were not measured (no figure) has regressed: it proves nothing.
+        const double was = baseline[p], is = result.contains(p) && result[p].is_number() ? result[p].get<double>() : NAN;
         checks.push_back({metricName(m), was, is, was * (1.0 + t.relative) + t.absolute});
     }
     return checks;

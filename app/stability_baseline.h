@@ -29,7 +29,9 @@ struct BaselineCheck {
 nlohmann::json loadBaseline(const std::filesystem::path& file, const nlohmann::json& run);
 
 // Flicker (raw, spatial, temporal) and steady-state error (spatial and temporal
-// RMSE, temporal MAE) of `result` against the same figures of `baseline`.
+// RMSE, temporal MAE) of `result` against the same figures of `baseline`; on a
+// path with edits also the stale share after the edit frame and the frames the
+// edited region took to recover.
 std::vector<BaselineCheck> checkBaseline(const nlohmann::json& baseline, const nlohmann::json& result, Tolerance t);
 
 }  // namespace grotto::app

@@ -1,5 +1,6 @@
 #include "voxel/camera_path_desc.h"
 
+#include "voxel/edit_track.h"
 #include "voxel/json_reader.h"
 
 #include <glm/geometric.hpp>
@@ -58,6 +59,7 @@ CameraPathDesc parseCameraPath(Reader& r, const fs::path& file, const std::strin
     if (r.has("far")) p.farPlane = r.number("far", 0.0, 0.0, 1e7);
     if (p.nearPlane && p.farPlane && *p.farPlane != 0.0 && *p.farPlane <= *p.nearPlane)
         r.fail("far", "must exceed 'near' (or be 0 for an infinite far plane)");
+    if (r.has("edits")) p.edits = parseEditTrack(r, "edits", field);
     if (!r.has("keys")) r.fail("keys", "missing", "a path needs at least two keys");
     const json& keys = r.at("keys");
     if (!keys.is_array()) r.fail("keys", "expected an array of keys");

@@ -2,6 +2,8 @@
 // What a camera path says, as plain data: keyframes and options, read strictly
 // from a world file's "paths" or from a path .json of its own. OpenVDB-free.
 // docs/paths.md describes the format; engine/camera_path.h evaluates it.
+#include "voxel/edit.h"
+
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec3.hpp>
 
@@ -23,11 +25,21 @@ struct PathKey {
     bool cut = false;                    // starts a new shot: the camera jumps here, history restarts
 };
 
+// An edit the path applies at its time: flythrough and stability apply every edit
+// whose time has come before rendering a frame, so an edit sequence replays the
+// same on every run.
+struct TimedEdit {
+    double time = 0.0;  // seconds; non-decreasing along the track, >= 0
+    Edit edit;
+    std::string field;  // where in the file ("paths.dig.edits[2]"), for errors found later
+};
+
 struct CameraPathDesc {
     std::filesystem::path source;  // the file the path was read from
     std::string field;             // where in it ("paths.walk"), empty for a whole path file
     std::vector<PathKey> keys;     // at least two
     bool constantSpeed = false;    // reparametrise by arc length
+    std::vector<TimedEdit> edits;  // the "edits" track, in time order; empty = a static world
     // Unset = the world's camera conventions (its default camera).
     std::optional<double> fovDegrees, nearPlane, farPlane;
 };

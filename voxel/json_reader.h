@@ -80,6 +80,7 @@ public:
         }
         return r;
     }
+    const std::filesystem::path& file() const { return file_; }
     Reader child(const std::string& key) { return Reader(file_, obj_.at(key), field(key)); }
 
     [[noreturn]] void fail(const std::string& key, const std::string& what,

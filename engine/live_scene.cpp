@@ -1,0 +1,37 @@
+#include "engine/live_scene.h"
+
+namespace grotto {
+
+LiveScene::LiveScene(vk::Context& ctx, voxel::World world)
+    : world_(std::move(world)), mesh_(world_), gpu_(uploadScene(ctx, mesh_.flatten(), world_.desc())) {}
+
+voxel::EditResult LiveScene::apply(const voxel::Edit& edit) {
+    const voxel::EditResult result = world_.apply(edit);
+    changed(result);
+    return result;
+}
+
+voxel::EditResult LiveScene::undo() {
+    const voxel::EditResult result = world_.undo();
+    changed(result);
+    return result;
+}
+
+const voxel::BrickTable& LiveScene::bricks() {
+    if (!bricks_) bricks_.emplace(world_);
+    return *bricks_;
+}
+
+void LiveScene::changed(const voxel::EditResult& result) {
+    if (result.voxels.empty()) return;
+    std::vector<voxel::MeshChunkQuads> replaced;
+    std::vector<glm::ivec3> removed;
+    for (const glm::ivec3& origin : mesh_.update(world_, result.voxels)) {
+        if (const voxel::MeshChunkQuads* chunk = mesh_.find(origin)) replaced.push_back(*chunk);
+        else removed.push_back(origin);
+    }
+    gpu_->updateChunks(replaced, removed);
+    if (bricks_) bricks_->update(world_, result.voxels);
+}
+
+}  // namespace grotto

@@ -1,0 +1,35 @@
+#pragma once
+// Replays a camera path's "edits" track: before each frame, every edit whose time
+// has come is applied to the live scene, and the renderer is told where the world
+// changed so temporal history there restarts.
+#include "engine/live_scene.h"
+#include "voxel/camera_path_desc.h"
+
+#include <vector>
+
+namespace grotto {
+
+class Renderer;
+
+class PathEdits {
+public:
+    // Refuses (grotto::Error naming the path's file and field) an edit whose
+    // material is not in the world's palette, before any frame is rendered.
+    PathEdits(const voxel::CameraPathDesc& path, const voxel::World& world);
+
+    // Applies the edits due by `time` not applied yet, in order; returns the union
+    // of what they changed (empty when nothing did). With a renderer, its history
+    // is restarted within the AO radius of that box. An edit the world refuses
+    // throws grotto::Error naming the path's file and the edit's field.
+    voxel::WorldBox applyUpTo(double time, LiveScene& scene, Renderer* renderer = nullptr);
+
+    // Is an edit due by `time` not applied yet?
+    bool pending(double time) const { return next_ < path_.edits.size() && path_.edits[next_].time <= time; }
+    size_t applied() const { return next_; }
+
+private:
+    const voxel::CameraPathDesc& path_;
+    size_t next_ = 0;
+};
+
+}  // namespace grotto
