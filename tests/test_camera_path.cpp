@@ -321,6 +321,59 @@ TEST_F(PathFiles, BadPathsNameFileAndField) {
                 {"bad-keys.json", "keys[1].position"});
 }
 
+TEST_F(PathFiles, EditTracksLoadInOrderWithTheirShapes) {
+    const fs::path file = write("dig.json", std::string(R"({"keys": )") + kGoodKeys + R"(, "edits": [
+        {"time": 0.5, "op": "carve", "voxels": {"min": [1, -2, 3], "max": [4, 5, 6]}},
+        {"time": 0.5, "op": "fill", "voxel": [7, 8, -9], "material": 3},
+        {"time": 1.25, "op": "paint", "sphere": {"centre": [1.5, 2, -3], "radius": 2.5}, "material": 2}]})");
+    const voxel::CameraPathDesc p = voxel::loadCameraPath(file);
+    ASSERT_EQ(p.edits.size(), 3u);
+    const voxel::Edit& carve = p.edits[0].edit;
+    EXPECT_EQ(carve.op, voxel::Edit::Op::Carve);
+    EXPECT_EQ(carve.shape, voxel::Edit::Shape::Box);
+    EXPECT_EQ(carve.box.min, glm::ivec3(1, -2, 3));
+    EXPECT_EQ(carve.box.max, glm::ivec3(4, 5, 6));
+    const voxel::Edit& fill = p.edits[1].edit;
+    EXPECT_EQ(fill.op, voxel::Edit::Op::Fill);
+    EXPECT_EQ(fill.box.min, glm::ivec3(7, 8, -9));
+    EXPECT_EQ(fill.box.max, fill.box.min);
+    EXPECT_EQ(fill.material, 3);
+    EXPECT_DOUBLE_EQ(p.edits[1].time, 0.5);  // equal times are allowed: they apply in file order
+    const voxel::Edit& paint = p.edits[2].edit;
+    EXPECT_EQ(paint.op, voxel::Edit::Op::Paint);
+    EXPECT_EQ(paint.shape, voxel::Edit::Shape::Sphere);
+    EXPECT_EQ(paint.centre, glm::dvec3(1.5, 2, -3));
+    EXPECT_DOUBLE_EQ(paint.radius, 2.5);
+    EXPECT_EQ(p.edits[2].field, "edits[2]");
+}
+
+TEST_F(PathFiles, BadEditsNameFileAndField) {
+    auto path = [&](const std::string& name, const std::string& edit) {
+        return write(name, std::string(R"({"keys": )") + kGoodKeys + R"(, "edits": [)" + edit + "]}");
+    };
+    expectError(path("noop.json", R"({"time": 0, "voxel": [0, 0, 0]})"), {"noop.json", "edits[0].op", "missing"});
+    expectError(path("badop.json", R"({"time": 0, "op": "dig", "voxel": [0, 0, 0]})"), {"badop.json", "edits[0].op", "fill, carve, paint"});
+    expectError(path("notime.json", R"({"op": "carve", "voxel": [0, 0, 0]})"), {"notime.json", "edits[0].time"});
+    expectError(path("noshape.json", R"({"time": 0, "op": "carve"})"), {"noshape.json", "edits[0].voxel", "one shape"});
+    expectError(path("twoshapes.json", R"({"time": 0, "op": "carve", "voxel": [0, 0, 0], "sphere": {"centre": [0, 0, 0], "radius": 1}})"),
+                {"twoshapes.json", "more than one shape"});
+    expectError(path("frac.json", R"({"time": 0, "op": "carve", "voxel": [0.5, 0, 0]})"), {"frac.json", "edits[0].voxel", "whole numbers"});
+    expectError(path("far.json", R"({"time": 0, "op": "carve", "voxel": [0, 2000000000, 0]})"), {"far.json", "out of range"});
+    expectError(path("inverted.json", R"({"time": 0, "op": "carve", "voxels": {"min": [0, 5, 0], "max": [3, 4, 3]}})"),
+                {"inverted.json", "edits[0].voxels.max", "below"});
+    expectError(path("radius.json", R"({"time": 0, "op": "carve", "sphere": {"centre": [0, 0, 0], "radius": 0}})"),
+                {"radius.json", "edits[0].sphere.radius", "out of range"});
+    expectError(path("nomat.json", R"({"time": 0, "op": "fill", "voxel": [0, 0, 0]})"), {"nomat.json", "edits[0].material", "missing"});
+    expectError(path("carvemat.json", R"({"time": 0, "op": "carve", "voxel": [0, 0, 0], "material": 2})"),
+                {"carvemat.json", "edits[0].material", "carve"});
+    expectError(path("matfrac.json", R"({"time": 0, "op": "paint", "voxel": [0, 0, 0], "material": 1.5})"),
+                {"matfrac.json", "edits[0].material", "whole number"});
+    expectError(path("unknown.json", R"({"time": 0, "op": "carve", "voxel": [0, 0, 0], "depth": 2})"),
+                {"unknown.json", "edits[0].depth", "unknown field"});
+    expectError(path("order.json", R"({"time": 1, "op": "carve", "voxel": [0, 0, 0]}, {"time": 0.5, "op": "carve", "voxel": [1, 0, 0]})"),
+                {"order.json", "edits[1].time", "must not decrease"});
+}
+
 // Found by fuzz_world_json: a good path with an unknown field beside its keys. The
 // reader refuses the field when it goes out of scope, after the path was parsed;
 // returned straight from there, the parsed path leaked (clang). The leak check of
