@@ -15,6 +15,7 @@ install(TARGETS grotto RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
 install(TARGETS grotto_common grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_oiio
         EXPORT GrottoTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY common engine voxel DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto FILES_MATCHING PATTERN "*.h")
+install(FILES include/grotto/grotto.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto)
 install(DIRECTORY shaders/shared DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto/shaders FILES_MATCHING PATTERN "*.h")
 
 set(package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/Grotto)

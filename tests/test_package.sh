@@ -16,3 +16,10 @@ cmake -S "$source/examples/embed" -B "$scratch/build" -G Ninja -DCMAKE_PREFIX_PA
 cmake --build "$scratch/build" >/dev/null
 GROTTO_VALIDATION=1 "$scratch/build/walk_path" "$source/worlds/rooms.json" orbit 3 "$scratch/out.png"
 test -s "$scratch/out.png" || { echo "walk_path wrote no image" >&2; exit 1; }
+# The game loop: its own Vulkan device handed to Grotto, a world built in memory and dug into.
+cmake -S "$source/examples/game_loop" -B "$scratch/game" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" \
+      -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_CXX_FLAGS="$cxxflags" -DCMAKE_EXE_LINKER_FLAGS="$ldflags" >/dev/null
+cmake --build "$scratch/game" >/dev/null
+GROTTO_VALIDATION=1 "$scratch/game/game_loop" "$scratch/game.png"
+test -s "$scratch/game.png" || { echo "game_loop wrote no image" >&2; exit 1; }

@@ -80,6 +80,15 @@ Context::Context(ContextOptions options) {
     }
 }
 
+Context::Context(const ExternalDevice& external) {
+    try {
+        adopt(external);
+    } catch (...) {
+        release();
+        throw;
+    }
+}
+
 void Context::create(const ContextOptions& options) {
     const bool validate = options.validation || envFlag("GROTTO_VALIDATION");
     std::string wanted = options.deviceName;
@@ -174,7 +183,41 @@ void Context::create(const ContextOptions& options) {
                            .ppEnabledExtensionNames = deviceExtensions.data()};
     VK_CHECK(vkCreateDevice(physical, &dci, nullptr, &device));
     vkGetDeviceQueue(device, queueFamily, 0, &queue);
+    finishSetup();
+}
 
+void Context::adopt(const ExternalDevice& external) {
+    ownsDevice_ = false;
+    if (!external.instance || !external.physical || !external.device || !external.queue)
+        throw Error("external Vulkan device", "a handle is null", "give the instance, physical device, device and queue");
+    instance = external.instance;
+    physical = external.physical;
+    device = external.device;
+    queue = external.queue;
+    queueFamily = external.queueFamily;
+    vkGetPhysicalDeviceProperties(physical, &properties);
+    if (properties.apiVersion < VK_API_VERSION_1_2)
+        throw Error("external Vulkan device", std::string(properties.deviceName) + " is below Vulkan 1.2",
+                    "Grotto needs Vulkan 1.2 with push descriptors and dynamic rendering");
+    uint32_t nq = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &nq, nullptr);
+    std::vector<VkQueueFamilyProperties> families(nq);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical, &nq, families.data());
+    if (queueFamily >= nq || !(families[queueFamily].queueFlags & VK_QUEUE_GRAPHICS_BIT) ||
+        !(families[queueFamily].queueFlags & VK_QUEUE_COMPUTE_BIT) || families[queueFamily].timestampValidBits == 0)
+        throw Error("external Vulkan device", "queue family " + std::to_string(queueFamily) +
+                                                   " lacks graphics, compute or timestamps",
+                    "hand Grotto a queue of a family with all three");
+    finishSetup();
+    // Enabled extensions cannot be queried from a VkDevice: the entry points tell.
+    if (!cmdPushDescriptorSet || !cmdBeginRendering || !cmdEndRendering)
+        throw Error("external Vulkan device", std::string("was not created with ") +
+                                                  (!cmdPushDescriptorSet ? "VK_KHR_push_descriptor" : "dynamic rendering"),
+                    "enable VK_KHR_push_descriptor and dynamic rendering when creating the device");
+}
+
+void Context::finishSetup() {
+    const bool core13 = properties.apiVersion >= VK_API_VERSION_1_3;
     auto proc = [&](const char* core, const char* khr) {
         PFN_vkVoidFunction f = core13 ? vkGetDeviceProcAddr(device, core) : nullptr;
         return f ? f : vkGetDeviceProcAddr(device, khr);
@@ -202,11 +245,19 @@ void Context::create(const ContextOptions& options) {
 Context::~Context() { release(); }
 
 void Context::release() {
-    if (device) vkDeviceWaitIdle(device);
+    // A borrowed device keeps running the caller's work: wait for Grotto's queue only.
+    if (device && ownsDevice_) vkDeviceWaitIdle(device);
+    else if (device && queue) vkQueueWaitIdle(queue);
     allocator.reset();
     if (pointSampler) vkDestroySampler(device, pointSampler, nullptr);
     pointSampler = VK_NULL_HANDLE;
     if (commandPool) vkDestroyCommandPool(device, commandPool, nullptr);
+    if (!ownsDevice_) {  // the caller's: theirs to destroy
+        device = VK_NULL_HANDLE;
+        instance = VK_NULL_HANDLE;
+        commandPool = VK_NULL_HANDLE;
+        return;
+    }
     if (device) vkDestroyDevice(device, nullptr);
     if (messenger_) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(

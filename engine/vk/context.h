@@ -18,9 +18,25 @@ struct ContextOptions {
     std::string deviceName;    // substring; empty = GROTTO_DEVICE, else lavapipe, else the first
 };
 
+// A device someone else made (a game's own), which Grotto renders with and never
+// destroys. It must be Vulkan 1.2 or later, created with VK_KHR_push_descriptor and
+// dynamic rendering (core in 1.3, else VK_KHR_dynamic_rendering, with the feature
+// enabled), and `queue` must be of a family with graphics, compute and timestamps.
+// Grotto submits to `queue` from the calling thread: the caller must not submit to
+// it from another thread at the same time (Vulkan's external synchronisation).
+struct ExternalDevice {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physical = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+};
+
 class Context {
 public:
     explicit Context(ContextOptions options = {});
+    // Throws grotto::Error (input) naming what the device lacks.
+    explicit Context(const ExternalDevice& external);
     ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
@@ -49,7 +65,10 @@ public:
 
 private:
     void create(const ContextOptions& options);
+    void adopt(const ExternalDevice& external);
+    void finishSetup();  // after device and queue exist: entry points, command pool, sampler, allocator
     void release();
+    bool ownsDevice_ = true;
     static VkBool32 VKAPI_PTR onMessage(VkDebugUtilsMessageSeverityFlagBitsEXT,
                                         VkDebugUtilsMessageTypeFlagsEXT,
                                         const VkDebugUtilsMessengerCallbackDataEXT*, void*);

@@ -1,0 +1,115 @@
+#pragma once
+// Grotto for games: one header to load or build a voxel world, edit it, set the
+// camera, lighting and AO, resize, render and get the result, either as host
+// pixels or as Vulkan images on the game's own device. Grotto's Vulkan layer and
+// OpenVDB stay behind it. Link Grotto::engine (find_package(Grotto)).
+#include "common/error.h"
+#include "voxel/edit.h"
+#include "voxel/world.h"
+#include "voxel/world_desc.h"
+
+#include <vulkan/vulkan.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace grotto {
+
+// A Vulkan device the game made and keeps. It must be Vulkan 1.2 or later, made
+// with VK_KHR_push_descriptor and dynamic rendering (core in 1.3, else
+// VK_KHR_dynamic_rendering) enabled; `queue` must belong to a family with
+// graphics, compute and timestamps. Grotto submits to `queue` from the thread
+// that calls render() and edit(): do not submit to it from another thread then.
+struct VulkanDevice {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+};
+
+// An image Grotto rendered, owned by Grotto and valid until the next render(),
+// resize(), setAo() or the engine's end.
+struct RenderedImage {
+    VkImage image = VK_NULL_HANDLE;
+    VkFormat format = VK_FORMAT_UNDEFINED;
+    VkExtent2D extent{0, 0};
+    VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL;
+};
+
+// What render() hands back. Synchronisation: render() returns once the GPU has
+// finished the frame (it waits on its own fence), so no semaphore is needed; the
+// images are in VK_IMAGE_LAYOUT_GENERAL, last written by compute shaders. To read
+// them in your own submission on the same queue, record first a barrier with
+// srcStageMask COMPUTE_SHADER, srcAccessMask SHADER_WRITE (and the layout change
+// you need, from GENERAL); give them back in GENERAL (any access) before calling
+// render() again. Do not write to them.
+struct RenderedFrame {
+    RenderedImage color;  // linear RGBA, R32G32B32A32_SFLOAT, full size (no tone map)
+    RenderedImage ao;     // ambient visibility in the red channel (1 = open), R32G32B32A32_SFLOAT,
+                          // at AO resolution: ceil(w/2) x ceil(h/2) by default; 1x1 with AO off
+    uint64_t quadsDrawn = 0;
+    double wallMs = 0.0;  // record + submit + wait
+};
+
+// A frame read back to host memory, row 0 on top.
+struct Pixels {
+    uint32_t width = 0, height = 0;
+    std::vector<float> rgba;  // linear
+    std::vector<float> ao;    // visibility per pixel at full size (1 without AO)
+};
+
+struct EngineOptions {
+    uint32_t width = 1280, height = 720;
+    bool validation = false;  // the Khronos validation layer (headless only; GROTTO_VALIDATION=1 too)
+    std::string deviceName;   // headless: a substring of the device to use; empty = lavapipe, else the first
+};
+
+class Engine {
+public:
+    // Headless: Grotto makes a Vulkan instance and device of its own.
+    explicit Engine(const EngineOptions& options = {});
+    // On the game's device; Grotto never destroys it.
+    Engine(const VulkanDevice& device, const EngineOptions& options = {});
+    ~Engine();
+    Engine(const Engine&) = delete;
+    Engine& operator=(const Engine&) = delete;
+
+    // The world: a world .json or .vdb, or one built in memory
+    // (voxel::World::fromDense). Its lighting, AO settings and default camera
+    // become the engine's. Throws grotto::Error (input) on bad input.
+    void loadWorld(const std::filesystem::path& file);
+    void setWorld(voxel::World world);
+    const voxel::World& world() const;
+
+    // Edits change the world between any two frames; only the chunks they touch
+    // are re-meshed and re-uploaded, and temporal AO history near them restarts.
+    voxel::EditResult edit(const voxel::Edit& edit);
+    voxel::EditResult undo();
+
+    void setCamera(const voxel::CameraDesc& camera);
+    void setLighting(const voxel::Lighting& lighting);
+    void setAo(const voxel::AoDesc& ao);  // the world file's "ao" block; throws Error for bad values
+    void resize(uint32_t width, uint32_t height);
+    void cut();  // a camera cut: the next frame starts without temporal history
+
+    // Renders a frame. Consecutive calls accumulate temporal AO.
+    RenderedFrame render();
+    // The last rendered frame, read back.
+    Pixels readPixels();
+    // Writes the last rendered frame as a PNG (tone-mapped sRGB) or an EXR (linear,
+    // with AOVs), atomically.
+    void saveFrame(const std::filesystem::path& file);
+
+    std::string deviceName() const;
+    int validationMessages() const;  // headless with validation on; 0 otherwise
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace grotto
