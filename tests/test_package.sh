@@ -1,7 +1,8 @@
 #!/bin/bash
 # find_package(Grotto) from an installed tree: install this build into a scratch
-# prefix, build examples/embed against that prefix alone, and run it with the
-# validation layer on and no shader directory, so the built-in shaders are used.
+# prefix, build examples/embed and examples/game_loop against that prefix alone,
+# and run them with the validation layer on and no shader directory, so the
+# built-in shaders are used.
 # The example is built by the build's compiler with its flags (a sanitizer build's).
 #   test_package.sh BUILD_DIR SOURCE_DIR [CXX_COMPILER [CXX_FLAGS [EXE_LINKER_FLAGS]]]
 set -euo pipefail
