@@ -68,7 +68,7 @@ void mergeSlice(uint8_t (&face)[N][N], bool greedy, Emit emit) {
         }
 }
 
-MeshChunk meshChunk(const World::Impl& w, const openvdb::Coord& origin, bool greedy,
+MeshChunk meshOneChunk(const World::Impl& w, const openvdb::Coord& origin, bool greedy,
                     std::vector<gpu::PackedQuad>& quads) {
     ChunkVoxels vox;
     gather(w, origin, vox);
@@ -140,7 +140,7 @@ Mesh World::mesh(const MeshOptions& options) const {
     std::vector<std::vector<gpu::PackedQuad>> perChunk(list.size());
     std::vector<MeshChunk> chunks(list.size());
     tbb::parallel_for(size_t(0), list.size(), [&](size_t i) {
-        chunks[i] = meshChunk(w, list[i], options.greedy, perChunk[i]);
+        chunks[i] = meshOneChunk(w, list[i], options.greedy, perChunk[i]);
     });
     Mesh mesh;
     mesh.origin = w.origin;
