@@ -6,11 +6,13 @@
 // one frame, also 1e6 units from the origin; and resize, lighting and AO changes
 // on a live renderer give what a fresh renderer gives.
 #include "common/error.h"
+#include "engine/history_boxes.h"
 #include "engine/quad_slots.h"
 #include "engine/renderer.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 
+#include <cmath>
 #include <cstring>
 
 namespace grotto {
@@ -56,6 +58,42 @@ TEST(QuadSlots, SlotsLeaveRoomAndBuffersMore) {
     EXPECT_EQ(bufferQuads(16000), 17000u);
     EXPECT_EQ(grownQuads(1000, 10), 1500u);
     EXPECT_EQ(grownQuads(1000, 4000), 5000u);
+}
+
+TEST(HistoryBoxes, MergeBeyondTheLimitKeepingEveryBoxAndWriteCameraRelative) {
+    HistoryBoxes boxes;
+    const glm::dvec3 far(1e6, -2e6, 3e6);
+    std::vector<voxel::WorldBox> added;
+    for (int i = 0; i < 12; ++i) {  // a row of unit boxes, and one far off the row
+        const glm::dvec3 at = far + (i == 11 ? glm::dvec3(0, 500, 0) : glm::dvec3(3.0 * i, 0, 0));
+        added.push_back({at, at + 1.0});
+        boxes.add(added.back());
+    }
+    boxes.add({});  // empty: ignored
+    ASSERT_EQ(boxes.boxes().size(), size_t(GROTTO_TEMPORAL_MAX_BOXES));
+    for (const voxel::WorldBox& a : added) {
+        bool inside = false;
+        for (const voxel::WorldBox& b : boxes.boxes())
+            inside |= glm::all(glm::lessThanEqual(b.min, a.min)) && glm::all(glm::lessThanEqual(a.max, b.max));
+        EXPECT_TRUE(inside);
+    }
+    // Neighbours on the row merged, not the far box with the row.
+    for (const voxel::WorldBox& b : boxes.boxes()) EXPECT_LT(b.max.y - b.min.y, 2.0);
+    gpu::TemporalConstants t{};
+    const glm::dvec3 camera = far + glm::dvec3(0.25, 0.5, -10.0);
+    boxes.write(camera, 2.0, t);
+    EXPECT_EQ(t.boxCount, uint32_t(GROTTO_TEMPORAL_MAX_BOXES));
+    for (size_t i = 0; i < boxes.boxes().size(); ++i) {
+        const glm::dvec3 lo = boxes.boxes()[i].min - 2.0 - camera, hi = boxes.boxes()[i].max + 2.0 - camera;
+        for (int k = 0; k < 3; ++k) {  // exact to float precision, rounded outwards
+            EXPECT_LE(t.boxMin[i][k], lo[k]);
+            EXPECT_NEAR(t.boxMin[i][k], lo[k], 1e-6 * (1.0 + std::abs(lo[k])));
+            EXPECT_GE(t.boxMax[i][k], hi[k]);
+            EXPECT_NEAR(t.boxMax[i][k], hi[k], 1e-6 * (1.0 + std::abs(hi[k])));
+        }
+    }
+    boxes.clear();
+    EXPECT_TRUE(boxes.boxes().empty());
 }
 
 // A floor of 3 x 2 chunks with pillars, and a floating block in a chunk of its own.
@@ -185,6 +223,7 @@ TEST_F(LiveScene, UpdatedChunksDrawTheSameGBufferAsAFreshUpload) {
     EXPECT_GE(live->gpuBytes(), size_t(live->vertices.size + live->indices.size));
 
     auto fresh = uploadScene(ctx(), meshAfter, after.desc());
+    EXPECT_EQ(fresh->gpuBytes(), sceneBufferBytes(meshAfter));  // what `grotto info` reports, slack included
     expectSameChunks(*live, *fresh);
     const FrameImages updated = gbuffer(*live, after);
     EXPECT_FALSE(live->uploadsPending());
