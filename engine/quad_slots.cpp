@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cassert>
+#include <utility>
 
 namespace grotto {
 
@@ -31,7 +32,7 @@ std::optional<uint64_t> QuadSlots::allocate(uint32_t count) {
     return std::nullopt;
 }
 
-void QuadSlots::release(uint64_t first, uint32_t count) {
+void QuadSlots::release(uint64_t first, uint64_t count) {
     if (!count) return;
     assert(first + count <= capacity_);
     uint64_t start = first, size = count;
@@ -56,19 +57,8 @@ void QuadSlots::release(uint64_t first, uint32_t count) {
 
 void QuadSlots::grow(uint64_t newCapacity) {
     if (newCapacity <= capacity_) return;
-    const uint64_t added = newCapacity - capacity_, old = capacity_;
-    capacity_ = newCapacity;
-    uint64_t start = old, size = added;
-    if (!ranges_.empty()) {
-        auto last = std::prev(ranges_.end());
-        if (last->first + last->second == old) {
-            start = last->first;
-            size += last->second;
-            ranges_.erase(last);
-        }
-    }
-    ranges_.emplace(start, size);
-    free_ += added;
+    const uint64_t old = std::exchange(capacity_, newCapacity);
+    release(old, newCapacity - old);  // joins a free tail
 }
 
 }  // namespace grotto

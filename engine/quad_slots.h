@@ -27,7 +27,7 @@ public:
     // range is that long. count > 0.
     std::optional<uint64_t> allocate(uint32_t count);
     // Returns a range from allocate(); neighbours merge.
-    void release(uint64_t first, uint32_t count);
+    void release(uint64_t first, uint64_t count);
     // Adds [capacity, newCapacity) as free space.
     void grow(uint64_t newCapacity);
 
