@@ -12,6 +12,7 @@
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 
@@ -153,7 +154,7 @@ MeshDiff diff(const voxel::Mesh& from, const voxel::Mesh& to) {
 class LiveScene : public GpuTest {
 protected:
     static constexpr uint32_t kW = 256, kH = 160;
-    Camera overview() const { return makeCamera(test::lookAt({48, 50, 95}, {48, 10, 30}), kW, kH); }
+    Camera camera_ = makeCamera(test::lookAt({48, 50, 95}, {48, 10, 30}), kW, kH);
     AoOptions noAo() const {
         AoOptions ao;
         ao.gtao = gtaoPreset("high", 2.0);
@@ -163,8 +164,8 @@ protected:
     // Raw depth and surface ids of one frame of `scene`.
     FrameImages gbuffer(GpuScene& scene, const voxel::World& world) {
         Renderer renderer(ctx(), scene, world.desc().lighting, noAo(), kW, kH);
-        renderer.render(overview());
-        return renderer.readback(overview(), true);
+        renderer.render(camera_);
+        return renderer.readback(camera_, true);
     }
     static size_t differing(const FrameImages& a, const FrameImages& b) {
         size_t n = 0;
@@ -260,6 +261,39 @@ TEST_F(LiveScene, UpdatesStagedTwiceBeforeAFrameLandAsTheLast) {
     live->updateChunks({}, there.removed);
     EXPECT_EQ(live->stagedBytesLast, 0u);
     EXPECT_EQ(differing(gbuffer(*live, after), gbuffer(*fresh, after)), 0u);
+}
+
+TEST_F(LiveScene, BufferGrownTwiceBeforeAFrame) {
+    const voxel::World before = worldOf(baseWorld), after = worldOf(editedWorld);
+    const voxel::Mesh meshBefore = before.mesh(), meshAfter = after.mesh();
+    auto live = uploadScene(ctx(), meshBefore, before.desc());
+    gbuffer(*live, before);
+    // Two copies of the checkerboard chunk high above, one update each, no frame
+    // between: each outgrows the buffer, the second the buffer the first made.
+    const MeshDiff d = diff(meshBefore, meshAfter);
+    const auto it = std::find_if(d.replaced.begin(), d.replaced.end(),
+                                 [](const voxel::MeshChunkQuads& q) { return q.origin == glm::ivec3(32, 0, 0); });
+    ASSERT_NE(it, d.replaced.end());
+    const voxel::MeshChunkQuads& board = *it;
+    voxel::Mesh expected = meshBefore;
+    for (const glm::ivec3 origin : {glm::ivec3(0, 64, 0), glm::ivec3(32, 64, 32)}) {
+        voxel::MeshChunkQuads q = board;
+        q.origin = origin;
+        live->updateChunks({&q, 1}, {});
+        voxel::MeshChunk c;
+        c.origin = origin;
+        c.firstQuad = uint32_t(expected.quads.size());
+        c.faceCount = q.faceCount;
+        expected.chunks.push_back(c);
+        expected.quads.insert(expected.quads.end(), q.quads.begin(), q.quads.end());
+    }
+    EXPECT_EQ(live->vertexBufferGrowths, 2u);
+    auto fresh = uploadScene(ctx(), expected, before.desc());
+    expectSameChunks(*live, *fresh);
+    camera_ = makeCamera(test::lookAt({48, 110, 110}, {32, 64, 16}), kW, kH);
+    const FrameImages a = gbuffer(*live, before), b = gbuffer(*fresh, before);
+    EXPECT_GT(std::count_if(b.surfaceIds.begin(), b.surfaceIds.end(), [](uint16_t id) { return id != 0; }), 2000);
+    EXPECT_EQ(differing(a, b), 0u);
 }
 
 TEST_F(LiveScene, BadChunkIsRefused) {
