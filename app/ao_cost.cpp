@@ -2,7 +2,7 @@
 
 namespace grotto::app {
 
-AoCostTimer::AoCostTimer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
+AoCostTimer::AoCostTimer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                          uint32_t width, uint32_t height) {
     if (!ao.enabled) return;
     AoOptions noAo = ao, noTemporal = ao;

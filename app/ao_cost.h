@@ -14,7 +14,7 @@ namespace grotto::app {
 
 class AoCostTimer {
 public:
-    AoCostTimer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
+    AoCostTimer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                 uint32_t width, uint32_t height);
 
     // Renders frame `index` with `renderer` (made with the same settings) and with

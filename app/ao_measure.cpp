@@ -17,7 +17,7 @@ void requireSurface(const ReferenceView& reference, const voxel::World& world, c
                 "accepted: a view that shows the world's surfaces; pick another --camera");
 }
 
-AoMeasurement measureAo(vk::Context& ctx, const GpuScene& scene, const voxel::World& world, const Camera& camera,
+AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
                         const AoOptions& ao, const ReferenceView& reference, int frames, int warmup,
                         bool timed) {
     // Costs as wall-time differences against the same frames without AO, rendered

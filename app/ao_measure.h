@@ -26,7 +26,7 @@ void requireSurface(const ReferenceView& reference, const voxel::World& world, c
 // Renders frames 0 .. frames-1 of a static camera (consecutive indices, so the
 // temporal pass accumulates); times are medians over the frames after `warmup`,
 // left at 0 when `timed` is false (no frames without AO are rendered then).
-AoMeasurement measureAo(vk::Context& ctx, const GpuScene& scene, const voxel::World& world, const Camera& camera,
+AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
                         const AoOptions& ao, const ReferenceView& reference, int frames, int warmup,
                         bool timed = true);
 

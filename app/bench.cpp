@@ -7,6 +7,7 @@
 // rendered, interleaved, by a renderer without AO and one without the temporal
 // pass, and the median of the per-frame differences is reported.
 #include "app/ao_cost.h"
+#include "app/bench_scene_update.h"
 #include "app/commands.h"
 #include "app/cost_difference.h"
 #include "app/options.h"
@@ -66,6 +67,7 @@ void addBenchCommand(CLI::App& app) {
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
         auto scene = uploadScene(ctx, mesh, world.desc());
         const size_t quadCount = mesh.quads.size();
+        const std::optional<voxel::MeshChunkQuads> busiest = busiestChunk(mesh);
         mesh = {};  // the GPU holds the quads now
         std::map<std::string, std::vector<double>> passMs;
         std::vector<double> wallMs, frameGpuMs, chainWallMs, temporalWallMs;
@@ -91,6 +93,9 @@ void addBenchCommand(CLI::App& app) {
         }
         const size_t hostBytes = stats.hostBytes + scene->hostBytes();
         const size_t gpuBytes = scene->gpuBytes();
+        // After the frames and the memory figures, so both see the scene as uploaded.
+        std::optional<SceneUpdateCost> update;
+        if (busiest) update = measureSceneUpdate(*scene, *busiest, 50);
         scene.reset();
         requireNoValidationMessages(ctx);
 
@@ -125,6 +130,7 @@ void addBenchCommand(CLI::App& app) {
             j["temporal_wall_ms_noise"] = temporal.noiseMs;
             std::printf("  temporal   %s wall (frame minus the same frame without it)\n", formatCost(temporal).c_str());
         }
+        if (update) reportSceneUpdate(*update, j);
         std::printf("  memory: grid memUsage %zu B; world host %zu B + GPU %zu B = %.2fx; targets %zu B\n",
                     stats.sourceGridBytes, hostBytes, gpuBytes,
                     j["memory"]["world_to_grid_ratio"].get<double>(), targetBytes);

@@ -11,7 +11,7 @@
 namespace grotto {
 
 RenderMemory estimateRenderMemory(uint32_t width, uint32_t height, const AoOptions& ao) {
-    // Bytes per pixel of each target, as Renderer::create and readback make them.
+    // Bytes per pixel of each target, as Renderer::createTargets and readback make them.
     const uint64_t n = uint64_t(width) * height;
     const VkExtent2D half = ao.fullResolution ? VkExtent2D{width, height} : VkExtent2D{(width + 1) / 2, (height + 1) / 2};
     const uint64_t m = uint64_t(half.width) * half.height;

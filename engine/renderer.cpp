@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <utility>
 
 namespace grotto {
 namespace {
@@ -80,36 +81,57 @@ gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* pr
     const gpu::GtaoConstants g = gtaoConstants(prev, {}, 0);
     t.previousNdcToViewMul_Add = g.ndcToViewMul_Add;
     for (int f = 0; f < 6; ++f) t.previousViewNormals[f] = g.viewNormals[f];
+    for (int k = 0; k < 3; ++k) t.viewToWorld[k] = glm::vec4(glm::vec3(current.basis[k]), 0.0f);
     return t;
 }
 
-Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
+Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                    uint32_t width, uint32_t height)
     : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), timestamps_(ctx, 16) {
     try {
-        create(width, height);
+        validateGtao(ao_.gtao, "AO settings");
+        requireRenderFits(ctx, width, height, ao_, "image size");  // before any allocation can fail halfway
+        frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+        gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+        temporalConstants_ =
+            vk::createBuffer(ctx, sizeof(gpu::TemporalConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+        createPasses();
+        createTargets(width, height);
+        VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                       .commandPool = ctx.commandPool,
+                                       .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                       .commandBufferCount = 1};
+        VK_CHECK(vkAllocateCommandBuffers(ctx.device, &ai, &cmd_));
+        VkFenceCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        VK_CHECK(vkCreateFence(ctx.device, &fci, nullptr, &fence_));
     } catch (...) {  // e.g. a shader that fails to load: free what was made before it
         release();
         throw;
     }
 }
 
-void Renderer::create(uint32_t width, uint32_t height) {
+void Renderer::createPasses() {
     vk::Context& ctx = ctx_;
-    validateGtao(ao_.gtao, "AO settings");
-    requireRenderFits(ctx, width, height, ao_, "image size");  // before any allocation can fail halfway
+    if (!gbufferPass_) gbufferPass_ = std::make_unique<GBufferPass>(ctx);
+    if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled);
+    if (!ao_.enabled) return;
+    if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
+    if (!gtaoPass_) gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_);
+    if (!denoisePass_) denoisePass_ = std::make_unique<DenoisePass>(ctx);
+    if (!upsamplePass_) upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
+    if (temporal() && !temporalPass_) temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses);
+}
+
+void Renderer::createTargets(uint32_t width, uint32_t height) {
+    vk::Context& ctx = ctx_;
     const VkExtent2D extent{width, height};
     const VkImageUsageFlags read = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     gbuffer_.depth = vk::createImage(ctx, extent, VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | read);
     gbuffer_.surface = vk::createImage(ctx, extent, kSurfaceFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
     color_ = vk::createImage(ctx, extent, kColorFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-    frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-    gbufferPass_ = std::make_unique<GBufferPass>(ctx);
-    compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled);
-    gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
 
-    // The AO chain's targets and passes exist only when AO is on; without it the
-    // composite is bound a 1x1 image (and the constants) it ignores.
+    // The AO chain's targets exist only when AO is on; without it the composite is
+    // bound a 1x1 image (and the constants) it ignores.
     const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | read;
     if (ao_.enabled) {
         aoTargets_.half = ao_.fullResolution ? extent : halfOf(extent);
@@ -120,17 +142,9 @@ void Renderer::create(uint32_t width, uint32_t height) {
         // AO_spatial AOV), more ping-pong between two.
         for (uint32_t i = 0; i < std::min(ao_.gtao.denoisePasses, 2u); ++i)
             aoTargets_.spatial[i] = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
-        prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
-        gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_);
-        denoisePass_ = std::make_unique<DenoisePass>(ctx);
-        upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
-        if (temporal()) {
+        if (temporal())
             for (vk::Image& h : aoTargets_.history)
                 h = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
-            temporalConstants_ =
-                vk::createBuffer(ctx, sizeof(gpu::TemporalConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-            temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses);
-        }
     } else {
         aoTargets_.raw = vk::createImage(ctx, {1, 1}, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
     }
@@ -148,14 +162,17 @@ void Renderer::create(uint32_t width, uint32_t height) {
         for (const vk::Image& h : aoTargets_.history) general(h);
         general(aoTargets_.full);
     });
+    historyIndex_ = 0;
+}
 
-    VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
-                                   .commandPool = ctx.commandPool,
-                                   .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
-                                   .commandBufferCount = 1};
-    VK_CHECK(vkAllocateCommandBuffers(ctx.device, &ai, &cmd_));
-    VkFenceCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VK_CHECK(vkCreateFence(ctx.device, &fci, nullptr, &fence_));
+// Every frame waits for its fence before render() returns, so no GPU work uses
+// the targets here.
+void Renderer::releaseTargets() {
+    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
+                         &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1], &aoTargets_.full})
+        vk::destroy(ctx_, *i);
+    vk::destroy(ctx_, aoTargets_.depthAtlas);
+    aoTargets_.half = {};
 }
 
 Renderer::~Renderer() { release(); }
@@ -171,13 +188,47 @@ void Renderer::release() {
     temporalPass_.reset();
     upsamplePass_.reset();
     compositePass_.reset();
-    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
-                         &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1], &aoTargets_.full})
-        vk::destroy(ctx_, *i);
-    vk::destroy(ctx_, aoTargets_.depthAtlas);
+    releaseTargets();
     vk::destroy(ctx_, frame_);
     vk::destroy(ctx_, gtaoConstants_);
     vk::destroy(ctx_, temporalConstants_);
+}
+
+void Renderer::resize(uint32_t width, uint32_t height) {
+    requireRenderFits(ctx_, width, height, ao_, "image size");
+    releaseTargets();
+    createTargets(width, height);
+    resetHistory();
+}
+
+void Renderer::setAo(const AoOptions& ao) {
+    validateGtao(ao.gtao, "AO settings");
+    const uint32_t width = color_.extent.width, height = color_.extent.height;
+    requireRenderFits(ctx_, width, height, ao, "AO settings");
+    const AoOptions old = std::exchange(ao_, ao);
+    const bool wasTemporal = old.enabled && old.gtao.temporalHistory > 0;
+    // What each pass and target is made from (its shader's specialisation, its size).
+    const bool chain = old.enabled != ao_.enabled;
+    const bool estimator = old.method != ao_.method || old.ssaoSamples != ao_.ssaoSamples ||
+                           old.gtao.sliceCount != ao_.gtao.sliceCount ||
+                           old.gtao.stepsPerSlice != ao_.gtao.stepsPerSlice ||
+                           old.gtao.sampleDistributionPower != ao_.gtao.sampleDistributionPower;
+    const bool denoise = old.gtao.denoisePasses != ao_.gtao.denoisePasses;
+    if (chain) compositePass_.reset();
+    if (chain || estimator) gtaoPass_.reset();
+    if (chain || denoise || wasTemporal != temporal()) temporalPass_.reset();
+    if (!ao_.enabled) {
+        prefilterPass_.reset();
+        denoisePass_.reset();
+        upsamplePass_.reset();
+    }
+    createPasses();
+    if (chain || old.fullResolution != ao_.fullResolution || wasTemporal != temporal() ||
+        std::min(old.gtao.denoisePasses, 2u) != std::min(ao_.gtao.denoisePasses, 2u)) {
+        releaseTargets();
+        createTargets(width, height);
+    }
+    resetHistory();
 }
 
 size_t Renderer::targetBytes() const {
@@ -232,12 +283,14 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
             // sequence. A zoom or new clip planes need no reset: the history is
             // reprojected through the previous projection and holds linear depth.
             if (frameIndex != previousFrame_ + 1u) previousCamera_.reset();
-            const gpu::TemporalConstants t = temporalConstants(camera, previousCamera_ ? &*previousCamera_ : nullptr);
+            gpu::TemporalConstants t = temporalConstants(camera, previousCamera_ ? &*previousCamera_ : nullptr);
+            invalidated_.write(camera.position, aoReach(ao_), t);
             std::memcpy(temporalConstants_.mapped(), &t, sizeof t);
             previousCamera_ = camera;
             previousFrame_ = frameIndex;
         }
     }
+    invalidated_.clear();  // edits before this frame; later ones go to the next
 
     VkCommandBuffer cmd = cmd_;
     VK_CHECK(vkResetCommandBuffer(cmd, 0));
@@ -245,6 +298,9 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
                                 .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
     VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
     timestamps_.reset(cmd);
+    // Scene edits since the last frame: copies into the vertex and index buffers,
+    // with their barrier to vertex input.
+    scene_.recordUploads(cmd);
 
     const auto top = VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT;
     const auto fragmentTests = VK_PIPELINE_STAGE_EARLY_FRAGMENT_TESTS_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT;

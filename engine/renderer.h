@@ -2,6 +2,7 @@
 // Orders the passes of a frame and places every barrier between them.
 #include "engine/ao_settings.h"
 #include "engine/camera.h"
+#include "engine/history_boxes.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/composite_pass.h"
 #include "engine/passes/denoise_pass.h"
@@ -51,7 +52,9 @@ struct FrameImages {
 
 class Renderer {
 public:
-    Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
+    // The scene may change between frames (GpuScene::updateChunks): each frame
+    // first records its staged uploads.
+    Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
              uint32_t width, uint32_t height);
     ~Renderer();
 
@@ -61,6 +64,19 @@ public:
     FrameStats render(const Camera& camera, uint32_t frameIndex = 0);
     // A camera cut: the next frame starts without history.
     void resetHistory() { previousCamera_.reset(); }
+    // Voxels in `changed` (world units) were edited: in the next frame, every pixel
+    // whose surface lies within the AO's reach of it (aoReach: the radius, times
+    // GTAO's multiplier) starts its temporal history afresh. Applies to the next
+    // render only.
+    void invalidateHistory(const voxel::WorldBox& changed) { invalidated_.add(changed); }
+
+    // Settings changed in place, the scene untouched. A new size remakes the render
+    // targets and restarts the history; lighting is uniforms only; new AO settings
+    // remake only the passes and targets that depend on what changed, and restart
+    // the history. Each throws grotto::Error (input) as the constructor would.
+    void resize(uint32_t width, uint32_t height);
+    void setLighting(const voxel::Lighting& lighting) { lighting_ = lighting; }
+    void setAo(const AoOptions& ao);
     // Reads back the last frame; the G-buffer and AO AOVs only when asked for.
     FrameImages readback(const Camera& camera, bool aovs);
 
@@ -68,14 +84,16 @@ public:
     const AoOptions& ao() const { return ao_; }
 
 private:
-    void create(uint32_t width, uint32_t height);
+    void createPasses();  // those ao_ needs and that do not exist yet
+    void createTargets(uint32_t width, uint32_t height);
+    void releaseTargets();
     void release();  // frees whatever exists; null handles are skipped
     void recordAo(VkCommandBuffer cmd);
     bool temporal() const { return ao_.enabled && ao_.gtao.temporalHistory > 0; }
     const vk::Image& aoHalfOutput() const;  // the chain's last half-res output: what the composite reads
 
     vk::Context& ctx_;
-    const GpuScene& scene_;
+    GpuScene& scene_;
     voxel::Lighting lighting_;
     AoOptions ao_;
     GBufferTargets gbuffer_;
@@ -87,6 +105,7 @@ private:
     uint32_t historyIndex_ = 0;
     std::optional<Camera> previousCamera_;
     uint32_t previousFrame_ = 0;
+    HistoryBoxes invalidated_;  // edits since the last frame
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<DepthPrefilterPass> prefilterPass_;
     std::unique_ptr<GtaoPass> gtaoPass_;
@@ -103,8 +122,9 @@ private:
 gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex,
                                  uint32_t scale = 2);
 // How the current camera's view maps to the previous one's (from the rotation and
-// the step between the cameras, in double, so it stays exact far from the origin);
-// reset when there is no history.
+// the step between the cameras, in double, so it stays exact far from the origin),
+// and the current view's axes in the world; reset when there is no history. No
+// invalidated boxes (HistoryBoxes::write adds them).
 gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* previous);
 
 }  // namespace grotto

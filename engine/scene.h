@@ -1,27 +1,35 @@
 #pragma once
 // The GPU copy of a voxel world: quads, chunk table and material palette.
 // scene.cpp is the one bridge between voxel/ and engine/vk/.
+#include "engine/quad_slots.h"
+#include "engine/staged_uploads.h"
 #include "engine/vk/resources.h"
+#include "voxel/mesh.h"
 
 #include <glm/glm.hpp>
 
 #include <array>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace grotto {
-namespace voxel { struct Mesh; struct WorldDesc; }
+namespace voxel { struct WorldDesc; }
 
 struct GpuChunk {
     glm::dvec3 origin;            // world position of the chunk's corner
     glm::vec3 lo, hi;             // tight bounds of its quads, relative to origin
     std::array<uint32_t, 6> faceFirst{}, faceCount{};  // quad ranges per face
+    glm::ivec3 index{0};          // voxel index of its corner: the key updates find it by
+    uint32_t slotFirst = 0, slotQuads = 0;  // the range of the vertex buffer it owns, in quads
 };
 
 // Quads become 4 packed vertices each (shaders/shared/quad.h); one shared index
 // buffer (0 1 2 0 2 3, +4 per quad) serves every draw through its vertex offset.
+// Each chunk owns a slot of the vertex buffer with room to spare (quad_slots.h),
+// so a live world rewrites only the chunks an edit touched (updateChunks).
 struct GpuScene {
-    explicit GpuScene(vk::Context& context) : ctx(context) {}
+    explicit GpuScene(vk::Context& context) : ctx(context), uploads(context) {}
     ~GpuScene();  // releases the buffers
     GpuScene(const GpuScene&) = delete;
     GpuScene& operator=(const GpuScene&) = delete;
@@ -31,17 +39,40 @@ struct GpuScene {
     vk::Buffer indices;
     vk::Buffer palette;                 // uniform buffer of GROTTO_MAX_MATERIALS vec4: albedo, material AO
     std::vector<glm::vec3> albedo;      // host copy of the palette, id k at [k - 1]
-    std::vector<GpuChunk> chunks;
+    std::vector<GpuChunk> chunks;       // ordered by index (x, then y, then z), as World::mesh() lists them
     double voxelSize = 1.0;
+    glm::dvec3 worldOrigin{0.0};        // world position of voxel corner (0, 0, 0)
     uint64_t quadCount = 0;
-    size_t gpuBytes() const { return size_t(vertices.size + indices.size + palette.size); }
+    uint32_t indexQuads = 0;            // the longest draw the index buffer serves
+    QuadSlots slots;                    // the vertex buffer's free and used quad ranges
+    StagedUploads uploads;              // updates waiting for the next frame
+    uint64_t stagedBytesLast = 0;       // staged by the last updateChunks
+    uint64_t stagedBytesTotal = 0;      // staged by every updateChunks so far
+    uint32_t vertexBufferGrowths = 0;   // times the vertex buffer was reallocated larger
+
+    // Replaces the quads of `replaced` chunks (new ones are added; one without
+    // quads is removed) and removes the chunks at `removed` (voxel indices of their
+    // corners; unknown ones are ignored). Only these chunks' vertices are staged;
+    // recordUploads copies them into place in the next frame's command buffer.
+    // The host chunk table changes at once. Throws grotto::Error (internal) for a
+    // chunk whose face counts do not add up to its quads.
+    void updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std::span<const glm::ivec3> removed);
+    // Records the staged copies and a barrier to vertex input; the renderer calls
+    // it first in every frame's command buffer. Nothing when nothing is staged.
+    void recordUploads(VkCommandBuffer cmd);
+    bool uploadsPending() const { return uploads.pending(); }
+    const GpuChunk* findChunk(glm::ivec3 index) const;
+
+    size_t gpuBytes() const {
+        return size_t(vertices.size + indices.size + palette.size + uploads.stagingBytes());
+    }
     size_t hostBytes() const { return chunks.size() * sizeof(GpuChunk); }
 };
 
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc);
 
-// What uploadScene would allocate for these buffers (before allocator rounding),
-// without a device: for `grotto info`.
+// What uploadScene would allocate for these buffers (the vertex buffer with its
+// spare room, before allocator rounding), without a device: for `grotto info`.
 size_t sceneBufferBytes(const voxel::Mesh& mesh);
 
 }  // namespace grotto

@@ -10,7 +10,8 @@
 // the 3x3 neighbourhood widened by GROTTO_TEMPORAL_CLAMP_MARGIN, so the clamp
 // allows for the estimator's own noise yet cuts off stale values (a halo that
 // moved on), then blended with weight 1 / length, the length capped at
-// temporalHistory frames.
+// temporalHistory frames. Pixels whose surface lies in a box an edit invalidated
+// (TemporalConstants::boxMin/boxMax, for one frame) restart their history too.
 #include "shared/gtao.h"
 #include "shared/quad.h"
 #include "shared/temporal.h"
@@ -33,6 +34,17 @@ float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
 #include "shared/gtao_kernel.h"
 #include "denoise_blur.glsl"
+
+// Whether a surface point (view space) lies in a box where an edit restarts the
+// history: its AO there may come from voxels that changed.
+bool nearEdit(vec3 view) {
+    vec3 w = temporal.viewToWorld[0].xyz * view.x + temporal.viewToWorld[1].xyz * view.y +
+             temporal.viewToWorld[2].xyz * view.z;
+    for (uint i = 0u; i < temporal.boxCount; ++i)
+        if (all(greaterThanEqual(w, temporal.boxMin[i].xyz)) && all(lessThanEqual(w, temporal.boxMax[i].xyz)))
+            return true;
+    return false;
+}
 
 void main() {
     ivec2 p = ivec2(gl_GlobalInvocationID.xy);
@@ -63,7 +75,7 @@ void main() {
     float previousDepth = -previous.z;
     vec3 normal = vec3(temporal.previousViewNormals[face - 1u]);
     float sumAo = 0.0, sumLength = 0.0, weight = 0.0;
-    if (temporal.reset == 0u && previousDepth > 0.0) {
+    if (temporal.reset == 0u && previousDepth > 0.0 && !nearEdit(position)) {
         // The motion as a difference of two identical computations, so a camera
         // that did not move reprojects every pixel exactly onto itself.
         vec2 uv = vec2(p) + (gtaoPixelOf(previous, temporal.previousNdcToViewMul_Add) -

@@ -1,0 +1,55 @@
+#pragma once
+// Writes into device-local buffers through one host-visible staging buffer,
+// recorded into the next frame's command buffer: no submission and no wait of
+// their own. Relies on the renderer's rule that each frame's fence is waited on
+// before the next frame is recorded, so between frames the GPU reads none of
+// these buffers: staging can be refilled and a buffer retired at one record()
+// can be freed at the next.
+#include "engine/vk/resources.h"
+
+#include <vector>
+
+namespace grotto {
+
+class StagedUploads {
+public:
+    explicit StagedUploads(vk::Context& ctx) : ctx_(ctx) {}
+    ~StagedUploads();  // frees staging and retired buffers (no frame may be in flight)
+    StagedUploads(const StagedUploads&) = delete;
+    StagedUploads& operator=(const StagedUploads&) = delete;
+
+    // Copies `bytes` of `data` into staging now; record() copies them into `dst`
+    // at `offset`. Writes pending together must not overlap (see discard).
+    void write(const vk::Buffer& dst, VkDeviceSize offset, const void* data, VkDeviceSize bytes);
+    // Drops the pending writes into [offset, offset + bytes) of `dst`: a range given
+    // up before its data landed, which a later write may reuse.
+    void discard(const vk::Buffer& dst, VkDeviceSize offset, VkDeviceSize bytes);
+    // Replaces `buffer` by a new one of `size` bytes and `usage` (plus transfer
+    // source and destination). With `keepContents` the old contents are copied
+    // into it on the GPU at record(), before the pending writes, which move to the
+    // new buffer; without, pending writes into the old one are dropped. The old
+    // buffer is freed once the frame that records the copy has finished.
+    void reallocate(vk::Buffer& buffer, VkDeviceSize size, VkBufferUsageFlags usage, bool keepContents);
+
+    bool pending() const { return !writes_.empty() || !moves_.empty(); }
+    // Records the copies and one barrier from them to (dstStage, dstAccess).
+    void record(VkCommandBuffer cmd, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+
+    VkDeviceSize stagingBytes() const { return staging_.size; }
+
+private:
+    struct Write { VkBuffer dst; VkDeviceSize src, offset, size; };
+    struct Move { VkBuffer from, to; VkDeviceSize size; };
+
+    void retire(vk::Buffer& buffer);
+
+    vk::Context& ctx_;
+    vk::Buffer staging_;
+    VkDeviceSize used_ = 0;              // staging bytes holding pending writes
+    std::vector<Write> writes_;
+    std::vector<Move> moves_;            // whole-buffer copies into reallocated buffers
+    std::vector<vk::Buffer> retired_;    // replaced since the last record(): the next frame may read them
+    std::vector<vk::Buffer> finishing_;  // replaced before it: free once that frame is done (the next record)
+};
+
+}  // namespace grotto
