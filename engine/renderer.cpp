@@ -128,7 +128,9 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
     const VkImageUsageFlags read = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     gbuffer_.depth = vk::createImage(ctx, extent, VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | read);
     gbuffer_.surface = vk::createImage(ctx, extent, kSurfaceFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
-    color_ = vk::createImage(ctx, extent, kColorFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    // Sampled too: a game may composite it (include/grotto/grotto.h).
+    color_ = vk::createImage(ctx, extent, kColorFormat,
+                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
 
     // The AO chain's targets exist only when AO is on; without it the composite is
     // bound a 1x1 image (and the constants) it ignores.

@@ -80,6 +80,12 @@ public:
     // Reads back the last frame; the G-buffer and AO AOVs only when asked for.
     FrameImages readback(const Camera& camera, bool aovs);
 
+    // The last frame's images, for an embedding game (include/grotto/grotto.h says
+    // how to synchronise with them): linear colour at full size, and the AO the
+    // composite read (visibility in red) at AO resolution. Both in GENERAL.
+    const vk::Image& colorImage() const { return color_; }
+    const vk::Image& aoImage() const { return ao_.enabled ? aoHalfOutput() : aoTargets_.raw; }
+
     size_t targetBytes() const;
     const AoOptions& ao() const { return ao_; }
 
