@@ -140,7 +140,7 @@ Mesh World::mesh(const MeshOptions& options) const {
     std::vector<std::vector<gpu::PackedQuad>> perChunk(list.size());
     std::vector<MeshChunk> chunks(list.size());
     tbb::parallel_for(size_t(0), list.size(), [&](size_t i) {
-        chunks[i] = meshChunk(w, list[i], options.greedy, perChunk[i]);
+        chunks[i] = voxel::meshChunk(w, list[i], options.greedy, perChunk[i]);
     });
     Mesh mesh;
     mesh.origin = w.origin;
