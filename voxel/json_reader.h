@@ -81,6 +81,7 @@ public:
         return r;
     }
     Reader child(const std::string& key) { return Reader(file_, obj_.at(key), field(key)); }
+    const std::filesystem::path& fileName() const { return file_; }
 
     [[noreturn]] void fail(const std::string& key, const std::string& what,
                            const std::string& hint = {}) const {
