@@ -3,6 +3,8 @@
 // (which upsamples the AO itself), with the barriers between them.
 #include "engine/renderer.h"
 
+#include "common/error.h"
+#include "engine/object_frame.h"
 #include "engine/render_memory.h"
 #include "engine/vk/readback.h"
 #include "shaders/shared/frame.h"
@@ -84,8 +86,9 @@ gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* pr
 }
 
 Renderer::Renderer(vk::Context& ctx, const GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
-                   uint32_t width, uint32_t height)
-    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), timestamps_(ctx, 16) {
+                   uint32_t width, uint32_t height, const SceneObjects* objects)
+    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), objects_(objects), timestamps_(ctx, 16) {
+    if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
         create(width, height);
     } catch (...) {  // e.g. a shader that fails to load: free what was made before it
@@ -104,7 +107,12 @@ void Renderer::create(uint32_t width, uint32_t height) {
     gbuffer_.surface = vk::createImage(ctx, extent, kSurfaceFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
     color_ = vk::createImage(ctx, extent, kColorFormat, VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-    gbufferPass_ = std::make_unique<GBufferPass>(ctx);
+    // Objects: their normal tables always (the composite reads them), and where
+    // they move a motion target and the G-buffer pass that writes it.
+    objectUniforms_ = vk::createBuffer(ctx, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+    if (motion()) gbuffer_.motion = vk::createImage(ctx, extent, kMotionFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
+    gbufferPass_ = std::make_unique<GBufferPass>(
+        ctx, motion() ? GBufferMode::Motion : objects_ ? GBufferMode::Objects : GBufferMode::World);
     compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled);
     gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
 
@@ -129,7 +137,7 @@ void Renderer::create(uint32_t width, uint32_t height) {
                 h = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
             temporalConstants_ =
                 vk::createBuffer(ctx, sizeof(gpu::TemporalConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-            temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses);
+            temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses, objects_ != nullptr, motion());
         }
     } else {
         aoTargets_.raw = vk::createImage(ctx, {1, 1}, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
@@ -171,9 +179,11 @@ void Renderer::release() {
     temporalPass_.reset();
     upsamplePass_.reset();
     compositePass_.reset();
-    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
-                         &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1], &aoTargets_.full})
+    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &aoTargets_.raw,
+                         &aoTargets_.spatial[0], &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
+                         &aoTargets_.full})
         vk::destroy(ctx_, *i);
+    vk::destroy(ctx_, objectUniforms_);
     vk::destroy(ctx_, aoTargets_.depthAtlas);
     vk::destroy(ctx_, frame_);
     vk::destroy(ctx_, gtaoConstants_);
@@ -182,7 +192,7 @@ void Renderer::release() {
 
 size_t Renderer::targetBytes() const {
     size_t n = 0;
-    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
+    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
                                &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
                                &aoTargets_.full})
         n += i->memory.size;
@@ -213,7 +223,7 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
         historyIndex_ = 1 - historyIndex_;
         timestamps_.begin(cmd, "temporal");
         temporalPass_->record(cmd, aoTargets_, previous, aoTargets_.history[historyIndex_], gtaoConstants_,
-                              temporalConstants_);
+                              temporalConstants_, &objectUniforms_, motion() ? &gbuffer_.motion : &gbuffer_.depth);
         timestamps_.end(cmd);
         computeToCompute(cmd);
     }
@@ -225,7 +235,8 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     std::memcpy(frame_.mapped(), &uniforms, sizeof uniforms);
     if (ao_.enabled) {
         const uint32_t scale = ao_.fullResolution ? 1 : 2;
-        const gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, scale);
+        gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, scale);
+        if (objects_) normalTable(constants.viewNormals, glm::transpose(camera.basis), poses_);
         std::memcpy(gtaoConstants_.mapped(), &constants, sizeof constants);
         if (temporal()) {
             // A frame index that does not follow the last (wrapping) starts a new
@@ -238,6 +249,15 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
             previousFrame_ = frameIndex;
         }
     }
+
+    // The frame before (for motion and the temporal plane test); this one's own where there was none.
+    const Camera& lastCamera = lastCamera_ ? *lastCamera_ : camera;
+    const std::vector<voxel::ObjectPose>& lastPoses = lastCamera_ ? lastPoses_ : poses_;
+    if (objects_) {
+        const gpu::ObjectUniforms o = objectUniforms(poses_, lastCamera, lastPoses);
+        std::memcpy(objectUniforms_.mapped(), &o, sizeof o);
+    }
+    const GBufferObjects drawObjects{objectScenes_, poses_, lastPoses, &lastCamera};
 
     VkCommandBuffer cmd = cmd_;
     VK_CHECK(vkResetCommandBuffer(cmd, 0));
@@ -258,9 +278,12 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_UNDEFINED, depthAttachment, top, 0, fragmentTests, depthWrite);
     vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
                    colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    if (motion())
+        vk::transition(cmd, gbuffer_.motion, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
+                       colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     timestamps_.begin(cmd, "gbuffer");
     FrameStats stats;
-    stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera);
+    stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera, objects_ ? &drawObjects : nullptr);
     timestamps_.end(cmd);
 
     // Everything after reads the G-buffer from compute shaders.
@@ -268,12 +291,15 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
+    if (motion())
+        vk::transition(cmd, gbuffer_.motion, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
+                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     if (ao_.enabled) recordAo(cmd);
     vk::transition(cmd, color_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, top, 0, compute,
                    VK_ACCESS_SHADER_WRITE_BIT);
     timestamps_.begin(cmd, "composite");
     compositePass_->record(cmd, gbuffer_, ao_.enabled ? aoHalfOutput() : aoTargets_.raw, color_, frame_,
-                           scene_.palette, gtaoConstants_);
+                           scene_.palette, gtaoConstants_, objectUniforms_);
     timestamps_.end(cmd);
 
     VK_CHECK(vkEndCommandBuffer(cmd));
@@ -283,7 +309,17 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     VK_CHECK(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, UINT64_MAX));
     stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     stats.passMs = timestamps_.read();
+    lastCamera_ = camera;
+    lastPoses_ = poses_;
     return stats;
+}
+
+void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
+    if (!objects_ || poses.size() != objects_->scenes.size())
+        throw Error::internal("Renderer::setObjectPoses", std::to_string(poses.size()) + " poses for " +
+                                                              std::to_string(objects_ ? objects_->scenes.size() : 0) +
+                                                              " objects");
+    poses_.assign(poses.begin(), poses.end());
 }
 
 namespace {
@@ -318,6 +354,7 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     const std::vector<float> depth = floats(vk::readImage(ctx_, gbuffer_.depth, ro, 4));
     const auto surface = vk::readImage(ctx_, gbuffer_.surface, ro, 2);
     f.depthBuffer = depth;
+    if (motion()) f.motion = floats(vk::readImage(ctx_, gbuffer_.motion, ro, 16));
     f.surfaceIds.resize(n);
     std::memcpy(f.surfaceIds.data(), surface.data(), 2 * n);
     f.depth.resize(n);
@@ -328,8 +365,9 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
         uint16_t id;
         std::memcpy(&id, surface.data() + 2 * i, 2);
         if (id == 0) continue;  // sky
-        const uint32_t face = gpu::surfaceFace(id), material = gpu::surfaceMaterial(id);
-        f.normal[3 * i + gpu::faceAxis(face)] = gpu::facePositive(face) ? 1.0f : -1.0f;
+        const uint32_t material = gpu::surfaceMaterial(id);
+        const glm::dvec3 n = surfaceNormal(id, poses_);  // an axis, or an object's face turned with it
+        for (int c = 0; c < 3; ++c) f.normal[3 * i + c] = float(n[c]);
         if (material >= 1 && material <= scene_.albedo.size())
             for (int c = 0; c < 3; ++c) f.albedo[3 * i + c] = scene_.albedo[material - 1][c];
     }
