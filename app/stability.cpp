@@ -18,6 +18,7 @@
 #include "app/stability_baseline.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "voxel/object_worlds.h"
 #include "engine/ao_metrics.h"
 #include "engine/camera_path.h"
 #include "engine/render_memory.h"
@@ -57,9 +58,11 @@ json errorJson(const std::vector<float>& ao, const std::vector<float>& reference
 }
 
 // The reference at the AO pixels: the G-buffer's points there, traced.
-std::vector<float> referenceAt(const voxel::World& world, const FrameImages& frame, const Camera& camera,
-                               const AoFrame& ao, double radius, int spp, uint64_t& rays) {
-    const SurfacePoints sp = surfacePoints(frame, camera, world.voxelSize(), world.origin());
+// The objects are traced at the frame's poses.
+std::vector<float> referenceAt(const voxel::World& world, std::span<const voxel::PosedWorld> objects,
+                               const FrameImages& frame, const Camera& camera, const AoFrame& ao, double radius, int spp,
+                               uint64_t& rays) {
+    const SurfacePoints sp = surfacePoints(frame, camera, world, objects);
     std::vector<glm::dvec3> points, normals;
     std::vector<size_t> index;
     for (size_t k = 0; k < sp.pixels.size(); ++k) {
@@ -69,7 +72,8 @@ std::vector<float> referenceAt(const voxel::World& world, const FrameImages& fra
         normals.push_back(sp.normals[k]);
         index.push_back(size_t(y / ao.scale) * ao.width + x / ao.scale);
     }
-    const voxel::ReferenceAo r = voxel::referenceAo(world, points, normals, {.radius = radius, .spp = uint32_t(spp)});
+    const voxel::ReferenceAo r =
+        voxel::referenceAo(world, objects, points, normals, {.radius = radius, .spp = uint32_t(spp)});
     rays += r.rays;
     std::vector<float> v(ao.world.size(), 1.0f);
     for (size_t k = 0; k < index.size(); ++k) v[index[k]] = r.visibility[k];
@@ -152,6 +156,8 @@ void addStabilityCommand(CLI::App& app) {
         vk::Context ctx;
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
+        const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
+        auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
         std::map<std::string, std::vector<double>> passMs;
         std::vector<double> wallMs, chainMs, temporalMs;
         Mean flickerRaw, flickerSpatial, flickerTemporal, flickerReference;
@@ -160,10 +166,11 @@ void addStabilityCommand(CLI::App& app) {
         json errors = json::array();
         uint64_t rays = 0;
         {
-            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
-            AoCostTimer costs(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
+            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height, objects.get());
+            AoCostTimer costs(ctx, *scene, world.desc().lighting, ao, size.width, size.height, objects.get());
             AoFrame before;
             Camera beforeCamera;
+            std::vector<voxel::ObjectPose> beforePoses;
             std::vector<float> beforeReference;
             std::vector<uint16_t> age;
             std::optional<Progress> progress;
@@ -172,6 +179,8 @@ void addStabilityCommand(CLI::App& app) {
                 const double time = double(i - 1) / args->fps;
                 const Camera camera = path.camera(time, size.width, size.height);
                 if (i > first && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
+                const std::vector<voxel::ObjectPose> poses = voxel::objectPoses(world.desc().objects, time);
+                if (objects) renderer.setObjectPoses(poses);
                 const FrameStats stats = costs.render(renderer, camera, uint32_t(i), i > first + 1);  // 2 frames of warm-up
                 for (const auto& [name, ms] : stats.passMs) passMs[name].push_back(ms);
                 wallMs.push_back(stats.wallMs);
@@ -179,7 +188,7 @@ void addStabilityCommand(CLI::App& app) {
                 AoFrame now = aoFrame(frame, camera, scale);
                 Reprojection match;
                 if (i > first) {
-                    match = reproject(now, before, beforeCamera, tolerance);
+                    match = reproject(now, before, beforeCamera, tolerance, poses, beforePoses);
                     matchedPixels += size_t(std::count_if(match.nearest.begin(), match.nearest.end(), [](int32_t q) { return q >= 0; }));
                     flickerRaw.add(flicker(now.raw, before.raw, match));
                     flickerSpatial.add(flicker(now.spatial, before.spatial, match));
@@ -189,7 +198,8 @@ void addStabilityCommand(CLI::App& app) {
                 age = i > first ? disocclusionAge(match, age, now.world.size()) : std::vector<uint16_t>(now.world.size(), 0);
                 std::vector<float> reference;
                 if ((i - first) % args->referenceEvery < 2) {
-                    reference = referenceAt(world, frame, camera, now, ao.gtao.radius, args->spp, rays);
+                    reference = referenceAt(world, voxel::posedWorlds(objectWorlds, poses), frame, camera, now,
+                                            ao.gtao.radius, args->spp, rays);
                     errors.push_back({{"frame", i},
                                       {"spatial", errorJson(now.spatial, reference, now.surface)},
                                       {"temporal", errorJson(now.temporal, reference, now.surface)}});
@@ -207,6 +217,7 @@ void addStabilityCommand(CLI::App& app) {
                 beforeReference = std::move(reference);
                 before = std::move(now);
                 beforeCamera = camera;
+                beforePoses = poses;
                 if (progress) progress->step("frame " + std::to_string(i) + (traced ? " + reference" : ""));
             }
             if (progress) progress->finish();
@@ -214,6 +225,7 @@ void addStabilityCommand(CLI::App& app) {
             temporalMs = costs.temporalMs();
         }
         scene.reset();
+        objects.reset();
         requireNoValidationMessages(ctx);
         // Perfect scores over no pixels would pass any baseline: refuse them.
         if (matchedPixels == 0 || referencePixels == 0)

@@ -43,6 +43,13 @@ struct PosedWorld {
     ObjectPose pose;
 };
 
+// The objects `worlds` at `poses` (same order and count).
+inline std::vector<PosedWorld> posedWorlds(std::span<const World> worlds, std::span<const ObjectPose> poses) {
+    std::vector<PosedWorld> out;
+    for (size_t k = 0; k < worlds.size() && k < poses.size(); ++k) out.push_back({&worlds[k], poses[k]});
+    return out;
+}
+
 // As above, occluded when a ray enters a solid voxel of the world or of any object
 // (at its pose) within R: each ray is carried into the object's voxel index space.
 ReferenceAo referenceAo(const World& world, std::span<const PosedWorld> objects, std::span<const glm::dvec3> points,

@@ -47,10 +47,11 @@ VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, const char*
         .depthTestEnable = VK_TRUE,
         .depthWriteEnable = VK_TRUE,
         .depthCompareOp = VK_COMPARE_OP_GREATER};  // reverse-Z: nearer is larger
-    const VkPipelineColorBlendAttachmentState blendOff[2] = {
-        {.colorWriteMask = VK_COLOR_COMPONENT_R_BIT},
-        {.colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT | VK_COLOR_COMPONENT_B_BIT |
-                           VK_COLOR_COMPONENT_A_BIT}};
+    // Identical for both attachments (no independent blend): what a format lacks is not written.
+    const VkColorComponentFlags mask = motion ? VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT
+                                              : VK_COLOR_COMPONENT_R_BIT;
+    const VkPipelineColorBlendAttachmentState blendOff[2] = {{.colorWriteMask = mask}, {.colorWriteMask = mask}};
     VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
                                               .attachmentCount = motion ? 2u : 1u, .pAttachments = blendOff};
     VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
@@ -115,7 +116,7 @@ GBufferPass::GBufferPass(vk::Context& ctx, GBufferMode mode) : ctx_(ctx), mode_(
                                                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
             objectLayout_ = vk::pipelineLayout(ctx, objectSetLayout_, sizeof(gpu::ObjectPush), VK_SHADER_STAGE_VERTEX_BIT);
             const bool motion = mode == GBufferMode::Motion;
-            objectPipeline_ = createPipeline(ctx, objectLayout_, "gbuffer_object.vert",
+            objectPipeline_ = createPipeline(ctx, objectLayout_, motion ? "gbuffer_object.vert" : "gbuffer_still.vert",
                                              motion ? "gbuffer_motion.frag" : "gbuffer.frag", motion);
         }
     } catch (...) {
