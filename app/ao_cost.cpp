@@ -3,19 +3,22 @@
 namespace grotto::app {
 
 AoCostTimer::AoCostTimer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
-                         uint32_t width, uint32_t height) {
+                         uint32_t width, uint32_t height, const SceneObjects* objects) {
     if (!ao.enabled) return;
     AoOptions noAo = ao, noTemporal = ao;
     noAo.enabled = false;
     noTemporal.gtao.temporalHistory = 0;
-    withoutAo_ = std::make_unique<Renderer>(ctx, scene, lighting, noAo, width, height);
+    withoutAo_ = std::make_unique<Renderer>(ctx, scene, lighting, noAo, width, height, objects);
     if (ao.gtao.temporalHistory > 0)
-        withoutTemporal_ = std::make_unique<Renderer>(ctx, scene, lighting, noTemporal, width, height);
+        withoutTemporal_ = std::make_unique<Renderer>(ctx, scene, lighting, noTemporal, width, height, objects);
 }
 
 FrameStats AoCostTimer::render(Renderer& renderer, const Camera& camera, uint32_t index, bool record) {
     FrameStats f;
     double off = 0.0, noHistory = 0.0;
+    if (!renderer.objectPoses().empty())
+        for (Renderer* r : {withoutAo_.get(), withoutTemporal_.get()})
+            if (r) r->setObjectPoses(renderer.objectPoses());
     for (uint32_t turn = 0; turn < 3; ++turn) {
         const uint32_t which = (index + turn) % 3;
         if (which == 0) f = renderer.render(camera, index);

@@ -15,10 +15,11 @@ namespace grotto::app {
 class AoCostTimer {
 public:
     AoCostTimer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
-                uint32_t width, uint32_t height);
+                uint32_t width, uint32_t height, const SceneObjects* objects = nullptr);
 
     // Renders frame `index` with `renderer` (made with the same settings) and with
-    // the two comparisons; keeps the differences when `record` is set.
+    // the two comparisons (at the renderer's object poses); keeps the differences
+    // when `record` is set.
     FrameStats render(Renderer& renderer, const Camera& camera, uint32_t index, bool record = true);
 
     // Per recorded frame; empty where there is nothing to compare (AO off, no temporal pass).

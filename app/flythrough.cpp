@@ -17,6 +17,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/file_lock.h"
+#include "voxel/object_worlds.h"
 #include "engine/camera_path.h"
 #include "engine/image_output.h"
 #include "engine/live_scene.h"
@@ -235,19 +236,23 @@ void addFlythroughCommand(CLI::App& app) {
         const int start = std::max(1, missing.front() - warmup), end = missing.back();
         std::vector<json> rendered;  // this run's frame entries
         // The world as the path's edits have made it by the first frame rendered;
-        // later edits are applied as their frames come.
+        // later edits are applied as their frames come. Objects are drawn at each frame's poses.
+        const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
+        auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
         std::optional<LiveScene> scene;
         scene.emplace(ctx, std::move(world));
         PathEdits edits(desc, scene->world());
         edits.applyUpTo(double(start - 1) / args->fps, *scene);
         {
-            Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height);
+            Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height,
+                              objects.get());
             Progress progress(end - start + 1, stdout);
             for (int i = start; i <= end; ++i) {
                 const double time = double(i - 1) / args->fps;
                 const Camera camera = path.camera(time, size.width, size.height);
                 if (i > start && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
                 edits.applyUpTo(time, *scene, &renderer);
+                if (objects) renderer.setObjectPoses(objects->poses(time));
                 const FrameStats stats = renderer.render(camera, uint32_t(i));
                 const bool write = std::binary_search(missing.begin(), missing.end(), i);
                 if (write) {
@@ -266,6 +271,7 @@ void addFlythroughCommand(CLI::App& app) {
             progress.finish();
         }
         scene.reset();
+        objects.reset();
         requireNoValidationMessages(ctx);
         {
             // Other chunks may have written stats since this run read them: merge

@@ -6,6 +6,7 @@
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "voxel/object_worlds.h"
 #include "engine/image_output.h"
 #include "engine/reference_view.h"
 #include "voxel/world.h"
@@ -31,6 +32,7 @@ void addReferenceCommand(CLI::App& app) {
         std::string world, camera, size = "640x360", output;
         int64_t spp = 0;
         std::optional<double> requireStderr;
+        double time = 0.0;
         AoFlags ao;
     };
     auto args = std::make_shared<Args>();
@@ -42,6 +44,8 @@ void addReferenceCommand(CLI::App& app) {
         ->required();
     cmd->add_option("--radius", args->ao.set.radius, "AO radius R in world units (default: the world's GTAO radius)");
     cmd->add_option("-o,--output", args->output, "Output .exr")->required();
+    cmd->add_option("--time", args->time, "Seconds: where the world's objects are (their keys)")
+        ->capture_default_str()->check(finiteRange(0.0, 1e9));
     cmd->add_option("--require-stderr", args->requireStderr,
                     "Exit 3 when a pixel's standard error is above E (the target is 0.005 without it)")
         ->check(finiteRange(1e-6, 1.0));
@@ -59,7 +63,9 @@ void addReferenceCommand(CLI::App& app) {
         // R is the radius GTAO is given (before its radius multiplier), so both measure the same thing.
         const double radius = double(resolveAo(world, args->ao).gtao.radius);
 
-        ReferenceView t = referenceView(world, camera, radius, spp);
+        const std::vector<voxel::World> objects = voxel::loadObjectWorlds(world.desc());
+        const auto posed = voxel::posedWorlds(objects, voxel::objectPoses(world.desc().objects, args->time));
+        ReferenceView t = referenceView(world, camera, radius, spp, nullptr, posed);
         if (t.cacheHit) std::printf("cache hit: %s (nothing traced)\n", t.cacheFile.c_str());
         writeChannels(out, size.width, size.height,
                       std::vector<Channel>{{"AO", &t.ao}, {"AO_stderr", &t.stderror}}, camera);

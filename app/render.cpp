@@ -3,6 +3,7 @@
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "voxel/object_worlds.h"
 #include "engine/image_output.h"
 #include "engine/render_memory.h"
 #include "engine/renderer.h"
@@ -16,6 +17,7 @@ void addRenderCommand(CLI::App& app) {
     struct Args {
         std::string world, camera, size = "1280x720", output;
         bool aov = false;
+        double time = 0.0;
         std::string show;
         AoFlags ao;
     };
@@ -28,6 +30,8 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Output .png or .exr")->required();
     cmd->add_option("--show", args->show, "PNG only: write one AOV instead of colour (ao, normal, depth, edges)")
         ->check(CLI::IsMember({"ao", "normal", "depth", "edges"}));
+    cmd->add_option("--time", args->time, "Seconds: where the world's objects are (their keys)")
+        ->capture_default_str()->check(finiteRange(0.0, 1e9));
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -45,14 +49,18 @@ void addRenderCommand(CLI::App& app) {
         vk::Context ctx;
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
+        const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
+        auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
         {
-            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height);
+            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height, objects.get());
+            if (objects) renderer.setObjectPoses(objects->poses(args->time));
             renderer.render(camera);
             FrameImages frame = renderer.readback(camera, aovs);
             if (!args->show.empty()) showAov(frame, args->show);
             writeFrame(out, frame, camera, args->aov);
         }
         scene.reset();
+        objects.reset();
         requireNoValidationMessages(ctx);
         std::printf("wrote %s (%ux%u, %s)\n", out.c_str(), size.width, size.height, ctx.deviceName().c_str());
     });

@@ -20,6 +20,7 @@
 #include "app/stability_baseline.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "voxel/object_worlds.h"
 #include "engine/ao_metrics.h"
 #include "engine/camera_path.h"
 #include "engine/edit_metrics.h"
@@ -67,8 +68,9 @@ struct AoPoints {
     std::vector<size_t> index;
 };
 
-AoPoints aoPoints(const voxel::World& world, const FrameImages& frame, const Camera& camera, const AoFrame& ao) {
-    const SurfacePoints sp = surfacePoints(frame, camera, world.voxelSize(), world.origin());
+AoPoints aoPoints(const voxel::World& world, std::span<const voxel::PosedWorld> objects, const FrameImages& frame,
+                  const Camera& camera, const AoFrame& ao) {
+    const SurfacePoints sp = surfacePoints(frame, camera, world, objects);
     AoPoints out;
     for (size_t k = 0; k < sp.pixels.size(); ++k) {
         const uint32_t x = sp.pixels[k] % frame.width, y = sp.pixels[k] / frame.width;
@@ -82,7 +84,9 @@ AoPoints aoPoints(const voxel::World& world, const FrameImages& frame, const Cam
 
 // The reference on `world` (its brick table `bricks`) at the points whose AO pixel
 // is set in `only` (all when empty); 1 elsewhere.
-std::vector<float> referenceAt(const voxel::BrickTable& bricks, const voxel::World& world, const AoPoints& at,
+// The objects are traced at the frame's poses.
+std::vector<float> referenceAt(const voxel::BrickTable& bricks, const voxel::World& world,
+                               std::span<const voxel::PosedWorld> objects, const AoPoints& at,
                                size_t pixels, double radius, int spp, uint64_t& rays,
                                const std::vector<uint8_t>& only = {}) {
     std::vector<glm::dvec3> points, normals;
@@ -94,7 +98,7 @@ std::vector<float> referenceAt(const voxel::BrickTable& bricks, const voxel::Wor
             index.push_back(at.index[k]);
         }
     const voxel::ReferenceAo r =
-        voxel::referenceAo(bricks, world, points, normals, {.radius = radius, .spp = uint32_t(spp)});
+        voxel::referenceAo(bricks, world, objects, points, normals, {.radius = radius, .spp = uint32_t(spp)});
     rays += r.rays;
     std::vector<float> v(pixels, 1.0f);
     for (size_t k = 0; k < index.size(); ++k) v[index[k]] = r.visibility[k];
@@ -212,6 +216,9 @@ void addStabilityCommand(CLI::App& app) {
         vk::Context ctx;
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
         // The path's edits due before the first frame measured are the world it starts from.
+        const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
+        auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
+        // The path's edits due before the first frame measured are the world it starts from.
         std::optional<LiveScene> scene;
         scene.emplace(ctx, std::move(world));
         PathEdits edits(pathDesc, scene->world());
@@ -227,10 +234,11 @@ void addStabilityCommand(CLI::App& app) {
         uint64_t rays = 0;
         {
             const voxel::World& world = live.world();
-            Renderer renderer(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height);
-            AoCostTimer costs(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height);
+            Renderer renderer(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height, objects.get());
+            AoCostTimer costs(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height, objects.get());
             AoFrame before;
             Camera beforeCamera;
+            std::vector<voxel::ObjectPose> beforePoses;
             std::vector<float> beforeReference;
             std::vector<uint16_t> age;
             std::optional<Progress> progress;
@@ -239,6 +247,9 @@ void addStabilityCommand(CLI::App& app) {
                 const double time = double(i - 1) / args->fps;
                 const Camera camera = path.camera(time, size.width, size.height);
                 if (i > first && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
+                const std::vector<voxel::ObjectPose> poses = voxel::objectPoses(world.desc().objects, time);
+                if (objects) renderer.setObjectPoses(poses);
+                const std::vector<voxel::PosedWorld> posed = voxel::posedWorlds(objectWorlds, poses);
                 if (edits.pending(time)) {
                     voxel::World before = live.world();  // a deep copy: the pre-edit reference traces it
                     const voxel::WorldBox box = edits.applyUpTo(time, live, &renderer);
@@ -254,7 +265,7 @@ void addStabilityCommand(CLI::App& app) {
                 AoFrame now = aoFrame(frame, camera, scale);
                 Reprojection match;
                 if (i > first) {
-                    match = reproject(now, before, beforeCamera, tolerance);
+                    match = reproject(now, before, beforeCamera, tolerance, poses, beforePoses);
                     matchedPixels += size_t(std::count_if(match.nearest.begin(), match.nearest.end(), [](int32_t q) { return q >= 0; }));
                     flickerRaw.add(flicker(now.raw, before.raw, match));
                     flickerSpatial.add(flicker(now.spatial, before.spatial, match));
@@ -263,17 +274,18 @@ void addStabilityCommand(CLI::App& app) {
                 // The sequence's first frame counts as disoccluded everywhere.
                 age = i > first ? disocclusionAge(match, age, now.world.size()) : std::vector<uint16_t>(now.world.size(), 0);
                 std::vector<float> reference;
-                const AoPoints points = aoPoints(world, frame, camera, now);
+                const AoPoints points = aoPoints(world, posed, frame, camera, now);
                 for (EditEvent& e : events) {
                     if (i - e.frame >= kEditWindow) continue;
                     // Only the pixels near the edit: the pre- and post-edit references differ nowhere else.
                     const std::vector<uint8_t> near = nearBox(now, e.box, ao.gtao.radius);
-                    const auto pre = referenceAt(e.beforeBricks, e.before, points, near.size(), ao.gtao.radius, args->spp, rays, near);
-                    const auto post = referenceAt(live.bricks(), world, points, near.size(), ao.gtao.radius, args->spp, rays, near);
+                    const auto pre = referenceAt(e.beforeBricks, e.before, posed, points, near.size(), ao.gtao.radius, args->spp, rays, near);
+                    const auto post = referenceAt(live.bricks(), world, posed, points, near.size(), ao.gtao.radius, args->spp, rays, near);
                     e.frames.push_back(editFrame(i, now.temporal, pre, post, near));
                 }
                 if ((i - first) % args->referenceEvery < 2) {
-                    reference = referenceAt(live.bricks(), world, points, now.world.size(), ao.gtao.radius, args->spp, rays);
+                    reference = referenceAt(live.bricks(), world, posed, points, now.world.size(), ao.gtao.radius,
+                                            args->spp, rays);
                     errors.push_back({{"frame", i},
                                       {"spatial", errorJson(now.spatial, reference, now.surface)},
                                       {"temporal", errorJson(now.temporal, reference, now.surface)}});
@@ -291,6 +303,7 @@ void addStabilityCommand(CLI::App& app) {
                 beforeReference = std::move(reference);
                 before = std::move(now);
                 beforeCamera = camera;
+                beforePoses = poses;
                 if (progress) progress->step("frame " + std::to_string(i) + (traced ? " + reference" : ""));
             }
             if (progress) progress->finish();
@@ -298,6 +311,7 @@ void addStabilityCommand(CLI::App& app) {
             temporalMs = costs.temporalMs();
         }
         scene.reset();
+        objects.reset();
         requireNoValidationMessages(ctx);
         // Perfect scores over no pixels would pass any baseline: refuse them.
         if (matchedPixels == 0 || referencePixels == 0)

@@ -1,14 +1,23 @@
 # Compiles GLSL to SPIR-V at build time and builds it into the library `target`. glslangValidator writes a depfile, so a
-# change to any included header under shaders/shared/ rebuilds the shaders using it.
+# change to any included header under shaders/shared/ rebuilds the shaders using it. An entry NAME=SOURCE:MACRO
+# builds SOURCE a second time as NAME with MACRO defined (a variant that keeps the plain build as it is).
 function(grotto_add_shaders target)
   set(outputs)
-  foreach(src IN LISTS ARGN)
-    get_filename_component(name ${src} NAME)
+  foreach(entry IN LISTS ARGN)
+    set(defines)
+    if(entry MATCHES "^([^=]+)=([^:]+):(.+)$")
+      set(name ${CMAKE_MATCH_1})
+      set(src ${CMAKE_MATCH_2})
+      set(defines -D${CMAKE_MATCH_3})
+    else()
+      set(src ${entry})
+      get_filename_component(name ${src} NAME)
+    endif()
     set(in ${CMAKE_CURRENT_SOURCE_DIR}/${src})
     set(out ${GROTTO_SHADER_DIR}/${name}.spv)
     add_custom_command(
       OUTPUT ${out}
-      COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.2
+      COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.2 ${defines}
               -I${CMAKE_SOURCE_DIR}/shaders --depfile ${out}.d -o ${out} ${in}
       DEPENDS ${in}
       DEPFILE ${out}.d

@@ -14,11 +14,23 @@ namespace grotto {
 namespace {
 
 // Everything the result depends on: the world's bytes, the camera's values (not
-// its name), the size, radius, rays and the algorithm's version.
-std::string cacheKey(const voxel::World& world, const Camera& c, double radius, uint32_t spp) {
+// its name), the size, radius, rays and the algorithm's version; the objects'
+// grid files and poses.
+std::string cacheKey(const voxel::World& world, const Camera& c, double radius, uint32_t spp,
+                     std::span<const voxel::PosedWorld> objects) {
     Fnv1a content;
     content.file(world.desc().source);
     if (world.desc().gridFile != world.desc().source) content.file(world.desc().gridFile);
+    std::string poses;
+    for (const voxel::PosedWorld& o : objects) {
+        if (!o.world->desc().gridFile.empty()) content.file(o.world->desc().gridFile);
+        const voxel::ObjectPose& p = o.pose;
+        char text[512];
+        std::snprintf(text, sizeof text, " object %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g %.17g",
+                      p.position.x, p.position.y, p.position.z, p.rotation.w, p.rotation.x, p.rotation.y,
+                      p.rotation.z, p.pivot.x, p.pivot.y, p.pivot.z);
+        poses += text;
+    }
     char text[1024];
     const glm::dmat3& b = c.basis;
     std::snprintf(text, sizeof text,
@@ -27,24 +39,34 @@ std::string cacheKey(const voxel::World& world, const Camera& c, double radius, 
                   voxel::kReferenceAoVersion, content.hex().c_str(), c.position.x, c.position.y, c.position.z,
                   b[0].x, b[0].y, b[0].z, b[1].x, b[1].y, b[1].z, b[2].x, b[2].y, b[2].z, c.fovY, c.nearPlane,
                   c.farPlane, c.width, c.height, radius, spp);
-    return text;
+    return text + poses;
 }
 
 void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, double radius, uint32_t spp,
-           vk::Context& ctx) {
+           vk::Context& ctx, std::span<const voxel::PosedWorld> objects) {
     AoOptions off;
     off.enabled = false;  // only the G-buffer is needed
     off.gtao = gtaoPreset("high", 1.0);
     FrameImages frame;
     {
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
-        Renderer renderer(ctx, *scene, world.desc().lighting, off, camera.width, camera.height);
+        SceneObjects drawn;
+        std::vector<voxel::ObjectPose> poses;
+        for (const voxel::PosedWorld& o : objects) {
+            drawn.scenes.push_back(uploadScene(ctx, o.world->mesh(), world.desc()));
+            drawn.descs.emplace_back();
+            poses.push_back(o.pose);
+        }
+        Renderer renderer(ctx, *scene, world.desc().lighting, off, camera.width, camera.height,
+                          objects.empty() ? nullptr : &drawn);
+        if (!objects.empty()) renderer.setObjectPoses(poses);
         renderer.render(camera);
         frame = renderer.readback(camera, true);
     }
-    const SurfacePoints sp = surfacePoints(frame, camera, world.voxelSize(), world.origin());
+    const SurfacePoints sp = surfacePoints(frame, camera, world, objects);
     const auto start = std::chrono::steady_clock::now();
-    const voxel::ReferenceAo ref = voxel::referenceAo(world, sp.points, sp.normals, {.radius = radius, .spp = spp});
+    const voxel::ReferenceAo ref =
+        voxel::referenceAo(world, objects, sp.points, sp.normals, {.radius = radius, .spp = spp});
     r.traceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.rays = ref.rays;
     for (size_t k = 0; k < sp.pixels.size(); ++k) {
@@ -57,13 +79,13 @@ void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, do
 }  // namespace
 
 ReferenceView referenceView(const voxel::World& world, const Camera& camera, double radius, uint32_t spp,
-                            vk::Context* ctx) {
+                            vk::Context* ctx, std::span<const voxel::PosedWorld> objects) {
     const size_t n = size_t(camera.width) * camera.height;
     ReferenceView r{std::vector<float>(n, 1.0f), std::vector<float>(n, 0.0f), std::vector<uint8_t>(n, 0)};
     // A world built in memory (tests) has no file to hash: it is traced every time.
     std::error_code ec;
     const bool cacheable = std::filesystem::is_regular_file(world.desc().source, ec);
-    const std::string key = cacheable ? cacheKey(world, camera, radius, spp) : std::string();
+    const std::string key = cacheable ? cacheKey(world, camera, radius, spp, objects) : std::string();
     if (cacheable) r.cacheFile = cachePath("reference", key);
     auto cached = cacheable ? loadCached("reference", key) : std::nullopt;
     if (cached && cached->size() == 3 && (*cached)[0].size() == n && (*cached)[1].size() == n &&
@@ -77,7 +99,7 @@ ReferenceView referenceView(const voxel::World& world, const Camera& camera, dou
     // A miss, or not ours after all: trace and (over)write the entry.
     std::unique_ptr<vk::Context> own;
     if (!ctx) own = std::make_unique<vk::Context>(), ctx = own.get();
-    trace(r, world, camera, radius, spp, *ctx);
+    trace(r, world, camera, radius, spp, *ctx, objects);
     if (own && own->validationMessages() > 0)
         throw Error::internal("vulkan", std::to_string(own->validationMessages()) +
                                             " validation message(s) reported (printed above)");

@@ -4,6 +4,7 @@
 // writes it to an EXR; `grotto tradeoff` and the tests measure methods against it.
 #include "engine/camera.h"
 #include "engine/vk/context.h"
+#include "voxel/reference_ao.h"
 #include "voxel/world.h"
 
 #include <cstdint>
@@ -25,7 +26,9 @@ struct ReferenceView {
 // cache misses, on a context of its own (a hit needs no Vulkan). A cache that
 // cannot be written gives a warning on stderr, not a failure; a world with no
 // source file (built in memory) is never cached.
+// `objects`: the world's objects at the view's poses (object k of the surface ids
+// is objects[k - 1]), drawn and traced with the world.
 ReferenceView referenceView(const voxel::World& world, const Camera& camera, double radius, uint32_t spp,
-                            vk::Context* ctx = nullptr);
+                            vk::Context* ctx = nullptr, std::span<const voxel::PosedWorld> objects = {});
 
 }  // namespace grotto

@@ -3,6 +3,8 @@
 // (which upsamples the AO itself), with the barriers between them.
 #include "engine/renderer.h"
 
+#include "common/error.h"
+#include "engine/object_frame.h"
 #include "engine/render_memory.h"
 #include "engine/vk/readback.h"
 #include "shaders/shared/frame.h"
@@ -86,8 +88,9 @@ gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* pr
 }
 
 Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
-                   uint32_t width, uint32_t height)
-    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), timestamps_(ctx, 16) {
+                   uint32_t width, uint32_t height, const SceneObjects* objects)
+    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), objects_(objects), timestamps_(ctx, 16) {
+    if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
         validateGtao(ao_.gtao, "AO settings");
         requireRenderFits(ctx, width, height, ao_, "image size");  // before any allocation can fail halfway
@@ -95,6 +98,8 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
         gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         temporalConstants_ =
             vk::createBuffer(ctx, sizeof(gpu::TemporalConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+        // The objects' normal tables: the composite reads them whether or not there are objects.
+        objectUniforms_ = vk::createBuffer(ctx, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         createPasses();
         createTargets(width, height);
         VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
@@ -112,14 +117,17 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
 
 void Renderer::createPasses() {
     vk::Context& ctx = ctx_;
-    if (!gbufferPass_) gbufferPass_ = std::make_unique<GBufferPass>(ctx);
+    if (!gbufferPass_)
+        gbufferPass_ = std::make_unique<GBufferPass>(
+            ctx, motion() ? GBufferMode::Motion : objects_ ? GBufferMode::Objects : GBufferMode::World);
     if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled);
     if (!ao_.enabled) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
     if (!gtaoPass_) gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_);
     if (!denoisePass_) denoisePass_ = std::make_unique<DenoisePass>(ctx);
     if (!upsamplePass_) upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
-    if (temporal() && !temporalPass_) temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses);
+    if (temporal() && !temporalPass_)
+        temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses, objects_ != nullptr, motion());
 }
 
 void Renderer::createTargets(uint32_t width, uint32_t height) {
@@ -131,6 +139,8 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
     // Sampled too: a game may composite it (include/grotto/grotto.h).
     color_ = vk::createImage(ctx, extent, kColorFormat,
                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+    // Where objects move, a motion target (written by the G-buffer pass).
+    if (motion()) gbuffer_.motion = vk::createImage(ctx, extent, kMotionFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
 
     // The AO chain's targets exist only when AO is on; without it the composite is
     // bound a 1x1 image (and the constants) it ignores.
@@ -170,8 +180,9 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
 // Every frame waits for its fence before render() returns, so no GPU work uses
 // the targets here.
 void Renderer::releaseTargets() {
-    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
-                         &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1], &aoTargets_.full})
+    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &aoTargets_.raw,
+                         &aoTargets_.spatial[0], &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
+                         &aoTargets_.full})
         vk::destroy(ctx_, *i);
     vk::destroy(ctx_, aoTargets_.depthAtlas);
     aoTargets_.half = {};
@@ -191,6 +202,7 @@ void Renderer::release() {
     upsamplePass_.reset();
     compositePass_.reset();
     releaseTargets();
+    vk::destroy(ctx_, objectUniforms_);
     vk::destroy(ctx_, frame_);
     vk::destroy(ctx_, gtaoConstants_);
     vk::destroy(ctx_, temporalConstants_);
@@ -219,6 +231,9 @@ void Renderer::setAo(const AoOptions& ao) {
     if (chain) compositePass_.reset();
     if (chain || estimator) gtaoPass_.reset();
     if (chain || denoise || wasTemporal != temporal()) temporalPass_.reset();
+    // Moving objects get motion vectors only with the temporal pass: its G-buffer pass and target follow it.
+    const bool motionChanged = objects_ && objects_->moving && wasTemporal != temporal();
+    if (motionChanged) gbufferPass_.reset();
     if (!ao_.enabled) {
         prefilterPass_.reset();
         denoisePass_.reset();
@@ -235,7 +250,7 @@ void Renderer::setAo(const AoOptions& ao) {
 
 size_t Renderer::targetBytes() const {
     size_t n = 0;
-    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
+    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
                                &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
                                &aoTargets_.full})
         n += i->memory.size;
@@ -266,7 +281,7 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
         historyIndex_ = 1 - historyIndex_;
         timestamps_.begin(cmd, "temporal");
         temporalPass_->record(cmd, aoTargets_, previous, aoTargets_.history[historyIndex_], gtaoConstants_,
-                              temporalConstants_);
+                              temporalConstants_, &objectUniforms_, motion() ? &gbuffer_.motion : &gbuffer_.depth);
         timestamps_.end(cmd);
         computeToCompute(cmd);
     }
@@ -278,7 +293,8 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     std::memcpy(frame_.mapped(), &uniforms, sizeof uniforms);
     if (ao_.enabled) {
         const uint32_t scale = ao_.fullResolution ? 1 : 2;
-        const gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, scale);
+        gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, scale);
+        if (objects_) normalTable(constants.viewNormals, glm::transpose(camera.basis), poses_);
         std::memcpy(gtaoConstants_.mapped(), &constants, sizeof constants);
         if (temporal()) {
             // A frame index that does not follow the last (wrapping) starts a new
@@ -293,6 +309,15 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
         }
     }
     invalidated_.clear();  // edits before this frame; later ones go to the next
+
+    // The frame before (for motion and the temporal plane test); this one's own where there was none.
+    const Camera& lastCamera = lastCamera_ ? *lastCamera_ : camera;
+    const std::vector<voxel::ObjectPose>& lastPoses = lastCamera_ ? lastPoses_ : poses_;
+    if (objects_) {
+        const gpu::ObjectUniforms o = objectUniforms(poses_, lastCamera, lastPoses);
+        std::memcpy(objectUniforms_.mapped(), &o, sizeof o);
+    }
+    const GBufferObjects drawObjects{objectScenes_, poses_, lastPoses, &lastCamera};
 
     VkCommandBuffer cmd = cmd_;
     VK_CHECK(vkResetCommandBuffer(cmd, 0));
@@ -316,9 +341,12 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_UNDEFINED, depthAttachment, top, 0, fragmentTests, depthWrite);
     vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
                    colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
+    if (motion())
+        vk::transition(cmd, gbuffer_.motion, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
+                       colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     timestamps_.begin(cmd, "gbuffer");
     FrameStats stats;
-    stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera);
+    stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera, objects_ ? &drawObjects : nullptr);
     timestamps_.end(cmd);
 
     // Everything after reads the G-buffer from compute shaders.
@@ -326,12 +354,15 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
+    if (motion())
+        vk::transition(cmd, gbuffer_.motion, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
+                       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     if (ao_.enabled) recordAo(cmd);
     vk::transition(cmd, color_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, top, 0, compute,
                    VK_ACCESS_SHADER_WRITE_BIT);
     timestamps_.begin(cmd, "composite");
     compositePass_->record(cmd, gbuffer_, ao_.enabled ? aoHalfOutput() : aoTargets_.raw, color_, frame_,
-                           scene_.palette, gtaoConstants_);
+                           scene_.palette, gtaoConstants_, objectUniforms_);
     timestamps_.end(cmd);
 
     VK_CHECK(vkEndCommandBuffer(cmd));
@@ -341,7 +372,17 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     VK_CHECK(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, UINT64_MAX));
     stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     stats.passMs = timestamps_.read();
+    lastCamera_ = camera;
+    lastPoses_ = poses_;
     return stats;
+}
+
+void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
+    if (!objects_ || poses.size() != objects_->scenes.size())
+        throw Error::internal("Renderer::setObjectPoses", std::to_string(poses.size()) + " poses for " +
+                                                              std::to_string(objects_ ? objects_->scenes.size() : 0) +
+                                                              " objects");
+    poses_.assign(poses.begin(), poses.end());
 }
 
 namespace {
@@ -376,6 +417,7 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     const std::vector<float> depth = floats(vk::readImage(ctx_, gbuffer_.depth, ro, 4));
     const auto surface = vk::readImage(ctx_, gbuffer_.surface, ro, 2);
     f.depthBuffer = depth;
+    if (motion()) f.motion = floats(vk::readImage(ctx_, gbuffer_.motion, ro, 16));
     f.surfaceIds.resize(n);
     std::memcpy(f.surfaceIds.data(), surface.data(), 2 * n);
     f.depth.resize(n);
@@ -386,8 +428,9 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
         uint16_t id;
         std::memcpy(&id, surface.data() + 2 * i, 2);
         if (id == 0) continue;  // sky
-        const uint32_t face = gpu::surfaceFace(id), material = gpu::surfaceMaterial(id);
-        f.normal[3 * i + gpu::faceAxis(face)] = gpu::facePositive(face) ? 1.0f : -1.0f;
+        const uint32_t material = gpu::surfaceMaterial(id);
+        const glm::dvec3 n = surfaceNormal(id, poses_);  // an axis, or an object's face turned with it
+        for (int c = 0; c < 3; ++c) f.normal[3 * i + c] = float(n[c]);
         if (material >= 1 && material <= scene_.albedo.size())
             for (int c = 0; c < 3; ++c) f.albedo[3 * i + c] = scene_.albedo[material - 1][c];
     }

@@ -12,12 +12,14 @@
 #include "engine/passes/temporal_pass.h"
 #include "engine/passes/upsample_pass.h"
 #include "engine/scene.h"
+#include "engine/scene_objects.h"
 #include "engine/vk/timestamps.h"
 #include "shaders/shared/temporal.h"
 #include "voxel/world_desc.h"
 
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -48,20 +50,27 @@ struct FrameImages {
     std::vector<float> depthBuffer;       // raw reverse-Z values, as the GPU stored them
     std::vector<uint16_t> surfaceIds;     // raw G-buffer surface ids
     std::vector<float> aoRawHalf;         // GTAO output at half res: visibility, packed edges
+    std::vector<float> motion;            // where objects move: xy previous minus current pixel, z previous
+                                          // view depth, 0 for sky (4 floats a pixel); empty otherwise
 };
 
 class Renderer {
 public:
     // The scene may change between frames (GpuScene::updateChunks): each frame
-    // first records its staged uploads.
+    // first records its staged uploads. `objects`: the scene's objects (kept by
+    // the caller), drawn at their poses (setObjectPoses; at time 0 until then).
     Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
-             uint32_t width, uint32_t height);
+             uint32_t width, uint32_t height, const SceneObjects* objects = nullptr);
     ~Renderer();
 
     // Renders frame `frameIndex` (it advances the GTAO noise). The temporal pass
     // accumulates over consecutive frame indices (wrapping); any other index starts
     // the history afresh.
     FrameStats render(const Camera& camera, uint32_t frameIndex = 0);
+    // The objects' poses for the next frames, one per object. The poses of the
+    // frame before are kept for the motion vectors.
+    void setObjectPoses(std::span<const voxel::ObjectPose> poses);
+    const std::vector<voxel::ObjectPose>& objectPoses() const { return poses_; }
     // A camera cut: the next frame starts without history.
     void resetHistory() { previousCamera_.reset(); }
     // Voxels in `changed` (world units) were edited: in the next frame, every pixel
@@ -106,6 +115,14 @@ private:
     AoTargets aoTargets_;
     vk::Image color_;
     vk::Buffer frame_, gtaoConstants_, temporalConstants_;
+    // Objects: their poses now and at the last frame rendered (with its camera),
+    // and their normal tables (bound to the composite in every world).
+    const SceneObjects* objects_ = nullptr;
+    std::vector<voxel::ObjectPose> poses_, lastPoses_;
+    std::optional<Camera> lastCamera_;
+    std::vector<const GpuScene*> objectScenes_;
+    vk::Buffer objectUniforms_;
+    bool motion() const { return objects_ && objects_->moving && temporal(); }
     // Temporal state: which history image holds the last output, and the camera
     // and frame index it was rendered with (none after a cut).
     uint32_t historyIndex_ = 0;

@@ -4,6 +4,7 @@
 // face planes they lie on so that float depth never puts a point inside a voxel.
 #include "engine/camera.h"
 #include "engine/renderer.h"
+#include "voxel/reference_ao.h"
 
 #include <cstdint>
 #include <vector>
@@ -18,5 +19,9 @@ struct SurfacePoints {
 // Needs a readback with AOVs. voxelSize and origin (voxel corner 0,0,0) place the
 // face planes: each point's coordinate along its normal is set to the nearest one.
 SurfacePoints surfacePoints(const FrameImages& frame, const Camera& camera, double voxelSize, glm::dvec3 origin);
+// With objects (the frame's, at its poses; object k of the surface ids is objects[k - 1]):
+// an object pixel's point is snapped onto its face plane in the object's own grid.
+SurfacePoints surfacePoints(const FrameImages& frame, const Camera& camera, const voxel::World& world,
+                            std::span<const voxel::PosedWorld> objects);
 
 }  // namespace grotto

@@ -1,5 +1,7 @@
 #include "engine/temporal_metrics.h"
 
+#include "shaders/shared/objects.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -15,6 +17,7 @@ AoFrame aoFrame(const FrameImages& f, const Camera& camera, uint32_t scale) {
     a.world.resize(n);
     a.normal.resize(n);
     a.surface.assign(n, 0);
+    a.object.assign(n, 0);
     a.raw.resize(n), a.spatial.resize(n), a.temporal.resize(n);
     for (uint32_t y = 0; y < a.height; ++y)
         for (uint32_t x = 0; x < a.width; ++x) {
@@ -27,11 +30,13 @@ AoFrame aoFrame(const FrameImages& f, const Camera& camera, uint32_t scale) {
             a.world[i] = camera.pointAt(scale * x + 0.5, scale * y + 0.5, depth);
             a.normal[i] = glm::dvec3(f.normal[3 * full], f.normal[3 * full + 1], f.normal[3 * full + 2]);
             a.surface[i] = 1;
+            if (!f.surfaceIds.empty()) a.object[i] = uint8_t(gpu::surfaceObject(f.surfaceIds[full]));
         }
     return a;
 }
 
-Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& beforeCamera, double tolerance) {
+Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& beforeCamera, double tolerance,
+                       std::span<const voxel::ObjectPose> poses, std::span<const voxel::ObjectPose> beforePoses) {
     Reprojection r;
     r.nearest.assign(now.world.size(), -1);
     r.taps.assign(now.world.size(), {-1, -1, -1, -1});
@@ -41,7 +46,16 @@ Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& 
     const glm::dmat3 viewFromWorld = glm::transpose(beforeCamera.basis);
     for (size_t i = 0; i < now.world.size(); ++i) {
         if (!now.surface[i]) continue;
-        const glm::dvec3 view = viewFromWorld * (now.world[i] - beforeCamera.position);
+        // Where the surface point was: an object's point moved with its object.
+        const uint8_t object = now.object.empty() ? 0 : now.object[i];
+        glm::dvec3 point = now.world[i], normal = now.normal[i];
+        if (object > 0 && object <= poses.size() && object <= beforePoses.size()) {
+            const voxel::ObjectPose &a = poses[object - 1], &b = beforePoses[object - 1];
+            point = b.toWorld(a.toLocal(point));
+            normal = b.rotation * (glm::conjugate(a.rotation) * normal);
+        }
+        auto sameObject = [&](size_t j) { return (before.object.empty() ? 0 : before.object[j]) == object; };
+        const glm::dvec3 view = viewFromWorld * (point - beforeCamera.position);
         if (view.z >= 0.0) continue;  // behind the previous camera
         const glm::dvec4 clip = clipFromView * glm::dvec4(view, 1.0);
         const double px = (clip.x / clip.w * 0.5 + 0.5) * beforeCamera.width;
@@ -51,7 +65,7 @@ Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& 
         const double qx = std::floor(u + 0.5), qy = std::floor(v + 0.5);
         if (!(qx >= 0 && qy >= 0 && qx < before.width && qy < before.height)) continue;
         const size_t j = size_t(qy) * before.width + size_t(qx);
-        if (!before.surface[j] || glm::length(before.world[j] - now.world[i]) > tolerance) continue;
+        if (!before.surface[j] || !sameObject(j) || glm::length(before.world[j] - point) > tolerance) continue;
         r.nearest[i] = int32_t(j);
         // Bilinear taps around the exact position.
         const double bx = std::floor(u), by = std::floor(v), fx = u - bx, fy = v - by;
@@ -61,8 +75,8 @@ Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& 
             const double tx = bx + (k & 1), ty = by + (k >> 1);
             if (!(tx >= 0 && ty >= 0 && tx < before.width && ty < before.height)) continue;
             const size_t t = size_t(ty) * before.width + size_t(tx);
-            if (!before.surface[t] || before.normal[t] != now.normal[i] ||
-                std::abs(glm::dot(before.world[t] - now.world[i], now.normal[i])) > planeTolerance)
+            if (!before.surface[t] || !sameObject(t) || glm::dot(before.normal[t], normal) < 0.9999 ||
+                std::abs(glm::dot(before.world[t] - point, normal)) > planeTolerance)
                 continue;
             const float w = float(((k & 1) ? fx : 1.0 - fx) * ((k >> 1) ? fy : 1.0 - fy));
             r.taps[i][k] = int32_t(t);

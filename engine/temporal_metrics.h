@@ -7,11 +7,15 @@
 //            interpolated bilinearly from the taps on p's plane, so a steady image
 //            under a moving camera reads (nearly) no flicker;
 //   age:     frames since a pixel was last disoccluded (no such q), for ghosting.
+// A point on an object is carried along with it: q must show the same point of the
+// same object at the object's previous pose.
 #include "engine/camera.h"
 #include "engine/renderer.h"
+#include "voxel/object_pose.h"
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace grotto {
@@ -20,8 +24,9 @@ struct AoFrame {
     uint32_t width = 0, height = 0;     // AO resolution
     uint32_t scale = 2;                 // full-res pixels per AO pixel
     std::vector<glm::dvec3> world;      // surface position per AO pixel
-    std::vector<glm::dvec3> normal;     // its face normal (world, axis-aligned)
+    std::vector<glm::dvec3> normal;     // its face normal (world; axis-aligned on the world)
     std::vector<uint8_t> surface;       // 0 for sky
+    std::vector<uint8_t> object;        // the object it shows (1, 2, ...), 0 for the world
     std::vector<float> raw, spatial, temporal;
 };
 
@@ -36,7 +41,10 @@ struct Reprojection {
     std::vector<std::array<int32_t, 4>> taps;  // -1 = unused
     std::vector<std::array<float, 4>> weights; // normalised over the used taps
 };
-Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& beforeCamera, double tolerance);
+// `poses`, `beforePoses`: the objects' poses in the two frames (none: no objects).
+Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& beforeCamera, double tolerance,
+                       std::span<const voxel::ObjectPose> poses = {},
+                       std::span<const voxel::ObjectPose> beforePoses = {});
 
 // Mean |now(p) - before(q)| over reprojected pixels; 0 when there are none.
 double flicker(const std::vector<float>& now, const std::vector<float>& before, const Reprojection& r);

@@ -1,7 +1,7 @@
 // What every AO estimator pass (gtao.comp and the ssao.comp / hbao.comp
 // baselines) reads and writes, so they are interchangeable in the chain: the depth
 // MIP atlas and surface ids in, RGBA32F (visibility, packed edges, view depth,
-// face + 1) out. The includer defines its specialization constants first.
+// surface key: face + 1 and object, shared/objects.h) out. The includer defines its specialization constants first.
 layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
@@ -22,5 +22,5 @@ uint gtaoSurface(ivec2 pixel) { return texelFetch(surfaceTex, pixel, 0).r; }
 
 // Depth and face ride along so the upsample needs one fetch per sample.
 void aoStore(ivec2 p, vec2 visibilityEdges) {
-    imageStore(aoEdges, p, vec4(visibilityEdges, gtaoDepth(p, 0), float(gtaoSurface(p * int(gtao.scale)) & 7u)));
+    imageStore(aoEdges, p, vec4(visibilityEdges, gtaoDepth(p, 0), float(surfaceKey(gtaoSurface(p * int(gtao.scale))))));
 }

@@ -6,6 +6,7 @@
 // would store full-res AO only to load it again here.
 #include "shared/frame.h"
 #include "shared/gtao.h"
+#include "shared/objects.h"
 #include "shared/quad.h"
 
 layout(constant_id = 0) const bool withAo = true;  // false: one invocation per pixel, no AO bound
@@ -19,6 +20,7 @@ layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D outColor;
 layout(set = 0, binding = 4, std140) uniform Constants { GtaoConstants gtao; };
 layout(set = 0, binding = 5, rgba32f) uniform readonly image2D aoHalf;  // the AO chain's half-res output
 layout(set = 0, binding = 6) uniform sampler2D depthBuffer;             // full-res D32, reverse-Z
+layout(set = 0, binding = 7, std140) uniform Objects { ObjectUniforms objects; };  // object faces' normals
 
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
@@ -45,6 +47,8 @@ vec3 shade(uint surface, float ao) {
     uint face = surfaceFace(surface);
     // The sun term for an axis normal is one component of the sun direction.
     float cosSun = (facePositive(face) ? 1.0 : -1.0) * frame.sunDirection[faceAxis(face)];
+    if (surfaceObject(surface) != 0u)  // an object's face, turned with it
+        cosSun = dot(objects.worldNormals[surfaceKey(surface) - 1u].xyz, frame.sunDirection.xyz);
     vec4 material = albedo[surfaceMaterial(surface) - 1u];  // rgb albedo, a: material AO
     vec3 base = material.rgb;
     float visibility = min(mix(1.0, ao, frame.aoStrength.x), material.a);
@@ -56,7 +60,7 @@ void compositePixel(AoBlock block, ivec2 h, ivec2 offset) {
     ivec2 q = h * int(gtao.scale) + offset;
     if (any(greaterThanEqual(uvec2(q), frame.size))) return;
     uint surface = texelFetch(surfaceTex, q, 0).r;
-    vec3 color = surface == 0u ? sky(q) : shade(surface, upsampledAo(block, h, offset, surface & 7u));
+    vec3 color = surface == 0u ? sky(q) : shade(surface, upsampledAo(block, h, offset, surfaceKey(surface)));
     imageStore(outColor, q, vec4(color, 1.0));
 }
 

@@ -26,9 +26,22 @@ layout(local_size_x = GROTTO_GTAO_GROUP, local_size_y = GROTTO_GTAO_GROUP) in;
 layout(set = 0, binding = 0, std140) uniform Constants { GtaoConstants gtao; };
 layout(set = 0, binding = 1, std140) uniform Temporal { TemporalConstants temporal; };
 layout(set = 0, binding = 2, rgba32f) uniform readonly image2D denoiseSource;  // the final blur's input
-layout(set = 0, binding = 3, rgba32f) uniform readonly image2D history;  // AO, history length, view depth, face + 1
+layout(set = 0, binding = 3, rgba32f) uniform readonly image2D history;  // AO, history length, view depth, surface key
 layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D target;  // same layout as history
 layout(set = 0, binding = 5, rgba32f) uniform readonly image2D raw;      // GTAO before denoising: the clamp's range
+
+#ifdef GROTTO_TEMPORAL_OBJECTS
+// Built a second time for worlds with objects (temporal_objects.comp): surface keys
+// name an object's faces too, whose normals in the previous view come from the
+// objects' table; where objects move (`motion`), each pixel's previous position
+// comes from the G-buffer's motion target instead of the camera change alone.
+layout(constant_id = 2) const bool motion = false;
+layout(set = 0, binding = 6, std140) uniform Objects { ObjectUniforms objects; };
+layout(set = 0, binding = 7) uniform sampler2D motionTex;  // previous pixel - current (full res), previous view depth
+#define previousViewNormal(key) vec3(objects.previousViewNormals[(key) - 1u])
+#else
+#define previousViewNormal(key) vec3(temporal.previousViewNormals[(key) - 1u])
+#endif
 
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
@@ -72,14 +85,26 @@ void main() {
 
     vec3 position = gtaoViewPosition(vec2(p), c.z);
     vec3 previous = (temporal.currentToPrevious * vec4(position, 1.0)).xyz;
+#ifdef GROTTO_TEMPORAL_OBJECTS
+    vec4 moved = vec4(0.0);
+    if (motion) {  // the surface point where the G-buffer says it was: its pixel there and its depth
+        moved = texelFetch(motionTex, p * int(gtao.scale), 0);
+        vec2 q = vec2(p * int(gtao.scale)) + 0.5 + moved.xy;
+        vec4 m = temporal.previousNdcToViewMul_Add;
+        previous = vec3((q * vec2(m.x, m.y) + vec2(m.z, m.w)) * moved.z, -moved.z);
+    }
+#endif
     float previousDepth = -previous.z;
-    vec3 normal = vec3(temporal.previousViewNormals[face - 1u]);
+    vec3 normal = previousViewNormal(face);
     float sumAo = 0.0, sumLength = 0.0, weight = 0.0;
     if (temporal.reset == 0u && previousDepth > 0.0 && !nearEdit(position)) {
         // The motion as a difference of two identical computations, so a camera
         // that did not move reprojects every pixel exactly onto itself.
         vec2 uv = vec2(p) + (gtaoPixelOf(previous, temporal.previousNdcToViewMul_Add) -
                              gtaoPixelOf(position, gtao.ndcToViewMul_Add));
+#ifdef GROTTO_TEMPORAL_OBJECTS
+        if (motion) uv = vec2(p) + moved.xy / float(gtao.scale);
+#endif
         vec2 base = floor(uv), f = uv - base;
         for (int j = 0; j < 2; ++j)
             for (int i = 0; i < 2; ++i) {

@@ -20,7 +20,7 @@ uint gtaoSurface(ivec2 pixel) { return 0u; }
 void upsamplePixel(AoBlock block, ivec2 h, ivec2 offset) {
     ivec2 q = h * int(gtao.scale) + offset;
     if (any(greaterThanEqual(uvec2(q), gtao.fullSize))) return;
-    uint face = texelFetch(surfaceTex, q, 0).r & 7u;
+    uint face = surfaceKey(texelFetch(surfaceTex, q, 0).r);
     imageStore(aoFull, q, vec4(face == 0u ? 1.0 : upsampledAo(block, h, offset, face)));
 }
 

@@ -14,8 +14,8 @@
 // edges or history, view depth, face + 1), `depthBuffer` (full-res D32, reverse-Z)
 // and includes shared/gtao_kernel.h first.
 
-// One AO sample: its visibility, view depth, face + 1 (0 = sky) and the offset of
-// its face's plane along that face's normal.
+// One AO sample: its visibility, view depth, surface key (face + 1 and object,
+// shared/objects.h; 0 = sky) and the offset of its face's plane along that face's normal.
 struct AoSample {
     float ao, depth, plane;
     uint face;
@@ -49,7 +49,7 @@ AoBlock loadAoBlock(ivec2 h) {
 }
 
 // The visibility of full-res pixel h * scale + offset (offset within the block) on
-// surface face `face` (1-6; not sky). The block's own pixel (offset 0) is the AO
+// the surface with key `face` (not sky). The block's own pixel (offset 0) is the AO
 // pixel's exactly (its depth, face and plane are that pixel's), so it takes it
 // unchanged; the others blend the samples on their plane with bilinear weights.
 float upsampledAo(AoBlock b, ivec2 h, ivec2 offset, uint face) {

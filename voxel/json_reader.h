@@ -82,6 +82,7 @@ public:
     }
     const std::filesystem::path& file() const { return file_; }
     Reader child(const std::string& key) { return Reader(file_, obj_.at(key), field(key)); }
+    const std::filesystem::path& fileName() const { return file_; }
 
     [[noreturn]] void fail(const std::string& key, const std::string& what,
                            const std::string& hint = {}) const {

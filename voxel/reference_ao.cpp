@@ -49,16 +49,39 @@ void tangents(glm::dvec3 n, glm::dvec3& t1, glm::dvec3& t2) {
     t2 = {b, s + n.y * n.y * a, -n.y};
 }
 
+// An object's voxels as a ray sees them: its brick table, the pose that places
+// it, and a bounding sphere (world units) to skip it for points out of reach.
+struct PlacedTable {
+    BrickTable table;
+    ObjectPose pose;
+    glm::dvec3 origin, centre;
+    double voxelSize, radius;
+    PlacedTable(const PosedWorld& o)
+        : table(*o.world), pose(o.pose), origin(o.world->origin()), voxelSize(o.world->voxelSize()) {
+        const IndexBox b = o.world->bounds();
+        const glm::dvec3 lo = origin + glm::dvec3(b.min) * voxelSize, hi = origin + glm::dvec3(b.max + 1) * voxelSize;
+        centre = pose.toWorld(0.5 * (lo + hi));
+        radius = 0.5 * glm::length(hi - lo);
+    }
+};
+
 }  // namespace
 
 ReferenceAo referenceAo(const World& world, std::span<const glm::dvec3> points, std::span<const glm::dvec3> normals,
                         const ReferenceAoSettings& s) {
+    return referenceAo(world, {}, points, normals, s);
+}
+
+ReferenceAo referenceAo(const World& world, std::span<const PosedWorld> objects, std::span<const glm::dvec3> points,
+                        std::span<const glm::dvec3> normals, const ReferenceAoSettings& s) {
     if (!(s.radius > 0.0 && std::isfinite(s.radius)))
         throw Error("radius", std::to_string(s.radius) + " is out of range", "accepted: > 0 world units");
     if (s.spp == 0) throw Error("spp", "0 rays per pixel", "accepted: 1 or more");
     if (points.size() != normals.size())
         throw Error::internal("referenceAo", "points and normals differ in count");
     const BrickTable table(world);
+    std::vector<PlacedTable> placed;
+    for (const PosedWorld& o : objects) placed.emplace_back(o);
     const Directions dirs(s.spp);
     const double vs = world.voxelSize(), tMax = s.radius / vs;
     const glm::dvec3 origin = world.origin();
@@ -72,6 +95,15 @@ ReferenceAo referenceAo(const World& world, std::span<const glm::dvec3> points, 
                 throw Error("referenceAo", "point " + std::to_string(k) + " has a non-finite position or zero normal");
             const glm::dvec3 n = normals[k] / len;
             const glm::dvec3 p = (points[k] - origin) / vs + n * s.epsilon;
+            // The objects within reach, and the point in each one's voxel index space.
+            struct Near { const PlacedTable* o; glm::dvec3 p; glm::dquat toLocal; double tMax; };
+            std::vector<Near> near;
+            for (const PlacedTable& o : placed) {
+                const glm::dvec3 w = points[k] + n * (s.epsilon * vs);
+                if (glm::length(w - o.centre) > o.radius + s.radius) continue;
+                near.push_back({&o, (o.pose.toLocal(w) - o.origin) / o.voxelSize, glm::conjugate(o.pose.rotation),
+                                s.radius / o.voxelSize});
+            }
             glm::dvec3 t1, t2;
             tangents(n, t1, t2);
             // The per-point shift: u moves along [0, 1), the azimuth turns by an angle.
@@ -85,7 +117,11 @@ ReferenceAo referenceAo(const World& world, std::span<const glm::dvec3> points, 
                 const double r = std::sqrt(u), z = std::sqrt(1.0 - u);
                 const double x = r * (dirs.cosPhi[i] * ct - dirs.sinPhi[i] * st);
                 const double y = r * (dirs.sinPhi[i] * ct + dirs.cosPhi[i] * st);
-                open += !table.hitWithin(p, t1 * x + t2 * y + n * z, tMax);
+                const glm::dvec3 d = t1 * x + t2 * y + n * z;
+                bool hit = table.hitWithin(p, d, tMax);
+                for (size_t j = 0; j < near.size() && !hit; ++j)
+                    hit = near[j].o->table.hitWithin(near[j].p, near[j].toLocal * d, near[j].tMax);
+                open += !hit;
             }
             const double v = double(open) / s.spp;
             out.visibility[k] = float(v);

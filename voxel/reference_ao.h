@@ -3,6 +3,7 @@
 // point p with normal n, N cosine-weighted rays leave p + epsilon * n and a ray is
 // occluded when it enters a solid voxel within the radius R. V = unoccluded / N.
 // OpenVDB-free interface, so the engine and every command can use it.
+#include "voxel/object_pose.h"
 #include "voxel/world.h"
 
 #include <glm/vec3.hpp>
@@ -33,6 +34,25 @@ inline constexpr int kReferenceAoVersion = 1;
 // non-zero). Multithreaded; the result does not depend on the thread count.
 // Throws grotto::Error (input) for a radius <= 0, spp 0 or mismatched spans.
 ReferenceAo referenceAo(const World& world, std::span<const glm::dvec3> points,
+                        std::span<const glm::dvec3> normals, const ReferenceAoSettings& settings);
+
+// A world placed at a pose (an object of the scene at one time): the reference
+// traces rays against the world and every such object.
+struct PosedWorld {
+    const World* world = nullptr;
+    ObjectPose pose;
+};
+
+// The objects `worlds` at `poses` (same order and count).
+inline std::vector<PosedWorld> posedWorlds(std::span<const World> worlds, std::span<const ObjectPose> poses) {
+    std::vector<PosedWorld> out;
+    for (size_t k = 0; k < worlds.size() && k < poses.size(); ++k) out.push_back({&worlds[k], poses[k]});
+    return out;
+}
+
+// As above, occluded when a ray enters a solid voxel of the world or of any object
+// (at its pose) within R: each ray is carried into the object's voxel index space.
+ReferenceAo referenceAo(const World& world, std::span<const PosedWorld> objects, std::span<const glm::dvec3> points,
                         std::span<const glm::dvec3> normals, const ReferenceAoSettings& settings);
 
 }  // namespace grotto::voxel

@@ -30,15 +30,15 @@ std::vector<Material> defaultMaterials() {
             {"slate", {0.32f, 0.34f, 0.38f}}, {"moss", {0.42f, 0.50f, 0.30f}}};
 }
 
-namespace {
-
-SolidRule parseRule(Reader& r, const std::string& key) {
+SolidRule parseSolidRule(Reader& r, const std::string& key) {
     std::string s = r.string(key, "auto");
     for (SolidRule rule : {SolidRule::Auto, SolidRule::LevelSet, SolidRule::Fog, SolidRule::Mask,
                            SolidRule::Int32})
         if (s == solidRuleName(rule)) return rule;
     r.fail(key, "unknown solid rule '" + s + "'", "accepted: auto, level_set, fog, mask, int32");
 }
+
+namespace {
 
 glm::vec3 color(Reader& r, const std::string& key, glm::vec3 fallback) {
     return glm::vec3(r.vec3(key, glm::dvec3(fallback), 0.0, 1e3));
@@ -143,7 +143,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
         if (f.empty()) g.fail("file", "must not be empty");
         w.gridFile = fs::path(f).is_absolute() ? fs::path(f) : file.parent_path() / f;
         w.gridName = g.string("name", "");
-        w.rule = parseRule(g, "rule");
+        w.rule = parseSolidRule(g, "rule");
         w.threshold = g.number("threshold", w.threshold, -1e30, 1e30);
         w.material = int(g.number("material", w.material, 1, 255));
     }
@@ -178,6 +178,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
         for (auto& [name, path] : paths.items())
             w.paths[name] = parsePathEntry(file, path, "paths." + name);
     }
+    if (r.has("objects")) w.objects = parseObjects(r, file);
     w.defaultCamera = r.string("default_camera", firstCamera);
     if (!w.defaultCamera.empty() && !w.cameras.count(w.defaultCamera))
         r.fail("default_camera", "names no camera '" + w.defaultCamera + "'");

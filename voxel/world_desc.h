@@ -2,6 +2,7 @@
 // What a world file says, as plain data: which grid, how it becomes solid, the
 // material palette, the light and the named cameras. OpenVDB-free.
 #include "voxel/camera_path_desc.h"
+#include "voxel/object_desc.h"
 
 #include <glm/vec3.hpp>
 
@@ -22,6 +23,8 @@ enum class SolidRule {
     Int32,     // solid where active and value != 0; the value is the material id
 };
 const char* solidRuleName(SolidRule rule);
+// Reads a solid rule field (a world's or an object's "grid" block); "auto" when absent.
+SolidRule parseSolidRule(Reader& reader, const std::string& key);
 
 struct Material {
     std::string name;
@@ -69,6 +72,7 @@ struct WorldDesc {
     std::map<std::string, CameraDesc> cameras;
     std::string defaultCamera;         // empty = framed from the world's bounds
     std::map<std::string, CameraPathDesc> paths;  // inline or read from files beside the world
+    std::vector<ObjectDesc> objects;   // voxel models placed with a transform over time
     size_t memoryBudgetBytes = size_t(8) << 30;  // grids estimated above this are refused
 };
 

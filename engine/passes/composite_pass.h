@@ -3,7 +3,8 @@
 // the AO chain's half-res output, full-res depth and the GTAO constants (it
 // upsamples the AO itself, see upsample.glsl). Writes: linear RGBA32F colour: sun
 // Lambert + ambient x AO (multi-bounce from albedo; the sun is not occluded), and
-// the sky. No history.
+// the sky. No history. Object faces are lit with their turned normals (the
+// objects' uniforms, shaders/shared/objects.h).
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 
@@ -14,7 +15,8 @@ public:
     CompositePass(vk::Context& ctx, bool withAo);
     // Without AO, `aoHalf` and `gtaoConstants` are placeholders the shader ignores.
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& aoHalf, const vk::Image& color,
-                const vk::Buffer& frame, const vk::Buffer& palette, const vk::Buffer& gtaoConstants);
+                const vk::Buffer& frame, const vk::Buffer& palette, const vk::Buffer& gtaoConstants,
+                const vk::Buffer& objectUniforms);
 
 private:
     vk::Context& ctx_;

@@ -2,15 +2,19 @@
 
 #include "engine/vk/pipeline.h"
 #include "shaders/shared/frame.h"
+#include "shaders/shared/objects.h"
 
 #include <algorithm>
+#include <limits>
 
 namespace grotto {
 namespace {
 
-VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout) {
-    const vk::ShaderModule vs = vk::loadShader(ctx, "gbuffer.vert");
-    const vk::ShaderModule fs = vk::loadShader(ctx, "gbuffer.frag");
+// `motion`: a second attachment, the motion target.
+VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, const char* vertex = "gbuffer.vert",
+                          const char* fragment = "gbuffer.frag", bool motion = false) {
+    const vk::ShaderModule vs = vk::loadShader(ctx, vertex);
+    const vk::ShaderModule fs = vk::loadShader(ctx, fragment);
     VkPipelineShaderStageCreateInfo stages[2] = {
         {.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO, .stage = VK_SHADER_STAGE_VERTEX_BIT,
          .module = vs.handle(), .pName = "main"},
@@ -43,16 +47,20 @@ VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout) {
         .depthTestEnable = VK_TRUE,
         .depthWriteEnable = VK_TRUE,
         .depthCompareOp = VK_COMPARE_OP_GREATER};  // reverse-Z: nearer is larger
-    VkPipelineColorBlendAttachmentState blendOff{.colorWriteMask = VK_COLOR_COMPONENT_R_BIT};
+    // Identical for both attachments (no independent blend): what a format lacks is not written.
+    const VkColorComponentFlags mask = motion ? VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                                    VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT
+                                              : VK_COLOR_COMPONENT_R_BIT;
+    const VkPipelineColorBlendAttachmentState blendOff[2] = {{.colorWriteMask = mask}, {.colorWriteMask = mask}};
     VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-                                              .attachmentCount = 1, .pAttachments = &blendOff};
+                                              .attachmentCount = motion ? 2u : 1u, .pAttachments = blendOff};
     VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
     VkPipelineDynamicStateCreateInfo dynamic{.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
                                              .dynamicStateCount = 2, .pDynamicStates = dynamicStates};
-    const VkFormat surfaceFormat = kSurfaceFormat;
+    const VkFormat formats[2] = {kSurfaceFormat, kMotionFormat};
     VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-                                            .colorAttachmentCount = 1,
-                                            .pColorAttachmentFormats = &surfaceFormat,
+                                            .colorAttachmentCount = motion ? 2u : 1u,
+                                            .pColorAttachmentFormats = formats,
                                             .depthAttachmentFormat = VK_FORMAT_D32_SFLOAT};
     VkGraphicsPipelineCreateInfo ci{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
                                     .pNext = &rendering,
@@ -98,11 +106,19 @@ struct Frustum {
 
 }  // namespace
 
-GBufferPass::GBufferPass(vk::Context& ctx) : ctx_(ctx) {
+GBufferPass::GBufferPass(vk::Context& ctx, GBufferMode mode) : ctx_(ctx), mode_(mode) {
     setLayout_ = vk::pushDescriptorLayout(ctx, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, VK_SHADER_STAGE_VERTEX_BIT);
     try {  // a shader that fails to load must not leak the layouts
         layout_ = vk::pipelineLayout(ctx, setLayout_, sizeof(gpu::ChunkPush), VK_SHADER_STAGE_VERTEX_BIT);
-        pipeline_ = createPipeline(ctx, layout_);
+        if (mode != GBufferMode::Motion) pipeline_ = createPipeline(ctx, layout_);
+        if (mode != GBufferMode::World) {
+            objectSetLayout_ = vk::pushDescriptorLayout(ctx, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                                        VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
+            objectLayout_ = vk::pipelineLayout(ctx, objectSetLayout_, sizeof(gpu::ObjectPush), VK_SHADER_STAGE_VERTEX_BIT);
+            const bool motion = mode == GBufferMode::Motion;
+            objectPipeline_ = createPipeline(ctx, objectLayout_, motion ? "gbuffer_object.vert" : "gbuffer_still.vert",
+                                             motion ? "gbuffer_motion.frag" : "gbuffer.frag", motion);
+        }
     } catch (...) {
         release();
         throw;
@@ -112,14 +128,43 @@ GBufferPass::GBufferPass(vk::Context& ctx) : ctx_(ctx) {
 GBufferPass::~GBufferPass() { release(); }
 
 void GBufferPass::release() {
+    vkDestroyPipeline(ctx_.device, objectPipeline_, nullptr);
+    vkDestroyPipelineLayout(ctx_.device, objectLayout_, nullptr);
+    vkDestroyDescriptorSetLayout(ctx_.device, objectSetLayout_, nullptr);
     vkDestroyPipeline(ctx_.device, pipeline_, nullptr);
     vkDestroyPipelineLayout(ctx_.device, layout_, nullptr);
     vkDestroyDescriptorSetLayout(ctx_.device, setLayout_, nullptr);
 }
 
+namespace {
+
+// Camera-relative world to clip, in double.
+glm::dmat4 viewProjection(const Camera& c) { return c.projection() * glm::dmat4(glm::transpose(c.basis)); }
+
+// A chunk's voxel coordinates to camera-relative world units: its corner and voxel size.
+glm::dmat4 chunkMatrix(glm::dvec3 origin, double voxelSize) {
+    glm::dmat4 m(voxelSize);
+    m[3] = glm::dvec4(origin, 1.0);
+    return m;
+}
+
+// The camera-relative bounds of a box after a transform (its eight corners).
+void transformedBounds(const glm::dmat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec3& outLo, glm::vec3& outHi) {
+    outLo = glm::vec3(std::numeric_limits<float>::max());
+    outHi = -outLo;
+    for (int k = 0; k < 8; ++k) {
+        const glm::dvec3 c(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+        const glm::vec3 w(m * glm::dvec4(c, 1.0));
+        outLo = glm::min(outLo, w), outHi = glm::max(outHi, w);
+    }
+}
+
+}  // namespace
+
 uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const GpuScene& scene,
-                             const vk::Buffer& frame, const Camera& camera) {
+                             const vk::Buffer& frame, const Camera& camera, const GBufferObjects* objects) {
     const VkExtent2D extent = t.depth.extent;
+    const bool motion = mode_ == GBufferMode::Motion;
     auto attachment = [](const vk::Image& img, VkClearValue clear) {
         return VkRenderingAttachmentInfo{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                          .imageView = img.view,
@@ -130,24 +175,31 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
                                          .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
                                          .clearValue = clear};
     };
-    VkRenderingAttachmentInfo color = attachment(t.surface, {});  // 0 = sky
+    VkRenderingAttachmentInfo color[2] = {attachment(t.surface, {}), {}};  // 0 = sky
+    if (motion) color[1] = attachment(t.motion, {});                       // sky: no motion
     VkRenderingAttachmentInfo depth = attachment(t.depth, {.depthStencil = {0.0f, 0}});
     VkRenderingInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                          .renderArea = {{0, 0}, extent},
                          .layerCount = 1,
-                         .colorAttachmentCount = 1,
-                         .pColorAttachments = &color,
+                         .colorAttachmentCount = motion ? 2u : 1u,
+                         .pColorAttachments = color,
                          .pDepthAttachment = &depth};
     ctx_.cmdBeginRendering(cmd, &info);
     VkViewport viewport{0, 0, float(extent.width), float(extent.height), 0.0f, 1.0f};
     VkRect2D scissor{{0, 0}, extent};
     vkCmdSetViewport(cmd, 0, 1, &viewport);
     vkCmdSetScissor(cmd, 0, 1, &scissor);
-    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline_);
-    vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout_, {vk::uniformBuffer(frame.buffer)});
-    const VkDeviceSize zero = 0;
-    vkCmdBindVertexBuffers(cmd, 0, 1, &scene.vertices.buffer, &zero);
-    vkCmdBindIndexBuffer(cmd, scene.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    auto bind = [&](VkPipeline pipeline, VkPipelineLayout layout, const GpuScene& s) {
+        vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
+        vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, {vk::uniformBuffer(frame.buffer)});
+        const VkDeviceSize zero = 0;
+        vkCmdBindVertexBuffers(cmd, 0, 1, &s.vertices.buffer, &zero);
+        vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);
+    };
+    if (motion)
+        bind(objectPipeline_, objectLayout_, scene);
+    else
+        bind(pipeline_, layout_, scene);
 
     // Visible chunks, camera-relative, nearest first so early depth tests reject more.
     const Frustum frustum(camera);
@@ -162,11 +214,20 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
     }
     std::sort(visible.begin(), visible.end(), [](const Visible& a, const Visible& b) { return a.distance < b.distance; });
 
+    const Camera& previousCamera = objects && objects->previousCamera ? *objects->previousCamera : camera;
+    const glm::dmat4 viewProj = viewProjection(camera), previousViewProj = viewProjection(previousCamera);
     uint64_t drawn = 0;
     for (const Visible& v : visible) {
         const GpuChunk& c = scene.chunks[v.index];
-        const gpu::ChunkPush push{glm::vec4(v.offset, float(scene.voxelSize))};
-        vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+        if (motion) {
+            const gpu::ObjectPush push{glm::mat4(viewProj * chunkMatrix(c.origin - camera.position, scene.voxelSize)),
+                                       glm::mat4(previousViewProj *
+                                                 chunkMatrix(c.origin - previousCamera.position, scene.voxelSize))};
+            vkCmdPushConstants(cmd, objectLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+        } else {
+            const gpu::ChunkPush push{glm::vec4(v.offset, float(scene.voxelSize))};
+            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+        }
         const glm::vec3 lo = v.offset + c.lo, hi = v.offset + c.hi;
         for (int f = 0; f < 6; ++f) {
             if (!c.faceCount[f]) continue;
@@ -178,6 +239,35 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
             drawn += c.faceCount[f];
         }
     }
+
+    // Objects: each chunk through its object's pose, camera-relative in double
+    // (exact far from the origin), culled by its transformed bounds; the object's
+    // index (1, 2, ...) is the instance index, which the surface id carries.
+    if (objects)
+        for (size_t k = 0; k < objects->scenes.size(); ++k) {
+            const GpuScene& s = *objects->scenes[k];
+            if (s.chunks.empty()) continue;
+            const voxel::ObjectPose& pose = objects->poses[k];
+            const voxel::ObjectPose& before =
+                objects->previousPoses.empty() ? pose : objects->previousPoses[k];
+            const glm::dmat4 model = pose.worldFromLocal(camera.position);
+            const glm::dmat4 previousModel = before.worldFromLocal(previousCamera.position);
+            bind(objectPipeline_, objectLayout_, s);
+            for (const GpuChunk& c : s.chunks) {
+                const glm::dmat4 place = model * chunkMatrix(c.origin, 1.0);
+                glm::vec3 lo, hi;
+                transformedBounds(place, c.lo, c.hi, lo, hi);
+                if (frustum.outside(lo, hi)) continue;
+                const gpu::ObjectPush push{glm::mat4(viewProj * model * chunkMatrix(c.origin, s.voxelSize)),
+                                           glm::mat4(previousViewProj * previousModel * chunkMatrix(c.origin, s.voxelSize))};
+                vkCmdPushConstants(cmd, objectLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+                for (int f = 0; f < 6; ++f) {
+                    if (!c.faceCount[f]) continue;
+                    vkCmdDrawIndexed(cmd, 6 * c.faceCount[f], 1, 0, int32_t(4 * c.faceFirst[f]), uint32_t(k + 1));
+                    drawn += c.faceCount[f];
+                }
+            }
+        }
     ctx_.cmdEndRendering(cmd);
     return drawn;
 }

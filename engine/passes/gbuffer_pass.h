@@ -4,8 +4,14 @@
 // (one of six axes) and the material (albedo from the palette). No history.
 // Chunks outside the frustum are skipped; inside one, faces turned away from the
 // camera are skipped as whole per-face ranges; chunks are drawn front to back.
+// With objects: each object's chunks after the world's, through its pose (object
+// index in the surface id); where objects move, every chunk is drawn with this
+// frame's and the last frame's transforms and a motion target is written too.
 #include "engine/camera.h"
 #include "engine/scene.h"
+#include "voxel/object_pose.h"
+
+#include <span>
 
 namespace grotto {
 
@@ -14,16 +20,33 @@ inline constexpr VkFormat kSurfaceFormat = VK_FORMAT_R16_UINT;
 struct GBufferTargets {
     vk::Image depth;
     vk::Image surface;  // R16_UINT, see packSurface in shaders/shared/quad.h
+    vk::Image motion;   // RGBA32F where objects move (else none): previous pixel - current, previous view depth
+};
+
+inline constexpr VkFormat kMotionFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+
+// What the pass needs to draw a scene's objects: their meshes and poses, and for
+// motion the previous frame's camera and poses (the current ones where none).
+struct GBufferObjects {
+    std::span<const GpuScene* const> scenes;
+    std::span<const voxel::ObjectPose> poses, previousPoses;
+    const Camera* previousCamera = nullptr;
+};
+
+enum class GBufferMode {
+    World,    // the world alone: today's pipeline
+    Objects,  // objects that stand still: one more pipeline for them, no motion
+    Motion,   // objects that move: every chunk through the motion pipeline
 };
 
 class GBufferPass {
 public:
-    explicit GBufferPass(vk::Context& ctx);
+    explicit GBufferPass(vk::Context& ctx, GBufferMode mode = GBufferMode::World);
     ~GBufferPass();
 
     // Returns the number of quads drawn.
     uint64_t record(VkCommandBuffer cmd, const GBufferTargets& targets, const GpuScene& scene,
-                    const vk::Buffer& frame, const Camera& camera);
+                    const vk::Buffer& frame, const Camera& camera, const GBufferObjects* objects = nullptr);
 
 private:
     void release();  // handles not made yet are null, which Vulkan ignores
@@ -32,6 +55,10 @@ private:
     VkDescriptorSetLayout setLayout_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
+    GBufferMode mode_;
+    VkDescriptorSetLayout objectSetLayout_ = VK_NULL_HANDLE;  // the frame, seen by the fragment stage too
+    VkPipelineLayout objectLayout_ = VK_NULL_HANDLE;
+    VkPipeline objectPipeline_ = VK_NULL_HANDLE;  // Objects: objects only; Motion: every chunk
 };
 
 }  // namespace grotto

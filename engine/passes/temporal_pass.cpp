@@ -4,22 +4,37 @@
 
 namespace grotto {
 
-TemporalPass::TemporalPass(vk::Context& ctx, uint32_t denoisePasses)
-    : denoisePasses_(denoisePasses),
-      pass_(ctx, "temporal.comp",
-            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-             VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-            0, {denoisePasses >= 1 ? 1u : 0u, denoisePasses <= 1 ? 1u : 0u}) {}  // blur, sourceIsRaw
+namespace {
+
+std::vector<VkDescriptorType> bindings(bool objects) {
+    std::vector<VkDescriptorType> b = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                       VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                                       VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+    if (objects) b.insert(b.end(), {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    return b;
+}
+
+}  // namespace
+
+TemporalPass::TemporalPass(vk::Context& ctx, uint32_t denoisePasses, bool objects, bool motion)
+    : ctx_(ctx),
+      denoisePasses_(denoisePasses),
+      objects_(objects),
+      pass_(ctx, objects ? "temporal_objects.comp" : "temporal.comp", bindings(objects), 0,
+            objects ? std::vector<uint32_t>{denoisePasses >= 1 ? 1u : 0u, denoisePasses <= 1 ? 1u : 0u, motion ? 1u : 0u}
+                    : std::vector<uint32_t>{denoisePasses >= 1 ? 1u : 0u, denoisePasses <= 1 ? 1u : 0u}) {}  // blur, sourceIsRaw[, motion]
 
 void TemporalPass::record(VkCommandBuffer cmd, const AoTargets& ao, const vk::Image& history,
                           const vk::Image& target, const vk::Buffer& gtaoConstants,
-                          const vk::Buffer& temporalConstants) {
+                          const vk::Buffer& temporalConstants, const vk::Buffer* objectUniforms, const vk::Image* motion) {
     const vk::Image& source = ao.denoised(std::max(denoisePasses_, 1u) - 1);
-    pass_.dispatch(cmd,
-                   {vk::uniformBuffer(gtaoConstants.buffer), vk::uniformBuffer(temporalConstants.buffer),
-                    vk::storageImage(source.view), vk::storageImage(history.view), vk::storageImage(target.view),
-                    vk::storageImage(ao.raw.view)},
-                   target.extent, GROTTO_GTAO_GROUP);
+    std::vector<vk::Binding> b = {vk::uniformBuffer(gtaoConstants.buffer), vk::uniformBuffer(temporalConstants.buffer),
+                                  vk::storageImage(source.view), vk::storageImage(history.view),
+                                  vk::storageImage(target.view), vk::storageImage(ao.raw.view)};
+    if (objects_)
+        b.insert(b.end(), {vk::uniformBuffer(objectUniforms->buffer),
+                           vk::sampledImage(ctx_.pointSampler, motion->view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL)});
+    pass_.dispatch(cmd, b, target.extent, GROTTO_GTAO_GROUP);
 }
 
 }  // namespace grotto

@@ -3,7 +3,9 @@
 // Reads: the final blur's input (AoTargets::denoised(passes - 1)), the raw AO (the
 // clamp's range), the previous frame's output (history), GTAO and temporal
 // constants. Writes: the next history, which the composite reads. History: the
-// output image itself, kept by the renderer for the next frame.
+// output image itself, kept by the renderer for the next frame. In worlds with
+// objects it runs temporal_objects.comp, which also reads the objects' normal
+// tables and, where objects move, the G-buffer's motion target.
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"
 
@@ -12,12 +14,18 @@ namespace grotto {
 class TemporalPass {
 public:
     // `denoisePasses`: the spatial denoise's pass count; this pass runs the last.
-    TemporalPass(vk::Context& ctx, uint32_t denoisePasses);
+    // `objects`: the world has objects; `motion`: some of them move.
+    TemporalPass(vk::Context& ctx, uint32_t denoisePasses, bool objects = false, bool motion = false);
+    // With objects, `objectUniforms` and `motion` (the motion target, or any
+    // sampled float image when nothing moves; SHADER_READ_ONLY_OPTIMAL) are read too.
     void record(VkCommandBuffer cmd, const AoTargets& ao, const vk::Image& history, const vk::Image& target,
-                const vk::Buffer& gtaoConstants, const vk::Buffer& temporalConstants);
+                const vk::Buffer& gtaoConstants, const vk::Buffer& temporalConstants,
+                const vk::Buffer* objectUniforms = nullptr, const vk::Image* motion = nullptr);
 
 private:
+    vk::Context& ctx_;
     uint32_t denoisePasses_;
+    bool objects_;
     ComputePass pass_;
 };
 

@@ -5,6 +5,7 @@
 #ifndef GROTTO_SHARED_GTAO_H
 #define GROTTO_SHARED_GTAO_H
 #include "common.h"
+#include "objects.h"
 
 GROTTO_NAMESPACE_BEGIN
 
@@ -35,7 +36,8 @@ GROTTO_STATIC_ASSERT(sizeof(GtaoSettings) == 64);
 struct GtaoConstants {
     GtaoSettings settings;
     vec4 ndcToViewMul_Add;   // view xy = (fullResPixel * mul + add) * depth
-    vec4 viewNormals[6];     // the six face normals in view space (+X -X +Y -Y +Z -Z)
+    vec4 viewNormals[GROTTO_NORMAL_SLOTS];  // face normals in view space: the world's six (+X -X +Y -Y +Z -Z),
+                                            // then 8 slots per object (shared/objects.h)
     uvec2 fullSize;
     uvec2 halfSize;          // AO resolution: ceil(full / 2), or full size when scale is 1
     uint frameIndex;         // advances the noise; the temporal pass will step it
@@ -44,7 +46,7 @@ struct GtaoConstants {
     uint scale;              // full-res pixels per AO pixel: 2 (half res, the default) or 1
     uint pad0, pad1, pad2;
 };
-GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 64 + 16 + 96 + 16 + 16 + 16);
+GROTTO_STATIC_ASSERT(sizeof(GtaoConstants) == 64 + 16 + 16 * GROTTO_NORMAL_SLOTS + 16 + 16 + 16);
 
 GROTTO_NAMESPACE_END
 #endif

@@ -151,9 +151,10 @@ float gtaoDistanceFade(float z) {
     return d > 0.0f ? gtaoSaturate((z - 0.9f * d) / (0.1f * d)) : 0.0f;
 }
 
-// The view-space normal of an AO pixel's surface (its full-res pixel's face).
+// The view-space normal of an AO pixel's surface (its full-res pixel's face, turned
+// with its object's rotation: shared/objects.h).
 vec3 gtaoViewNormal(ivec2 pixel) {
-    return vec3(gtao.viewNormals[surfaceFace(gtaoSurface(pixel * int(gtao.scale)))]);
+    return vec3(gtao.viewNormals[surfaceKey(gtaoSurface(pixel * int(gtao.scale))) - 1u]);
 }
 
 // Visibility in [0, 1] (1 = open) at a half-resolution pixel, and its packed edges.

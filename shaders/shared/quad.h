@@ -43,10 +43,11 @@ GROTTO_INLINE uint vertexFace(uint v) { return (v >> 18) & 7u; }
 GROTTO_INLINE uint vertexMaterial(uint v) { return (v >> 21) & 255u; }
 
 // The G-buffer keeps a surface id instead of normal and albedo: voxel normals are
-// one of six axes and albedo comes from the palette. 0 = sky.
+// one of six axes and albedo comes from the palette. 0 = sky. Bits 11-15 name the
+// object the surface belongs to (shared/objects.h; 0 = the world).
 GROTTO_INLINE uint packSurface(uint face, uint material) { return (face + 1u) | (material << 3); }
 GROTTO_INLINE uint surfaceFace(uint id) { return (id & 7u) - 1u; }
-GROTTO_INLINE uint surfaceMaterial(uint id) { return id >> 3; }
+GROTTO_INLINE uint surfaceMaterial(uint id) { return (id >> 3) & 255u; }
 
 GROTTO_NAMESPACE_END
 #endif
