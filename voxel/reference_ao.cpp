@@ -53,12 +53,16 @@ void tangents(glm::dvec3 n, glm::dvec3& t1, glm::dvec3& t2) {
 
 ReferenceAo referenceAo(const World& world, std::span<const glm::dvec3> points, std::span<const glm::dvec3> normals,
                         const ReferenceAoSettings& s) {
+    return referenceAo(BrickTable(world), world, points, normals, s);
+}
+
+ReferenceAo referenceAo(const BrickTable& table, const World& world, std::span<const glm::dvec3> points,
+                        std::span<const glm::dvec3> normals, const ReferenceAoSettings& s) {
     if (!(s.radius > 0.0 && std::isfinite(s.radius)))
         throw Error("radius", std::to_string(s.radius) + " is out of range", "accepted: > 0 world units");
     if (s.spp == 0) throw Error("spp", "0 rays per pixel", "accepted: 1 or more");
     if (points.size() != normals.size())
         throw Error::internal("referenceAo", "points and normals differ in count");
-    const BrickTable table(world);
     const Directions dirs(s.spp);
     const double vs = world.voxelSize(), tMax = s.radius / vs;
     const glm::dvec3 origin = world.origin();

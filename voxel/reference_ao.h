@@ -13,6 +13,8 @@
 
 namespace grotto::voxel {
 
+class BrickTable;
+
 struct ReferenceAoSettings {
     double radius = 4.0;      // R, world units (> 0)
     uint32_t spp = 256;       // rays per point (> 0)
@@ -33,6 +35,11 @@ inline constexpr int kReferenceAoVersion = 1;
 // non-zero). Multithreaded; the result does not depend on the thread count.
 // Throws grotto::Error (input) for a radius <= 0, spp 0 or mismatched spans.
 ReferenceAo referenceAo(const World& world, std::span<const glm::dvec3> points,
+                        std::span<const glm::dvec3> normals, const ReferenceAoSettings& settings);
+// The same with the world's bricks already in a table (voxel/brick_table.h), so a
+// caller that keeps one up to date across edits (BrickTable::update) does not
+// rebuild it per call. `table` must match `world`.
+ReferenceAo referenceAo(const BrickTable& table, const World& world, std::span<const glm::dvec3> points,
                         std::span<const glm::dvec3> normals, const ReferenceAoSettings& settings);
 
 }  // namespace grotto::voxel
