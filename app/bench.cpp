@@ -8,6 +8,7 @@
 // pass, and the median of the per-frame differences is reported.
 #include "app/ao_cost.h"
 #include "app/bench_scene_update.h"
+#include "app/bench_edits.h"
 #include "app/commands.h"
 #include "app/cost_difference.h"
 #include "app/options.h"
@@ -25,6 +26,7 @@
 #include <fstream>
 #include <map>
 #include <memory>
+#include <optional>
 
 namespace grotto::app {
 namespace {
@@ -39,6 +41,7 @@ void addBenchCommand(CLI::App& app) {
     struct Args {
         std::string world, camera, size = "1280x720", json;
         int frames = 30, warmup = 5;
+        bool edits = false;
         AoFlags ao;
     };
     auto args = std::make_shared<Args>();
@@ -49,6 +52,8 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--frames", args->frames, "Measured frames")->capture_default_str()->check(CLI::Range(1, 100000));
     cmd->add_option("--warmup", args->warmup, "Frames rendered before measuring")->capture_default_str()->check(CLI::Range(0, 100000));
     cmd->add_option("--json", args->json, "Also write the figures to this JSON file");
+    cmd->add_flag("--edits", args->edits,
+                  "Also time live edits on the CPU: a voxel, a sphere carve, random voxels against re-meshing the world");
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -60,6 +65,8 @@ void addBenchCommand(CLI::App& app) {
         voxel::Mesh mesh = world.mesh();
         const double meshMs = msSince(t);
         const voxel::WorldStats stats = world.stats();
+        std::optional<EditBenchFigures> edits;
+        if (args->edits) edits = benchEdits(world);
         const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
         const AoOptions ao = resolveAo(world, args->ao);
 
@@ -134,6 +141,10 @@ void addBenchCommand(CLI::App& app) {
         std::printf("  memory: grid memUsage %zu B; world host %zu B + GPU %zu B = %.2fx; targets %zu B\n",
                     stats.sourceGridBytes, hostBytes, gpuBytes,
                     j["memory"]["world_to_grid_ratio"].get<double>(), targetBytes);
+        if (edits) {
+            printEditFigures(*edits);
+            j["edits"] = editFiguresJson(*edits);
+        }
         if (!args->json.empty())
             writeAtomically(args->json, [&](const std::filesystem::path& tmp) {
                 std::ofstream out(tmp);

@@ -1,5 +1,8 @@
 #include "voxel/brick_table.h"
 
+#include <glm/common.hpp>
+#include <glm/vector_relational.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -11,6 +14,8 @@ namespace {
 // world spread over a huge box would otherwise cost 4 bytes per empty brick.
 constexpr size_t kDenseLimit = size_t(1) << 25;
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+double volume(glm::ivec3 dims) { return double(dims.x) * double(dims.y) * double(dims.z); }
 }  // namespace
 
 BrickTable::BrickTable(const World& world) {
@@ -22,16 +27,94 @@ BrickTable::BrickTable(const World& world) {
     // In double: the product of the extents can exceed 64 bits.
     const double range = double(dims_.x) * double(dims_.y) * double(dims_.z);
     if (range <= double(kDenseLimit)) dense_.assign(size_t(range), 0);
-    for (const Brick& b : world.bricks()) {
-        bool any = false;
-        for (uint64_t w : b.occupancy) any = any || w != 0;
-        if (!any) continue;
+    for (const Brick& b : world.bricks()) {  // those with solid voxels only
         const glm::ivec3 r = (b.origin >> 3) - lo_;
         const uint32_t index = uint32_t(masks_.size() / 8);
         masks_.insert(masks_.end(), b.occupancy, b.occupancy + 8);
         if (dense()) dense_[denseIndex(r)] = index;
         else sparse_[r] = index;
     }
+}
+
+void BrickTable::update(const World& world, const IndexBox& changed) {
+    if (changed.empty()) return;
+    const IndexBox box = world.bounds();
+    if (box.empty()) {  // nothing solid is left
+        *this = BrickTable(world);
+        return;
+    }
+    // Solid bricks beyond the range: grow it, with room for a quarter more on
+    // each side so a world built up edit by edit re-lays the index rarely.
+    const glm::ivec3 solidLo = box.min >> 3, solidHi = box.max >> 3;
+    if (dims_.x == 0 || glm::any(glm::lessThan(solidLo, lo_)) || glm::any(glm::greaterThanEqual(solidHi, lo_ + dims_))) {
+        const glm::ivec3 wantLo = glm::min(solidLo, dims_.x == 0 ? solidLo : lo_);
+        const glm::ivec3 wantHi = glm::max(solidHi, dims_.x == 0 ? solidHi : lo_ + dims_ - 1);
+        const glm::ivec3 room = (wantHi - wantLo + 1) / 4;
+        // Within the index limits, and no slack that would turn a dense table sparse.
+        glm::ivec3 roomLo = glm::max(wantLo - room, glm::ivec3(-kMaxVoxelIndex >> 3));
+        glm::ivec3 roomHi = glm::min(wantHi + room, glm::ivec3((kMaxVoxelIndex >> 3) - 1));
+        if (volume(roomHi - roomLo + 1) > double(kDenseLimit) && volume(wantHi - wantLo + 1) <= double(kDenseLimit))
+            roomLo = wantLo, roomHi = wantHi;
+        reshape(roomLo, roomHi - roomLo + 1);
+    }
+    // The changed box's bricks: cleared, then written from the world's.
+    const glm::ivec3 lo = glm::max(changed.min >> 3, lo_), hi = glm::min(changed.max >> 3, lo_ + dims_ - 1);
+    std::vector<glm::ivec3> stale;
+    if (dense() || volume(hi - lo + 1) <= double(sparse_.size())) {
+        for (int x = lo.x; x <= hi.x; ++x)
+            for (int y = lo.y; y <= hi.y; ++y)
+                for (int z = lo.z; z <= hi.z; ++z)
+                    if (find({x, y, z}) != 0) stale.push_back({x, y, z});
+    } else {
+        for (const auto& [r, index] : sparse_) {
+            const glm::ivec3 brick = lo_ + r;
+            if (glm::all(glm::greaterThanEqual(brick, lo)) && glm::all(glm::lessThanEqual(brick, hi))) stale.push_back(brick);
+        }
+    }
+    for (glm::ivec3 brick : stale) {
+        freeSlots_.push_back(find(brick));
+        setIndex(brick, 0);
+    }
+    for (const Brick& b : world.bricks(changed)) {
+        const uint32_t index = newSlot();
+        setIndex(b.origin >> 3, index);
+        std::copy(b.occupancy, b.occupancy + 8, masks_.begin() + ptrdiff_t(index) * 8);
+    }
+}
+
+void BrickTable::reshape(glm::ivec3 lo, glm::ivec3 dims) {
+    // Every non-empty brick with its slot, in absolute brick coordinates.
+    std::vector<std::pair<glm::ivec3, uint32_t>> entries;
+    if (dense()) {
+        for (int x = 0; x < dims_.x; ++x)
+            for (int y = 0; y < dims_.y; ++y)
+                for (int z = 0; z < dims_.z; ++z)
+                    if (const uint32_t i = dense_[denseIndex({x, y, z})]) entries.push_back({lo_ + glm::ivec3(x, y, z), i});
+    } else {
+        for (const auto& [r, i] : sparse_) entries.push_back({lo_ + r, i});
+    }
+    lo_ = lo, dims_ = dims;
+    dense_.clear();
+    sparse_.clear();
+    if (volume(dims) <= double(kDenseLimit)) dense_.assign(size_t(volume(dims)), 0);
+    for (const auto& [brick, i] : entries) setIndex(brick, i);
+}
+
+void BrickTable::setIndex(glm::ivec3 brick, uint32_t index) {
+    const glm::ivec3 r = brick - lo_;
+    if (dense()) dense_[denseIndex(r)] = index;
+    else if (index != 0) sparse_[r] = index;
+    else sparse_.erase(r);
+}
+
+uint32_t BrickTable::newSlot() {
+    if (!freeSlots_.empty()) {
+        const uint32_t i = freeSlots_.back();
+        freeSlots_.pop_back();
+        return i;
+    }
+    masks_.resize(masks_.size() + 8);
+    return uint32_t(masks_.size() / 8 - 1);
 }
 
 // Amanatides & Woo per voxel inside occupied bricks; an empty brick is crossed in

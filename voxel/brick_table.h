@@ -40,6 +40,11 @@ public:
     bool dense() const { return !dense_.empty(); }
 
 private:
+    // Re-lays the index over the brick range [lo, lo + dims), keeping every mask.
+    void reshape(glm::ivec3 lo, glm::ivec3 dims);
+    void setIndex(glm::ivec3 brick, uint32_t index);
+    uint32_t newSlot();
+
     size_t denseIndex(glm::ivec3 r) const {
         return (size_t(r.x) * size_t(dims_.y) + size_t(r.y)) * size_t(dims_.z) + size_t(r.z);
     }
@@ -56,6 +61,7 @@ private:
     };
     std::unordered_map<glm::ivec3, uint32_t, KeyHash> sparse_;
     std::vector<uint64_t> masks_;         // 8 words per brick; brick 0 is all empty
+    std::vector<uint32_t> freeSlots_;     // mask slots of bricks that an update emptied
 };
 
 }  // namespace grotto::voxel

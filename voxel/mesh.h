@@ -43,4 +43,8 @@ struct Mesh {
     std::array<glm::ivec3, 4> corners(const MeshChunk& c, const gpu::PackedQuad& q) const;
 };
 
+// Appends one chunk's quads to a mesh as its next chunk (nothing for a chunk
+// without quads): how World::mesh() lays chunks out, in the order given.
+void appendChunk(Mesh& mesh, const MeshChunkQuads& chunk);
+
 }  // namespace grotto::voxel

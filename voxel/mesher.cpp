@@ -1,4 +1,5 @@
 // Face culling and greedy merging per 32^3 chunk, chunks meshed in parallel.
+#include "common/error.h"
 #include "voxel/solid.h"
 
 #include <tbb/parallel_for.h>
@@ -68,12 +69,13 @@ void mergeSlice(uint8_t (&face)[N][N], bool greedy, Emit emit) {
         }
 }
 
-MeshChunk meshOneChunk(const World::Impl& w, const openvdb::Coord& origin, bool greedy,
-                    std::vector<gpu::PackedQuad>& quads) {
+// The one chunk mesher: World::mesh() and World::meshChunk() both use it.
+MeshChunkQuads meshOneChunk(const World::Impl& w, const openvdb::Coord& origin, bool greedy) {
     ChunkVoxels vox;
     gather(w, origin, vox);
-    MeshChunk chunk;
+    MeshChunkQuads chunk;
     chunk.origin = {origin.x(), origin.y(), origin.z()};
+    std::vector<gpu::PackedQuad>& quads = chunk.quads;
     uint8_t face[N][N];
     for (uint32_t f = 0; f < 6; ++f) {
         const int a = int(gpu::faceAxis(f)), ua = int(gpu::faceUAxis(f)), va = int(gpu::faceVAxis(f));
@@ -137,24 +139,43 @@ Mesh World::mesh(const MeshOptions& options) const {
                     origins.insert(chunkOf(openvdb::Coord(x, y, z)));
     }
     const std::vector<openvdb::Coord> list(origins.begin(), origins.end());
-    std::vector<std::vector<gpu::PackedQuad>> perChunk(list.size());
-    std::vector<MeshChunk> chunks(list.size());
-    tbb::parallel_for(size_t(0), list.size(), [&](size_t i) {
-        chunks[i] = meshOneChunk(w, list[i], options.greedy, perChunk[i]);
-    });
+    std::vector<MeshChunkQuads> chunks(list.size());
+    tbb::parallel_for(size_t(0), list.size(), [&](size_t i) { chunks[i] = meshOneChunk(w, list[i], options.greedy); });
     Mesh mesh;
     mesh.origin = w.origin;
     mesh.voxelSize = w.voxelSize;
     size_t total = 0;
-    for (auto& q : perChunk) total += q.size();
+    for (const MeshChunkQuads& c : chunks) total += c.quads.size();
     mesh.quads.reserve(total);
-    for (size_t i = 0; i < list.size(); ++i) {
-        if (perChunk[i].empty()) continue;
-        chunks[i].firstQuad = uint32_t(mesh.quads.size());
-        mesh.quads.insert(mesh.quads.end(), perChunk[i].begin(), perChunk[i].end());
-        mesh.chunks.push_back(chunks[i]);
-    }
+    for (const MeshChunkQuads& c : chunks) appendChunk(mesh, c);
     return mesh;
+}
+
+void appendChunk(Mesh& mesh, const MeshChunkQuads& c) {
+    if (c.quads.empty()) return;
+    mesh.chunks.push_back({.origin = c.origin, .firstQuad = uint32_t(mesh.quads.size()), .faceCount = c.faceCount});
+    mesh.quads.insert(mesh.quads.end(), c.quads.begin(), c.quads.end());
+}
+
+std::vector<glm::ivec3> World::chunksTouching(const IndexBox& changed) const {
+    std::vector<glm::ivec3> out;
+    if (changed.empty()) return out;
+    // Grown by one: a voxel's faces are meshed by its own chunk, and whether they
+    // show depends on the neighbour, which may lie in the next chunk.
+    const glm::ivec3 lo = (changed.min - 1) & ~(N - 1), hi = (changed.max + 1) & ~(N - 1);
+    for (int x = lo.x; x <= hi.x; x += N)
+        for (int y = lo.y; y <= hi.y; y += N)
+            for (int z = lo.z; z <= hi.z; z += N) out.push_back({x, y, z});
+    return out;
+}
+
+MeshChunkQuads World::meshChunk(glm::ivec3 chunkOrigin, const MeshOptions& options) const {
+    if (chunkOrigin != (chunkOrigin & ~(N - 1)))
+        throw Error::internal("World::meshChunk", "chunk origin (" + std::to_string(chunkOrigin.x) + ", " +
+                                                      std::to_string(chunkOrigin.y) + ", " + std::to_string(chunkOrigin.z) +
+                                                      ") is not a multiple of the chunk size",
+                              "use World::chunksTouching or World::mesh()'s chunk origins");
+    return meshOneChunk(*impl_, openvdb::Coord(chunkOrigin.x, chunkOrigin.y, chunkOrigin.z), options.greedy);
 }
 
 }  // namespace grotto::voxel

@@ -69,17 +69,27 @@ struct PlacedTable {
 
 ReferenceAo referenceAo(const World& world, std::span<const glm::dvec3> points, std::span<const glm::dvec3> normals,
                         const ReferenceAoSettings& s) {
-    return referenceAo(world, {}, points, normals, s);
+    return referenceAo(BrickTable(world), world, {}, points, normals, s);
+}
+
+ReferenceAo referenceAo(const BrickTable& table, const World& world, std::span<const glm::dvec3> points,
+                        std::span<const glm::dvec3> normals, const ReferenceAoSettings& s) {
+    return referenceAo(table, world, {}, points, normals, s);
 }
 
 ReferenceAo referenceAo(const World& world, std::span<const PosedWorld> objects, std::span<const glm::dvec3> points,
+                        std::span<const glm::dvec3> normals, const ReferenceAoSettings& s) {
+    return referenceAo(BrickTable(world), world, objects, points, normals, s);
+}
+
+ReferenceAo referenceAo(const BrickTable& table, const World& world, std::span<const PosedWorld> objects,
+                        std::span<const glm::dvec3> points,
                         std::span<const glm::dvec3> normals, const ReferenceAoSettings& s) {
     if (!(s.radius > 0.0 && std::isfinite(s.radius)))
         throw Error("radius", std::to_string(s.radius) + " is out of range", "accepted: > 0 world units");
     if (s.spp == 0) throw Error("spp", "0 rays per pixel", "accepted: 1 or more");
     if (points.size() != normals.size())
         throw Error::internal("referenceAo", "points and normals differ in count");
-    const BrickTable table(world);
     std::vector<PlacedTable> placed;
     for (const PosedWorld& o : objects) placed.emplace_back(o);
     const Directions dirs(s.spp);

@@ -14,6 +14,8 @@
 
 namespace grotto::voxel {
 
+class BrickTable;
+
 struct ReferenceAoSettings {
     double radius = 4.0;      // R, world units (> 0)
     uint32_t spp = 256;       // rays per point (> 0)
@@ -35,6 +37,11 @@ inline constexpr int kReferenceAoVersion = 1;
 // Throws grotto::Error (input) for a radius <= 0, spp 0 or mismatched spans.
 ReferenceAo referenceAo(const World& world, std::span<const glm::dvec3> points,
                         std::span<const glm::dvec3> normals, const ReferenceAoSettings& settings);
+// The same with the world's bricks already in a table (voxel/brick_table.h), so a
+// caller that keeps one up to date across edits (BrickTable::update) does not
+// rebuild it per call. `table` must match `world`.
+ReferenceAo referenceAo(const BrickTable& table, const World& world, std::span<const glm::dvec3> points,
+                        std::span<const glm::dvec3> normals, const ReferenceAoSettings& settings);
 
 // A world placed at a pose (an object of the scene at one time): the reference
 // traces rays against the world and every such object.
@@ -54,5 +61,9 @@ inline std::vector<PosedWorld> posedWorlds(std::span<const World> worlds, std::s
 // (at its pose) within R: each ray is carried into the object's voxel index space.
 ReferenceAo referenceAo(const World& world, std::span<const PosedWorld> objects, std::span<const glm::dvec3> points,
                         std::span<const glm::dvec3> normals, const ReferenceAoSettings& settings);
+// Both: a kept brick table for the world, and objects at their poses.
+ReferenceAo referenceAo(const BrickTable& table, const World& world, std::span<const PosedWorld> objects,
+                        std::span<const glm::dvec3> points, std::span<const glm::dvec3> normals,
+                        const ReferenceAoSettings& settings);
 
 }  // namespace grotto::voxel

@@ -1,5 +1,6 @@
 #pragma once
 // Internal to voxel/: the OpenVDB side of a World.
+#include "voxel/edit_history.h"
 #include "voxel/world.h"
 
 #include <openvdb/openvdb.h>
@@ -17,7 +18,19 @@ struct World::Impl {
     double voxelSize = 1.0;
     glm::dvec3 origin{0.0};
     size_t sourceGridBytes = 0;
+    // What save() writes back: the source grid's name, type and metadata.
+    std::string gridName = "solid";
+    std::string sourceType;                  // openvdb type name, e.g. "Tree_bool_5_4_3"
+    openvdb::MetaMap::ConstPtr sourceMeta;   // never changed after load: shared by copies
+    EditHistory history;
 };
+
+// What one brick costs while the world is built or edited: its entry in
+// World::bricks()'s list and its occupancy in the reference's brick table.
+constexpr uint64_t kBytesPerBrick = sizeof(Brick) + 64;
+
+// Registers OpenVDB's grid types, once per process (before any file is read or written).
+void initializeOpenVdb();
 
 // Opens desc.gridFile and reads the named grid (or the first). Checks the voxel
 // transform and the memory budget before reading voxels. Throws grotto::Error.
@@ -37,6 +50,10 @@ void buildSolid(const openvdb::GridBase::Ptr& grid, World::Impl& impl);
 
 // Voxel size and corner origin from a uniform, axis-aligned transform (else Error).
 void readTransform(const openvdb::GridBase& grid, const std::string& file, World::Impl& impl);
+
+// Writes one grid to a .vdb atomically, read back before it replaces `out`.
+// Throws grotto::Error naming `out`.
+void writeGridFile(const openvdb::GridBase::ConstPtr& grid, const std::filesystem::path& out);
 
 // A World around an in-memory grid (tests and generators).
 World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc);

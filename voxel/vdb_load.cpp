@@ -49,6 +49,11 @@ std::string mib(size_t bytes) {
 
 }  // namespace
 
+void initializeOpenVdb() {
+    static std::once_flag once;
+    std::call_once(once, [] { openvdb::initialize(); });
+}
+
 void readTransform(const openvdb::GridBase& grid, const std::string& file, World::Impl& impl) {
     const openvdb::math::Transform& xf = grid.transform();
     const openvdb::Vec3d vs = xf.voxelSize();
@@ -85,8 +90,7 @@ void readTransform(const openvdb::GridBase& grid, const std::string& file, World
 
 openvdb::GridBase::Ptr readGridUnguarded(const WorldDesc& desc, const std::function<void(size_t)>& onEstimate,
                                          const std::filesystem::path& openAs) {
-    static std::once_flag once;
-    std::call_once(once, [] { openvdb::initialize(); });
+    initializeOpenVdb();
     const std::string path = desc.gridFile.string();
     openvdb::io::File file(openAs.empty() ? path : openAs.string());
     try {

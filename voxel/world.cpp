@@ -1,12 +1,14 @@
 #include "common/error.h"
 #include "voxel/solid.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace grotto::voxel {
 
@@ -22,9 +24,41 @@ uint64_t brickCount(const openvdb::MaskTree& tree) {
     return bricks;
 }
 
-// What one brick costs while the world is built: its entry in World::bricks()'s
-// list and its occupancy in the reference's brick table.
-constexpr uint64_t kBytesPerBrick = sizeof(Brick) + 64;
+// Above this many bricks a region's bricks come from walking the tree.
+constexpr double kProbedBricks = 4096;
+
+// The tree's bricks within the brick range [lo, hi]: its non-empty leaves, and
+// its active tiles as the full bricks they stand for.
+void collectBricks(const openvdb::MaskTree& tree, glm::ivec3 lo, glm::ivec3 hi, std::vector<Brick>& out) {
+    auto inRange = [&](const openvdb::Coord& o) {
+        const glm::ivec3 b = glm::ivec3(o.x(), o.y(), o.z()) >> 3;
+        return b.x >= lo.x && b.y >= lo.y && b.z >= lo.z && b.x <= hi.x && b.y <= hi.y && b.z <= hi.z;
+    };
+    for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) {
+        if (leaf->isEmpty() || !inRange(leaf->origin())) continue;
+        Brick b;
+        const openvdb::Coord o = leaf->origin();
+        b.origin = {o.x(), o.y(), o.z()};
+        const auto& mask = leaf->getValueMask();
+        for (int w = 0; w < 8; ++w) b.occupancy[w] = mask.template getWord<uint64_t>(w);
+        out.push_back(b);
+    }
+    auto it = tree.cbeginValueOn();
+    it.setMaxDepth(openvdb::MaskTree::ValueOnCIter::LEAF_DEPTH - 1);
+    for (; it; ++it) {
+        openvdb::CoordBBox box;
+        it.getBoundingBox(box);
+        const glm::ivec3 from = glm::max(glm::ivec3(box.min().x(), box.min().y(), box.min().z()) >> 3, lo);
+        const glm::ivec3 to = glm::min(glm::ivec3(box.max().x(), box.max().y(), box.max().z()) >> 3, hi);
+        for (int x = from.x; x <= to.x; ++x)
+            for (int y = from.y; y <= to.y; ++y)
+                for (int z = from.z; z <= to.z; ++z) {
+                    Brick b{{x * 8, y * 8, z * 8}, {}};
+                    for (auto& w : b.occupancy) w = ~uint64_t(0);
+                    out.push_back(b);
+                }
+    }
+}
 
 }  // namespace
 
@@ -34,6 +68,9 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     const std::string file = impl->desc.gridFile.empty() ? "<memory>" : impl->desc.gridFile.string();
     readTransform(*grid, file, *impl);
     impl->sourceGridBytes = grid->memUsage();
+    impl->gridName = grid->getName();
+    impl->sourceType = grid->type();
+    impl->sourceMeta = grid->copyMeta();
     buildSolid(grid, *impl);
     openvdb::CoordBBox box;
     if (impl->solid->tree().evalActiveVoxelBoundingBox(box)) {
@@ -110,32 +147,48 @@ std::vector<Brick> World::bricks() const {
     std::vector<Brick> out;
     const auto& tree = impl_->solid->tree();
     out.reserve(brickCount(tree));  // tiles included: no regrowth at the size the budget allowed
-    for (auto leaf = tree.cbeginLeaf(); leaf; ++leaf) {
-        Brick b;
-        const openvdb::Coord o = leaf->origin();
-        b.origin = {o.x(), o.y(), o.z()};
-        const auto& mask = leaf->getValueMask();
-        for (int w = 0; w < 8; ++w) b.occupancy[w] = mask.template getWord<uint64_t>(w);
-        out.push_back(b);
+    collectBricks(tree, glm::ivec3(std::numeric_limits<int>::min() >> 3), glm::ivec3(std::numeric_limits<int>::max() >> 3), out);
+    return out;
+}
+
+std::vector<Brick> World::bricks(const IndexBox& region) const {
+    std::vector<Brick> out;
+    if (region.empty()) return out;
+    const glm::ivec3 lo = region.min >> 3, hi = region.max >> 3;
+    const double span = double(hi.x - lo.x + 1) * double(hi.y - lo.y + 1) * double(hi.z - lo.z + 1);
+    // A small region is probed brick by brick; a large one takes the tree's
+    // bricks, so a carve across a sparse world costs its bricks, not its volume.
+    if (span > kProbedBricks) {
+        collectBricks(impl_->solid->tree(), lo, hi, out);
+        return out;
     }
-    // Active tiles stand for whole blocks of full bricks.
-    for (auto it = tree.cbeginValueOn(); it; ++it) {
-        if (!it.isTileValue()) continue;
-        openvdb::CoordBBox box;
-        it.getBoundingBox(box);
-        for (int x = box.min().x(); x <= box.max().x(); x += 8)
-            for (int y = box.min().y(); y <= box.max().y(); y += 8)
-                for (int z = box.min().z(); z <= box.max().z(); z += 8) {
-                    Brick b{{x, y, z}, {}};
+    openvdb::MaskGrid::ConstAccessor acc = impl_->solid->getConstAccessor();
+    for (int x = lo.x; x <= hi.x; ++x)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int z = lo.z; z <= hi.z; ++z) {
+                Brick b{{x * 8, y * 8, z * 8}, {}};
+                const openvdb::Coord c(b.origin.x, b.origin.y, b.origin.z);
+                if (const auto* leaf = acc.probeConstLeaf(c)) {
+                    if (leaf->isEmpty()) continue;
+                    for (int w = 0; w < 8; ++w) b.occupancy[w] = leaf->getValueMask().template getWord<uint64_t>(w);
+                } else if (acc.isValueOn(c)) {
                     for (auto& w : b.occupancy) w = ~uint64_t(0);
-                    out.push_back(b);
+                } else {
+                    continue;
                 }
-    }
+                out.push_back(b);
+            }
     return out;
 }
 
 bool World::solid(glm::ivec3 v) const {
     return impl_->solid->tree().isValueOn(openvdb::Coord(v.x, v.y, v.z));
+}
+
+int World::material(glm::ivec3 v) const {
+    const openvdb::Coord c(v.x, v.y, v.z);
+    if (!impl_->solid->tree().isValueOn(c)) return 0;
+    return impl_->materials ? impl_->materials->tree().getValue(c) : impl_->uniformMaterial;
 }
 
 CameraDesc World::camera(const std::string& name) const {

@@ -54,6 +54,7 @@ public:
     static World load(const std::filesystem::path& path);
     // A world from memory: a dense array of material ids (0 = empty), x fastest,
     // then y, then z, with voxel (0,0,0) at `origin` (world units). Error on bad sizes.
+    // An empty desc.materials means defaultMaterials(), as for a bare .vdb.
     static World fromDense(glm::ivec3 size, const uint8_t* materials, double voxelSize, glm::dvec3 origin,
                            WorldDesc desc = {});
 
@@ -63,7 +64,11 @@ public:
     IndexBox bounds() const;
     WorldStats stats() const;
 
-    std::vector<Brick> bricks() const;  // tiles split into full bricks
+    std::vector<Brick> bricks() const;  // with solid voxels; tiles split into full bricks
+    // The same, for the bricks overlapping `region` only: after an edit, the
+    // bricks of its changed box are all a copy of the bricks needs (those of
+    // the box not listed are empty now).
+    std::vector<Brick> bricks(const IndexBox& region) const;
     Mesh mesh(const MeshOptions& options = {}) const;
 
     // Solid-voxel test and exact voxel traversal (DDA) in world units.
@@ -80,7 +85,10 @@ public:
     // nothing returns an empty result and is not recorded. Throws grotto::Error
     // (input) for an edit out of range (material, radius, index limits).
     EditResult apply(const Edit& edit);
-    // Reverts the last recorded edit; an empty result when there is none.
+    // Reverts the last recorded edit; an empty result when there is none. Undo
+    // keeps the last 1024 edits and at most 64 MiB of the voxels' prior states
+    // (16 bytes per changed voxel); an edit larger than that cannot be undone,
+    // nor can any before it.
     EditResult undo();
     size_t undoDepth() const;
     // Edits applied since load, in order, minus those undone: what the world's

@@ -2,13 +2,11 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "voxel/generators.h"
-
-#include <openvdb/io/File.h>
+#include "voxel/solid.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <mutex>
 
 namespace grotto::voxel {
 
@@ -68,11 +66,6 @@ GeneratorOptions resolve(const Kind& kind, GeneratorOptions options) {
     return options;
 }
 
-void initOpenVdb() {
-    static std::once_flag once;
-    std::call_once(once, [] { openvdb::initialize(); });
-}
-
 }  // namespace
 
 const std::vector<std::string>& worldKinds() {
@@ -87,7 +80,7 @@ const std::vector<std::string>& worldKinds() {
 openvdb::GridBase::Ptr generateWorld(const std::string& kindName, const GeneratorOptions& options) {
     const Kind& kind = findKind(kindName);
     const GeneratorOptions resolved = resolve(kind, options);
-    initOpenVdb();
+    initializeOpenVdb();
     openvdb::GridBase::Ptr grid = kind.generate(resolved);
     grid->setName(kind.gridName);
     grid->insertMeta("grotto_kind", openvdb::StringMetadata(kind.name));
@@ -104,21 +97,7 @@ void makeWorldFile(const std::string& kind, const GeneratorOptions& options,
         throw Error(out.string(), "the output of mkworld is an OpenVDB file", "name it with .vdb");
     requireOutputPath(out);  // fail before a long generation, not after
     openvdb::GridBase::Ptr grid = generateWorld(kind, options);
-    writeAtomically(out, [&](const std::filesystem::path& tmp) {
-        try {
-            openvdb::io::File file(tmp.string());
-            file.write(openvdb::GridCPtrVec{grid});
-            file.close();
-            // OpenVDB does not check its stream: read the file back before it
-            // replaces the target, so a full disk cannot leave a truncated grid.
-            openvdb::io::File check(tmp.string());
-            check.open(false);
-            check.readGrid(grid->getName());
-        } catch (const openvdb::Exception& e) {
-            throw Error(out.string(), std::string("could not write the grid: ") + e.what(),
-                        "check free disk space and permissions");
-        }
-    });
+    writeGridFile(grid, out);
 }
 
 }  // namespace grotto::voxel

@@ -1,0 +1,125 @@
+// Times edits on a copy of the world, each followed by the updates a live
+// renderer makes: the touched chunks' meshes and the brick table.
+#include "app/bench_edits.h"
+
+#include "app/options.h"
+#include "voxel/brick_table.h"
+#include "voxel/live_mesh.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <random>
+
+namespace grotto::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// The world with the mesh and table a renderer keeps beside it.
+struct LiveWorld {
+    voxel::World world;
+    voxel::LiveMesh mesh{world};
+    voxel::BrickTable table{world};
+
+    // Milliseconds for the edit and both updates.
+    double timedEdit(const voxel::Edit& e, voxel::EditResult* result = nullptr) {
+        const auto t = Clock::now();
+        const voxel::EditResult r = world.apply(e);
+        mesh.update(world, r.voxels);
+        table.update(world, r.voxels);
+        const double ms = msSince(t);
+        if (result) *result = r;
+        return ms;
+    }
+    void undo() {
+        const voxel::EditResult r = world.undo();
+        mesh.update(world, r.voxels);
+        table.update(world, r.voxels);
+    }
+};
+
+// The middle voxel of the chunk with the most quads: an edit where the surface is.
+glm::ivec3 busiestChunkMiddle(const voxel::World& world) {
+    const voxel::Mesh mesh = world.mesh();
+    const auto most = std::max_element(mesh.chunks.begin(), mesh.chunks.end(),
+                                       [](const auto& a, const auto& b) { return a.quadCount() < b.quadCount(); });
+    return (most == mesh.chunks.end() ? glm::ivec3(0) : most->origin) + int(GROTTO_CHUNK_SIZE / 2);
+}
+
+}  // namespace
+
+EditBenchFigures benchEdits(const voxel::World& source, const EditBenchOptions& o) {
+    EditBenchFigures f;
+    LiveWorld live{source};
+    f.voxel = busiestChunkMiddle(source);
+    const glm::dvec3 centre = source.origin() + (glm::dvec3(f.voxel) + 0.5) * source.voxelSize();
+
+    std::vector<double> ms;
+    for (int i = 0; i < o.repetitions; ++i)
+        ms.push_back(live.timedEdit(voxel::Edit::setVoxel(f.voxel, live.world.solid(f.voxel) ? 0 : 1)));
+    f.voxelEditMs = median(ms);
+
+    ms.clear();
+    for (int i = 0; i < o.repetitions; ++i) {
+        voxel::EditResult r;
+        ms.push_back(live.timedEdit(voxel::Edit::carveSphere(centre, 8.0 * source.voxelSize()), &r));
+        f.sphereVoxels = r.changed;
+        live.undo();  // untimed: every repetition carves the same voxels
+    }
+    f.sphereCarveMs = median(ms);
+
+    // Random single voxels within the bounds, each toggled (so none is a no-op).
+    const voxel::IndexBox b = source.bounds();
+    std::mt19937 rng(o.seed);
+    auto randomEdit = [&] {
+        glm::ivec3 v;
+        for (int a = 0; a < 3; ++a) v[a] = std::uniform_int_distribution<int>(b.min[a], b.max[a])(rng);
+        return voxel::Edit::setVoxel(v, live.world.solid(v) ? 0 : 1);
+    };
+    ms.clear();
+    for (int i = 0; i < o.randomEdits; ++i) ms.push_back(live.timedEdit(randomEdit()));
+    f.randomEdits = o.randomEdits;
+    f.randomEditMs = median(ms);
+
+    ms.clear();
+    for (int i = 0; i < o.fullRemeshEdits; ++i) {
+        const voxel::Edit e = randomEdit();
+        const auto t = Clock::now();
+        live.world.apply(e);
+        const voxel::Mesh whole = live.world.mesh();
+        ms.push_back(msSince(t));
+    }
+    f.fullRemeshEdits = o.fullRemeshEdits;
+    f.fullRemeshMs = median(ms);
+    f.remeshRatio = f.randomEditMs > 0 ? f.fullRemeshMs / f.randomEditMs : 0;
+    return f;
+}
+
+void printEditFigures(const EditBenchFigures& f) {
+    std::printf("  edits (CPU: apply + LiveMesh::update + BrickTable::update, medians):\n");
+    std::printf("    voxel set    %8.3f ms at (%d, %d, %d)\n", f.voxelEditMs, f.voxel.x, f.voxel.y, f.voxel.z);
+    std::printf("    sphere carve %8.3f ms, radius 8 voxels there, %llu voxels changed\n", f.sphereCarveMs,
+                (unsigned long long)f.sphereVoxels);
+    std::printf("    random voxel %8.3f ms each over %d edits; re-meshing the whole world instead: %.3f ms each "
+                "(%d edits), %.0fx\n",
+                f.randomEditMs, f.randomEdits, f.fullRemeshMs, f.fullRemeshEdits, f.remeshRatio);
+}
+
+nlohmann::json editFiguresJson(const EditBenchFigures& f) {
+    return {{"voxel", {f.voxel.x, f.voxel.y, f.voxel.z}},
+            {"voxel_edit_ms_median", f.voxelEditMs},
+            {"sphere_carve_ms_median", f.sphereCarveMs},
+            {"sphere_carve_voxels", f.sphereVoxels},
+            {"random_edits", f.randomEdits},
+            {"random_edit_ms_median", f.randomEditMs},
+            {"full_remesh_edits", f.fullRemeshEdits},
+            {"full_remesh_edit_ms_median", f.fullRemeshMs},
+            {"full_remesh_to_incremental_ratio", f.remeshRatio}};
+}
+
+}  // namespace grotto::app

@@ -1,0 +1,39 @@
+#pragma once
+// `grotto bench --edits`: the CPU cost of live edits on a loaded world (the
+// edit itself, the chunks it re-meshes, the brick table it updates), against
+// re-meshing the whole world after every edit.
+#include "voxel/world.h"
+
+#include <nlohmann/json_fwd.hpp>
+
+namespace grotto::app {
+
+struct EditBenchOptions {
+    int repetitions = 50;      // of the single-voxel and sphere edits
+    int randomEdits = 1000;    // single-voxel edits at random places in the bounds
+    int fullRemeshEdits = 20;  // of those, how many also time a whole-world re-mesh
+    uint32_t seed = 1;
+};
+
+// Medians in milliseconds. Each "edit" is World::apply + LiveMesh::update +
+// BrickTable::update, as a renderer keeping both up to date pays it.
+struct EditBenchFigures {
+    glm::ivec3 voxel{0};           // the voxel edited: the middle of the chunk with most quads
+    double voxelEditMs = 0;        // setting that voxel (solid and empty in turn)
+    double sphereCarveMs = 0;      // carving a sphere of radius 8 voxels around it
+    uint64_t sphereVoxels = 0;     // voxels that carve changed
+    int randomEdits = 0;
+    double randomEditMs = 0;       // a random single-voxel edit, incremental
+    int fullRemeshEdits = 0;
+    double fullRemeshMs = 0;       // the same edit followed by World::mesh() instead
+    double remeshRatio = 0;        // fullRemeshMs / randomEditMs
+};
+
+// Edits a copy: `world` is left as it is.
+EditBenchFigures benchEdits(const voxel::World& world, const EditBenchOptions& options = {});
+
+// The figures as lines under `grotto bench`'s report, and as its JSON's "edits".
+void printEditFigures(const EditBenchFigures& f);
+nlohmann::json editFiguresJson(const EditBenchFigures& f);
+
+}  // namespace grotto::app

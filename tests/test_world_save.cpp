@@ -1,0 +1,261 @@
+// Worlds from memory and back to files: fromDense and worldFromGrid, and
+// World::save, whose file World::load reads as the same voxels, materials,
+// placement and metadata, and which never leaves a half-written target.
+#include "common/atomic_file.h"
+#include "common/error.h"
+#include "tests/test_util.h"
+#include "voxel/world.h"
+#include "voxel/world_from_grid.h"
+
+#include <gtest/gtest.h>
+#include <openvdb/io/File.h>
+#include <openvdb/openvdb.h>
+
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fcntl.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <random>
+#include <thread>
+
+extern char** environ;
+
+namespace grotto::voxel {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<uint8_t> randomIds(glm::ivec3 size, int palette, double fill, uint32_t seed) {
+    std::mt19937 rng(seed);
+    std::bernoulli_distribution on(fill);
+    std::uniform_int_distribution<int> id(1, palette);
+    std::vector<uint8_t> ids(size_t(size.x) * size.y * size.z);
+    for (uint8_t& v : ids) v = on(rng) ? uint8_t(id(rng)) : 0;
+    return ids;
+}
+
+void expectSameWorld(const World& got, const World& want, const std::string& what) {
+    IndexBox b = want.bounds().merged(got.bounds());
+    ASSERT_FALSE(b.empty()) << what;
+    uint64_t wrong = 0;
+    for (int x = b.min.x - 1; x <= b.max.x + 1; ++x)
+        for (int y = b.min.y - 1; y <= b.max.y + 1; ++y)
+            for (int z = b.min.z - 1; z <= b.max.z + 1; ++z) wrong += got.material({x, y, z}) != want.material({x, y, z});
+    EXPECT_EQ(wrong, 0u) << what;
+    EXPECT_EQ(got.stats().solidVoxels, want.stats().solidVoxels) << what;
+    EXPECT_DOUBLE_EQ(got.voxelSize(), want.voxelSize()) << what;
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(got.origin()[a], want.origin()[a], 1e-9 * std::abs(want.origin()[a]) + 1e-12) << what;
+}
+
+openvdb::GridBase::Ptr readSavedGrid(const fs::path& path) {
+    openvdb::io::File file(path.string());
+    file.open(false);
+    openvdb::GridBase::Ptr grid = file.readGrid(file.beginName().gridName());
+    file.close();
+    return grid;
+}
+
+TEST(WorldFromDense, EveryVoxelRoundTrips) {
+    const glm::ivec3 size(7, 5, 3);
+    const std::vector<uint8_t> ids = randomIds(size, 8, 0.6, 1);
+    const World w = World::fromDense(size, ids.data(), 0.25, {-3.0, 1.5, 100.0});
+    EXPECT_DOUBLE_EQ(w.voxelSize(), 0.25);
+    EXPECT_NEAR(w.origin().x, -3.0, 1e-12);
+    EXPECT_NEAR(w.origin().z, 100.0, 1e-12);
+    size_t i = 0;
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x, ++i) ASSERT_EQ(w.material({x, y, z}), ids[i]) << x << " " << y << " " << z;
+    EXPECT_EQ(w.material({-1, 0, 0}), 0);
+    EXPECT_EQ(w.material({7, 0, 0}), 0);
+    // Voxel (0,0,0) spans [origin, origin + voxelSize): a ray from below meets it there.
+    const World one = World::fromDense({1, 1, 1}, std::vector<uint8_t>{3}.data(), 2.0, {10, 20, 30});
+    const auto hit = one.raycast({11.0, 0.0, 31.0}, {0, 1, 0}, 100.0);
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_NEAR(hit->distance, 20.0, 1e-9);
+    EXPECT_EQ(one.material({0, 0, 0}), 3);
+}
+
+TEST(WorldFromDense, BadInputIsRefused) {
+    const std::vector<uint8_t> ids(8, 1);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW(World::fromDense({0, 2, 2}, ids.data(), 1.0, {}), Error);
+    EXPECT_THROW(World::fromDense({2, -2, 2}, ids.data(), 1.0, {}), Error);
+    EXPECT_THROW(World::fromDense({2, 2, kMaxVoxelIndex + 1}, ids.data(), 1.0, {}), Error);
+    EXPECT_THROW(World::fromDense({2, 2, 2}, nullptr, 1.0, {}), Error);
+    EXPECT_THROW(World::fromDense({2, 2, 2}, ids.data(), 0.0, {}), Error);
+    EXPECT_THROW(World::fromDense({2, 2, 2}, ids.data(), nan, {}), Error);
+    EXPECT_THROW(World::fromDense({2, 2, 2}, ids.data(), 1.0, {nan, 0, 0}), Error);
+    EXPECT_THROW(World::fromDense({2, 2, 2}, ids.data(), 1.0, {0, 0, 1e13}), Error);
+    std::vector<uint8_t> beyond = ids;
+    beyond[5] = uint8_t(defaultMaterials().size() + 1);
+    try {
+        World::fromDense({2, 2, 2}, beyond.data(), 1.0, {});
+        ADD_FAILURE() << "an id beyond the palette was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("(1, 0, 1)"), std::string::npos) << e.what();
+    }
+    // A palette of its own: ids up to its size only.
+    WorldDesc two;
+    two.materials.resize(2);
+    EXPECT_THROW(World::fromDense({2, 2, 2}, std::vector<uint8_t>(8, 3).data(), 1.0, {}, two), Error);
+    EXPECT_NO_THROW(World::fromDense({2, 2, 2}, std::vector<uint8_t>(8, 2).data(), 1.0, {}, two));
+}
+
+TEST(WorldFromGrid, CopiesTheGridAndChecksIt) {
+    openvdb::initialize();
+    auto grid = openvdb::Int32Grid::create(0);
+    grid->tree().setValueOn({1, 2, 3}, 2);
+    World w = worldFromGrid(*grid);
+    grid->tree().setValueOn({4, 4, 4}, 1);  // the game's later change stays its own
+    EXPECT_EQ(w.material({1, 2, 3}), 2);
+    EXPECT_EQ(w.material({4, 4, 4}), 0);
+    w.apply(Edit::setVoxel({1, 2, 3}, 0));
+    EXPECT_EQ(grid->tree().getValue({1, 2, 3}), 2);
+    grid->tree().setValueOn({0, 0, 0}, 99);
+    EXPECT_THROW(worldFromGrid(*grid), Error);
+    auto vec = openvdb::Vec3SGrid::create();
+    EXPECT_THROW(worldFromGrid(*vec), Error);
+}
+
+TEST(WorldSave, Int32WorldRoundTripsWithMetadata) {
+    openvdb::initialize();
+    test::ScratchDir dir;
+    const glm::ivec3 size(40, 20, 33);
+    const std::vector<uint8_t> ids = randomIds(size, 8, 0.4, 2);
+    const World source = World::fromDense(size, ids.data(), 0.125, {-7.5, 3.0, 1e5});
+    source.save(dir / "a.vdb");
+    // Through worldFromGrid, to carry a name and metadata as a file's grid would.
+    openvdb::GridBase::Ptr named = readSavedGrid(dir / "a.vdb");
+    named->setName("terrain");
+    named->insertMeta("author", openvdb::StringMetadata("grotto tests"));
+    named->insertMeta("grotto_seed", openvdb::Int64Metadata(42));
+    World w = worldFromGrid(*named);
+    w.apply(Edit::carveSphere(w.origin() + glm::dvec3(2.0, 1.0, 2.0), 0.6));
+    w.apply(Edit::fillBox({{-3, -3, -3}, {2, 2, 2}}, 5));
+    w.save(dir / "b.vdb");
+    const World back = World::load(dir / "b.vdb");
+    expectSameWorld(back, w, "int32 world");
+    EXPECT_TRUE(back.editLog().empty());
+    const openvdb::GridBase::Ptr saved = readSavedGrid(dir / "b.vdb");
+    EXPECT_EQ(saved->getName(), "terrain");
+    EXPECT_TRUE(saved->isType<openvdb::Int32Grid>());
+    EXPECT_EQ(saved->metaValue<std::string>("author"), "grotto tests");
+    EXPECT_EQ(saved->metaValue<int64_t>("grotto_seed"), 42);
+}
+
+TEST(WorldSave, MaskWorldsKeepTheirKindUnlessPainted) {
+    openvdb::initialize();
+    test::ScratchDir dir;
+    for (const bool boolGrid : {false, true}) {
+        openvdb::GridBase::Ptr grid;
+        if (boolGrid) {
+            auto g = openvdb::BoolGrid::create(false);
+            g->fill(openvdb::CoordBBox({-5, 0, -5}, {20, 3, 9}), true, true);
+            g->tree().addTile(1, openvdb::Coord(32, 0, 0), true, true);
+            grid = g;
+        } else {
+            auto g = openvdb::MaskGrid::create();
+            g->fill(openvdb::CoordBBox({-5, 0, -5}, {20, 3, 9}), true, true);
+            grid = g;
+        }
+        grid->setTransform(openvdb::math::Transform::createLinearTransform(0.5));
+        grid->setName("solid");
+        World w = worldFromGrid(*grid);
+        w.apply(Edit::carveBox({{0, 2, 0}, {3, 3, 3}}));
+        const std::string kind = boolGrid ? "bool" : "mask";
+        w.save(dir / "plain.vdb");
+        expectSameWorld(World::load(dir / "plain.vdb"), w, kind + " world");
+        EXPECT_EQ(readSavedGrid(dir / "plain.vdb")->type(), grid->type()) << kind;
+        // Painted: the materials need an int32 grid to round-trip.
+        w.apply(Edit::paintSphere(w.origin() + glm::dvec3(5.0, 1.0, 2.0), 1.5, 4));
+        w.save(dir / "painted.vdb");
+        const World painted = World::load(dir / "painted.vdb");
+        expectSameWorld(painted, w, "painted " + kind + " world");
+        EXPECT_EQ(painted.material({10, 1, 4}), 4);
+        EXPECT_TRUE(readSavedGrid(dir / "painted.vdb")->isType<openvdb::Int32Grid>()) << kind;
+        // Undone, the paint leaves no material grid behind.
+        w.undo();
+        w.save(dir / "undone.vdb");
+        EXPECT_EQ(readSavedGrid(dir / "undone.vdb")->type(), grid->type()) << kind;
+    }
+}
+
+TEST(WorldSave, AUniformMaterialOtherThanOneIsKept) {
+    openvdb::initialize();
+    test::ScratchDir dir;
+    auto grid = openvdb::MaskGrid::create();
+    grid->fill(openvdb::CoordBBox({0, 0, 0}, {9, 9, 9}), true, true);
+    WorldDesc desc;
+    desc.material = 6;
+    const World w = worldFromGrid(*grid, desc);
+    ASSERT_EQ(w.material({1, 1, 1}), 6);
+    w.save(dir / "six.vdb");
+    expectSameWorld(World::load(dir / "six.vdb"), w, "material 6 world");
+    EXPECT_THROW(w.save(dir / "six.png"), Error);
+    EXPECT_THROW(w.save(dir / "missing" / "six.vdb"), Error);
+}
+
+// Run by InterruptedSaveLeavesTheOldFile in a child process: saves a large
+// world to the path it is given, for the parent to kill mid-save.
+TEST(WorldSave, ChildSavesALargeWorld) {
+    const char* target = std::getenv("GROTTO_TEST_SAVE_TARGET");
+    if (!target) GTEST_SKIP() << "a helper of InterruptedSaveLeavesTheOldFile";
+    const glm::ivec3 size(256, 256, 256);
+    const World big = World::fromDense(size, randomIds(size, 8, 0.5, 3).data(), 1.0, {});
+    big.save(target);
+}
+
+TEST(WorldSave, InterruptedSaveLeavesTheOldFile) {
+    test::ScratchDir dir;
+    const fs::path target = dir / "world.vdb";
+    const glm::ivec3 size(12, 12, 12);
+    const World old = World::fromDense(size, randomIds(size, 3, 0.5, 4).data(), 1.0, {});
+    old.save(target);
+    // A child saves over it and is killed once its temporary file exists.
+    const std::string filter = "--gtest_filter=WorldSave.ChildSavesALargeWorld", env = "GROTTO_TEST_SAVE_TARGET=" + target.string();
+    std::vector<char*> argv{const_cast<char*>("test_voxel"), const_cast<char*>(filter.c_str()), nullptr};
+    std::vector<char*> envp;
+    for (char** e = environ; *e; ++e) envp.push_back(*e);
+    envp.push_back(const_cast<char*>(env.c_str()));
+    envp.push_back(nullptr);
+    posix_spawn_file_actions_t quiet;
+    posix_spawn_file_actions_init(&quiet);
+    posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+    pid_t child = 0;
+    ASSERT_EQ(posix_spawn(&child, "/proc/self/exe", &quiet, nullptr, argv.data(), envp.data()), 0);
+    posix_spawn_file_actions_destroy(&quiet);
+    auto temporary = [&] {
+        for (const auto& entry : fs::directory_iterator(dir.path))
+            if (entry.path().filename().string().starts_with(".world.tmp")) return true;
+        return false;
+    };
+    int status = 0;
+    bool seen = false;
+    for (auto start = std::chrono::steady_clock::now(); std::chrono::steady_clock::now() - start < std::chrono::minutes(5);) {
+        if ((seen = temporary())) break;
+        if (waitpid(child, &status, WNOHANG) == child) break;
+        std::this_thread::sleep_for(std::chrono::microseconds(200));
+    }
+    if (seen) {
+        kill(child, SIGKILL);
+        waitpid(child, &status, 0);
+    }
+    ASSERT_TRUE(seen) << "the child ended (status " << status << ") before its save began";
+    ASSERT_TRUE(WIFSIGNALED(status)) << "the child finished its save before it was killed";
+    expectSameWorld(World::load(target), old, "the file a killed save was replacing");
+    // The temporary stays hidden under its own name until a later run clears it.
+    EXPECT_TRUE(temporary());
+    EXPECT_EQ(removeAbandonedTemporaries(dir.path, [](const std::string& name) { return name == "world.vdb"; }), 1);
+    EXPECT_FALSE(temporary());
+}
+
+}  // namespace
+}  // namespace grotto::voxel

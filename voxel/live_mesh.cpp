@@ -1,0 +1,51 @@
+// LiveMesh: World::mesh() split by chunk, re-meshed chunk by chunk after edits.
+#include "voxel/live_mesh.h"
+
+#include <tbb/parallel_for.h>
+
+namespace grotto::voxel {
+
+LiveMesh::LiveMesh(const World& world, const MeshOptions& options)
+    : options_(options), voxelSize_(world.voxelSize()), origin_(world.origin()) {
+    // The whole-world mesher already meshes chunks in parallel and lists them in order.
+    const Mesh mesh = world.mesh(options);
+    for (const MeshChunk& c : mesh.chunks) {
+        MeshChunkQuads& q = chunks_[c.origin];
+        q.origin = c.origin;
+        q.faceCount = c.faceCount;
+        q.quads.assign(mesh.quads.begin() + c.firstQuad, mesh.quads.begin() + c.firstQuad + c.quadCount());
+    }
+}
+
+std::vector<glm::ivec3> LiveMesh::update(const World& world, const IndexBox& changed) {
+    std::vector<glm::ivec3> origins = world.chunksTouching(changed);
+    std::vector<MeshChunkQuads> meshed(origins.size());
+    tbb::parallel_for(size_t(0), origins.size(), [&](size_t i) { meshed[i] = world.meshChunk(origins[i], options_); });
+    for (MeshChunkQuads& q : meshed) {
+        if (q.quads.empty()) chunks_.erase(q.origin);
+        else chunks_[q.origin] = std::move(q);
+    }
+    return origins;
+}
+
+const MeshChunkQuads* LiveMesh::find(glm::ivec3 origin) const {
+    const auto it = chunks_.find(origin);
+    return it == chunks_.end() ? nullptr : &it->second;
+}
+
+uint64_t LiveMesh::quadCount() const {
+    uint64_t n = 0;
+    for (const auto& [origin, q] : chunks_) n += q.quads.size();
+    return n;
+}
+
+Mesh LiveMesh::flatten() const {
+    Mesh mesh;
+    mesh.origin = origin_;
+    mesh.voxelSize = voxelSize_;
+    mesh.quads.reserve(quadCount());
+    for (const auto& [origin, q] : chunks_) appendChunk(mesh, q);
+    return mesh;
+}
+
+}  // namespace grotto::voxel
