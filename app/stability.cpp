@@ -105,6 +105,28 @@ std::vector<float> referenceAt(const voxel::BrickTable& bricks, const voxel::Wor
     return v;
 }
 
+// The temporal pass's frames of history per AO pixel.
+std::vector<float> historyAt(const FrameImages& frame, const AoFrame& ao) {
+    std::vector<float> out(size_t(ao.width) * ao.height);
+    for (uint32_t y = 0; y < ao.height; ++y)
+        for (uint32_t x = 0; x < ao.width; ++x)
+            out[size_t(y) * ao.width + x] = frame.aoHistory[size_t(y * ao.scale) * frame.width + x * ao.scale];
+    return out;
+}
+
+// 1 for the AO pixels in `only` whose surface existed in `world`: the voxel behind
+// the face solid, the one in front of it empty.
+std::vector<uint8_t> existedBefore(const voxel::World& world, const AoPoints& at, const std::vector<uint8_t>& only) {
+    std::vector<uint8_t> existed(only.size(), 0);
+    for (size_t k = 0; k < at.index.size(); ++k) {
+        if (!only[at.index[k]]) continue;
+        const glm::dvec3 p = (at.points[k] - world.origin()) / world.voxelSize();
+        auto voxel = [](glm::dvec3 q) { return glm::ivec3(glm::floor(q)); };
+        existed[at.index[k]] = world.solid(voxel(p - 0.5 * at.normals[k])) && !world.solid(voxel(p + 0.5 * at.normals[k]));
+    }
+    return existed;
+}
+
 // An edit event of the run: the frame the path's edits were applied before, what
 // they changed, and the world as it was, for the pre-edit reference.
 struct EditEvent {
@@ -122,7 +144,9 @@ json editsJson(const std::vector<EditEvent>& events, double& staleMax, int& reco
         const EditRecovery r = editRecovery(e.frames, e.frame);
         json frames = json::array();
         for (const EditFrame& f : e.frames)
-            frames.push_back({{"frame", f.frame}, {"pixels", f.pixels}, {"mae", f.mae}, {"stale", f.stale}});
+            frames.push_back({{"frame", f.frame}, {"pixels", f.pixels}, {"old_surface_pixels", f.oldSurfaces},
+                              {"mae", f.mae}, {"stale", f.stale},
+                              {"closer_to_pre", f.closerToPre}});
         out.push_back({{"frame", e.frame},
                        {"box", {{"min", {e.box.min.x, e.box.min.y, e.box.min.z}}, {"max", {e.box.max.x, e.box.max.y, e.box.max.z}}}},
                        {"frames", frames},
@@ -281,7 +305,8 @@ void addStabilityCommand(CLI::App& app) {
                     const std::vector<uint8_t> near = nearBox(now, e.box, ao.gtao.radius);
                     const auto pre = referenceAt(e.beforeBricks, e.before, posed, points, near.size(), ao.gtao.radius, args->spp, rays, near);
                     const auto post = referenceAt(live.bricks(), world, posed, points, near.size(), ao.gtao.radius, args->spp, rays, near);
-                    e.frames.push_back(editFrame(i, now.temporal, pre, post, near));
+                    e.frames.push_back(editFrame(i, i - e.frame, now.temporal, historyAt(frame, now), pre, post, near,
+                                                 existedBefore(e.before, points, near)));
                 }
                 if ((i - first) % args->referenceEvery < 2) {
                     reference = referenceAt(live.bricks(), world, posed, points, now.world.size(), ao.gtao.radius,

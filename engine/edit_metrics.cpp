@@ -16,19 +16,26 @@ std::vector<uint8_t> nearBox(const AoFrame& frame, const voxel::WorldBox& box, d
     return near;
 }
 
-EditFrame editFrame(int frame, const std::vector<float>& ao, const std::vector<float>& pre,
-                    const std::vector<float>& post, const std::vector<uint8_t>& near) {
+EditFrame editFrame(int frame, int sinceEdit, const std::vector<float>& ao, const std::vector<float>& history,
+                    const std::vector<float>& pre, const std::vector<float>& post, const std::vector<uint8_t>& near,
+                    const std::vector<uint8_t>& existed) {
     EditFrame f{.frame = frame};
     double error = 0.0;
-    size_t stale = 0;
+    size_t stale = 0, closer = 0;
     for (size_t p = 0; p < near.size(); ++p) {
         if (!near[p]) continue;
         ++f.pixels;
-        const double toPost = std::abs(double(ao[p]) - post[p]), toPre = std::abs(double(ao[p]) - pre[p]);
-        error += toPost;
-        stale += toPre + kStaleMargin < toPost;
+        error += std::abs(double(ao[p]) - post[p]);
+        if (!existed[p]) continue;
+        ++f.oldSurfaces;
+        const bool leans = std::abs(double(ao[p]) - pre[p]) + kStaleMargin < std::abs(double(ao[p]) - post[p]);
+        closer += leans;
+        // A history restarted on the edit's frame holds at most sinceEdit + 1 frames
+        // (bilinear reprojection averages lengths: half a frame for rounding).
+        stale += leans && history[p] > float(sinceEdit) + 1.5f;
     }
-    if (f.pixels) f.mae = error / double(f.pixels), f.stale = double(stale) / double(f.pixels);
+    if (f.pixels) f.mae = error / double(f.pixels);
+    if (f.oldSurfaces) f.stale = double(stale) / double(f.oldSurfaces), f.closerToPre = double(closer) / double(f.oldSurfaces);
     return f;
 }
 
