@@ -7,7 +7,10 @@
 #include "engine/image_output.h"
 #include "engine/live_scene.h"
 #include "engine/renderer.h"
+#include "engine/scene_objects.h"
+#include "voxel/object_worlds.h"
 
+#include <cmath>
 #include <optional>
 
 namespace grotto {
@@ -15,6 +18,9 @@ namespace grotto {
 struct Engine::Impl {
     std::unique_ptr<vk::Context> ctx;
     std::optional<LiveScene> scene;
+    std::vector<voxel::World> objectWorlds;
+    std::unique_ptr<SceneObjects> objects;
+    std::vector<voxel::ObjectPose> poses;
     std::unique_ptr<Renderer> renderer;  // made on the first frame, kept across settings changes
     voxel::CameraDesc camera;
     voxel::Lighting lighting;
@@ -58,6 +64,7 @@ Engine::Engine(const VulkanDevice& device, const EngineOptions& options) : impl_
 Engine::~Engine() {
     // The renderer and the scene's buffers go before the device they were made on.
     impl_->renderer.reset();
+    impl_->objects.reset();
     impl_->scene.reset();
 }
 
@@ -67,8 +74,16 @@ void Engine::setWorld(voxel::World world) {
     Impl& m = *impl_;
     // Settings first: a world whose AO block is bad is refused before anything changes.
     AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), world.desc().source.string());
+    std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
     m.renderer.reset();  // it draws the old scene
+    m.objects.reset();
     m.scene.reset();
+    m.objectWorlds = std::move(objectWorlds);
+    if (!m.objectWorlds.empty()) {
+        m.objects = uploadObjects(*m.ctx, m.objectWorlds, world.desc());
+        m.objects->moving = true;  // a game may move any object (setObjectPose): motion vectors for all
+        m.poses = m.objects->poses(0.0);
+    }
     m.camera = world.camera("");
     m.lighting = world.desc().lighting;
     m.ao = std::move(ao);
@@ -96,6 +111,26 @@ voxel::EditResult Engine::undo() {
     if (m.renderer && !r.voxels.empty()) m.renderer->invalidateHistory(r.box);
     return r;
 }
+
+void Engine::setTime(double seconds) {
+    Impl& m = *impl_;
+    if (!std::isfinite(seconds)) throw Error("setTime", "the time is not finite");
+    if (m.objects) m.poses = m.objects->poses(seconds);
+}
+
+void Engine::setObjectPose(size_t object, glm::dvec3 position, glm::dquat rotation) {
+    Impl& m = *impl_;
+    if (object >= m.poses.size())
+        throw Error("setObjectPose", "object " + std::to_string(object) + " does not exist",
+                    "the world has " + std::to_string(m.poses.size()) + " objects");
+    const double length = glm::length(rotation);
+    if (!std::isfinite(position.x + position.y + position.z) || !(length > 1e-9) || !std::isfinite(length))
+        throw Error("setObjectPose", "the position is not finite or the rotation is zero");
+    m.poses[object].position = position;
+    m.poses[object].rotation = rotation / length;
+}
+
+size_t Engine::objectCount() const { return impl_->poses.size(); }
 
 void Engine::setCamera(const voxel::CameraDesc& camera) { impl_->camera = camera; }
 
@@ -126,7 +161,9 @@ RenderedFrame Engine::render() {
     Impl& m = *impl_;
     m.requireWorld("render");
     if (!m.renderer)
-        m.renderer = std::make_unique<Renderer>(*m.ctx, m.scene->gpu(), m.lighting, m.ao, m.width, m.height);
+        m.renderer =
+            std::make_unique<Renderer>(*m.ctx, m.scene->gpu(), m.lighting, m.ao, m.width, m.height, m.objects.get());
+    if (m.objects) m.renderer->setObjectPoses(m.poses);
     const Camera camera = makeCamera(m.camera, m.width, m.height);
     const FrameStats stats = m.renderer->render(camera, ++m.frame);  // consecutive indices: history accumulates
     m.last = camera;

@@ -260,7 +260,7 @@ TEST_F(CliErrors, StabilityRefusesNonsense) {
     expectRefused(base + " --path orbit --frames 0", "--frames", out);
     expectRefused(base + " --path orbit --fps 1 --frames 1000", "--frames", out);  // past the path's end
     expectRefused(base + " --path orbit --reference-every 1", "--reference-every", out);
-    expectRefused(base + " --path nowhere", "paths: orbit", out);
+    expectRefused(base + " --path nowhere", "paths: dig, orbit", out);
     expectRefused(base + " --path orbit --ao off", "--ao", out);
 }
 
@@ -322,7 +322,7 @@ TEST_F(CliErrors, PathFileIsFoundBesideTheWorld) {
     const test::RunResult r = runGrotto(base + "--path caves-walk.json -o " + (dir_ / "seq").string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_TRUE(fs::exists(dir_ / "seq" / "frame.0001.png"));
-    expectRefused(base + "--path no-such-walk.json -o " + (dir_ / "none").string(), "paths: walk", dir_ / "none");
+    expectRefused(base + "--path no-such-walk.json -o " + (dir_ / "none").string(), "paths: carve, walk", dir_ / "none");
     const test::RunResult missing = runGrotto(base + "--path no-such-walk.json -o " + (dir_ / "none").string());
     EXPECT_NE(missing.err.find("no-such-walk.json"), std::string::npos) << missing.err;
 }

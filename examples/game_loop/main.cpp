@@ -1,6 +1,6 @@
 // A game loop embedding Grotto on the game's own Vulkan device: build a world in
-// memory, then for 120 frames dig a tunnel into a hill while the camera follows
-// the digging, render, and at the end copy Grotto's colour image with the game's
+// memory, then for 120 frames dig a tunnel into a hill while a crate slides and
+// turns in front of it and the camera follows the digging, render, and at the end copy Grotto's colour image with the game's
 // own commands (as a game compositing it would) and write the last frame.
 //   game_loop OUT.png
 #include "vulkan_device.h"
@@ -19,16 +19,20 @@ namespace {
 constexpr int kFrames = 120;
 constexpr glm::ivec3 kSize{96, 40, 96};
 
-// Grass ground with a rock hill on it, as a game's generator would make it.
+// Grass ground with a rock hill on it, as a game's generator would make it, and a
+// crate: an object the game moves itself.
 grotto::voxel::World buildWorld() {
     std::vector<uint8_t> voxels(size_t(kSize.x) * kSize.y * kSize.z, 0);
     for (int z = 0; z < kSize.z; ++z)
         for (int y = 0; y < kSize.y; ++y)
             for (int x = 0; x < kSize.x; ++x) {
                 const bool ground = y < 6, hill = x >= 28 && x < 72 && z >= 24 && z < 64 && y < 30 - std::abs(x - 50) / 3;
-                voxels[(size_t(z) * kSize.y + y) * kSize.x + x] = ground ? 3 : hill ? 1 : 0;  // 3 grass, 1 stone
+                voxels[(size_t(z) * kSize.y + y) * kSize.x + x] = ground ? 2 : hill ? 1 : 0;  // the default palette: 1 stone, 2 grass
             }
-    return grotto::voxel::World::fromDense(kSize, voxels.data(), 1.0, glm::dvec3(0.0));
+    grotto::voxel::WorldDesc desc;
+    desc.objects.push_back({.name = "crate", .material = 4,  // brick .generator = "box", .boxSize = {4, 4, 4},
+                            .pivot = {2.0, 0.0, 2.0}, .keys = {{}}});
+    return grotto::voxel::World::fromDense(kSize, voxels.data(), 1.0, glm::dvec3(0.0), desc);
 }
 
 // Copies Grotto's colour image into a host buffer with the game's own command
@@ -115,13 +119,18 @@ int main(int argc, char** argv) {
         {
             grotto::Engine engine(game.handles(), {.width = 320, .height = 180});
             engine.setWorld(buildWorld());
+            if (engine.objectCount() != 1) throw std::runtime_error("the crate is missing");
             grotto::RenderedFrame frame;
             for (int i = 0; i < kFrames; ++i) {
-                // The digging head moves into the hill's side at z = 64, one sphere a frame.
+                // The digging head moves into the hill's side at z = 63, one sphere a frame.
                 const double t = double(i) / (kFrames - 1);
-                const glm::dvec3 head(50.0, 12.0, 70.0 - 30.0 * t);
+                const glm::dvec3 head(50.0, 11.0, 66.0 - 24.0 * t);
                 carved += engine.edit(grotto::voxel::Edit::carveSphere(head, 3.0)).changed;
-                engine.setCamera({.position = head + glm::dvec3(5.0, 4.0, 16.0), .target = head, .fovDegrees = 60.0});
+                // The crate slides across the tunnel's mouth on the grass, turning as it goes.
+                engine.setObjectPose(0, glm::dvec3(40.0 + 20.0 * t, 6.0, 70.0),
+                                     glm::angleAxis(3.0 * t, glm::dvec3(0.0, 1.0, 0.0)));
+                // The camera stands back outside the hill, looking into the tunnel.
+                engine.setCamera({.position = glm::dvec3(58.0, 16.0, 92.0), .target = head, .fovDegrees = 50.0});
                 frame = engine.render();
             }
             // The game composites Grotto's image itself: its copy must be the frame Grotto reads back.

@@ -8,6 +8,7 @@
 #include "voxel/world.h"
 #include "voxel/world_desc.h"
 
+#include <glm/gtc/quaternion.hpp>
 #include <vulkan/vulkan.h>
 
 #include <cstdint>
@@ -89,6 +90,14 @@ public:
     // are re-meshed and re-uploaded, and temporal AO history near them restarts.
     voxel::EditResult edit(const voxel::Edit& edit);
     voxel::EditResult undo();
+
+    // Objects (the world's "objects", or WorldDesc::objects of a world built in
+    // memory) take the pose their keys give at `seconds`; setObjectPose moves one
+    // (index in the world's order) as the game likes, until the next setTime.
+    // Objects cast and receive AO; their motion feeds the temporal pass.
+    void setTime(double seconds);
+    void setObjectPose(size_t object, glm::dvec3 position, glm::dquat rotation = glm::dquat(1.0, 0.0, 0.0, 0.0));
+    size_t objectCount() const;
 
     void setCamera(const voxel::CameraDesc& camera);
     void setLighting(const voxel::Lighting& lighting);
