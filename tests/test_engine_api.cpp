@@ -1,0 +1,88 @@
+// The game-facing engine (<grotto/grotto.h>), headless with the validation layer on.
+#include "tests/test_util.h"
+
+#include <grotto/grotto.h>
+
+#include <gtest/gtest.h>
+
+namespace grotto {
+namespace {
+
+const voxel::Edit kDig = voxel::Edit::carveBox({{12, 0, 0}, {15, 4, 2}});  // through the wall rooms/dig faces
+const voxel::CameraDesc kView{.position = {18, 6, 15}, .target = {15, 3.5, 2.5}, .fovDegrees = 60};
+
+Pixels renderOnce(Engine& engine) {
+    engine.render();
+    return engine.readPixels();
+}
+
+// An edit between two frames shows in the next one exactly as if the world had
+// been loaded edited: only the touched chunks were re-meshed and re-uploaded.
+TEST(EngineApi, AnEditShowsInTheNextFrameAsAWorldLoadedEdited) {
+    const voxel::AoDesc noAo{.method = "off"};  // colour without temporal history: comparable bit for bit
+    Engine live({.width = 160, .height = 90, .validation = true});
+    live.loadWorld(test::worldsDir() / "rooms.json");
+    live.setAo(noAo);
+    live.setCamera(kView);
+    const Pixels before = renderOnce(live);
+    const voxel::EditResult dug = live.edit(kDig);
+    EXPECT_EQ(dug.changed, 4u * 5u * 3u);
+    const Pixels after = renderOnce(live);
+
+    voxel::World edited = voxel::World::load(test::worldsDir() / "rooms.json");
+    edited.apply(kDig);
+    Engine fresh({.width = 160, .height = 90, .validation = true});
+    fresh.setWorld(std::move(edited));
+    fresh.setAo(noAo);
+    fresh.setCamera(kView);
+    EXPECT_EQ(after.rgba, renderOnce(fresh).rgba);
+    EXPECT_NE(after.rgba, before.rgba) << "the hole is in view";
+
+    live.undo();
+    EXPECT_EQ(renderOnce(live).rgba, before.rgba) << "undone, the wall is whole again";
+    EXPECT_EQ(live.validationMessages(), 0);
+    EXPECT_EQ(fresh.validationMessages(), 0);
+}
+
+// Size, lighting and AO change between frames without a new engine or a reload.
+TEST(EngineApi, SettingsChangeInPlace) {
+    Engine engine({.width = 64, .height = 48, .validation = true});
+    engine.loadWorld(test::worldsDir() / "rooms.json");
+    engine.setCamera(kView);
+    Pixels p = renderOnce(engine);
+    EXPECT_EQ(p.width, 64u);
+    engine.resize(33, 17);
+    p = renderOnce(engine);
+    EXPECT_EQ(p.width, 33u);
+    EXPECT_EQ(p.rgba.size(), 33u * 17u * 4u);
+    voxel::Lighting dark = engine.world().desc().lighting;
+    dark.sunIntensity = 0.0f;
+    dark.ambientIntensity = 0.0f;
+    const Pixels lit = p;
+    engine.setLighting(dark);
+    p = renderOnce(engine);
+    double litSum = 0.0, darkSum = 0.0;
+    for (size_t i = 0; i < p.rgba.size(); ++i) litSum += lit.rgba[i], darkSum += p.rgba[i];
+    EXPECT_LT(darkSum, 0.8 * litSum) << "without sun and ambient only the sky is left";
+    engine.setAo({.method = "gtao", .quality = "low"});
+    const RenderedFrame frame = engine.render();
+    EXPECT_EQ(frame.ao.extent.width, 17u) << "AO at half resolution, rounded up";
+    EXPECT_EQ(frame.color.extent.width, 33u);
+    EXPECT_EQ(engine.validationMessages(), 0);
+}
+
+TEST(EngineApi, MisuseIsRefusedWithAClearError) {
+    Engine engine({.width = 32, .height = 32, .validation = true});
+    EXPECT_THROW(engine.render(), Error);
+    EXPECT_THROW(engine.edit(kDig), Error);
+    EXPECT_THROW(engine.readPixels(), Error);
+    EXPECT_THROW(engine.resize(0, 10), Error);
+    engine.loadWorld(test::worldsDir() / "rooms.json");
+    EXPECT_THROW(engine.setObjectPose(0, glm::dvec3(0.0)), Error) << "rooms has no objects";
+    EXPECT_THROW(engine.edit(voxel::Edit::fillBox({{0, 0, 0}, {1, 1, 1}}, 99)), Error) << "no material 99";
+    EXPECT_THROW(engine.setAo({.quality = "extreme"}), Error);
+    EXPECT_NO_THROW(engine.render());
+}
+
+}  // namespace
+}  // namespace grotto
