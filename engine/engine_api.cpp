@@ -45,18 +45,15 @@ void requireSize(uint32_t width, uint32_t height) {
 
 Engine::Engine(const EngineOptions& options) : impl_(std::make_unique<Impl>()) {
     requireSize(options.width, options.height);
-    impl_->ctx = std::make_unique<vk::Context>(vk::ContextOptions{.validation = options.validation, .deviceName = options.deviceName});
+    impl_->ctx = std::make_unique<vk::Context>(
+        vk::ContextOptions{.validation = options.validation, .deviceName = options.deviceName});
     impl_->width = options.width;
     impl_->height = options.height;
 }
 
 Engine::Engine(const VulkanDevice& device, const EngineOptions& options) : impl_(std::make_unique<Impl>()) {
     requireSize(options.width, options.height);
-    impl_->ctx = std::make_unique<vk::Context>(vk::ExternalDevice{.instance = device.instance,
-                                                                  .physical = device.physicalDevice,
-                                                                  .device = device.device,
-                                                                  .queue = device.queue,
-                                                                  .queueFamily = device.queueFamily});
+    impl_->ctx = std::make_unique<vk::Context>(device);
     impl_->width = options.width;
     impl_->height = options.height;
 }

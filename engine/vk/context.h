@@ -4,6 +4,7 @@
 // (always set by the tests) turns the Khronos validation layer on, and every
 // message it reports is printed and counted.
 #include "engine/vk/check.h"
+#include "engine/vk/external_device.h"
 #include "engine/vk/memory.h"
 
 #include <atomic>
@@ -16,20 +17,6 @@ namespace grotto::vk {
 struct ContextOptions {
     bool validation = false;   // also on when GROTTO_VALIDATION=1
     std::string deviceName;    // substring; empty = GROTTO_DEVICE, else lavapipe, else the first
-};
-
-// A device someone else made (a game's own), which Grotto renders with and never
-// destroys. It must be Vulkan 1.2 or later, created with VK_KHR_push_descriptor and
-// dynamic rendering (core in 1.3, else VK_KHR_dynamic_rendering, with the feature
-// enabled), and `queue` must be of a family with graphics, compute and timestamps.
-// Grotto submits to `queue` from the calling thread: the caller must not submit to
-// it from another thread at the same time (Vulkan's external synchronisation).
-struct ExternalDevice {
-    VkInstance instance = VK_NULL_HANDLE;
-    VkPhysicalDevice physical = VK_NULL_HANDLE;
-    VkDevice device = VK_NULL_HANDLE;
-    VkQueue queue = VK_NULL_HANDLE;
-    uint32_t queueFamily = 0;
 };
 
 class Context {

@@ -27,10 +27,11 @@ grotto::voxel::World buildWorld() {
         for (int y = 0; y < kSize.y; ++y)
             for (int x = 0; x < kSize.x; ++x) {
                 const bool ground = y < 6, hill = x >= 28 && x < 72 && z >= 24 && z < 64 && y < 30 - std::abs(x - 50) / 3;
-                voxels[(size_t(z) * kSize.y + y) * kSize.x + x] = ground ? 2 : hill ? 1 : 0;  // the default palette: 1 stone, 2 grass
+                // The default palette: 1 stone, 2 grass.
+                voxels[(size_t(z) * kSize.y + y) * kSize.x + x] = ground ? 2 : hill ? 1 : 0;
             }
     grotto::voxel::WorldDesc desc;
-    desc.objects.push_back({.name = "crate", .material = 4,  // brick .generator = "box", .boxSize = {4, 4, 4},
+    desc.objects.push_back({.name = "crate", .material = 4 /* brick */, .generator = "box", .boxSize = {4, 4, 4},
                             .pivot = {2.0, 0.0, 2.0}, .keys = {{}}});
     return grotto::voxel::World::fromDense(kSize, voxels.data(), 1.0, glm::dvec3(0.0), desc);
 }

@@ -110,7 +110,7 @@ GameDevice::~GameDevice() {
 }
 
 grotto::VulkanDevice GameDevice::handles() const {
-    return {.instance = instance_, .physicalDevice = physical, .device = device, .queue = queue, .queueFamily = queueFamily};
+    return {.instance = instance_, .physical = physical, .device = device, .queue = queue, .queueFamily = queueFamily};
 }
 
 std::string GameDevice::name() const {

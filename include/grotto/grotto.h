@@ -4,6 +4,7 @@
 // pixels or as Vulkan images on the game's own device. Grotto's Vulkan layer and
 // OpenVDB stay behind it. Link Grotto::engine (find_package(Grotto)).
 #include "common/error.h"
+#include "engine/vk/external_device.h"
 #include "voxel/edit.h"
 #include "voxel/world.h"
 #include "voxel/world_desc.h"
@@ -19,18 +20,9 @@
 
 namespace grotto {
 
-// A Vulkan device the game made and keeps. It must be Vulkan 1.2 or later, made
-// with VK_KHR_push_descriptor and dynamic rendering (core in 1.3, else
-// VK_KHR_dynamic_rendering) enabled; `queue` must belong to a family with
-// graphics, compute and timestamps. Grotto submits to `queue` from the thread
-// that calls render() and edit(): do not submit to it from another thread then.
-struct VulkanDevice {
-    VkInstance instance = VK_NULL_HANDLE;
-    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
-    VkDevice device = VK_NULL_HANDLE;
-    VkQueue queue = VK_NULL_HANDLE;
-    uint32_t queueFamily = 0;
-};
+// A Vulkan device the game made and keeps: instance, physical device, device,
+// queue and its family, with what Grotto needs of them (engine/vk/external_device.h).
+using VulkanDevice = vk::ExternalDevice;
 
 // An image Grotto rendered, owned by Grotto and valid until the next render(),
 // resize(), setAo() or the engine's end.
