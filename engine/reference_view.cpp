@@ -15,7 +15,7 @@ namespace {
 
 // Everything the result depends on: the world's bytes, the camera's values (not
 // its name), the size, radius, rays and the algorithm's version; the objects'
-// grid files and poses.
+// grid files and poses; the edits applied since load, in order.
 std::string cacheKey(const voxel::World& world, const Camera& c, double radius, uint32_t spp,
                      std::span<const voxel::PosedWorld> objects) {
     Fnv1a content;
@@ -31,6 +31,14 @@ std::string cacheKey(const voxel::World& world, const Camera& c, double radius, 
                       p.rotation.z, p.pivot.x, p.pivot.y, p.pivot.z);
         poses += text;
     }
+    std::string edits;
+    for (const voxel::Edit& e : world.editLog()) {
+        char text[256];
+        std::snprintf(text, sizeof text, " edit %d %d %d %d %d %d %d %d %d %.17g %.17g %.17g %.17g", int(e.op),
+                      int(e.shape), e.material, e.box.min.x, e.box.min.y, e.box.min.z, e.box.max.x, e.box.max.y,
+                      e.box.max.z, e.centre.x, e.centre.y, e.centre.z, e.radius);
+        edits += text;
+    }
     char text[1024];
     const glm::dmat3& b = c.basis;
     std::snprintf(text, sizeof text,
@@ -39,7 +47,7 @@ std::string cacheKey(const voxel::World& world, const Camera& c, double radius, 
                   voxel::kReferenceAoVersion, content.hex().c_str(), c.position.x, c.position.y, c.position.z,
                   b[0].x, b[0].y, b[0].z, b[1].x, b[1].y, b[1].z, b[2].x, b[2].y, b[2].z, c.fovY, c.nearPlane,
                   c.farPlane, c.width, c.height, radius, spp);
-    return text + poses;
+    return text + poses + edits;
 }
 
 void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, double radius, uint32_t spp,

@@ -1,9 +1,13 @@
 // The game-facing engine (<grotto/grotto.h>), headless with the validation layer on.
+#include "engine/camera.h"
+#include "engine/reference_view.h"
 #include "tests/test_util.h"
 
 #include <grotto/grotto.h>
 
 #include <gtest/gtest.h>
+
+#include <cstdlib>
 
 namespace grotto {
 namespace {
@@ -69,6 +73,23 @@ TEST(EngineApi, SettingsChangeInPlace) {
     EXPECT_EQ(frame.ao.extent.width, 17u) << "AO at half resolution, rounded up";
     EXPECT_EQ(frame.color.extent.width, 33u);
     EXPECT_EQ(engine.validationMessages(), 0);
+}
+
+// The reference's cache keys on the edits: an edited world is traced afresh, its own
+// result cached apart from the file's.
+TEST(EngineApi, ReferenceCacheTellsAnEditedWorldFromItsFile) {
+    const test::ScratchDir cache;
+    setenv("GROTTO_CACHE_DIR", cache.path.c_str(), 1);
+    voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
+    const Camera camera = makeCamera(kView, 48, 27);
+    const ReferenceView file = referenceView(world, camera, 4.0, 16);
+    EXPECT_TRUE(referenceView(world, camera, 4.0, 16).cacheHit);
+    world.apply(kDig);
+    const ReferenceView dug = referenceView(world, camera, 4.0, 16);
+    EXPECT_FALSE(dug.cacheHit);
+    EXPECT_NE(dug.ao, file.ao) << "the hole is in view";
+    EXPECT_TRUE(referenceView(world, camera, 4.0, 16).cacheHit);
+    unsetenv("GROTTO_CACHE_DIR");
 }
 
 TEST(EngineApi, MisuseIsRefusedWithAClearError) {
