@@ -7,8 +7,8 @@
 // rendered, interleaved, by a renderer without AO and one without the temporal
 // pass, and the median of the per-frame differences is reported.
 #include "app/ao_cost.h"
-#include "app/bench_scene_update.h"
 #include "app/bench_edits.h"
+#include "app/bench_scene_update.h"
 #include "app/commands.h"
 #include "app/cost_difference.h"
 #include "app/options.h"
@@ -16,6 +16,8 @@
 #include "common/error.h"
 #include "engine/render_memory.h"
 #include "engine/renderer.h"
+#include "engine/scene_objects.h"
+#include "voxel/object_worlds.h"
 #include "voxel/world.h"
 
 #include <nlohmann/json.hpp>
@@ -73,6 +75,9 @@ void addBenchCommand(CLI::App& app) {
         vk::Context ctx;
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
         auto scene = uploadScene(ctx, mesh, world.desc());
+        // Objects move as in a flythrough at 24 frames a second, so their motion vectors are paid for.
+        const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
+        auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
         const size_t quadCount = mesh.quads.size();
         const std::optional<voxel::MeshChunkQuads> busiest = busiestChunk(mesh);
         mesh = {};  // the GPU holds the quads now
@@ -82,10 +87,11 @@ void addBenchCommand(CLI::App& app) {
         size_t targetBytes = 0;
         {
             const voxel::Lighting& light = world.desc().lighting;
-            Renderer renderer(ctx, *scene, light, ao, size.width, size.height);
+            Renderer renderer(ctx, *scene, light, ao, size.width, size.height, objects.get());
             targetBytes = renderer.targetBytes();
-            AoCostTimer costs(ctx, *scene, light, ao, size.width, size.height);
+            AoCostTimer costs(ctx, *scene, light, ao, size.width, size.height, objects.get());
             for (int i = 0; i < args->warmup + args->frames; ++i) {
+                if (objects) renderer.setObjectPoses(objects->poses(i / 24.0));
                 // Consecutive indices, so the temporal pass runs as in a flythrough.
                 const FrameStats f = costs.render(renderer, camera, uint32_t(i), i >= args->warmup);
                 if (i < args->warmup) continue;
@@ -104,6 +110,7 @@ void addBenchCommand(CLI::App& app) {
         std::optional<SceneUpdateCost> update;
         if (busiest) update = measureSceneUpdate(*scene, *busiest, 50);
         scene.reset();
+        objects.reset();
         requireNoValidationMessages(ctx);
 
         nlohmann::json j = {

@@ -4,6 +4,8 @@
 #  - foundation: caves at 1280x720 without AO (G-buffer + composite), both cameras;
 #    memory against OpenVDB's memUsage; load + mesh of a ~10M-voxel world
 #  - GTAO: the AO chain per preset on caves at 1280x720, half and full resolution
+#  - live worlds: the CPU cost of edits on caves and of staging a chunk's quads
+#  - moving objects: the yard world's frame at 1280x720
 set -euo pipefail
 cd "$(dirname "$0")/.."
 grotto=${GROTTO:-build/grotto}
@@ -23,3 +25,5 @@ for quality in low medium high ultra; do
   "$grotto" bench worlds/caves.json --size 1280x720 --frames 10 --warmup 2 --quality "$quality" --ao-full-res \
     --json "out/bench/caves-gtao-$quality-fullres.json"
 done
+"$grotto" bench worlds/caves.json --edits --size 320x180 --frames 10 --warmup 2 --json out/bench/caves-edits.json
+"$grotto" bench worlds/yard.json --size 1280x720 --frames 20 --warmup 3 --json out/bench/yard.json
