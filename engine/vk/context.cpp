@@ -188,6 +188,7 @@ void Context::create(const ContextOptions& options) {
 
 void Context::adopt(const ExternalDevice& external) {
     ownsDevice_ = false;
+    pinLoadedLibraries();  // sanitizer builds: the caller's driver and layers stay loaded for the leak check
     if (!external.instance || !external.physical || !external.device || !external.queue)
         throw Error("external Vulkan device", "a handle is null", "give the instance, physical device, device and queue");
     instance = external.instance;
