@@ -298,7 +298,11 @@ void addStabilityCommand(CLI::App& app) {
                 // The sequence's first frame counts as disoccluded everywhere.
                 age = i > first ? disocclusionAge(match, age, now.world.size()) : std::vector<uint16_t>(now.world.size(), 0);
                 std::vector<float> reference;
-                const AoPoints points = aoPoints(world, posed, frame, camera, now);
+                const bool referenceFrame = (i - first) % args->referenceEvery < 2;
+                const bool editWindow = std::any_of(events.begin(), events.end(),
+                                                    [&](const EditEvent& e) { return i - e.frame < kEditWindow; });
+                // The surface points only on frames that trace.
+                const AoPoints points = referenceFrame || editWindow ? aoPoints(world, posed, frame, camera, now) : AoPoints{};
                 for (EditEvent& e : events) {
                     if (i - e.frame >= kEditWindow) continue;
                     // Only the pixels near the edit: the pre- and post-edit references differ nowhere else.
@@ -308,7 +312,7 @@ void addStabilityCommand(CLI::App& app) {
                     e.frames.push_back(editFrame(i, i - e.frame, now.temporal, historyAt(frame, now), pre, post, near,
                                                  existedBefore(e.before, points, near)));
                 }
-                if ((i - first) % args->referenceEvery < 2) {
+                if (referenceFrame) {
                     reference = referenceAt(live.bricks(), world, posed, points, now.world.size(), ao.gtao.radius,
                                             args->spp, rays);
                     errors.push_back({{"frame", i},

@@ -1,6 +1,7 @@
 // The "objects" array of a world file, read strictly (docs/worlds.md).
 #include "voxel/object_desc.h"
 
+#include "voxel/grid_block.h"
 #include "voxel/json_reader.h"
 #include "voxel/world_desc.h"
 
@@ -91,19 +92,10 @@ ObjectDesc parseObject(Reader& o, const fs::path& file, size_t index) {
     if (grid == generator)
         o.fail(grid ? "generator" : "grid", grid ? "given with 'grid'" : "missing",
                "an object's voxels come from a \"grid\": {\"file\": ...} or a \"generator\": {\"kind\": ...}");
-    if (grid) {
-        Reader g = o.child("grid");
-        if (!g.has("file")) g.fail("file", "missing");
-        const std::string f = g.string("file", "");
-        if (f.empty()) g.fail("file", "must not be empty");
-        d.gridFile = fs::path(f).is_absolute() ? fs::path(f) : file.parent_path() / f;
-        d.gridName = g.string("name", "");
-        d.rule = parseSolidRule(g, "rule");
-        d.threshold = g.number("threshold", d.threshold, -1e30, 1e30);
-        d.material = int(g.number("material", d.material, 1, 255));
-    } else {
+    if (grid)
+        readGridBlock(o.child("grid"), file, d);
+    else
         parseGenerator(o.child("generator"), d);
-    }
     d.pivot = o.vec3("pivot", d.pivot);
     d.keys = parseKeys(o);
     return d;

@@ -2,6 +2,7 @@
 
 #include "common/error.h"
 #include "common/file_kind.h"
+#include "voxel/grid_block.h"
 #include "voxel/json_reader.h"
 
 #include <glm/geometric.hpp>
@@ -136,17 +137,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
     w.materials = defaultMaterials();
     Reader r(file, doc, "");
     if (!r.has("grid")) r.fail("grid", "missing", "name the .vdb file: \"grid\": {\"file\": ...}");
-    {
-        Reader g = r.child("grid");
-        if (!g.has("file")) g.fail("file", "missing");
-        std::string f = g.string("file", "");
-        if (f.empty()) g.fail("file", "must not be empty");
-        w.gridFile = fs::path(f).is_absolute() ? fs::path(f) : file.parent_path() / f;
-        w.gridName = g.string("name", "");
-        w.rule = parseSolidRule(g, "rule");
-        w.threshold = g.number("threshold", w.threshold, -1e30, 1e30);
-        w.material = int(g.number("material", w.material, 1, 255));
-    }
+    readGridBlock(r.child("grid"), file, w);
     if (r.has("materials")) {
         const json& m = r.at("materials");
         if (!m.is_array() || m.empty() || m.size() > 255)

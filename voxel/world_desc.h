@@ -23,8 +23,6 @@ enum class SolidRule {
     Int32,     // solid where active and value != 0; the value is the material id
 };
 const char* solidRuleName(SolidRule rule);
-// Reads a solid rule field (a world's or an object's "grid" block); "auto" when absent.
-SolidRule parseSolidRule(Reader& reader, const std::string& key);
 
 struct Material {
     std::string name;
