@@ -75,6 +75,7 @@ void addBenchCommand(CLI::App& app) {
         vk::Context ctx;
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
         auto scene = uploadScene(ctx, mesh, world.desc());
+        scene->occupancy = std::make_unique<GpuOccupancy>(ctx, world);  // for sun shadows and voxel-traced AO
         // Objects move as in a flythrough at 24 frames a second, so their motion vectors are paid for.
         const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
         auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());

@@ -46,7 +46,7 @@ void addCompareCommand(CLI::App& app) {
         requireSurface(ref, world, args->camera);
         double maxError = 0.0;
         for (float e : ref.stderror) maxError = std::max(maxError, double(e));
-        auto scene = uploadScene(ctx, world.mesh(), world.desc());
+        auto scene = uploadScene(ctx, world);
         // As `tradeoff` does: a temporal history gets static frames enough to fill.
         const int frames = std::max(args->warmup + args->frames, ao.gtao.temporalHistory > 0 ? 32 : 0);
         const AoMeasurement m = measureAo(ctx, *scene, world, camera, ao, ref, frames, args->warmup);

@@ -41,8 +41,10 @@ int pathFrameCount(const CameraPath& path, int fps, const std::string& name) {
 }
 
 void addAoFlags(CLI::App* cmd, AoFlags& f) {
-    cmd->add_option("--ao", f.method, "Ambient occlusion: gtao, ssao, hbao (baselines) or off (default: the world's, else gtao)")
-        ->check(CLI::IsMember({"gtao", "ssao", "hbao", "off"}));
+    cmd->add_option("--ao", f.method,
+                    "Ambient occlusion: gtao, voxel (exact rays through the voxels), hybrid (GTAO plus voxel rays), "
+                    "ssao, hbao (baselines) or off (default: the world's, else gtao)")
+        ->check(CLI::IsMember({"gtao", "voxel", "hybrid", "ssao", "hbao", "off"}));
     cmd->add_option("--quality", f.quality,
                     "Preset: low, medium, high, ultra (SSAO: 8, 16, 32, 64 samples), or custom (high's, with --slices, --steps)")
         ->check(CLI::IsMember({"low", "medium", "high", "ultra", "custom"}));
@@ -51,6 +53,7 @@ void addAoFlags(CLI::App* cmd, AoFlags& f) {
     cmd->add_option("--radius", d.radius, "AO radius in world units (> 0)");
     cmd->add_option("--thin-occluder", d.thinOccluder, "Thin-occluder compensation, 0 to 0.7");
     cmd->add_option("--max-distance", d.maxDistance, "View depth where AO has faded out, world units (0 = no limit)");
+    cmd->add_option("--rays", d.rays, "Voxel and hybrid AO: rays per AO pixel per frame, 1 to 64 (makes the quality custom)");
     cmd->add_option("--slices", d.slices, "GTAO slices per pixel, 1 to 32 (makes the quality custom)");
     cmd->add_option("--steps", d.steps, "GTAO steps per side of a slice, 1 to 32 (makes the quality custom)");
     cmd->add_option("--radius-multiplier", d.radiusMultiplier, "Screen-space radius compensation, 0.3 to 3");
@@ -73,6 +76,7 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
         desc.quality = f.quality;
         desc.slices.reset();
         desc.steps.reset();
+        desc.rays.reset();
     }
     AoOptions o = aoOptionsFor(desc, world.voxelSize(), world.desc().source.string());
     o.fullResolution = f.fullResolution;
@@ -82,18 +86,24 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
         const char *flag, *range;
     };
     for (const Count& c : {Count{f.set.slices, "--slices", "1 to 32"}, Count{f.set.steps, "--steps", "1 to 32"},
+                           Count{f.set.rays, "--rays", "1 to 64"},
                            Count{f.set.denoisePasses, "--denoise", "0 to 4"}, Count{f.set.temporalHistory, "--temporal", "0 (off) to 64"}})
         if (c.value && *c.value < 0)
             throw Error(c.flag, std::to_string(*c.value) + " is out of range", std::string("accepted: ") + c.range);
     applyAoOverrides(f.set, o.gtao);
-    if (f.set.slices || f.set.steps) o.quality = "custom";
+    if (f.set.rays) {
+        if (*f.set.rays < 1 || *f.set.rays > 64)
+            throw Error("--rays", std::to_string(*f.set.rays) + " is out of range", "accepted: 1 to 64");
+        o.voxelRays = uint32_t(*f.set.rays);
+    }
+    if (f.set.slices || f.set.steps || f.set.rays) o.quality = "custom";
     validateGtao(o.gtao, kCommandLine);
     return o;
 }
 
 nlohmann::json aoSettingsJson(const AoOptions& ao) {
     const gpu::GtaoSettings& g = ao.gtao;
-    return {{"method", ao.enabled ? aoMethodName(ao.method) : "off"}, {"quality", ao.quality},
+    nlohmann::json j = {{"method", ao.enabled ? aoMethodName(ao.method) : "off"}, {"quality", ao.quality},
             {"full_resolution", ao.fullResolution}, {"ssao_samples", ao.ssaoSamples}, {"radius", g.radius},
             {"radius_multiplier", g.radiusMultiplier}, {"falloff_range", g.falloffRange},
             {"sample_distribution_power", g.sampleDistributionPower}, {"thin_occluder", g.thinOccluderCompensation},
@@ -101,6 +111,8 @@ nlohmann::json aoSettingsJson(const AoOptions& ao) {
             {"strength", g.strength}, {"denoise_blur_beta", g.denoiseBlurBeta}, {"slices", g.sliceCount},
             {"steps", g.stepsPerSlice}, {"denoise", g.denoisePasses}, {"temporal", g.temporalHistory},
             {"max_distance", g.maxDistance}};
+    if (ao.enabled && tracesVoxels(ao.method)) j["rays"] = ao.voxelRays;
+    return j;
 }
 
 voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name) {

@@ -168,7 +168,7 @@ void addTradeoffCommand(CLI::App& app) {
             for (float e : ref.stderror) maxError = std::max(maxError, double(e));
             std::printf("%s: reference %s, %u spp, stderr max %.4f\n", name.c_str(),
                         ref.cacheHit ? "from the cache" : "traced", uint32_t(args->spp), maxError);
-            auto scene = uploadScene(ctx, world.mesh(), world.desc());
+            auto scene = uploadScene(ctx, world);
             for (const Setting& s : kSettings) {
                 AoFlags flags;
                 flags.method = s.method == "gtao+temporal" ? "gtao" : s.method;

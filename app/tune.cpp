@@ -60,7 +60,7 @@ void addTuneCommand(CLI::App& app) {
             requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing
             t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).gtao.radius), uint32_t(args->spp), &ctx);
             requireSurface(t.reference, world, args->camera);
-            t.scene = uploadScene(ctx, world.mesh(), world.desc());
+            t.scene = uploadScene(ctx, world);
             targets.push_back(std::move(t));
         }
         AoFlags flags;

@@ -13,6 +13,8 @@ const char* aoMethodName(AoMethod m) {
     switch (m) {
     case AoMethod::Ssao: return "ssao";
     case AoMethod::Hbao: return "hbao";
+    case AoMethod::Voxel: return "voxel";
+    case AoMethod::Hybrid: return "hybrid";
     default: return "gtao";
     }
 }
@@ -21,7 +23,14 @@ AoMethod parseAoMethod(const std::string& name, const std::string& where) {
     if (name == "gtao") return AoMethod::Gtao;
     if (name == "ssao") return AoMethod::Ssao;
     if (name == "hbao") return AoMethod::Hbao;
-    throw Error(where, "unknown AO method '" + name + "'", "accepted: gtao, ssao, hbao, off");
+    if (name == "voxel") return AoMethod::Voxel;
+    if (name == "hybrid") return AoMethod::Hybrid;
+    throw Error(where, "unknown AO method '" + name + "'", "accepted: gtao, voxel, hybrid, ssao, hbao, off");
+}
+
+uint32_t voxelRaysPreset(AoMethod method, const std::string& quality) {
+    const uint32_t rays = quality == "low" ? 2 : quality == "medium" ? 4 : quality == "ultra" ? 16 : 6;
+    return method == AoMethod::Hybrid ? std::max(rays / 2, 1u) : rays;
 }
 
 gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius) {
@@ -110,6 +119,7 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
     if (o.enabled) o.method = parseAoMethod(d.method, where);
     o.quality = d.quality;
     o.ssaoSamples = d.quality == "low" ? 8 : d.quality == "medium" ? 16 : d.quality == "ultra" ? 64 : 32;
+    o.voxelRays = d.rays ? uint32_t(*d.rays) : voxelRaysPreset(o.method, d.quality);
     // Without a radius of its own the world gets four voxels: always in range,
     // since a world's voxel size is (voxel/world.h).
     static_assert(kDefaultRadiusVoxels * voxel::kMinVoxelSize >= kMinAoRadius &&

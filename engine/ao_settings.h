@@ -8,26 +8,34 @@
 
 namespace grotto {
 
-// The estimator in the AO chain. SSAO and HBAO are baselines for measuring GTAO
-// against (docs/tradeoff.md): they replace only the main pass, writing the same
-// image, so depth prefilter, denoise, temporal and upsample are shared.
-enum class AoMethod { Gtao, Ssao, Hbao };
+// The estimator in the AO chain. Voxel traces exact rays through the world's
+// voxels (the reference's definition, a few rays a frame); hybrid adds such rays
+// to GTAO's horizons. SSAO and HBAO are baselines for measuring GTAO against
+// (docs/tradeoff.md). Each replaces only the main pass, writing the same image,
+// so depth prefilter, denoise, temporal and upsample are shared.
+enum class AoMethod { Gtao, Ssao, Hbao, Voxel, Hybrid };
 
 struct AoOptions {
     bool enabled = true;                // false for --ao off (no AO chain at all)
-    AoMethod method = AoMethod::Gtao;   // --ao gtao | ssao | hbao
+    AoMethod method = AoMethod::Gtao;   // --ao gtao | voxel | hybrid | ssao | hbao
     std::string quality = "high";       // low, medium, high, ultra or custom
     // SSAO kernel size, from the quality: low 8, medium 16, high 32 (custom too), ultra 64.
     // HBAO takes GTAO's sample budget: 2 x slices directions, steps per side.
     uint32_t ssaoSamples = 32;
+    // Voxel and hybrid: rays per AO pixel per frame, from the quality (voxelRaysPreset) or --rays.
+    uint32_t voxelRays = 6;
     bool fullResolution = false;   // run the chain at full resolution (for comparison)
     gpu::GtaoSettings gtao{};
 };
 
-// "gtao", "ssao", "hbao" (the timestamp names the main pass by too).
+// "gtao", "voxel", "hybrid", "ssao", "hbao" (the timestamp names the main pass by too).
 const char* aoMethodName(AoMethod method);
-// Throws grotto::Error (input) naming `where` for anything but gtao, ssao, hbao.
+// Throws grotto::Error (input) naming `where` for anything but those.
 AoMethod parseAoMethod(const std::string& name, const std::string& where);
+// Does the method trace rays through the world's voxels (and so need its occupancy)?
+inline bool tracesVoxels(AoMethod m) { return m == AoMethod::Voxel || m == AoMethod::Hybrid; }
+// Rays per AO pixel per frame of a quality preset (docs/tradeoff.md measured them).
+uint32_t voxelRaysPreset(AoMethod method, const std::string& quality);
 
 // The AO radius's range in world units: the shaders square it (and its product
 // with the radius multiplier) in 32-bit floats, which stay finite and normal

@@ -3,7 +3,9 @@
 namespace grotto {
 
 LiveScene::LiveScene(vk::Context& ctx, voxel::World world)
-    : world_(std::move(world)), mesh_(world_), gpu_(uploadScene(ctx, mesh_.flatten(), world_.desc())) {}
+    : world_(std::move(world)), mesh_(world_), gpu_(uploadScene(ctx, mesh_.flatten(), world_.desc())) {
+    gpu_->occupancy = std::make_unique<GpuOccupancy>(ctx, world_);
+}
 
 voxel::EditResult LiveScene::apply(const voxel::Edit& edit) {
     const voxel::EditResult result = world_.apply(edit);
@@ -31,6 +33,7 @@ void LiveScene::changed(const voxel::EditResult& result) {
         else removed.push_back(origin);
     }
     gpu_->updateChunks(replaced, removed);
+    gpu_->occupancy->update(world_, result.voxels, gpu_->uploads);
     if (bricks_) bricks_->update(world_, result.voxels);
 }
 

@@ -5,6 +5,7 @@
 
 #include "common/error.h"
 #include "engine/object_frame.h"
+#include "engine/passes/trace_inputs.h"
 #include "engine/render_memory.h"
 #include "engine/vk/readback.h"
 #include "shaders/shared/frame.h"
@@ -39,6 +40,7 @@ gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l,
     u.rayStepX = glm::vec4(glm::vec3(right), 0.0f);
     u.rayStepY = glm::vec4(glm::vec3(down), 0.0f);
     u.aoStrength = glm::vec4(ao.enabled ? ao.gtao.strength : 0.0f, 0.0f, 0.0f, 0.0f);
+    u.exposure = glm::vec4(l.exposure, l.toneMap == voxel::ToneMap::Filmic ? 0.0f : 1.0f, 0.0f, 0.0f);
     u.size = {camera.width, camera.height};
     return u;
 }
@@ -93,11 +95,13 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
     if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
         validateGtao(ao_.gtao, "AO settings");
+        requireOccupancy(ao_);
         requireRenderFits(ctx, width, height, ao_, "image size");  // before any allocation can fail halfway
         frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         temporalConstants_ =
             vk::createBuffer(ctx, sizeof(gpu::TemporalConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+        traceConstants_ = vk::createBuffer(ctx, sizeof(gpu::TraceConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         // The objects' normal tables: the composite reads them whether or not there are objects.
         objectUniforms_ = vk::createBuffer(ctx, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         createPasses();
@@ -120,7 +124,8 @@ void Renderer::createPasses() {
     if (!gbufferPass_)
         gbufferPass_ = std::make_unique<GBufferPass>(
             ctx, motion() ? GBufferMode::Motion : objects_ ? GBufferMode::Objects : GBufferMode::World);
-    if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled);
+    if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled, shadows());
+    if (shadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx);
     if (!ao_.enabled) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
     if (!gtaoPass_) gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_);
@@ -139,6 +144,8 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
     // Sampled too: a game may composite it (include/grotto/grotto.h).
     color_ = vk::createImage(ctx, extent, kColorFormat,
                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+    shadow_ = vk::createImage(ctx, shadows() ? extent : VkExtent2D{1, 1}, VK_FORMAT_R32_SFLOAT,
+                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
     // Where objects move, a motion target (written by the G-buffer pass).
     if (motion()) gbuffer_.motion = vk::createImage(ctx, extent, kMotionFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
 
@@ -168,6 +175,7 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
                                VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
         };
+        general(shadow_);
         general(aoTargets_.depthAtlas);
         general(aoTargets_.raw);
         for (const vk::Image& s : aoTargets_.spatial) general(s);
@@ -180,7 +188,7 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
 // Every frame waits for its fence before render() returns, so no GPU work uses
 // the targets here.
 void Renderer::releaseTargets() {
-    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &aoTargets_.raw,
+    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &shadow_, &aoTargets_.raw,
                          &aoTargets_.spatial[0], &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
                          &aoTargets_.full})
         vk::destroy(ctx_, *i);
@@ -201,11 +209,13 @@ void Renderer::release() {
     temporalPass_.reset();
     upsamplePass_.reset();
     compositePass_.reset();
+    shadowPass_.reset();
     releaseTargets();
     vk::destroy(ctx_, objectUniforms_);
     vk::destroy(ctx_, frame_);
     vk::destroy(ctx_, gtaoConstants_);
     vk::destroy(ctx_, temporalConstants_);
+    vk::destroy(ctx_, traceConstants_);
 }
 
 void Renderer::resize(uint32_t width, uint32_t height) {
@@ -215,8 +225,28 @@ void Renderer::resize(uint32_t width, uint32_t height) {
     resetHistory();
 }
 
+void Renderer::setLighting(const voxel::Lighting& lighting) {
+    const bool hadShadows = shadows();
+    lighting_ = lighting;
+    if (hadShadows == shadows()) return;  // uniforms only
+    compositePass_.reset();
+    shadowPass_.reset();
+    createPasses();
+    const uint32_t width = color_.extent.width, height = color_.extent.height;
+    releaseTargets();
+    createTargets(width, height);
+    resetHistory();
+}
+
+void Renderer::requireOccupancy(const AoOptions& ao) const {
+    if (ao.enabled && tracesVoxels(ao.method) && !scene_.occupancy)
+        throw Error("AO settings", std::string("--ao ") + aoMethodName(ao.method) + " traces the world's voxels",
+                    "upload the scene from its world (uploadScene(ctx, world)), not from a mesh alone");
+}
+
 void Renderer::setAo(const AoOptions& ao) {
     validateGtao(ao.gtao, "AO settings");
+    requireOccupancy(ao);
     const uint32_t width = color_.extent.width, height = color_.extent.height;
     requireRenderFits(ctx_, width, height, ao, "AO settings");
     const AoOptions old = std::exchange(ao_, ao);
@@ -224,6 +254,7 @@ void Renderer::setAo(const AoOptions& ao) {
     // What each pass and target is made from (its shader's specialisation, its size).
     const bool chain = old.enabled != ao_.enabled;
     const bool estimator = old.method != ao_.method || old.ssaoSamples != ao_.ssaoSamples ||
+                           old.voxelRays != ao_.voxelRays ||
                            old.gtao.sliceCount != ao_.gtao.sliceCount ||
                            old.gtao.stepsPerSlice != ao_.gtao.stepsPerSlice ||
                            old.gtao.sampleDistributionPower != ao_.gtao.sampleDistributionPower;
@@ -250,7 +281,7 @@ void Renderer::setAo(const AoOptions& ao) {
 
 size_t Renderer::targetBytes() const {
     size_t n = 0;
-    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &aoTargets_.raw, &aoTargets_.spatial[0],
+    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &shadow_, &aoTargets_.raw, &aoTargets_.spatial[0],
                                &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
                                &aoTargets_.full})
         n += i->memory.size;
@@ -267,7 +298,7 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     prefilterPass_->record(cmd, gbuffer_.depth, aoTargets_, gtaoConstants_);
     timestamps_.end(cmd);
     timestamps_.begin(cmd, aoMethodName(ao_.method));  // the estimator: gtao, or a baseline
-    gtaoPass_->record(cmd, gbuffer_.surface, aoTargets_, gtaoConstants_);
+    gtaoPass_->record(cmd, gbuffer_.surface, aoTargets_, gtaoConstants_, traceConstants_, scene_.occupancy.get());
     timestamps_.end(cmd);
     computeToCompute(cmd);
     // With the temporal pass, the final blur is part of it.
@@ -309,6 +340,7 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
         }
     }
     invalidated_.clear();  // edits before this frame; later ones go to the next
+    writeTraceConstants(camera);
 
     // The frame before (for motion and the temporal plane test); this one's own where there was none.
     const Camera& lastCamera = lastCamera_ ? *lastCamera_ : camera;
@@ -357,12 +389,18 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     if (motion())
         vk::transition(cmd, gbuffer_.motion, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
+    if (shadows()) {
+        timestamps_.begin(cmd, "shadow");
+        shadowPass_->record(cmd, gbuffer_, objectUniforms_, shadow_, traceConstants_, *scene_.occupancy);
+        timestamps_.end(cmd);
+    }
     if (ao_.enabled) recordAo(cmd);
+    computeToCompute(cmd);  // the shadow and the AO, before the composite reads them
     vk::transition(cmd, color_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, top, 0, compute,
                    VK_ACCESS_SHADER_WRITE_BIT);
     timestamps_.begin(cmd, "composite");
     compositePass_->record(cmd, gbuffer_, ao_.enabled ? aoHalfOutput() : aoTargets_.raw, color_, frame_,
-                           scene_.palette, gtaoConstants_, objectUniforms_);
+                           scene_.palette, gtaoConstants_, objectUniforms_, shadow_);
     timestamps_.end(cmd);
 
     VK_CHECK(vkEndCommandBuffer(cmd));
@@ -375,6 +413,14 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     lastCamera_ = camera;
     lastPoses_ = poses_;
     return stats;
+}
+
+void Renderer::writeTraceConstants(const Camera& camera) {
+    if (!scene_.occupancy) return;
+    const double radius = ao_.enabled ? ao_.gtao.radius : 1.0;
+    gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy, scene_.voxelSize, scene_.worldOrigin,
+                                           lighting_.sunDirection, ao_.voxelRays, radius);
+    std::memcpy(traceConstants_.mapped(), &t, sizeof t);
 }
 
 void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
@@ -412,6 +458,8 @@ FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     const size_t n = size_t(f.width) * f.height;
     f.color = floats(vk::readImage(ctx_, color_, VK_IMAGE_LAYOUT_GENERAL, 16));
     if (!aovs) return f;
+    f.shadow = shadows() ? floats(vk::readImage(ctx_, shadow_, VK_IMAGE_LAYOUT_GENERAL, 4))
+                         : std::vector<float>(size_t(f.width) * f.height, 1.0f);
 
     const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     const std::vector<float> depth = floats(vk::readImage(ctx_, gbuffer_.depth, ro, 4));

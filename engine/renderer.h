@@ -9,6 +9,7 @@
 #include "engine/passes/depth_prefilter_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/passes/gtao_pass.h"
+#include "engine/passes/shadow_pass.h"
 #include "engine/passes/temporal_pass.h"
 #include "engine/passes/upsample_pass.h"
 #include "engine/scene.h"
@@ -52,6 +53,8 @@ struct FrameImages {
     std::vector<float> aoRawHalf;         // GTAO output at half res: visibility, packed edges
     std::vector<float> motion;            // where objects move: xy previous minus current pixel, z previous
                                           // view depth, 0 for sky (4 floats a pixel); empty otherwise
+    std::vector<float> shadow;            // 1 where the sun reaches a surface, 0 where it does not (full res;
+                                          // 1 everywhere without sun shadows)
 };
 
 class Renderer {
@@ -84,7 +87,7 @@ public:
     // remake only the passes and targets that depend on what changed, and restart
     // the history. Each throws grotto::Error (input) as the constructor would.
     void resize(uint32_t width, uint32_t height);
-    void setLighting(const voxel::Lighting& lighting) { lighting_ = lighting; }
+    void setLighting(const voxel::Lighting& lighting);
     void setAo(const AoOptions& ao);
     // Reads back the last frame; the G-buffer and AO AOVs only when asked for.
     FrameImages readback(const Camera& camera, bool aovs);
@@ -105,6 +108,10 @@ private:
     void release();  // frees whatever exists; null handles are skipped
     void recordAo(VkCommandBuffer cmd);
     bool temporal() const { return ao_.enabled && ao_.gtao.temporalHistory > 0; }
+    // Sun shadows need the scene's occupancy; a scene uploaded from a mesh alone has none.
+    bool shadows() const { return lighting_.sunShadows && scene_.occupancy; }
+    void writeTraceConstants(const Camera& camera);
+    void requireOccupancy(const AoOptions& ao) const;  // throws for a tracing method without one
     const vk::Image& aoHalfOutput() const;  // the chain's last half-res output: what the composite reads
 
     vk::Context& ctx_;
@@ -114,7 +121,8 @@ private:
     GBufferTargets gbuffer_;
     AoTargets aoTargets_;
     vk::Image color_;
-    vk::Buffer frame_, gtaoConstants_, temporalConstants_;
+    vk::Image shadow_;  // full res with shadows, else a 1x1 placeholder
+    vk::Buffer frame_, gtaoConstants_, temporalConstants_, traceConstants_;
     // Objects: their poses now and at the last frame rendered (with its camera),
     // and their normal tables (bound to the composite in every world).
     const SceneObjects* objects_ = nullptr;
@@ -136,6 +144,7 @@ private:
     std::unique_ptr<TemporalPass> temporalPass_;
     std::unique_ptr<UpsamplePass> upsamplePass_;
     std::unique_ptr<CompositePass> compositePass_;
+    std::unique_ptr<ShadowPass> shadowPass_;
     vk::Timestamps timestamps_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;

@@ -136,6 +136,12 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh,
     return scene;
 }
 
+std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::World& world) {
+    auto scene = uploadScene(ctx, world.mesh(), world.desc());
+    scene->occupancy = std::make_unique<GpuOccupancy>(ctx, world);
+    return scene;
+}
+
 const GpuChunk* GpuScene::findChunk(glm::ivec3 index) const {
     const auto it = std::lower_bound(chunks.begin(), chunks.end(), index,
                                      [](const GpuChunk& c, const glm::ivec3& i) { return indexLess(c.index, i); });
@@ -225,11 +231,13 @@ void GpuScene::updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std
 }
 
 void GpuScene::recordUploads(VkCommandBuffer cmd) {
-    uploads.record(cmd, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT,
-                   VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT);
+    // The occupancy's buffers are read by the passes that trace rays.
+    uploads.record(cmd, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_SHADER_READ_BIT);
 }
 
 GpuScene::~GpuScene() {
+    occupancy.reset();
     vk::destroy(ctx, vertices);
     vk::destroy(ctx, indices);
     vk::destroy(ctx, palette);

@@ -1,6 +1,7 @@
 #pragma once
 // The GPU copy of a voxel world: quads, chunk table and material palette.
 // scene.cpp is the one bridge between voxel/ and engine/vk/.
+#include "engine/occupancy.h"
 #include "engine/quad_slots.h"
 #include "engine/staged_uploads.h"
 #include "engine/vk/resources.h"
@@ -49,6 +50,9 @@ struct GpuScene {
     uint64_t stagedBytesLast = 0;       // staged by the last updateChunks
     uint64_t stagedBytesTotal = 0;      // staged by every updateChunks so far
     uint32_t vertexBufferGrowths = 0;   // times the vertex buffer was reallocated larger
+    // The solid voxels for rays (sun shadows, voxel-traced AO); null for a scene
+    // uploaded from a mesh alone, which renders without them.
+    std::unique_ptr<GpuOccupancy> occupancy;
 
     // Replaces the quads of `replaced` chunks (new ones are added; one without
     // quads is removed) and removes the chunks at `removed` (voxel indices of their
@@ -64,12 +68,15 @@ struct GpuScene {
     const GpuChunk* findChunk(glm::ivec3 index) const;
 
     size_t gpuBytes() const {
-        return size_t(vertices.size + indices.size + palette.size + uploads.stagingBytes());
+        return size_t(vertices.size + indices.size + palette.size + uploads.stagingBytes()) +
+               (occupancy ? occupancy->gpuBytes() : 0);
     }
-    size_t hostBytes() const { return chunks.size() * sizeof(GpuChunk); }
+    size_t hostBytes() const { return chunks.size() * sizeof(GpuChunk) + (occupancy ? occupancy->hostBytes() : 0); }
 };
 
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc);
+// The world's mesh and its occupancy: what rendering with sun shadows and voxel-traced AO needs.
+std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::World& world);
 
 // What uploadScene would allocate for these buffers (the vertex buffer with its
 // spare room, before allocator rounding), without a device: for `grotto info`.

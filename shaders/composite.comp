@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Sun Lambert + ambient x AO on surfaces, a gradient sky where nothing was drawn.
+// Sun Lambert x shadow + ambient x AO on surfaces, a gradient sky where nothing was
+// drawn, both through the exposure and the tone map.
 // With AO, one invocation per AO pixel shades its block of full-res pixels and
 // upsamples the AO for them on the way (upsample.glsl): a separate upsample pass
 // would store full-res AO only to load it again here.
@@ -10,6 +11,7 @@
 #include "shared/quad.h"
 
 layout(constant_id = 0) const bool withAo = true;  // false: one invocation per pixel, no AO bound
+layout(constant_id = 3) const bool withShadow = true;  // false: the sun reaches everything, no shadow bound
 // The group's side, set by CompositePass: lavapipe runs 16x16 groups of single
 // pixels faster, 8x8 groups of 2x2 blocks (docs/benchmarks.md).
 layout(local_size_x_id = 1, local_size_y_id = 2) in;
@@ -21,6 +23,7 @@ layout(set = 0, binding = 4, std140) uniform Constants { GtaoConstants gtao; };
 layout(set = 0, binding = 5, rgba32f) uniform readonly image2D aoHalf;  // the AO chain's half-res output
 layout(set = 0, binding = 6) uniform sampler2D depthBuffer;             // full-res D32, reverse-Z
 layout(set = 0, binding = 7, std140) uniform Objects { ObjectUniforms objects; };  // object faces' normals
+layout(set = 0, binding = 8, r32f) uniform readonly image2D shadowImage;  // full res: 1 = sunlit (shadow.comp)
 
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
@@ -43,7 +46,19 @@ vec3 sky(ivec2 pixel) {
     return up >= 0.0 ? mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, sqrt(up)) : frame.skyHorizon.rgb * 0.8;
 }
 
-vec3 shade(uint surface, float ao) {
+// A filmic curve (Narkowicz's fit of the ACES reference transform): a soft toe
+// keeps ambient-lit shade from crushing to black, the shoulder rolls bright sunlit
+// faces off toward white instead of clipping them.
+vec3 filmic(vec3 x) {
+    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+
+vec3 display(vec3 radiance) {
+    vec3 exposed = radiance * frame.exposure.x;
+    return frame.exposure.y == 0.0 ? filmic(exposed) : clamp(exposed, 0.0, 1.0);
+}
+
+vec3 shade(uint surface, float ao, float sunReach) {
     uint face = surfaceFace(surface);
     // The sun term for an axis normal is one component of the sun direction.
     float cosSun = (facePositive(face) ? 1.0 : -1.0) * frame.sunDirection[faceAxis(face)];
@@ -52,16 +67,18 @@ vec3 shade(uint surface, float ao) {
     vec4 material = albedo[surfaceMaterial(surface) - 1u];  // rgb albedo, a: material AO
     vec3 base = material.rgb;
     float visibility = min(mix(1.0, ao, frame.aoStrength.x), material.a);
-    return base * (frame.sunRadiance.rgb * max(cosSun, 0.0) + frame.ambient.rgb * multiBounce(visibility, base));
+    return base * (frame.sunRadiance.rgb * (max(cosSun, 0.0) * sunReach) + frame.ambient.rgb * multiBounce(visibility, base));
 }
+
+float sunlit(ivec2 q) { return withShadow ? imageLoad(shadowImage, q).r : 1.0; }
 
 // Full-res pixel h * scale + offset of AO pixel h's block.
 void compositePixel(AoBlock block, ivec2 h, ivec2 offset) {
     ivec2 q = h * int(gtao.scale) + offset;
     if (any(greaterThanEqual(uvec2(q), frame.size))) return;
     uint surface = texelFetch(surfaceTex, q, 0).r;
-    vec3 color = surface == 0u ? sky(q) : shade(surface, upsampledAo(block, h, offset, surfaceKey(surface)));
-    imageStore(outColor, q, vec4(color, 1.0));
+    vec3 color = surface == 0u ? sky(q) : shade(surface, upsampledAo(block, h, offset, surfaceKey(surface)), sunlit(q));
+    imageStore(outColor, q, vec4(display(color), 1.0));
 }
 
 void main() {
@@ -69,7 +86,7 @@ void main() {
     if (!withAo) {
         if (any(greaterThanEqual(uvec2(h), frame.size))) return;
         uint surface = texelFetch(surfaceTex, h, 0).r;
-        imageStore(outColor, h, vec4(surface == 0u ? sky(h) : shade(surface, 1.0), 1.0));
+        imageStore(outColor, h, vec4(display(surface == 0u ? sky(h) : shade(surface, 1.0, sunlit(h))), 1.0));
         return;
     }
     if (any(greaterThanEqual(uvec2(h), gtao.halfSize))) return;

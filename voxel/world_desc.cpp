@@ -69,6 +69,7 @@ void parseLighting(Reader r, Lighting& l) {
         l.sunDirection = glm::vec3(glm::normalize(d));
         l.sunColor = color(s, "color", l.sunColor);
         l.sunIntensity = float(s.number("intensity", l.sunIntensity, 0.0, 1e3));
+        l.sunShadows = s.boolean("shadows", l.sunShadows);
     }
     if (r.has("ambient")) {
         Reader a = r.child("ambient");
@@ -80,12 +81,17 @@ void parseLighting(Reader r, Lighting& l) {
         l.skyZenith = color(s, "zenith", l.skyZenith);
         l.skyHorizon = color(s, "horizon", l.skyHorizon);
     }
+    l.exposure = float(r.number("exposure", l.exposure, 1e-3, 1e3));
+    const std::string toneMap = r.string("tone_map", l.toneMap == ToneMap::Filmic ? "filmic" : "linear");
+    if (toneMap != "filmic" && toneMap != "linear") r.fail("tone_map", "unknown tone map '" + toneMap + "'", "accepted: filmic, linear");
+    l.toneMap = toneMap == "filmic" ? ToneMap::Filmic : ToneMap::Linear;
 }
 
 void parseAo(Reader r, AoDesc& ao) {
     ao.method = r.string("method", ao.method);
-    if (ao.method != "gtao" && ao.method != "ssao" && ao.method != "hbao" && ao.method != "off")
-        r.fail("method", "unknown AO method '" + ao.method + "'", "accepted: gtao, ssao, hbao, off");
+    if (ao.method != "gtao" && ao.method != "ssao" && ao.method != "hbao" && ao.method != "voxel" &&
+        ao.method != "hybrid" && ao.method != "off")
+        r.fail("method", "unknown AO method '" + ao.method + "'", "accepted: gtao, voxel, hybrid, ssao, hbao, off");
     ao.quality = r.string("quality", ao.quality);
     if (ao.quality != "low" && ao.quality != "medium" && ao.quality != "high" && ao.quality != "ultra" &&
         ao.quality != "custom")
@@ -110,6 +116,7 @@ void parseAo(Reader r, AoDesc& ao) {
     optInt("steps", ao.steps, 1, 32);
     optInt("denoise", ao.denoisePasses, 0, 4);
     optInt("temporal_history", ao.temporalHistory, 0, 64);
+    optInt("rays", ao.rays, 1, 64);
 }
 
 // A path inline, or the name of a path .json beside the world file.

@@ -38,23 +38,32 @@ struct CameraDesc {
     double farPlane = 0.0;              // 0 = infinite (reverse-Z)
 };
 
+// How the composite maps lit radiance (times the exposure) to display values.
+enum class ToneMap {
+    Filmic,  // a filmic curve: a toe for the shadows, highlights rolling off to white
+    Linear,  // clamped to [0, 1] only, for comparisons with unmapped radiance
+};
+
 struct Lighting {
     glm::vec3 sunDirection{0.466002f, 0.828449f, 0.310668f};  // toward the sun, unit length ((0.45, 0.8, 0.3) normalised)
     glm::vec3 sunColor{1.0f, 0.95f, 0.85f};
     float sunIntensity = 1.0f;  // the shipped worlds' daylight, so an untuned .vdb looks like them
+    bool sunShadows = true;     // exact voxel shadows from the sun (docs/lighting.md)
     glm::vec3 ambientColor{0.55f, 0.65f, 0.85f};
     float ambientIntensity = 0.7f;
     glm::vec3 skyZenith{0.28f, 0.45f, 0.78f};
     glm::vec3 skyHorizon{0.75f, 0.82f, 0.92f};
+    float exposure = 1.0f;      // radiance multiplier before the tone map
+    ToneMap toneMap = ToneMap::Filmic;
 };
 
 // The "ao" block of a world file: method, preset and any overrides (unset = preset).
 struct AoDesc {
-    std::string method = "gtao";   // gtao, ssao, hbao (baselines) or off
+    std::string method = "gtao";   // gtao, voxel, hybrid, ssao, hbao (baselines) or off
     std::string quality = "high";  // low, medium, high, ultra, custom
     std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
         finalValuePower, depthMipOffset, strength, denoiseBlurBeta, maxDistance;
-    std::optional<int> slices, steps, denoisePasses, temporalHistory;
+    std::optional<int> slices, steps, denoisePasses, temporalHistory, rays;
 };
 
 struct WorldDesc {

@@ -1,11 +1,13 @@
 #pragma once
-// The AO estimator pass at half resolution: GTAO (gtao.comp), or one of the
-// baselines SSAO (ssao.comp) and HBAO (hbao.comp), which read and write exactly
-// what GTAO does (shaders/ao_estimator.glsl). Reads: the depth MIP chain, the
+// The AO estimator pass at half resolution: GTAO (gtao.comp), voxel-traced AO
+// (voxel.comp), the hybrid of both (hybrid.comp), or one of the baselines SSAO
+// (ssao.comp) and HBAO (hbao.comp), which read and write exactly what GTAO does
+// (shaders/ao_estimator.glsl); voxel and hybrid also bind the trace inputs. Reads: the depth MIP chain, the
 // full-res surface ids (normals), GTAO constants. Writes: AoTargets::raw
 // (visibility, packed edges, depth, face). No history; the noise follows
 // GtaoConstants::frameIndex.
 #include "engine/ao_settings.h"
+#include "engine/occupancy.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"
 
@@ -14,12 +16,15 @@ namespace grotto {
 class GtaoPass {
 public:
     // The loop shape (GTAO: slices, steps, distribution power; SSAO: samples;
-    // HBAO: directions, steps) is compiled in from `ao`.
+    // HBAO: directions, steps; voxel and hybrid: rays too) is compiled in from `ao`.
     GtaoPass(vk::Context& ctx, const AoOptions& ao);
-    void record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants);
+    // `traceConstants` and `occupancy` only for the methods that trace voxels.
+    void record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants,
+                const vk::Buffer& traceConstants, const GpuOccupancy* occupancy);
 
 private:
     vk::Context& ctx_;
+    bool traces_;
     ComputePass pass_;
 };
 

@@ -148,6 +148,10 @@ Binding uniformBuffer(VkBuffer buffer, VkDeviceSize size) {
     return {.type = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, .buffer = {buffer, 0, size}};
 }
 
+Binding storageBuffer(VkBuffer buffer, VkDeviceSize size) {
+    return {.type = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, .buffer = {buffer, 0, size}};
+}
+
 void pushBindings(Context& ctx, VkCommandBuffer cmd, VkPipelineBindPoint point, VkPipelineLayout layout,
                   const std::vector<Binding>& bindings) {
     std::vector<VkWriteDescriptorSet> writes;

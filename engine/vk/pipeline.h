@@ -50,6 +50,7 @@ struct Binding {
 Binding sampledImage(VkSampler sampler, VkImageView view, VkImageLayout layout);
 Binding storageImage(VkImageView view);
 Binding uniformBuffer(VkBuffer buffer, VkDeviceSize size = VK_WHOLE_SIZE);
+Binding storageBuffer(VkBuffer buffer, VkDeviceSize size = VK_WHOLE_SIZE);
 void pushBindings(Context& ctx, VkCommandBuffer cmd, VkPipelineBindPoint point, VkPipelineLayout layout,
                   const std::vector<Binding>& bindings);
 

@@ -19,10 +19,11 @@ struct FrameUniforms {
     vec4 rayStepX;       // xyz: its change per pixel to the right
     vec4 rayStepY;       // xyz: its change per pixel down
     vec4 aoStrength;     // x: 0 = AO off, 1 = full AO
+    vec4 exposure;       // x: radiance multiplier; y: tone map, 0 = filmic, 1 = linear (clamped)
     uvec2 size;          // full-resolution width, height
     uvec2 pad;
 };
-GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 9 * 16 + 16);
+GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16);
 
 // G-buffer push constants: one chunk's corner, camera-relative, and the voxel size.
 struct ChunkPush {

@@ -1,0 +1,26 @@
+#pragma once
+// What every pass that traces the world's voxels binds after its own inputs (the
+// trace constants, then the occupancy's tiles, bricks and masks: shaders/trace.glsl),
+// and those constants for a frame.
+#include "engine/camera.h"
+#include "engine/occupancy.h"
+#include "engine/vk/pipeline.h"
+#include "shaders/shared/trace.h"
+
+#include <vector>
+
+namespace grotto {
+
+// Appends the four trace bindings' types to a pass's own.
+std::vector<VkDescriptorType> withTraceBindings(std::vector<VkDescriptorType> own);
+// Appends the four trace bindings to a pass's own.
+std::vector<vk::Binding> withTraceBindings(std::vector<vk::Binding> own, const vk::Buffer& constants,
+                                           const GpuOccupancy& occupancy);
+
+// The camera's voxel and its place in it are split in double, so rays stay exact
+// far from the origin. `sun`: unit, toward the sun. AO rays: `rays` per pixel of
+// length `radius` (world units).
+gpu::TraceConstants traceConstants(const Camera& camera, const GpuOccupancy& occupancy, double voxelSize,
+                                   glm::dvec3 worldOrigin, glm::vec3 sun, uint32_t rays, double radius);
+
+}  // namespace grotto

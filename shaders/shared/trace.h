@@ -1,0 +1,51 @@
+// The world's solid voxels on the GPU, for exact rays (sun shadows, voxel-traced
+// AO), and the per-frame constants of the passes that trace them. Shared by C++
+// and GLSL.
+//
+// Three storage buffers (engine/occupancy.h builds and updates them):
+//   tiles:  an open-addressing hash table of the non-empty 64^3-voxel tiles, one
+//           uvec4 per entry (x, y, z of the tile as ints, tile slot + 1; 0 = empty),
+//           probed linearly from occupancyHash(tile) & hashMask;
+//   bricks: per tile slot, 512 brick slots of its 8^3 bricks (bx * 64 + by * 8 + bz,
+//           coordinates within the tile; 0 = an empty brick);
+//   masks:  per brick slot, 512 bits in 16 uints, voxel x * 64 + y * 8 + z as in
+//           OpenVDB's leaves; slot 0 is all empty.
+// A tile is one hash probe per ray that enters it and an empty brick or tile is
+// stepped over in one go, so a long shadow ray through open air costs little.
+#ifndef GROTTO_SHARED_TRACE_H
+#define GROTTO_SHARED_TRACE_H
+#include "common.h"
+
+GROTTO_NAMESPACE_BEGIN
+
+#define GROTTO_TILE_SHIFT 6
+#define GROTTO_TRACE_GROUP 8u
+
+GROTTO_INLINE uint occupancyHash(int x, int y, int z) {
+    return (uint(x) * 73856093u) ^ (uint(y) * 19349663u) ^ (uint(z) * 83492791u);
+}
+GROTTO_INLINE uint occupancyBrickEntry(int bx, int by, int bz) {
+    return (uint(bx & 7) << 6) | (uint(by & 7) << 3) | uint(bz & 7);
+}
+GROTTO_INLINE uint occupancyBit(int x, int y, int z) {
+    return (uint(x & 7) << 6) | (uint(y & 7) << 3) | uint(z & 7);
+}
+
+struct TraceConstants {
+    vec4 ndcToViewMul_Add;   // view xy = ((full-res pixel + 0.5) * mul + add) * view depth
+    vec4 depthAB;            // x, y: view depth = y / (depth buffer value + x)
+    vec4 viewToWorld[3];     // the camera's axes (right, up, back): view -> camera-relative world
+    ivec4 cameraCell;        // xyz: the voxel holding the camera (index space)
+    vec4 cameraFraction;     // xyz: the camera's position within that voxel, in voxels; w: 1 / voxel size
+    ivec4 boundsLo;          // xyz: the world's solid voxels lie in [boundsLo, boundsHi]
+    ivec4 boundsHi;          // w of boundsHi: 1 when the world has no solid voxel
+    vec4 sunDirection;       // xyz: unit, toward the sun
+    uint hashMask;           // tiles table entries - 1 (a power of two minus one)
+    uint rays;               // voxel AO: rays per AO pixel per frame
+    float radiusVoxels;      // voxel AO: ray length R in voxels
+    float normalOffset;      // rays leave the surface this many voxels along its normal
+};
+GROTTO_STATIC_ASSERT(sizeof(TraceConstants) == 2 * 16 + 3 * 16 + 5 * 16 + 16);
+
+GROTTO_NAMESPACE_END
+#endif
