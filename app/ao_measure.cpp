@@ -2,9 +2,11 @@
 
 #include "app/options.h"
 #include "common/error.h"
+#include "engine/image_output.h"
 #include "engine/renderer.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <memory>
 
@@ -15,6 +17,19 @@ void requireSurface(const ReferenceView& reference, const voxel::World& world, c
     const std::string view = camera.empty() ? "the default camera" : "camera '" + camera + "'";
     throw Error(world.desc().source.string(), view + " sees no surface: there is nothing to measure",
                 "accepted: a view that shows the world's surfaces; pick another --camera");
+}
+
+double imageChange(const std::vector<float>& withAo, const std::vector<float>& withoutAo,
+                   const std::vector<uint8_t>& surface) {
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < surface.size(); ++i) {
+        if (!surface[i]) continue;
+        for (int c = 0; c < 3; ++c)
+            sum += std::abs(double(toSrgb8(withAo[4 * i + c])) - double(toSrgb8(withoutAo[4 * i + c]))) / 255.0;
+        n += 3;
+    }
+    return n ? sum / double(n) : 0.0;
 }
 
 AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
@@ -40,7 +55,13 @@ AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& w
         frameMs.push_back(wall);
     }
     const FrameImages img = renderer.readback(camera, true);
-    return {aoError(img.ao, reference.ao, reference.surface), costDifference(aoMs), median(frameMs)};
+    if (!withoutAo) {
+        withoutAo = std::make_unique<Renderer>(ctx, scene, world.desc().lighting, off, camera.width, camera.height);
+        withoutAo->render(camera, uint32_t(frames - 1));
+    }
+    const FrameImages plain = withoutAo->readback(camera, false);
+    return {aoError(img.ao, reference.ao, reference.surface), costDifference(aoMs), median(frameMs),
+            imageChange(img.color, plain.color, reference.surface)};
 }
 
 }  // namespace grotto::app

@@ -17,11 +17,20 @@ struct AoMeasurement {
     AoError error;        // of the last frame's full-res AO against the reference
     CostDifference ao;    // all AO costs: prefilter, estimator, denoise, temporal, the composite's upsample
     double msFrame = 0.0; // the whole frame
+    // How much the AO shows in the image: the mean absolute change of the displayed
+    // colour (tone-mapped, sRGB-encoded as a PNG holds it, in [0, 1]), over the RGB
+    // channels of the surface pixels, between the last frame and the same frame
+    // with AO off.
+    double imageChange = 0.0;
 };
 
 // Throws grotto::Error (input) naming the world and camera when the view shows no
 // surface (sky only, an empty world): every error would be a perfect score over no pixels.
 void requireSurface(const ReferenceView& reference, const voxel::World& world, const std::string& camera);
+
+// Mean |sRGB(a) - sRGB(b)| over the RGB of RGBA pixels where `surface` is set (0 for none).
+double imageChange(const std::vector<float>& withAo, const std::vector<float>& withoutAo,
+                   const std::vector<uint8_t>& surface);
 
 // Renders frames 0 .. frames-1 of a static camera (consecutive indices, so the
 // temporal pass accumulates); times are medians over the frames after `warmup`,

@@ -56,6 +56,9 @@ void addCompareCommand(CLI::App& app) {
         char shape[64];
         if (ao.method == AoMethod::Ssao) std::snprintf(shape, sizeof shape, "%u samples", ao.ssaoSamples);
         else if (ao.method == AoMethod::Hbao) std::snprintf(shape, sizeof shape, "%u directions x %u steps", 2 * s.sliceCount, s.stepsPerSlice);
+        else if (ao.method == AoMethod::Voxel) std::snprintf(shape, sizeof shape, "%u rays", ao.voxelRays);
+        else if (ao.method == AoMethod::Hybrid)
+            std::snprintf(shape, sizeof shape, "%u slices x %u steps + %u rays", s.sliceCount, s.stepsPerSlice, ao.voxelRays);
         else std::snprintf(shape, sizeof shape, "%u slices x %u steps", s.sliceCount, s.stepsPerSlice);
         std::printf("%s: %s %s (%s%s, temporal %u), reference R %g, %u spp (%s, stderr max %.4f)\n",
                     world.desc().source.stem().c_str(), aoMethodName(ao.method), ao.quality.c_str(), shape,
@@ -64,6 +67,8 @@ void addCompareCommand(CLI::App& app) {
         std::printf("pixels %zu  mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f  ao %s  frame %.2f ms\n",
                     m.error.pixels, m.error.mae, m.error.rmse, m.error.psnr, m.error.bias, formatCost(m.ao).c_str(),
                     m.msFrame);
+        std::printf("AO in the image: mean |colour change| %.2f%% over surface pixels (AO on against off)\n",
+                    100.0 * m.imageChange);
     });
 }
 

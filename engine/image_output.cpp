@@ -85,9 +85,10 @@ void showAov(FrameImages& f, const std::string& which) {
         const bool sky = !std::isfinite(f.depth[i]);
         if (which == "ao") v = glm::vec3(f.ao[i]);
         else if (which == "edges") v = glm::vec3(f.edges[i]);
+        else if (which == "shadow") v = glm::vec3(f.shadow.empty() ? 1.0f : f.shadow[i]);
         else if (which == "normal") v = sky ? v : glm::vec3(f.normal[3 * i], f.normal[3 * i + 1], f.normal[3 * i + 2]) * 0.5f + 0.5f;
         else if (which == "depth") v = sky ? v : glm::vec3(1.0f - 0.9f * std::log(f.depth[i] / zMin) / logRange);
-        else throw Error("--show", "unknown AOV '" + which + "'", "accepted: ao, normal, depth, edges");
+        else throw Error("--show", "unknown AOV '" + which + "'", "accepted: ao, normal, depth, edges, shadow");
         for (int c = 0; c < 3; ++c) f.color[4 * i + c] = srgbToLinear(std::clamp(v[c], 0.0f, 1.0f));
     }
 }
@@ -129,7 +130,7 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& f, const C
         std::vector<std::string> names = {"R", "G", "B", "A"};
         if (aovs)
             names.insert(names.end(), {"Z", "N.x", "N.y", "N.z", "albedo.R", "albedo.G", "albedo.B", "AO", "AO_raw",
-                                       "AO_spatial", "AO_temporal", "AO_history", "edges"});
+                                       "AO_spatial", "AO_temporal", "AO_history", "edges", "shadow"});
         const int channels = int(names.size());
         OIIO::ImageSpec spec(int(f.width), int(f.height), channels, OIIO::TypeDesc::FLOAT);
         spec.channelnames = names;
@@ -153,6 +154,7 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& f, const C
             p[14] = f.aoTemporal[i];
             p[15] = f.aoHistory[i];
             p[16] = f.edges[i];
+            p[17] = f.shadow.empty() ? 1.0f : f.shadow[i];
         }
         write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT);
     });

@@ -177,7 +177,7 @@ TEST_F(CliErrors, ExrWithAovsCarriesChannelsAndCamera) {
     ASSERT_TRUE(in);
     const OIIO::ImageSpec& spec = in->spec();
     const std::vector<std::string> expected = {"R", "G", "B", "A", "Z", "N.x", "N.y", "N.z",
-                                               "albedo.R", "albedo.G", "albedo.B", "AO", "AO_raw", "AO_spatial", "AO_temporal", "AO_history", "edges"};
+                                               "albedo.R", "albedo.G", "albedo.B", "AO", "AO_raw", "AO_spatial", "AO_temporal", "AO_history", "edges", "shadow"};
     std::vector<std::string> names(spec.channelnames.begin(), spec.channelnames.end());
     std::sort(names.begin(), names.end());
     std::vector<std::string> sorted = expected;
