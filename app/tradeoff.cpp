@@ -24,9 +24,9 @@ struct Row {
     AoMeasurement m;
 };
 
-// Every setting measured: the baselines and GTAO without temporal accumulation,
-// then GTAO high with it, after enough static frames to fill its history. SSAO's
-// presets are labelled by their sample counts.
+// Every setting measured: the baselines, GTAO, voxel-traced and hybrid AO without
+// temporal accumulation, then each method's high preset with it, after enough
+// static frames to fill its history. SSAO's presets are labelled by their sample counts.
 struct Setting {
     std::string method, quality, label;
     int temporal;
@@ -36,6 +36,10 @@ const std::vector<Setting> kSettings = {
     {"hbao", "low", "low", 0},      {"hbao", "medium", "medium", 0}, {"hbao", "high", "high", 0},
     {"hbao", "ultra", "ultra", 0},  {"gtao", "low", "low", 0},      {"gtao", "medium", "medium", 0},
     {"gtao", "high", "high", 0},    {"gtao", "ultra", "ultra", 0},  {"gtao+temporal", "high", "high", 16},
+    {"voxel", "low", "low", 0},     {"voxel", "medium", "medium", 0}, {"voxel", "high", "high", 0},
+    {"voxel+temporal", "high", "high", 16},
+    {"hybrid", "low", "low", 0},    {"hybrid", "medium", "medium", 0}, {"hybrid", "high", "high", 0},
+    {"hybrid+temporal", "high", "high", 16},
 };
 constexpr int kTemporalFrames = 32;
 
@@ -171,7 +175,7 @@ void addTradeoffCommand(CLI::App& app) {
             auto scene = uploadScene(ctx, world);
             for (const Setting& s : kSettings) {
                 AoFlags flags;
-                flags.method = s.method == "gtao+temporal" ? "gtao" : s.method;
+                flags.method = s.method.substr(0, s.method.find('+'));  // "gtao+temporal" is gtao
                 flags.quality = s.quality;
                 flags.set.temporalHistory = s.temporal;
                 const AoOptions ao = resolveAo(world, flags);
