@@ -147,6 +147,20 @@ CLI::Validator finiteRange(double min, double max) {
         "FLOAT in " + accepted);
 }
 
+CLI::Validator wholeRange(int min, int max) {
+    const std::string accepted = std::to_string(min) + " to " + std::to_string(max);
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            char* end = nullptr;
+            const long v = std::strtol(text.c_str(), &end, 10);
+            if (end == text.c_str() || *end != 0) return "'" + text + "' is not a whole number from " + accepted;
+            if (v < min || v > max)
+                return "'" + text + "' is out of range (accepted: a whole number from " + accepted + ")";
+            return {};
+        },
+        "INT in " + accepted);
+}
+
 double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());

@@ -61,6 +61,10 @@ nlohmann::json aoSettingsJson(const AoOptions& ao);
 // with both bounds, so CLI::Range lets it through) and infinities.
 CLI::Validator finiteRange(double min, double max);
 
+// The same for whole-number options: a fraction or a word is refused with the
+// range too, not with CLI11's bare "could not be converted".
+CLI::Validator wholeRange(int min, int max);
+
 // The median (0 for none): per-pass and frame times are reported as medians.
 double median(std::vector<double> v);
 

@@ -1,4 +1,6 @@
-// grotto render WORLD [--camera NAME] [--size WxH] [--aov] -o FILE
+// grotto render WORLD [--camera NAME] [--size WxH] [--aov] [--accumulate N] -o FILE
+// A still: the camera rendered N times with consecutive frame indices, so the
+// temporal pass averages N frames of GTAO noise, and the last frame written.
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
@@ -9,9 +11,34 @@
 #include "engine/renderer.h"
 #include "voxel/world.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <optional>
 
 namespace grotto::app {
+namespace {
+
+// Frames to accumulate: --accumulate, else the temporal history (a converged
+// still), else 1 where there is no temporal pass to average in. The history is
+// raised to --accumulate where that is longer, so every frame counts. Asking
+// for more than one frame without a temporal pass is refused: it would render
+// the same single-frame estimate, whatever the flag says.
+uint32_t framesToAccumulate(const std::optional<int>& requested, const AoFlags& flags, AoOptions& ao) {
+    const bool temporal = ao.enabled && ao.gtao.temporalHistory > 0;
+    if (!requested) return temporal ? ao.gtao.temporalHistory : 1;
+    const uint32_t frames = uint32_t(*requested);
+    if (frames > 1 && !temporal) {
+        const std::string off = !ao.enabled                  ? "AO is off"
+                                : flags.set.temporalHistory ? "--temporal 0 turns the temporal pass off"
+                                                             : "the world's ao.temporal_history is 0";
+        throw Error("--accumulate", std::to_string(frames) + " frames have nothing to average: " + off,
+                    "accepted without the temporal pass: 1, or leave --accumulate out");
+    }
+    if (temporal) ao.gtao.temporalHistory = std::max(ao.gtao.temporalHistory, frames);
+    return frames;
+}
+
+}  // namespace
 
 void addRenderCommand(CLI::App& app) {
     struct Args {
@@ -19,10 +46,12 @@ void addRenderCommand(CLI::App& app) {
         bool aov = false;
         double time = 0.0;
         std::string show;
+        std::optional<int> accumulate;
         AoFlags ao;
     };
     auto args = std::make_shared<Args>();
-    CLI::App* cmd = app.add_subcommand("render", "Render one frame of a world to a PNG or EXR");
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Render a still of a world to a PNG or EXR, its AO converged over --accumulate frames");
     cmd->add_option("world", args->world, "World .json or .vdb")->required();
     cmd->add_option("--camera", args->camera, "Named camera from the world file (default: its default)");
     cmd->add_option("--size", args->size, "Image size WxH (refused when it cannot fit the device's memory)")->capture_default_str();
@@ -32,6 +61,11 @@ void addRenderCommand(CLI::App& app) {
         ->check(CLI::IsMember({"ao", "normal", "depth", "edges", "shadow"}));
     cmd->add_option("--time", args->time, "Seconds: where the world's objects are (their keys)")
         ->capture_default_str()->check(finiteRange(0.0, 1e9));
+    cmd->add_option("--accumulate", args->accumulate,
+                    "Frames of the still camera the temporal pass averages, 1 to 64 (default: the AO's temporal "
+                    "history, 16 unless set, for converged AO; 1: the single-frame estimate; without a temporal "
+                    "pass, 1 frame)")
+        ->check(wholeRange(1, 64));
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -44,7 +78,8 @@ void addRenderCommand(CLI::App& app) {
         requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
         const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
-        const AoOptions ao = resolveAo(world, args->ao);
+        AoOptions ao = resolveAo(world, args->ao);
+        const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao);
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
@@ -53,8 +88,8 @@ void addRenderCommand(CLI::App& app) {
         auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
         {
             Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height, objects.get());
-            if (objects) renderer.setObjectPoses(objects->poses(args->time));
-            renderer.render(camera);
+            if (objects) renderer.setObjectPoses(objects->poses(args->time));  // held for every frame
+            for (uint32_t i = 0; i < frames; ++i) renderer.render(camera, i);
             FrameImages frame = renderer.readback(camera, aovs);
             if (!args->show.empty()) showAov(frame, args->show);
             writeFrame(out, frame, camera, args->aov);
@@ -62,7 +97,8 @@ void addRenderCommand(CLI::App& app) {
         scene.reset();
         objects.reset();
         requireNoValidationMessages(ctx);
-        std::printf("wrote %s (%ux%u, %s)\n", out.c_str(), size.width, size.height, ctx.deviceName().c_str());
+        std::printf("wrote %s (%ux%u, %u frame%s, %s)\n", out.c_str(), size.width, size.height, frames,
+                    frames == 1 ? "" : "s", ctx.deviceName().c_str());
     });
 }
 
