@@ -68,17 +68,17 @@ float traceRay(TraceStart start, vec3 d, float tMax) {
     vec3 far = step(vec3(0.0), dir);  // the side of a box the ray leaves through
     vec3 o = start.fraction;
     float t = 0.0, entered = 0.0;
-    ivec3 cachedTile = ivec3(0x7fffffff);
-    uint tile = 0u;
+    // The last tile's and brick's lookups, reused while the ray stays in them.
+    ivec3 cachedTile = ivec3(0x7fffffff), cachedBrick = ivec3(0x7fffffff);
+    uint tile = 0u, brick = 0u;
     for (uint i = 0u; i < 16384u; ++i) {
         ivec3 rel = ivec3(floor(o + d * t));
-        // Leaving the start voxel through a face the point sits on may land a
-        // rounding short of it: the start voxel is never tested.
         ivec3 cell = start.cell + rel;
         ivec3 tileKey = cell >> GROTTO_TILE_SHIFT;
         if (tileKey != cachedTile) {
             cachedTile = tileKey;
             tile = traceTile(tileKey);
+            cachedBrick = ivec3(0x7fffffff);
         }
         int size = 1;
         ivec3 lo = cell;
@@ -86,11 +86,15 @@ float traceRay(TraceStart start, vec3 d, float tMax) {
             size = 1 << GROTTO_TILE_SHIFT;
             lo = tileKey << GROTTO_TILE_SHIFT;
         } else {
-            uint brick = brickSlots[(tile - 1u) * 512u + occupancyBrickEntry(cell.x >> 3, cell.y >> 3, cell.z >> 3)];
+            ivec3 brickKey = cell >> 3;
+            if (brickKey != cachedBrick) {
+                cachedBrick = brickKey;
+                brick = brickSlots[(tile - 1u) * 512u + occupancyBrickEntry(brickKey.x, brickKey.y, brickKey.z)];
+            }
             if (brick == 0u) {
                 size = 8;
-                lo = (cell >> 3) << 3;
-            } else if (rel != ivec3(0)) {
+                lo = brickKey << 3;
+            } else if (rel != ivec3(0)) {  // the start voxel is never tested
                 uint bit = occupancyBit(cell.x, cell.y, cell.z);
                 if (((masks[brick * 16u + (bit >> 5u)] >> (bit & 31u)) & 1u) != 0u) return entered;
             }
@@ -101,6 +105,37 @@ float traceRay(TraceStart start, vec3 d, float tMax) {
         entered = exitT;
         // A nudge past the face, larger than the rounding of o + d * t.
         t = exitT + 1e-4 + exitT * 5e-7;
+    }
+    return -1.0;
+}
+
+// traceRay for short rays (AO's few voxels): an incremental DDA, one compare and
+// one add per voxel, with no skipping of empty bricks, which short rays rarely cross.
+float traceShortRay(TraceStart start, vec3 d, float tMax) {
+    vec3 dir = mix(d, vec3(1e-30), equal(d, vec3(0.0)));
+    vec3 invAbs = 1.0 / abs(dir);
+    bvec3 up = greaterThan(dir, vec3(0.0));
+    ivec3 stepI = mix(ivec3(-1), ivec3(1), up);
+    // Distance to the first face crossed on each axis, then from face to face.
+    vec3 next = mix(start.fraction, 1.0 - start.fraction, up) * invAbs;
+    ivec3 cell = start.cell;
+    ivec3 cachedBrick = ivec3(0x7fffffff);
+    uint brick = 0u;
+    for (uint i = 0u; i < 4096u; ++i) {
+        float entered = min(next.x, min(next.y, next.z));
+        if (entered > tMax) return -1.0;
+        bvec3 cross = lessThanEqual(next, min(next.yzx, next.zxy));
+        cell += mix(ivec3(0), stepI, cross);
+        next += mix(vec3(0.0), invAbs, cross);
+        ivec3 brickKey = cell >> 3;
+        if (brickKey != cachedBrick) {
+            cachedBrick = brickKey;
+            uint tile = traceTile(cell >> GROTTO_TILE_SHIFT);
+            brick = tile == 0u ? 0u : brickSlots[(tile - 1u) * 512u + occupancyBrickEntry(brickKey.x, brickKey.y, brickKey.z)];
+        }
+        if (brick == 0u) continue;
+        uint bit = occupancyBit(cell.x, cell.y, cell.z);
+        if (((masks[brick * 16u + (bit >> 5u)] >> (bit & 31u)) & 1u) != 0u) return entered;
     }
     return -1.0;
 }

@@ -9,8 +9,9 @@
 //
 // Built with GROTTO_HYBRID (hybrid.comp): GTAO's horizons and the rays together.
 // GTAO sees what the depth buffer holds at little noise; the rays see what it does
-// not (behind silhouettes, under thin walls, off screen). The smaller of the two
-// keeps an occluder either one finds (docs/tradeoff.md measures the alternatives).
+// not (behind silhouettes, under thin walls, off screen). Their mean halves GTAO's
+// bias and the rays' noise variance; the smaller of the two, tried first, keeps
+// every occluder but doubles down on the rays' noise toward dark (docs/tradeoff.md).
 #include "shared/gtao.h"
 #include "shared/quad.h"
 
@@ -48,7 +49,7 @@ float voxelVisibility(ivec2 pixel, float z) {
         float u = fract(noise.x + float(i) * 0.7548776662), a = fract(noise.y + float(i) * 0.5698402910);
         float r = sqrt(u), phi = a * 6.28318530718;
         vec3 dir = tangent * (r * cos(phi)) + bitangent * (r * sin(phi)) + normal * sqrt(max(1.0 - u, 0.0));
-        if (traceRay(start, dir, trace.radiusVoxels) < 0.0) ++open;
+        if (traceShortRay(start, dir, trace.radiusVoxels) < 0.0) ++open;
     }
     return float(open) / float(specRays);
 }
@@ -59,8 +60,8 @@ void main() {
     float z = gtaoDepth(p, 0);
     float fade = gtaoDistanceFade(z);
 #ifdef GROTTO_HYBRID
-    vec2 result = gtaoPixel(p);
-    if (z < kGtaoSky && fade < 1.0) result.x = min(result.x, mix(voxelVisibility(p, z), 1.0, fade));
+    vec2 result = gtaoPixel(p);  // the distance fade is in it already
+    if (z < kGtaoSky && fade < 1.0) result.x = 0.5 * (result.x + mix(voxelVisibility(p, z), 1.0, fade));
 #else
     vec2 result = vec2(1.0, gtaoPixelEdges(p));
     if (z < kGtaoSky && fade < 1.0) result.x = mix(voxelVisibility(p, z), 1.0, fade);
