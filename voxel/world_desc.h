@@ -53,7 +53,7 @@ struct Lighting {
     float ambientIntensity = 0.7f;
     glm::vec3 skyZenith{0.28f, 0.45f, 0.78f};
     glm::vec3 skyHorizon{0.75f, 0.82f, 0.92f};
-    float exposure = 1.0f;      // radiance multiplier before the tone map
+    float exposure = 0.6f;      // radiance multiplier before the tone map (docs/lighting.md: why 0.6)
     ToneMap toneMap = ToneMap::Filmic;
 };
 
