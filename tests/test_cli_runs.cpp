@@ -174,15 +174,17 @@ TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
         for (int i = 0; i < 4; ++i) std::getline(fields, field, ',');  // world,method,quality,ms_ao
         EXPECT_GE(std::stod(field), 0.0) << "a negative cost: " << line;
     }
-    EXPECT_EQ(rows, 12);  // ssao x3, hbao x4, gtao x4, gtao+temporal
-    // The same rows as a Markdown table (header, rule, 12 rows), SSAO by sample count.
+    EXPECT_EQ(rows, 20);  // ssao x3, hbao x4, gtao x4, gtao+temporal, voxel x3, voxel+temporal, hybrid x3, hybrid+temporal
+    // The same rows as a Markdown table (header, rule, 20 rows), SSAO by sample count.
     std::ifstream md(markdown);
     std::vector<std::string> table;
     while (std::getline(md, line)) table.push_back(line);
-    ASSERT_EQ(table.size(), 14u);
+    ASSERT_EQ(table.size(), 22u);
     EXPECT_EQ(table[0].rfind("| world | method | quality |", 0), 0u);
     EXPECT_EQ(table[2].rfind("| cam | ssao | 8 |", 0), 0u) << table[2];
     EXPECT_EQ(table[13].rfind("| cam | gtao+temporal | high |", 0), 0u) << table[13];
+    EXPECT_EQ(table[17].rfind("| cam | voxel+temporal | high |", 0), 0u) << table[17];
+    EXPECT_EQ(table[21].rfind("| cam | hybrid+temporal | high |", 0), 0u) << table[21];
 }
 
 }  // namespace
