@@ -130,7 +130,9 @@ void GpuOccupancy::update(const voxel::World& world, const voxel::IndexBox& chan
         entries[at] = mask;
         maskWrites.push_back({mask, &b});
     }
-    // Grow what no longer fits, keeping what the GPU holds.
+    // Grow what no longer fits, keeping what the GPU holds. The new room reads zero
+    // (StagedUploads clears it): a new tile's brick slots are written only where
+    // its bricks are, so its other slots rely on that.
     if (VkDeviceSize(brickSlots_.size()) * sizeof(uint32_t) > bricks_.size)
         uploads.reallocate(bricks_, withRoom(tileSlots_.size(), kTileBytes), kUsage, true);
     if (VkDeviceSize(maskSlots_) * kMaskBytes > masks_.size)

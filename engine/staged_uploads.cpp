@@ -55,9 +55,9 @@ void StagedUploads::reallocate(vk::Buffer& buffer, VkDeviceSize size, VkBufferUs
         for (Write& w : writes_)
             if (w.dst == old) w.dst = fresh.buffer;
         if (unused)
-            into->to = fresh.buffer;
+            *into = {into->from, fresh.buffer, std::min(into->size, size), size};
         else if (old)
-            moves_.push_back({old, fresh.buffer, std::min(buffer.size, size)});
+            moves_.push_back({old, fresh.buffer, std::min(buffer.size, size), size});
     } else {
         std::erase_if(writes_, [&](const Write& w) { return w.dst == old; });
         if (unused) moves_.erase(into);
@@ -83,6 +83,9 @@ void StagedUploads::record(VkCommandBuffer cmd, VkPipelineStageFlags dstStage, V
     for (const Move& m : moves_) {
         const VkBufferCopy region{.srcOffset = 0, .dstOffset = 0, .size = m.size};
         vkCmdCopyBuffer(cmd, m.from, m.to, 1, &region);
+        // The new room: fresh memory holds whatever it held before, and a user may
+        // rely on unwritten room reading zero (the occupancy's absent bricks do).
+        if (m.toSize > m.size) vkCmdFillBuffer(cmd, m.to, m.size, VK_WHOLE_SIZE, 0u);
     }
     if (!moves_.empty() && !writes_.empty())  // the writes land on top of the moved contents
         transferBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);

@@ -27,8 +27,9 @@ public:
     // Replaces `buffer` by a new one of `size` bytes and `usage` (plus transfer
     // source and destination). With `keepContents` the old contents are copied
     // into it on the GPU at record(), before the pending writes, which move to the
-    // new buffer; without, pending writes into the old one are dropped. The old
-    // buffer is freed once the frame that records the copy has finished.
+    // new buffer, and the room past them reads zero; without, pending writes into
+    // the old one are dropped. The old buffer is freed once the frame that records
+    // the copy has finished.
     void reallocate(vk::Buffer& buffer, VkDeviceSize size, VkBufferUsageFlags usage, bool keepContents);
 
     bool pending() const { return !writes_.empty() || !moves_.empty(); }
@@ -39,7 +40,7 @@ public:
 
 private:
     struct Write { VkBuffer dst; VkDeviceSize src, offset, size; };
-    struct Move { VkBuffer from, to; VkDeviceSize size; };
+    struct Move { VkBuffer from, to; VkDeviceSize size, toSize; };  // copy `size` bytes, zero the rest
 
     void retire(vk::Buffer& buffer);
 
