@@ -101,7 +101,7 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
         gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         temporalConstants_ =
             vk::createBuffer(ctx, sizeof(gpu::TemporalConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-        traceConstants_ = vk::createBuffer(ctx, sizeof(gpu::TraceConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+        traceConstants_ = vk::createBuffer(ctx, sizeof(gpu::TraceConstants), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
         // The objects' normal tables: the composite reads them whether or not there are objects.
         objectUniforms_ = vk::createBuffer(ctx, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         createPasses();

@@ -3,7 +3,10 @@
 // the tiles, bricks and masks buffers at the next three.
 #include "shared/trace.h"
 
-layout(set = 0, binding = GROTTO_TRACE_BINDING, std140) uniform Trace { TraceConstants trace; };
+// A storage buffer, not a uniform block: lavapipe (Mesa 22) inlines uniform values
+// that steer branches into a shader variant compiled at dispatch time, and with
+// these constants it compiled (and leaked) one for the shadow pass every frame.
+layout(set = 0, binding = GROTTO_TRACE_BINDING, std430) readonly buffer Trace { TraceConstants trace; };
 layout(set = 0, binding = GROTTO_TRACE_BINDING + 1, std430) readonly buffer Tiles { ivec4 tiles[]; };
 layout(set = 0, binding = GROTTO_TRACE_BINDING + 2, std430) readonly buffer Bricks { uint brickSlots[]; };
 layout(set = 0, binding = GROTTO_TRACE_BINDING + 3, std430) readonly buffer Masks { uint masks[]; };

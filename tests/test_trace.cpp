@@ -53,7 +53,7 @@ public:
         // Only hashMask matters to traceSolid; any camera fills the rest.
         const gpu::TraceConstants t = traceConstants(Camera{}, occupancy, 1.0, glm::dvec3(0.0),
                                                      glm::vec3(0.0f, 1.0f, 0.0f), 1, 1.0);
-        vk::Buffer constants = vk::createBuffer(ctx_, sizeof t, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+        vk::Buffer constants = vk::createBuffer(ctx_, sizeof t, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
         std::memcpy(constants.mapped(), &t, sizeof t);
         constexpr size_t kChunk = size_t(1) << 21, kWidth = 1024;
         vk::Buffer in = vk::createBuffer(ctx_, std::min(cells.size(), kChunk) * sizeof(glm::ivec4),

@@ -6,14 +6,13 @@
 namespace grotto {
 
 std::vector<VkDescriptorType> withTraceBindings(std::vector<VkDescriptorType> own) {
-    own.insert(own.end(), {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
-                           VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    own.insert(own.end(), 4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     return own;
 }
 
 std::vector<vk::Binding> withTraceBindings(std::vector<vk::Binding> own, const vk::Buffer& constants,
                                            const GpuOccupancy& occupancy) {
-    own.insert(own.end(), {vk::uniformBuffer(constants.buffer), vk::storageBuffer(occupancy.tiles().buffer),
+    own.insert(own.end(), {vk::storageBuffer(constants.buffer), vk::storageBuffer(occupancy.tiles().buffer),
                            vk::storageBuffer(occupancy.bricks().buffer), vk::storageBuffer(occupancy.masks().buffer)});
     return own;
 }
