@@ -125,7 +125,7 @@ void Renderer::createPasses() {
         gbufferPass_ = std::make_unique<GBufferPass>(
             ctx, motion() ? GBufferMode::Motion : objects_ ? GBufferMode::Objects : GBufferMode::World);
     if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled, shadows());
-    if (shadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx);
+    if (shadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows());
     if (!ao_.enabled) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
     if (!gtaoPass_) gtaoPass_ = std::make_unique<GtaoPass>(ctx, ao_);
@@ -146,6 +146,9 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
     shadow_ = vk::createImage(ctx, shadows() ? extent : VkExtent2D{1, 1}, VK_FORMAT_R32_SFLOAT,
                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+    if (softShadows())
+        for (vk::Image& h : shadowHistory_)
+            h = vk::createImage(ctx, extent, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT);
     // Where objects move, a motion target (written by the G-buffer pass).
     if (motion()) gbuffer_.motion = vk::createImage(ctx, extent, kMotionFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
 
@@ -176,6 +179,7 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
                                VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
         };
         general(shadow_);
+        for (const vk::Image& h : shadowHistory_) general(h);
         general(aoTargets_.depthAtlas);
         general(aoTargets_.raw);
         for (const vk::Image& s : aoTargets_.spatial) general(s);
@@ -183,12 +187,13 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
         general(aoTargets_.full);
     });
     historyIndex_ = 0;
+    shadowCamera_.reset();
 }
 
 // Every frame waits for its fence before render() returns, so no GPU work uses
 // the targets here.
 void Renderer::releaseTargets() {
-    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &shadow_, &aoTargets_.raw,
+    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &shadow_, &shadowHistory_[0], &shadowHistory_[1], &aoTargets_.raw,
                          &aoTargets_.spatial[0], &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
                          &aoTargets_.full})
         vk::destroy(ctx_, *i);
@@ -226,9 +231,12 @@ void Renderer::resize(uint32_t width, uint32_t height) {
 }
 
 void Renderer::setLighting(const voxel::Lighting& lighting) {
-    const bool hadShadows = shadows();
-    lighting_ = lighting;
-    if (hadShadows == shadows()) return;  // uniforms only
+    const bool hadShadows = shadows(), wasSoft = softShadows();
+    const voxel::Lighting old = std::exchange(lighting_, lighting);
+    if (hadShadows == shadows() && wasSoft == softShadows()) {  // uniforms only
+        if (old.sunDirection != lighting_.sunDirection || old.sunAngle != lighting_.sunAngle) shadowCamera_.reset();
+        return;
+    }
     compositePass_.reset();
     shadowPass_.reset();
     createPasses();
@@ -281,7 +289,7 @@ void Renderer::setAo(const AoOptions& ao) {
 
 size_t Renderer::targetBytes() const {
     size_t n = 0;
-    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &shadow_, &aoTargets_.raw, &aoTargets_.spatial[0],
+    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &shadow_, &shadowHistory_[0], &shadowHistory_[1], &aoTargets_.raw, &aoTargets_.spatial[0],
                                &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
                                &aoTargets_.full})
         n += i->memory.size;
@@ -339,8 +347,8 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
             previousFrame_ = frameIndex;
         }
     }
+    writeTraceConstants(camera, frameIndex);  // before the edits are cleared: they restart a soft sun's history
     invalidated_.clear();  // edits before this frame; later ones go to the next
-    writeTraceConstants(camera);
 
     // The frame before (for motion and the temporal plane test); this one's own where there was none.
     const Camera& lastCamera = lastCamera_ ? *lastCamera_ : camera;
@@ -391,7 +399,10 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     if (shadows()) {
         timestamps_.begin(cmd, "shadow");
-        shadowPass_->record(cmd, gbuffer_, objectUniforms_, shadow_, traceConstants_, *scene_.occupancy);
+        const vk::Image& history = shadowHistory_[shadowHistoryIndex_];
+        if (softShadows()) shadowHistoryIndex_ = 1 - shadowHistoryIndex_;  // reads the last, writes the other
+        shadowPass_->record(cmd, gbuffer_, objectUniforms_, shadow_, traceConstants_, *scene_.occupancy, &history,
+                            &shadowHistory_[shadowHistoryIndex_]);
         timestamps_.end(cmd);
     }
     if (ao_.enabled) recordAo(cmd);
@@ -415,11 +426,25 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     return stats;
 }
 
-void Renderer::writeTraceConstants(const Camera& camera) {
+void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
     if (!scene_.occupancy) return;
     const double radius = ao_.enabled ? ao_.gtao.radius : 1.0;
     gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy, scene_.voxelSize, scene_.worldOrigin,
                                            lighting_.sunDirection, ao_.voxelRays, radius);
+    t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
+    t.frameIndex = frameIndex;
+    if (softShadows()) {
+        // As the AO's history: consecutive frames only. An edit anywhere may move a
+        // shadow anywhere along the sun's rays, so it restarts the whole history.
+        if (frameIndex != shadowFrame_ + 1u || !invalidated_.boxes().empty()) shadowCamera_.reset();
+        const gpu::TemporalConstants r = temporalConstants(camera, shadowCamera_ ? &*shadowCamera_ : nullptr);
+        t.currentToPrevious = r.currentToPrevious;
+        t.previousNdcToViewMul_Add = r.previousNdcToViewMul_Add;
+        t.shadowHistory = temporal() ? ao_.gtao.temporalHistory : kDefaultTemporalHistory;
+        t.shadowReset = (r.reset != 0u ? 1u : 0u) | (objects_ && objects_->moving ? 2u : 0u);
+        shadowCamera_ = camera;
+        shadowFrame_ = frameIndex;
+    }
     std::memcpy(traceConstants_.mapped(), &t, sizeof t);
 }
 

@@ -75,7 +75,10 @@ public:
     void setObjectPoses(std::span<const voxel::ObjectPose> poses);
     const std::vector<voxel::ObjectPose>& objectPoses() const { return poses_; }
     // A camera cut: the next frame starts without history.
-    void resetHistory() { previousCamera_.reset(); }
+    void resetHistory() {
+        previousCamera_.reset();
+        shadowCamera_.reset();
+    }
     // Voxels in `changed` (world units) were edited: in the next frame, every pixel
     // whose surface lies within the AO's reach of it (aoReach: the radius, times
     // GTAO's multiplier) starts its temporal history afresh. Applies to the next
@@ -110,7 +113,9 @@ private:
     bool temporal() const { return ao_.enabled && ao_.gtao.temporalHistory > 0; }
     // Sun shadows need the scene's occupancy; a scene uploaded from a mesh alone has none.
     bool shadows() const { return lighting_.sunShadows && scene_.occupancy; }
-    void writeTraceConstants(const Camera& camera);
+    // A sun of finite size: jittered rays accumulated in a history (shadow_pass.h).
+    bool softShadows() const { return shadows() && lighting_.sunAngle > 0.0f; }
+    void writeTraceConstants(const Camera& camera, uint32_t frameIndex);
     void requireOccupancy(const AoOptions& ao) const;  // throws for a tracing method without one
     const vk::Image& aoHalfOutput() const;  // the chain's last half-res output: what the composite reads
 
@@ -122,6 +127,12 @@ private:
     AoTargets aoTargets_;
     vk::Image color_;
     vk::Image shadow_;  // full res with shadows, else a 1x1 placeholder
+    // A soft sun's history, ping-ponged as the AO's, with the camera and frame index
+    // of its last frame (none: the next frame starts afresh).
+    vk::Image shadowHistory_[2];
+    uint32_t shadowHistoryIndex_ = 0;
+    std::optional<Camera> shadowCamera_;
+    uint32_t shadowFrame_ = 0;
     vk::Buffer frame_, gtaoConstants_, temporalConstants_, traceConstants_;
     // Objects: their poses now and at the last frame rendered (with its camera),
     // and their normal tables (bound to the composite in every world).

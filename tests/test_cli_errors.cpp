@@ -246,6 +246,8 @@ TEST_F(CliErrors, NonsenseAoSettings) {
     expectRefused(render(preset), "ao.quality", out());
     const auto far = writeText("far.json", R"({"grid": {"file": "good.vdb"}, "ao": {"max_distance": -5}})");
     expectRefused(render(far), "ao.max_distance", out());
+    const auto sun = writeText("sun.json", R"({"grid": {"file": "good.vdb"}, "lighting": {"sun": {"angle": 45}}})");
+    expectRefused(render(sun), "lighting.sun.angle", out());
 }
 
 TEST_F(CliErrors, ShowWritesOneAovAsPng) {

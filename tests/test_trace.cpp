@@ -12,6 +12,7 @@
 #include "engine/surface_points.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
+#include "tests/sun_rays.h"
 #include "tests/test_util.h"
 #include "voxel/brick_table.h"
 #include "voxel/solid.h"
@@ -340,26 +341,12 @@ ShadowCheck checkShadows(const voxel::World& world, const FrameImages& f, const 
     ShadowCheck c;
     for (size_t i = 0; i < f.surfaceIds.size(); ++i)
         if (f.surfaceIds[i] == 0) c.skyWrong += f.shadow[i] != 1.0f;
-    const voxel::IndexBox bounds = world.bounds();
-    const double reach = 1e7 * vs;  // the bounds end every ray sooner
-    std::optional<voxel::BrickTable> table;
-    // Is the sun blocked from p (world units)? As in the reference, the voxel the
-    // ray starts in counts as open: it is the empty voxel in front of the face, but
-    // at a concave edge the point, placed from float depth, may lie a hair inside
-    // the neighbouring solid voxel, where World::raycast stops at once. Such rays
-    // go on through the reference's own traversal (BrickTable::hitWithin, which
-    // skips the start voxel), to where they leave the bounds.
-    auto blocked = [&](const glm::dvec3& p, bool count) {
-        const std::optional<voxel::RayHit> hit = world.raycast(p, sun, reach);
-        const glm::dvec3 index = (p - world.origin()) / vs;
-        if (!hit || hit->face != -1 || hit->voxel != glm::ivec3(glm::floor(index))) return hit.has_value();
-        c.startInside += count;
-        if (!table) table.emplace(world);
-        double exit = reach / vs;  // where the ray leaves the bounds (it starts inside them)
-        for (int a = 0; a < 3; ++a)
-            if (sun[a] != 0.0)
-                exit = std::min(exit, ((sun[a] > 0 ? bounds.max[a] + 1.0 : double(bounds.min[a])) - index[a]) / sun[a]);
-        return table->hitWithin(index, sun, exit);
+    test::SunRays rays(world);
+    auto blocked = [&](const glm::dvec3& p, bool count) {  // counts the rays from inside a voxel, not the nudges'
+        const size_t before = rays.startsInside;
+        const bool b = rays.blocked(p, sun);
+        if (count) c.startInside += rays.startsInside - before;
+        return b;
     };
     c.surface = pts.points.size();
     for (size_t k = 0; k < pts.points.size(); ++k) {

@@ -70,6 +70,7 @@ void parseLighting(Reader r, Lighting& l) {
         l.sunColor = color(s, "color", l.sunColor);
         l.sunIntensity = float(s.number("intensity", l.sunIntensity, 0.0, 1e3));
         l.sunShadows = s.boolean("shadows", l.sunShadows);
+        l.sunAngle = float(s.number("angle", l.sunAngle, 0.0, 30.0));
     }
     if (r.has("ambient")) {
         Reader a = r.child("ambient");

@@ -49,6 +49,7 @@ struct Lighting {
     glm::vec3 sunColor{1.0f, 0.95f, 0.85f};
     float sunIntensity = 1.0f;  // the shipped worlds' daylight, so an untuned .vdb looks like them
     bool sunShadows = true;     // exact voxel shadows from the sun (docs/lighting.md)
+    float sunAngle = 0.0f;      // the sun's angular diameter in degrees; 0: a point, hard shadows
     glm::vec3 ambientColor{0.55f, 0.65f, 0.85f};
     float ambientIntensity = 0.7f;
     glm::vec3 skyZenith{0.28f, 0.45f, 0.78f};

@@ -4,21 +4,29 @@
 
 namespace grotto {
 
-ShadowPass::ShadowPass(vk::Context& ctx)
-    : ctx_(ctx),
-      pass_(ctx, "shadow.comp",
-            withTraceBindings({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                               VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE})) {}
+namespace {
+
+std::vector<VkDescriptorType> bindings(bool soft) {
+    std::vector<VkDescriptorType> b = {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                       VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+    if (soft) b.insert(b.end(), 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
+    return withTraceBindings(std::move(b));
+}
+
+}  // namespace
+
+ShadowPass::ShadowPass(vk::Context& ctx, bool soft)
+    : ctx_(ctx), soft_(soft), pass_(ctx, soft ? "soft_shadow.comp" : "shadow.comp", bindings(soft)) {}
 
 void ShadowPass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Buffer& objectUniforms,
-                        const vk::Image& shadow, const vk::Buffer& traceConstants, const GpuOccupancy& occupancy) {
+                        const vk::Image& shadow, const vk::Buffer& traceConstants, const GpuOccupancy& occupancy,
+                        const vk::Image* history, const vk::Image* nextHistory) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    pass_.dispatch(cmd,
-                   withTraceBindings({vk::sampledImage(ctx_.pointSampler, g.depth.view, ro),
-                                      vk::sampledImage(ctx_.pointSampler, g.surface.view, ro),
-                                      vk::uniformBuffer(objectUniforms.buffer), vk::storageImage(shadow.view)},
-                                     traceConstants, occupancy),
-                   shadow.extent, GROTTO_TRACE_GROUP);
+    std::vector<vk::Binding> b = {vk::sampledImage(ctx_.pointSampler, g.depth.view, ro),
+                                  vk::sampledImage(ctx_.pointSampler, g.surface.view, ro),
+                                  vk::uniformBuffer(objectUniforms.buffer), vk::storageImage(shadow.view)};
+    if (soft_) b.insert(b.end(), {vk::storageImage(history->view), vk::storageImage(nextHistory->view)});
+    pass_.dispatch(cmd, withTraceBindings(std::move(b), traceConstants, occupancy), shadow.extent, GROTTO_TRACE_GROUP);
 }
 
 }  // namespace grotto

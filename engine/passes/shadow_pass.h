@@ -3,6 +3,9 @@
 // sun through the world's voxels. Reads: the G-buffer's depth and surface ids, the
 // objects' normal tables, the trace constants and the occupancy. Writes: R32F
 // shadow, 1 = sunlit, 0 = blocked or facing away. Objects cast no shadow.
+// A soft sun (soft_shadow.comp) jitters each ray within the sun's disc per frame
+// and also reads the last frame's RGBA32F history and writes the next; the shadow
+// is the accumulated visibility.
 #include "engine/occupancy.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
@@ -11,12 +14,15 @@ namespace grotto {
 
 class ShadowPass {
 public:
-    explicit ShadowPass(vk::Context& ctx);
+    ShadowPass(vk::Context& ctx, bool soft);
+    // A soft pass needs `history` (read) and `nextHistory` (written), both in GENERAL.
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& objectUniforms,
-                const vk::Image& shadow, const vk::Buffer& traceConstants, const GpuOccupancy& occupancy);
+                const vk::Image& shadow, const vk::Buffer& traceConstants, const GpuOccupancy& occupancy,
+                const vk::Image* history = nullptr, const vk::Image* nextHistory = nullptr);
 
 private:
     vk::Context& ctx_;
+    bool soft_;
     ComputePass pass_;
 };
 

@@ -44,8 +44,16 @@ struct TraceConstants {
     uint rays;               // voxel AO: rays per AO pixel per frame
     float radiusVoxels;      // voxel AO: ray length R in voxels
     float normalOffset;      // rays leave the surface this many voxels along its normal
+    // A soft sun (shadow.comp built with GROTTO_SOFT_SUN): one jittered direction per
+    // pixel and frame, accumulated in a full-res history reprojected like the AO's.
+    mat4 currentToPrevious;         // current view space -> the shadow history's view space
+    vec4 previousNdcToViewMul_Add;  // as ndcToViewMul_Add, for the history's camera
+    float sunCosRadius;             // cos of the sun's angular radius (1: a point, hard shadows)
+    uint frameIndex;                // turns the directions' noise per frame
+    uint shadowHistory;             // the history's length cap, in frames
+    uint shadowReset;               // bit 0: no usable history; bit 1: objects move (their pixels restart)
 };
-GROTTO_STATIC_ASSERT(sizeof(TraceConstants) == 2 * 16 + 3 * 16 + 5 * 16 + 16);
+GROTTO_STATIC_ASSERT(sizeof(TraceConstants) == 2 * 16 + 3 * 16 + 5 * 16 + 16 + 64 + 16 + 16);
 
 GROTTO_NAMESPACE_END
 #endif
