@@ -4,6 +4,7 @@
 #include "engine/camera_path.h"
 #include "engine/spline.h"
 #include "common/error.h"
+#include "tests/input_error_checks.h"
 #include "tests/test_util.h"
 #include "voxel/camera_path_desc.h"
 #include "voxel/world.h"
@@ -236,18 +237,14 @@ protected:
     }
     // Loading `file` (a world or a path file) throws an input error naming each of `mentions`.
     void expectError(const fs::path& file, const std::vector<std::string>& mentions) {
-        try {
-            if (file.filename().string().rfind("world", 0) == 0)
-                voxel::loadWorldDesc(file);
-            else
-                voxel::loadCameraPath(file);
-            ADD_FAILURE() << file << " loaded";
-        } catch (const Error& e) {
-            EXPECT_EQ(e.exitCode(), 2);
-            const std::string what = e.what();
-            EXPECT_EQ(what.find('\n'), std::string::npos) << what;
-            for (const std::string& m : mentions) EXPECT_NE(what.find(m), std::string::npos) << "'" << m << "' in: " << what;
-        }
+        test::inputErrorOf(
+            [&] {
+                if (file.filename().string().rfind("world", 0) == 0)
+                    voxel::loadWorldDesc(file);
+                else
+                    voxel::loadCameraPath(file);
+            },
+            mentions);
     }
     test::ScratchDir dir_;
 };

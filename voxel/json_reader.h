@@ -1,9 +1,11 @@
 #pragma once
-// A strict reader of one JSON object, shared by world and camera-path files: every
-// field read is checked, and an unknown field is an error naming file and field.
-// Internal to voxel/ (nlohmann-json is a private dependency of grotto_voxel).
+// A strict reader of one JSON object, shared by world, camera-path and viewer script
+// files: every field read is checked, and an unknown field is an error naming file
+// and field. nlohmann-json is a private dependency of grotto_voxel: code outside
+// voxel/ that includes this links nlohmann_json itself.
 #include "common/error.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
@@ -66,13 +68,19 @@ public:
     }
     glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback, double lo = -1e12,
                     double hi = 1e12) {
+        return vec<3>(key, fallback, lo, hi);
+    }
+    // A JSON array of N finite numbers, each within [lo, hi].
+    template <glm::length_t N>
+    glm::vec<N, double> vec(const std::string& key, glm::vec<N, double> fallback, double lo, double hi) {
         if (!has(key)) return fallback;
         const json& v = obj_.at(key);
-        if (!v.is_array() || v.size() != 3) fail(key, "expected an array of 3 numbers");
-        glm::dvec3 r;
-        for (int i = 0; i < 3; ++i) {
+        const std::string n = std::to_string(N);
+        if (!v.is_array() || v.size() != size_t(N)) fail(key, "expected an array of " + n + " numbers");
+        glm::vec<N, double> r;
+        for (glm::length_t i = 0; i < N; ++i) {
             if (!v[i].is_number() || !std::isfinite(v[i].get<double>()))
-                fail(key, "expected an array of 3 finite numbers");
+                fail(key, "expected an array of " + n + " finite numbers");
             r[i] = v[i].get<double>();
             if (r[i] < lo || r[i] > hi)
                 fail(key, "component " + v[i].dump() + " is out of range",
