@@ -15,5 +15,6 @@ void addStabilityCommand(CLI::App& app);
 void addTradeoffCommand(CLI::App& app);
 void addTuneCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
+void addViewCommand(CLI::App& app);
 
 }  // namespace grotto::app

@@ -75,6 +75,7 @@ float srgbToLinear(float s) { return s <= 0.04045f ? s / 12.92f : std::pow((s + 
 }  // namespace
 
 void showAov(FrameImages& f, const std::string& which) {
+    auto valueOr = [](const std::vector<float>& v, size_t i, float none) { return v.empty() ? none : v[i]; };
     const size_t n = size_t(f.width) * f.height;
     float zMin = std::numeric_limits<float>::max(), zMax = 0.0f;
     for (float z : f.depth)
@@ -88,7 +89,11 @@ void showAov(FrameImages& f, const std::string& which) {
         else if (which == "shadow") v = glm::vec3(f.shadow.empty() ? 1.0f : f.shadow[i]);
         else if (which == "normal") v = sky ? v : glm::vec3(f.normal[3 * i], f.normal[3 * i + 1], f.normal[3 * i + 2]) * 0.5f + 0.5f;
         else if (which == "depth") v = sky ? v : glm::vec3(1.0f - 0.9f * std::log(f.depth[i] / zMin) / logRange);
-        else throw Error("--show", "unknown AOV '" + which + "'", "accepted: ao, normal, depth, edges, shadow");
+        else if (which == "raw") v = glm::vec3(valueOr(f.aoRaw, i, 1.0f));
+        else if (which == "spatial") v = glm::vec3(valueOr(f.aoSpatial, i, 1.0f));
+        else if (which == "temporal") v = glm::vec3(valueOr(f.aoTemporal, i, 1.0f));
+        else if (which == "history") v = glm::vec3(valueOr(f.aoHistory, i, 1.0f) / 64.0f);  // the longest history is 64
+        else throw Error("--show", "unknown AOV '" + which + "'", "accepted: " + std::string(kShownAovs));
         for (int c = 0; c < 3; ++c) f.color[4 * i + c] = srgbToLinear(std::clamp(v[c], 0.0f, 1.0f));
     }
 }
@@ -112,6 +117,15 @@ void write(const std::filesystem::path& target, const std::filesystem::path& tmp
 }
 
 }  // namespace
+
+void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb) {
+    writeAtomically(path, [&](const std::filesystem::path& tmp) {
+        OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
+        spec.attribute("oiio:ColorSpace", "sRGB");
+        spec.attribute("Software", "grotto");
+        write(path, tmp, spec, rgb.data(), OIIO::TypeDesc::UINT8);
+    });
+}
 
 void writeFrame(const std::filesystem::path& path, const FrameImages& f, const Camera& camera, bool aovs) {
     const ImageFormat format = imageFormatFor(path);

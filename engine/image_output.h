@@ -32,7 +32,13 @@ void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t h
 // Linear [0, 1] -> 8-bit sRGB (clamped; NaN -> 0).
 uint8_t toSrgb8(float linear);
 
-// Replaces the colour with one AOV for eyeballing (ao, normal, depth, edges), so
+// An 8-bit sRGB PNG of `rgb` (3 bytes a pixel, row 0 on top), written atomically.
+void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb);
+
+// The AOVs showAov draws.
+inline constexpr const char* kShownAovs = "ao, normal, depth, edges, shadow, raw, spatial, temporal, history";
+// Replaces the colour with one AOV for eyeballing (kShownAovs; raw, spatial,
+// temporal: the AO chain's stages; history: its length over 64 frames), so
 // that a PNG's 8-bit values are the AOV's values (normals as n * 0.5 + 0.5, depth
 // log-scaled from near white to far black, sky black). Needs a readback with AOVs.
 void showAov(FrameImages& frame, const std::string& which);

@@ -12,6 +12,8 @@ packages=(
   libopenimageio-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
   gnuplot-nox                                                     # grotto tradeoff --plot
+  libglfw3-dev libimgui-dev                                       # grotto view
+  xvfb xauth                                                      # the viewer's tests, headless
   "$@"
 )
 

@@ -201,4 +201,14 @@ WorldDesc loadWorldDesc(const fs::path& path) {
     return parseWorld(path, doc);
 }
 
+void applySettingsPatch(WorldDesc& desc, const json& patch, const fs::path& file, const std::string& field) {
+    WorldDesc changed = desc;  // kept only when all of the patch is good
+    {
+        Reader r(file, patch, field);
+        if (r.has("lighting")) parseLighting(r.child("lighting"), changed.lighting);
+        if (r.has("ao")) parseAo(r.child("ao"), changed.ao);
+    }  // closing the reader refuses unknown fields
+    desc = std::move(changed);
+}
+
 }  // namespace grotto::voxel

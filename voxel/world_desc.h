@@ -5,6 +5,7 @@
 #include "voxel/object_desc.h"
 
 #include <glm/vec3.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include <filesystem>
 #include <map>
@@ -83,6 +84,13 @@ struct WorldDesc {
     std::vector<ObjectDesc> objects;   // voxel models placed with a transform over time
     size_t memoryBudgetBytes = size_t(8) << 30;  // grids estimated above this are refused
 };
+
+// Changes a loaded world's lighting and AO: `patch` holds "lighting" and "ao"
+// blocks as a world file writes them (each optional; keys left out keep their
+// values), checked as a world file is, errors naming `file` and `field`. The
+// viewer's panel and scripts change settings through it.
+void applySettingsPatch(WorldDesc& desc, const nlohmann::ordered_json& patch, const std::filesystem::path& file,
+                        const std::string& field);
 
 // Reads a world .json, or describes a bare .vdb with defaults. Throws grotto::Error
 // (input) naming the file and field for anything malformed or unknown.

@@ -100,7 +100,7 @@ void Context::create(const ContextOptions& options) {
                           .applicationVersion = VK_MAKE_VERSION(0, 1, 0),
                           .pEngineName = "grotto",
                           .apiVersion = VK_API_VERSION_1_3};
-    std::vector<const char*> layers, extensions;
+    std::vector<const char*> layers, extensions = options.instanceExtensions;
     if (validate) {
         if (!hasLayer(kValidationLayer))
             throw Error("vulkan", "validation requested but VK_LAYER_KHRONOS_validation is missing",
@@ -135,6 +135,7 @@ void Context::create(const ContextOptions& options) {
         VK_CHECK(create(instance, &messengerInfo, nullptr, &messenger_));
     }
 
+    if (options.createSurface) surface = options.createSurface(instance);
     physical = pickDevice(instance, wanted);
     vkGetPhysicalDeviceProperties(physical, &properties);
 
@@ -143,14 +144,20 @@ void Context::create(const ContextOptions& options) {
     std::vector<VkQueueFamilyProperties> families(nq);
     vkGetPhysicalDeviceQueueFamilyProperties(physical, &nq, families.data());
     queueFamily = UINT32_MAX;
+    auto presents = [&](uint32_t family) {
+        VkBool32 supported = VK_FALSE;
+        return !surface || (vkGetPhysicalDeviceSurfaceSupportKHR(physical, family, surface, &supported) == VK_SUCCESS &&
+                            supported);
+    };
     for (uint32_t i = 0; i < nq; ++i)
         if ((families[i].queueFlags & VK_QUEUE_GRAPHICS_BIT) && (families[i].queueFlags & VK_QUEUE_COMPUTE_BIT) &&
-            families[i].timestampValidBits > 0) {
+            families[i].timestampValidBits > 0 && presents(i)) {
             queueFamily = i;
             break;
         }
     if (queueFamily == UINT32_MAX)
-        throw Error("vulkan", std::string(properties.deviceName) + " has no graphics+compute queue with timestamps");
+        throw Error("vulkan", std::string(properties.deviceName) + " has no graphics+compute queue with timestamps" +
+                                  (surface ? " that presents to the window" : ""));
 
     // The instance asks for 1.3; a 1.2 device gets dynamic rendering as an extension.
     const bool core13 = properties.apiVersion >= VK_API_VERSION_1_3;
@@ -160,6 +167,7 @@ void Context::create(const ContextOptions& options) {
                     std::to_string(VK_API_VERSION_MINOR(properties.apiVersion)),
                     "Grotto needs Vulkan 1.2; set GROTTO_DEVICE to another device");
     std::vector<const char*> deviceExtensions = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME};
+    if (surface) deviceExtensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     if (!core13) deviceExtensions.push_back(VK_KHR_DYNAMIC_RENDERING_EXTENSION_NAME);
     for (const char* e : deviceExtensions)
         if (!hasDeviceExtension(physical, e))
@@ -260,6 +268,8 @@ void Context::release() {
         return;
     }
     if (device) vkDestroyDevice(device, nullptr);
+    if (surface) vkDestroySurfaceKHR(instance, surface, nullptr);
+    surface = VK_NULL_HANDLE;
     if (messenger_) {
         auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));

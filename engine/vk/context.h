@@ -11,12 +11,19 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace grotto::vk {
 
 struct ContextOptions {
     bool validation = false;   // also on when GROTTO_VALIDATION=1
     std::string deviceName;    // substring; empty = GROTTO_DEVICE, else lavapipe, else the first
+    // Presenting to a window (the viewer): the instance extensions its window system
+    // needs, and a function that makes the window's surface once the instance
+    // exists. The queue is then one that can also present to that surface, and the
+    // device has VK_KHR_swapchain.
+    std::vector<const char*> instanceExtensions;
+    std::function<VkSurfaceKHR(VkInstance)> createSurface;
 };
 
 class Context {
@@ -35,6 +42,7 @@ public:
     uint32_t queueFamily = 0;
     VkCommandPool commandPool = VK_NULL_HANDLE;
     VkSampler pointSampler = VK_NULL_HANDLE;  // nearest, clamp to edge: for texelFetch reads
+    VkSurfaceKHR surface = VK_NULL_HANDLE;    // with ContextOptions::createSurface; destroyed with the context
     VkPhysicalDeviceProperties properties{};
     std::unique_ptr<Allocator> allocator;
 

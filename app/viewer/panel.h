@@ -1,0 +1,38 @@
+#pragma once
+// The viewer's Dear ImGui panel: AO and lighting settings, the view, named
+// cameras, per-pass timings and world counts. It changes settings the way a
+// script does: as a patch of world-file keys (voxel::applySettingsPatch).
+#include "engine/renderer.h"
+#include "voxel/json_reader.h"
+#include "voxel/world_desc.h"
+
+#include <deque>
+#include <string>
+#include <vector>
+
+namespace grotto::viewer {
+
+// The views the panel offers: the final image, or one AOV (showAov's names).
+inline const std::vector<std::string> kViews = {"final", "ao",   "raw",   "spatial", "temporal",
+                                                "history", "edges", "normal", "depth", "shadow"};
+
+struct PanelState {
+    const voxel::WorldDesc* desc = nullptr;  // the settings now, as the world file writes them
+    const AoOptions* ao = nullptr;           // the AO settings in effect
+    std::string view = "final";
+    bool hidden = false;                     // Tab hides the panel
+    std::vector<std::string> cameras;        // the world's named cameras
+    std::string jumpTo;                      // set when a camera button was pressed
+    bool screenshot = false;                 // set when the screenshot button was pressed
+    FrameStats stats;                        // the last frame's
+    std::deque<float> frameMs;               // recent frame times, oldest first
+    uint64_t quads = 0, activeVoxels = 0;
+    double speed = 0.0;                      // fly speed, world units per second
+    std::string message;                     // the last error or saved file, shown at the bottom
+};
+
+// Draws the panel (inside an ImGui frame) and returns the settings it changed as a
+// patch ({"lighting": ..., "ao": ...}); empty when nothing changed.
+voxel::json drawPanel(PanelState& state);
+
+}  // namespace grotto::viewer

@@ -1,0 +1,381 @@
+#include "app/viewer/viewer.h"
+
+#include "app/viewer/fly_camera.h"
+#include "app/viewer/panel.h"
+#include "app/viewer/presenter.h"
+#include "app/viewer/view_script.h"
+#include "app/viewer/window.h"
+#include "common/error.h"
+#include "engine/image_output.h"
+#include "engine/renderer.h"
+#include "engine/scene.h"
+#include "engine/scene_objects.h"
+#include "voxel/object_worlds.h"
+#include "voxel/world.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+
+namespace grotto::viewer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kScriptStep = 1.0 / 60.0;  // seconds a scripted frame advances: runs are reproducible
+constexpr size_t kGraphFrames = 120;
+
+// ImGui's context and GLFW backend for the window's lifetime.
+struct ImguiSession {
+    explicit ImguiSession(GLFWwindow* window) {
+        IMGUI_CHECKVERSION();
+        ImGui::CreateContext();
+        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
+        ImGui::StyleColorsDark();
+        ImGui_ImplGlfw_InitForVulkan(window, true);
+    }
+    ~ImguiSession() {
+        ImGui_ImplGlfw_Shutdown();
+        ImGui::DestroyContext();
+    }
+};
+
+// A dotted world-file key ("lighting.sun.angle") and its value as a patch.
+voxel::json patchFor(const std::string& key, const nlohmann::json& value) {
+    voxel::json patch = voxel::json::parse(value.dump());
+    std::string k = key;
+    for (size_t dot; (dot = k.rfind('.')) != std::string::npos; k = k.substr(0, dot))
+        patch = voxel::json{{k.substr(dot + 1), patch}};
+    return voxel::json{{k, patch}};
+}
+
+class Viewer {
+public:
+    explicit Viewer(const ViewOptions& o)
+        : options_(o),
+          world_(voxel::World::load(o.world)),
+          desc_(world_.desc()),
+          window_("grotto view - " + o.world.filename().string(), o.size.width, o.size.height),
+          imgui_(window_.handle),
+          ctx_(contextOptions(window_)) {
+        if (o.script) script_ = ViewScript::load(*o.script);
+        // Command-line AO flags, as every command takes them, over the world's.
+        const AoOptions ao = app::resolveAo(world_, o.ao);
+        if (!o.ao.method.empty()) desc_.ao.method = o.ao.method;
+        if (!o.ao.quality.empty()) desc_.ao.quality = o.ao.quality;
+        aoOptions_ = ao;
+        scene_ = uploadScene(ctx_, world_);
+        objectWorlds_ = voxel::loadObjectWorlds(desc_);
+        if (!objectWorlds_.empty()) objects_ = uploadObjects(ctx_, objectWorlds_, desc_);
+        const VkExtent2D fb = window_.framebufferSize();
+        renderSize_ = {std::max(fb.width, 1u), std::max(fb.height, 1u)};
+        renderer_ = std::make_unique<Renderer>(ctx_, *scene_, desc_.lighting, ao, renderSize_.width,
+                                               renderSize_.height, objects_.get());
+        presenter_ = std::make_unique<Presenter>(ctx_, fb, o.vsync);
+        const voxel::CameraDesc start = world_.camera(o.camera);
+        const voxel::IndexBox b = world_.bounds();
+        const double extent = b.empty() ? 10.0 : glm::length(glm::dvec3(b.max - b.min + 1)) * world_.voxelSize();
+        fly_ = std::make_unique<FlyCamera>(start, extent / 8.0);  // crosses the world in about 8 s
+        for (const auto& [name, c] : desc_.cameras) panel_.cameras.push_back(name);
+        panel_.quads = scene_->quadCount;
+        panel_.activeVoxels = world_.stats().solidVoxels;
+        panel_.hidden = o.hidePanel;
+    }
+
+    ~Viewer() {
+        presenter_.reset();
+        renderer_.reset();
+        objects_.reset();
+        scene_.reset();
+    }
+
+    void run() {
+        std::vector<double> frameMs, renderMs, presentMs;
+        while (!window_.shouldClose() && (!options_.frames || frame_ < *options_.frames)) {
+            const auto start = Clock::now();
+            window_.poll();
+            applyScript();
+            resizeIfNeeded();
+            const double dt = script_ ? kScriptStep : std::min(lastFrameSeconds_, 0.25);
+            flyFromInput(dt);
+            const Camera camera = makeCamera(fly_->desc(), renderSize_.width, renderSize_.height);
+            const auto beforeRender = Clock::now();
+            panel_.stats = renderer_->render(camera, sequence_++);
+            const auto afterRender = Clock::now();
+            if (panel_.view != "final" || pendingShot_) readback(camera);
+            ImDrawData* ui = drawUi();
+            presenter_->present(panel_.view == "final" ? renderer_->colorImage() : shown_, ui,
+                                wantWindowCapture() ? &windowPixels_ : nullptr);
+            const auto end = Clock::now();
+            lastFrameSeconds_ = std::chrono::duration<double>(end - start).count();
+            frameMs.push_back(lastFrameSeconds_ * 1e3);
+            renderMs.push_back(std::chrono::duration<double, std::milli>(afterRender - beforeRender).count());
+            presentMs.push_back(std::chrono::duration<double, std::milli>(end - afterRender).count());
+            panel_.frameMs.push_back(float(lastFrameSeconds_ * 1e3));
+            if (panel_.frameMs.size() > kGraphFrames) panel_.frameMs.pop_front();
+            ++frame_;
+        }
+        if (options_.screenshot) screenshot(*options_.screenshot);
+        if (options_.captureWindow) {
+            if (windowPixels_.empty()) throw Error("--capture-window", "no frame was shown to capture", "give --frames 1 or more");
+            writeSrgb8(*options_.captureWindow, presenter_->extent().width, presenter_->extent().height, windowPixels_);
+        }
+        if (options_.bench) printBench(frameMs, renderMs, presentMs);
+        app::requireNoValidationMessages(ctx_);
+    }
+
+private:
+    static vk::ContextOptions contextOptions(const Window& w) {
+        vk::ContextOptions o;
+        o.instanceExtensions = w.vulkanExtensions();
+        o.createSurface = [&w](VkInstance instance) { return w.createSurface(instance); };
+        return o;
+    }
+
+    bool wantWindowCapture() const {
+        return options_.captureWindow && options_.frames && frame_ + 1 == *options_.frames;
+    }
+
+    // The script's actions for this frame; errors name the script's file and action.
+    void applyScript() {
+        if (!script_) return;
+        for (const ScriptAction& a : script_->at(frame_)) {
+            const std::string where = "actions at frame " + std::to_string(a.frame);
+            switch (a.kind) {
+            case ScriptAction::Kind::Key:
+                if (isHeld(a.key)) scriptKeys_[scriptKeyName(a.key)] = a.down;
+                else pressHotkey(a.key);
+                break;
+            case ScriptAction::Kind::Look: scriptLook_ += a.vec; break;
+            case ScriptAction::Kind::Wheel: scriptWheel_ += a.wheel; break;
+            case ScriptAction::Kind::Set:
+                for (const auto& [key, value] : a.settings) {
+                    if (key == "view") setView(value, script_->file());
+                    else applyPatch(patchFor(key, value), script_->file(), where + ": set." + key);
+                }
+                break;
+            case ScriptAction::Kind::Resize:
+                window_.setSize(uint32_t(a.vec.x), uint32_t(a.vec.y));
+                waitForSize();
+                break;
+            case ScriptAction::Kind::Minimize: window_.minimize(); waitForSize(); break;
+            case ScriptAction::Kind::Restore: window_.restore(); waitForSize(); break;
+            case ScriptAction::Kind::Camera: jumpTo(a.camera); break;
+            case ScriptAction::Kind::Screenshot: pendingShot_ = a.path; break;
+            default:
+                throw Error(script_->file().string(), where + ": '" + verbName(a.kind) + "' is not supported yet",
+                            "this viewer flies, sets, resizes, jumps to cameras and takes screenshots");
+            }
+        }
+    }
+
+    void pressHotkey(ScriptKey key) {
+        if (key == ScriptKey::F12) pendingShot_ = nextShotName();
+        if (key == ScriptKey::Tab) panel_.hidden = !panel_.hidden;
+    }
+
+    // The window system applies size changes asynchronously: give it a moment.
+    void waitForSize() {
+        for (int i = 0; i < 20; ++i) {
+            glfwWaitEventsTimeout(0.01);
+            window_.poll();
+        }
+    }
+
+    void setView(const nlohmann::json& value, const std::filesystem::path& file) {
+        const std::string v = value.is_string() ? value.get<std::string>() : "";
+        if (std::find(kViews.begin(), kViews.end(), v) == kViews.end())
+            throw Error(file.string(), "view: unknown view " + value.dump(), "accepted: final, ao, raw, spatial, "
+                                                                               "temporal, history, edges, normal, depth, shadow");
+        panel_.view = v;
+    }
+
+    void jumpTo(const std::string& name) {
+        fly_->jumpTo(world_.camera(name));
+        cut();
+    }
+
+    // A camera cut or new settings: the history and the noise sequence start again,
+    // so a still after it matches `render` of the same camera frame for frame.
+    void cut() {
+        renderer_->resetHistory();
+        sequence_ = 0;
+    }
+
+    void applyPatch(const voxel::json& patch, const std::filesystem::path& file, const std::string& field) {
+        voxel::WorldDesc d = desc_;
+        if (patch.contains("ao") && patch["ao"].contains("quality"))  // a preset replaces hand-set loop shapes
+            d.ao.slices.reset(), d.ao.steps.reset(), d.ao.rays.reset();
+        voxel::applySettingsPatch(d, patch, file, field);
+        const AoOptions ao = aoOptionsFor(d.ao, world_.voxelSize(), file.string());
+        if (patch.contains("lighting")) renderer_->setLighting(d.lighting);
+        if (patch.contains("ao")) renderer_->setAo(ao);
+        desc_ = std::move(d);
+        aoOptions_ = ao;
+        cut();
+    }
+
+    void resizeIfNeeded() {
+        const VkExtent2D fb = window_.framebufferSize();
+        if (fb.width == presented_.width && fb.height == presented_.height) return;
+        presented_ = fb;
+        presenter_->resize(fb);
+        if (fb.width == 0 || fb.height == 0) return;  // minimised: keep rendering at the last size
+        if (fb.width != renderSize_.width || fb.height != renderSize_.height) {
+            renderSize_ = fb;
+            renderer_->resize(fb.width, fb.height);
+            sequence_ = 0;
+        }
+    }
+
+    void flyFromInput(double dt) {
+        ImGuiIO& io = ImGui::GetIO();
+        const bool keys = !io.WantCaptureKeyboard;
+        auto held = [&](const char* scriptName, int key) {
+            auto it = scriptKeys_.find(scriptName);
+            return (it != scriptKeys_.end() && it->second) || (keys && window_.keyDown(key));
+        };
+        FlyInput in;
+        in.forward = held("W", GLFW_KEY_W);
+        in.back = held("S", GLFW_KEY_S);
+        in.left = held("A", GLFW_KEY_A);
+        in.right = held("D", GLFW_KEY_D);
+        in.down = held("Q", GLFW_KEY_Q);
+        in.up = held("E", GLFW_KEY_E);
+        in.fast = held("SHIFT", GLFW_KEY_LEFT_SHIFT);
+        const glm::dvec2 cursor = window_.cursor();
+        if (window_.mouseDown(GLFW_MOUSE_BUTTON_RIGHT) && !io.WantCaptureMouse) in.look = cursor - lastCursor_;
+        lastCursor_ = cursor;
+        in.look += std::exchange(scriptLook_, glm::dvec2(0.0));
+        const double wheel = window_.takeWheel();
+        in.wheel = (io.WantCaptureMouse ? 0.0 : wheel) + std::exchange(scriptWheel_, 0.0);
+        fly_->update(in, dt);
+        if (keys && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Tab), false)) panel_.hidden = !panel_.hidden;
+        if (keys && glfwGetKey(window_.handle, GLFW_KEY_F12) == GLFW_PRESS && !f12Down_) pendingShot_ = nextShotName();
+        f12Down_ = glfwGetKey(window_.handle, GLFW_KEY_F12) == GLFW_PRESS;
+        panel_.speed = fly_->speed();
+    }
+
+    std::filesystem::path nextShotName() {
+        for (;; ++shotCounter_) {
+            char name[32];
+            std::snprintf(name, sizeof name, "grotto-%03d.png", shotCounter_);
+            if (!std::filesystem::exists(name)) return name;
+        }
+    }
+
+    // Reads the frame back for an AOV view or a screenshot.
+    void readback(const Camera& camera) {
+        FrameImages f = renderer_->readback(camera, true);
+        if (pendingShot_) {
+            writeShot(*pendingShot_, f, camera);
+            pendingShot_.reset();
+        }
+        if (panel_.view == "final") return;
+        showAov(f, panel_.view);
+        if (shown_.extent.width != f.width || shown_.extent.height != f.height) {
+            vk::destroy(ctx_, shown_);
+            shown_ = vk::createImage(ctx_, {f.width, f.height}, VK_FORMAT_R32G32B32A32_SFLOAT,
+                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+        }
+        vk::Buffer staging = vk::uploadBuffer(ctx_, f.color.data(), f.color.size() * sizeof(float),
+                                              VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+        ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+            vk::transition(cmd, shown_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+                           VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_TRANSFER_BIT,
+                           VK_ACCESS_TRANSFER_WRITE_BIT);
+            VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
+                                     .imageExtent = {f.width, f.height, 1}};
+            vkCmdCopyBufferToImage(cmd, staging.buffer, shown_.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
+            vk::transition(cmd, shown_, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+                           VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT,
+                           VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_READ_BIT);
+        });
+        vk::destroy(ctx_, staging);
+    }
+
+    void writeShot(const std::filesystem::path& path, const FrameImages& f, const Camera& camera) {
+        const bool exr = imageFormatFor(path) == ImageFormat::Exr;
+        writeFrame(path, f, camera, exr);
+        panel_.message = "wrote " + path.string();
+        std::printf("wrote %s (%ux%u)\n", path.c_str(), f.width, f.height);
+    }
+
+    void screenshot(const std::filesystem::path& path) {
+        const Camera camera = makeCamera(fly_->desc(), renderSize_.width, renderSize_.height);
+        writeShot(path, renderer_->readback(camera, imageFormatFor(path) == ImageFormat::Exr), camera);
+    }
+
+    ImDrawData* drawUi() {
+        ImGui_ImplGlfw_NewFrame();
+        ImGui::NewFrame();
+        if (!panel_.hidden) {
+            panel_.desc = &desc_;
+            panel_.ao = &aoOptions_;
+            const voxel::json patch = drawPanel(panel_);
+            try {
+                if (!patch.empty()) applyPatch(patch, "panel", "panel");
+            } catch (const Error& e) {
+                panel_.message = e.what();
+            }
+            if (!panel_.jumpTo.empty()) jumpTo(std::exchange(panel_.jumpTo, ""));
+            if (std::exchange(panel_.screenshot, false)) pendingShot_ = nextShotName();
+        }
+        ImGui::Render();
+        return ImGui::GetDrawData();
+    }
+
+    void printBench(const std::vector<double>& frameMs, const std::vector<double>& renderMs,
+                    const std::vector<double>& presentMs) const {
+        // The first frames compile pipelines and fill caches.
+        const size_t skip = std::min<size_t>(frameMs.size() / 4, 10);
+        auto med = [&](const std::vector<double>& v) {
+            return app::median(std::vector<double>(v.begin() + long(skip), v.end()));
+        };
+        const double frame = med(frameMs);
+        std::printf("view bench: %s, %ux%u, %zu frames (median after %zu warm-up)\n", options_.world.c_str(),
+                    renderSize_.width, renderSize_.height, frameMs.size() - skip, skip);
+        std::printf("  frame %.2f ms (%.1f fps): render %.2f ms, panel + present %.2f ms\n", frame,
+                    frame > 0 ? 1000.0 / frame : 0.0, med(renderMs), med(presentMs));
+    }
+
+    ViewOptions options_;
+    voxel::World world_;
+    voxel::WorldDesc desc_;
+    Window window_;
+    ImguiSession imgui_;
+    vk::Context ctx_;
+    std::optional<ViewScript> script_;
+    AoOptions aoOptions_;
+    std::unique_ptr<GpuScene> scene_;
+    std::vector<voxel::World> objectWorlds_;
+    std::unique_ptr<SceneObjects> objects_;
+    std::unique_ptr<Renderer> renderer_;
+    std::unique_ptr<Presenter> presenter_;
+    std::unique_ptr<FlyCamera> fly_;
+    PanelState panel_;
+    vk::Image shown_;  // an AOV view's pixels
+    VkExtent2D renderSize_{}, presented_{};
+    uint32_t frame_ = 0, sequence_ = 0;
+    double lastFrameSeconds_ = 1.0 / 60.0;
+    std::map<std::string, bool> scriptKeys_;
+    glm::dvec2 scriptLook_{0.0}, lastCursor_{0.0};
+    double scriptWheel_ = 0.0;
+    std::optional<std::filesystem::path> pendingShot_;
+    bool f12Down_ = false;
+    int shotCounter_ = 1;
+    std::vector<uint8_t> windowPixels_;
+};
+
+}  // namespace
+
+void runViewer(const ViewOptions& options) {
+    Viewer viewer(options);
+    viewer.run();
+}
+
+}  // namespace grotto::viewer
