@@ -87,6 +87,7 @@ public:
     }
 
     ~Viewer() {
+        vk::destroy(ctx_, shown_);
         presenter_.reset();
         renderer_.reset();
         objects_.reset();
@@ -280,7 +281,8 @@ private:
         if (shown_.extent.width != f.width || shown_.extent.height != f.height) {
             vk::destroy(ctx_, shown_);
             shown_ = vk::createImage(ctx_, {f.width, f.height}, VK_FORMAT_R32G32B32A32_SFLOAT,
-                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
+                                     VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                         VK_IMAGE_USAGE_SAMPLED_BIT);  // sampled: an image gets a view
         }
         vk::Buffer staging = vk::uploadBuffer(ctx_, f.color.data(), f.color.size() * sizeof(float),
                                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
