@@ -55,12 +55,14 @@ TEST_F(ViewScriptFiles, ReadsEveryVerb) {
         {"frame": 12, "save_path": "out/path.json"},
         {"frame": 13, "click": [320, 180.5], "button": "right"},
         {"frame": 14, "click": [0, 0]},
-        {"frame": 15, "screenshot": "shot.png"})");
+        {"frame": 15, "screenshot": "shot.png"},
+        {"frame": 16, "undo": true},
+        {"frame": 17, "save_world": "edited.vdb"})");
     const ViewScript s = ViewScript::load(file);
     const std::vector<ScriptAction>& a = s.actions();
-    ASSERT_EQ(a.size(), 16u);
+    ASSERT_EQ(a.size(), 18u);
     for (uint32_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].frame, i);
-    EXPECT_EQ(s.lastFrame(), 15u);
+    EXPECT_EQ(s.lastFrame(), 17u);
     EXPECT_EQ(s.file(), file);
 
     EXPECT_EQ(a[0].kind, Kind::Key);
@@ -102,6 +104,9 @@ TEST_F(ViewScriptFiles, ReadsEveryVerb) {
     EXPECT_EQ(a[14].button, MouseButton::Left) << "left unless the script says";
     EXPECT_EQ(a[15].kind, Kind::Screenshot);
     EXPECT_EQ(a[15].path, dir_.path / "shot.png");
+    EXPECT_EQ(a[16].kind, Kind::Undo);
+    EXPECT_EQ(a[17].kind, Kind::SaveWorld);
+    EXPECT_EQ(a[17].path, dir_.path / "edited.vdb");
 
     // Names back as scripts write them.
     for (const ScriptAction& x : a) EXPECT_NE(std::string(verbName(x.kind)), "?");

@@ -19,6 +19,13 @@ bool combo(const char* label, std::string& value, const std::vector<std::string>
     return changed;
 }
 
+// A file name to edit in place.
+void inputPath(const char* label, std::string& path) {
+    char buffer[1024];
+    std::snprintf(buffer, sizeof buffer, "%s", path.c_str());
+    if (ImGui::InputText(label, buffer, sizeof buffer)) path = buffer;
+}
+
 }  // namespace
 
 voxel::json drawPanel(PanelState& s) {
@@ -84,6 +91,24 @@ voxel::json drawPanel(PanelState& s) {
         ImGui::NewLine();
         if (ImGui::Button("screenshot (F12)")) s.screenshot = true;
         ImGui::Text("fly speed %.3g /s (wheel)", s.speed);
+    }
+    if (ImGui::CollapsingHeader("Edit")) {
+        combo("left click", s.editMode, {"none", "dig", "place", "paint"});
+        float radius = float(s.brushRadius);
+        if (ImGui::SliderFloat("brush radius", &radius, 0.5f, 64.0f, "%.1f voxels", ImGuiSliderFlags_Logarithmic))
+            s.brushRadius = radius;
+        ImGui::SliderInt("material", &s.material, 1, std::max(int(d.materials.size()), 1));
+        if (ImGui::Button("undo (ctrl+Z)")) s.undo = true;
+        ImGui::SameLine();
+        if (ImGui::Button("save world")) s.saveWorld = true;
+        inputPath("##world", s.saveWorldAs);
+    }
+    if (ImGui::CollapsingHeader("Record")) {
+        ImGui::Text("%zu keys", s.recordedKeys);
+        if (ImGui::Button("add key (R)")) s.record = true;
+        ImGui::SameLine();
+        if (ImGui::Button("save path")) s.savePath = true;
+        inputPath("##path", s.savePathAs);
     }
     if (ImGui::CollapsingHeader("Timings", ImGuiTreeNodeFlags_DefaultOpen)) {
         std::vector<float> ms(s.frameMs.begin(), s.frameMs.end());

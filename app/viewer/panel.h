@@ -29,6 +29,16 @@ struct PanelState {
     uint64_t quads = 0, activeVoxels = 0;
     double speed = 0.0;                      // fly speed, world units per second
     std::string message;                     // the last error or saved file, shown at the bottom
+    // Editing: what a left click does, the brush and the material placed or painted.
+    std::string editMode = "none";           // none, dig, place, paint
+    double brushRadius = 1.0;                // voxels
+    int material = 1;
+    bool undo = false, saveWorld = false;    // set when their buttons were pressed
+    std::string saveWorldAs;                 // .vdb
+    // Recording a camera path.
+    size_t recordedKeys = 0;
+    bool record = false, savePath = false;   // set when their buttons were pressed
+    std::string savePathAs;                  // .json
 };
 
 // Draws the panel (inside an ImGui frame) and returns the settings it changed as a

@@ -25,7 +25,8 @@ using Names = std::initializer_list<std::pair<const char*, T>>;
 constexpr Names<Kind> kVerbs = {
     {"key", Kind::Key},       {"look", Kind::Look},         {"wheel", Kind::Wheel},   {"set", Kind::Set},
     {"resize", Kind::Resize}, {"minimize", Kind::Minimize}, {"restore", Kind::Restore}, {"camera", Kind::Camera},
-    {"record", Kind::Record}, {"save_path", Kind::SavePath}, {"click", Kind::Click},  {"screenshot", Kind::Screenshot}};
+    {"record", Kind::Record}, {"save_path", Kind::SavePath}, {"click", Kind::Click},  {"screenshot", Kind::Screenshot},
+    {"undo", Kind::Undo},     {"save_world", Kind::SaveWorld}};
 constexpr Names<ScriptKey> kKeys = {{"W", ScriptKey::W},     {"A", ScriptKey::A},         {"S", ScriptKey::S},
                                     {"D", ScriptKey::D},     {"Q", ScriptKey::Q},         {"E", ScriptKey::E},
                                     {"SHIFT", ScriptKey::Shift}, {"F12", ScriptKey::F12}, {"R", ScriptKey::R},
@@ -130,12 +131,14 @@ std::optional<ScriptAction> readAction(Reader& r) {
         break;
     case Kind::Minimize:
     case Kind::Restore:
-    case Kind::Record: requireTrue(r, verb); break;
+    case Kind::Record:
+    case Kind::Undo: requireTrue(r, verb); break;
     case Kind::Camera:
         a.camera = r.string("camera", "");
         if (a.camera.empty()) r.fail("camera", "expected a camera name", "one of the world's named cameras");
         break;
     case Kind::SavePath:
+    case Kind::SaveWorld:
     case Kind::Screenshot: a.path = outputPath(r, verb); break;
     case Kind::Click:
         a.vec = r.vec<2>("click", {}, 0, kMaxWindowSide);

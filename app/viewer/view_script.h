@@ -24,7 +24,8 @@ bool isHeld(ScriptKey key);
 enum class MouseButton { Left, Right, Middle };
 
 struct ScriptAction {
-    enum class Kind { Key, Look, Wheel, Set, Resize, Minimize, Restore, Camera, Record, SavePath, Click, Screenshot };
+    enum class Kind { Key, Look, Wheel, Set, Resize, Minimize, Restore, Camera, Record, SavePath, Click, Screenshot,
+                      Undo, SaveWorld };
     uint32_t frame = 0;  // the viewer's frame counter, 0-based
     Kind kind = Kind::Key;
     ScriptKey key = ScriptKey::W;  // Key
@@ -35,7 +36,7 @@ struct ScriptAction {
     std::vector<std::pair<std::string, nlohmann::json>> settings;  // Set: name -> value, in file order,
                                                                    // unchecked (the viewer knows the names)
     std::string camera;            // Camera: a named camera of the world
-    std::filesystem::path path;    // SavePath, Screenshot: relative ones joined to the script's directory
+    std::filesystem::path path;    // SavePath, SaveWorld (.vdb), Screenshot: relative ones joined to the script's directory
     MouseButton button = MouseButton::Left;  // Click
 };
 // The verb as scripts write it: "key", "save_path", ...

@@ -2,13 +2,15 @@
 
 #include "app/viewer/fly_camera.h"
 #include "app/viewer/panel.h"
+#include "app/viewer/path_recorder.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/view_script.h"
 #include "app/viewer/window.h"
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "engine/image_output.h"
+#include "engine/live_scene.h"
 #include "engine/renderer.h"
-#include "engine/scene.h"
 #include "engine/scene_objects.h"
 #include "voxel/object_worlds.h"
 #include "voxel/world.h"
@@ -57,32 +59,34 @@ class Viewer {
 public:
     explicit Viewer(const ViewOptions& o)
         : options_(o),
-          world_(voxel::World::load(o.world)),
-          desc_(world_.desc()),
+          desc_(voxel::World::load(o.world).desc()),
           window_("grotto view - " + o.world.filename().string(), o.size.width, o.size.height),
           imgui_(window_.handle),
           ctx_(contextOptions(window_)) {
         if (o.script) script_ = ViewScript::load(*o.script);
+        live_ = std::make_unique<LiveScene>(ctx_, voxel::World::load(o.world));
+        const voxel::World& world = live_->world();
         // Command-line AO flags, as every command takes them, over the world's.
-        const AoOptions ao = app::resolveAo(world_, o.ao);
+        const AoOptions ao = app::resolveAo(world, o.ao);
         if (!o.ao.method.empty()) desc_.ao.method = o.ao.method;
         if (!o.ao.quality.empty()) desc_.ao.quality = o.ao.quality;
         aoOptions_ = ao;
-        scene_ = uploadScene(ctx_, world_);
         objectWorlds_ = voxel::loadObjectWorlds(desc_);
         if (!objectWorlds_.empty()) objects_ = uploadObjects(ctx_, objectWorlds_, desc_);
         const VkExtent2D fb = window_.framebufferSize();
         renderSize_ = {std::max(fb.width, 1u), std::max(fb.height, 1u)};
-        renderer_ = std::make_unique<Renderer>(ctx_, *scene_, desc_.lighting, ao, renderSize_.width,
+        renderer_ = std::make_unique<Renderer>(ctx_, live_->gpu(), desc_.lighting, ao, renderSize_.width,
                                                renderSize_.height, objects_.get());
         presenter_ = std::make_unique<Presenter>(ctx_, fb, o.vsync);
-        const voxel::CameraDesc start = world_.camera(o.camera);
-        const voxel::IndexBox b = world_.bounds();
-        const double extent = b.empty() ? 10.0 : glm::length(glm::dvec3(b.max - b.min + 1)) * world_.voxelSize();
+        const voxel::CameraDesc start = world.camera(o.camera);
+        const voxel::IndexBox b = world.bounds();
+        const double extent = b.empty() ? 10.0 : glm::length(glm::dvec3(b.max - b.min + 1)) * world.voxelSize();
         fly_ = std::make_unique<FlyCamera>(start, extent / 8.0);  // crosses the world in about 8 s
         for (const auto& [name, c] : desc_.cameras) panel_.cameras.push_back(name);
-        panel_.quads = scene_->quadCount;
-        panel_.activeVoxels = world_.stats().solidVoxels;
+        panel_.quads = live_->gpu().quadCount;
+        panel_.activeVoxels = world.stats().solidVoxels;
+        panel_.saveWorldAs = (o.world.parent_path() / (o.world.stem().string() + "-edited.vdb")).string();
+        panel_.savePathAs = (o.world.parent_path() / (o.world.stem().string() + "-recorded.json")).string();
         panel_.hidden = o.hidePanel;
     }
 
@@ -91,7 +95,7 @@ public:
         presenter_.reset();
         renderer_.reset();
         objects_.reset();
-        scene_.reset();
+        live_.reset();
     }
 
     void run() {
@@ -156,6 +160,7 @@ private:
             case ScriptAction::Kind::Set:
                 for (const auto& [key, value] : a.settings) {
                     if (key == "view") setView(value, script_->file());
+                    else if (key.rfind("edit.", 0) == 0) setEdit(key, value, script_->file(), where);
                     else applyPatch(patchFor(key, value), script_->file(), where + ": set." + key);
                 }
                 break;
@@ -167,9 +172,11 @@ private:
             case ScriptAction::Kind::Restore: window_.restore(); waitForSize(); break;
             case ScriptAction::Kind::Camera: jumpTo(a.camera); break;
             case ScriptAction::Kind::Screenshot: pendingShot_ = a.path; break;
-            default:
-                throw Error(script_->file().string(), where + ": '" + verbName(a.kind) + "' is not supported yet",
-                            "this viewer flies, sets, resizes, jumps to cameras and takes screenshots");
+            case ScriptAction::Kind::Record: recordKey(); break;
+            case ScriptAction::Kind::SavePath: savePath(a.path); break;
+            case ScriptAction::Kind::Click: click(a.vec, a.button == MouseButton::Left); break;
+            case ScriptAction::Kind::Undo: undo(); break;
+            case ScriptAction::Kind::SaveWorld: saveWorld(a.path); break;
             }
         }
     }
@@ -177,6 +184,67 @@ private:
     void pressHotkey(ScriptKey key) {
         if (key == ScriptKey::F12) pendingShot_ = nextShotName();
         if (key == ScriptKey::Tab) panel_.hidden = !panel_.hidden;
+        if (key == ScriptKey::R) recordKey();
+    }
+
+    // Records this frame's camera once it has moved (flyFromInput), so a key is the
+    // camera of the frame shown at its time.
+    void recordKey() { recordPending_ = true; }
+
+    void addPendingKey() {
+        if (!std::exchange(recordPending_, false)) return;
+        if (!recordStart_) recordStart_ = playClock_;
+        if (recorder_.add(playClock_ - *recordStart_, fly_->desc()))
+            panel_.message = "path key " + std::to_string(recorder_.size()) + " at " +
+                             std::to_string(playClock_ - *recordStart_) + " s";
+        panel_.recordedKeys = recorder_.size();
+    }
+
+    void savePath(const std::filesystem::path& file) {
+        recorder_.save(file);
+        panel_.message = "wrote " + file.string();
+        std::printf("wrote %s (%zu keys)\n", file.c_str(), recorder_.size());
+    }
+
+    // A click at a window pixel: the panel's edit where the view ray first meets a
+    // voxel (dig and paint at the voxel hit, place in front of the face it hit).
+    // `primary`: the left button; any other does nothing yet.
+    void click(glm::dvec2 pixel, bool primary) {
+        if (!primary || panel_.editMode == "none") return;
+        const voxel::World& world = live_->world();
+        const VkExtent2D window = presenter_->extent();
+        // The window may show the frame scaled: the pixel in the frame's terms.
+        const Camera camera = makeCamera(fly_->desc(), renderSize_.width, renderSize_.height);
+        const glm::dvec2 p = pixel * glm::dvec2(double(renderSize_.width) / std::max(window.width, 1u),
+                                                double(renderSize_.height) / std::max(window.height, 1u));
+        const std::optional<voxel::RayHit> hit = world.raycast(camera.position, camera.rayDirection(p.x, p.y), 1e12);
+        if (!hit) return;
+        glm::ivec3 voxel = hit->voxel;
+        if (panel_.editMode == "place" && hit->face >= 0) voxel[hit->face / 2] += hit->face % 2 == 0 ? 1 : -1;
+        const double vs = world.voxelSize();
+        const glm::dvec3 centre = world.origin() + (glm::dvec3(voxel) + 0.5) * vs;
+        const double radius = std::max(panel_.brushRadius, 0.5) * vs;
+        const voxel::Edit edit = panel_.editMode == "dig"     ? voxel::Edit::carveSphere(centre, radius)
+                                 : panel_.editMode == "place" ? voxel::Edit::fillSphere(centre, radius, panel_.material)
+                                                              : voxel::Edit::paintSphere(centre, radius, panel_.material);
+        edited(live_->apply(edit));
+    }
+
+    void undo() { edited(live_->undo()); }
+
+    void edited(const voxel::EditResult& r) {
+        if (r.voxels.empty()) return;
+        renderer_->invalidateHistory(r.box);
+        panel_.quads = live_->gpu().quadCount;
+        panel_.activeVoxels = live_->world().stats().solidVoxels;
+        panel_.message = std::to_string(r.changed) + " voxels changed";
+    }
+
+    void saveWorld(const std::filesystem::path& file) {
+        requireOutputPath(file);
+        live_->world().save(file);
+        panel_.message = "wrote " + file.string();
+        std::printf("wrote %s\n", file.c_str());
     }
 
     // The window system applies size changes asynchronously: give it a moment.
@@ -195,8 +263,30 @@ private:
         panel_.view = v;
     }
 
+    // The edit brush, as the panel sets it: edit.mode (none, dig, place, paint),
+    // edit.radius (voxels, 0.5 to 64), edit.material (1 to 255).
+    void setEdit(const std::string& key, const nlohmann::json& v, const std::filesystem::path& file,
+                 const std::string& where) {
+        auto refuse = [&](const std::string& accepted) {
+            throw Error(file.string(), where + ": set." + key + ": bad value " + v.dump(), "accepted: " + accepted);
+        };
+        if (key == "edit.mode") {
+            const std::string m = v.is_string() ? v.get<std::string>() : "";
+            if (m != "none" && m != "dig" && m != "place" && m != "paint") refuse("none, dig, place, paint");
+            panel_.editMode = m;
+        } else if (key == "edit.radius") {
+            if (!v.is_number() || !(v.get<double>() >= 0.5 && v.get<double>() <= 64.0)) refuse("0.5 to 64 voxels");
+            panel_.brushRadius = v.get<double>();
+        } else if (key == "edit.material") {
+            if (!v.is_number_integer() || v.get<int>() < 1 || v.get<int>() > 255) refuse("1 to 255");
+            panel_.material = v.get<int>();
+        } else {
+            throw Error(file.string(), where + ": set." + key + ": unknown setting", "edit.mode, edit.radius, edit.material");
+        }
+    }
+
     void jumpTo(const std::string& name) {
-        fly_->jumpTo(world_.camera(name));
+        fly_->jumpTo(live_->world().camera(name));
         cut();
     }
 
@@ -212,7 +302,7 @@ private:
         if (patch.contains("ao") && patch["ao"].contains("quality"))  // a preset replaces hand-set loop shapes
             d.ao.slices.reset(), d.ao.steps.reset(), d.ao.rays.reset();
         voxel::applySettingsPatch(d, patch, file, field);
-        const AoOptions ao = aoOptionsFor(d.ao, world_.voxelSize(), file.string());
+        const AoOptions ao = aoOptionsFor(d.ao, live_->world().voxelSize(), file.string());
         if (patch.contains("lighting")) renderer_->setLighting(d.lighting);
         if (patch.contains("ao")) renderer_->setAo(ao);
         desc_ = std::move(d);
@@ -255,10 +345,30 @@ private:
         const double wheel = window_.takeWheel();
         in.wheel = (io.WantCaptureMouse ? 0.0 : wheel) + std::exchange(scriptWheel_, 0.0);
         fly_->update(in, dt);
+        addPendingKey();
+        playClock_ += dt;
+        const bool left = window_.mouseDown(GLFW_MOUSE_BUTTON_LEFT) && !io.WantCaptureMouse;
+        if (left && !leftDown_) click(cursor * contentScale(), true);
+        leftDown_ = left;
+        const bool ctrl = window_.keyDown(GLFW_KEY_LEFT_CONTROL) || window_.keyDown(GLFW_KEY_RIGHT_CONTROL);
+        const bool z = keys && ctrl && window_.keyDown(GLFW_KEY_Z);
+        if (z && !undoDown_) undo();
+        undoDown_ = z;
+        const bool r = keys && window_.keyDown(GLFW_KEY_R);
+        if (r && !recordDown_) recordKey();
+        recordDown_ = r;
         if (keys && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Tab), false)) panel_.hidden = !panel_.hidden;
         if (keys && glfwGetKey(window_.handle, GLFW_KEY_F12) == GLFW_PRESS && !f12Down_) pendingShot_ = nextShotName();
         f12Down_ = glfwGetKey(window_.handle, GLFW_KEY_F12) == GLFW_PRESS;
         panel_.speed = fly_->speed();
+    }
+
+    // Framebuffer pixels per window coordinate (HiDPI displays).
+    glm::dvec2 contentScale() const {
+        int ww = 0, wh = 0;
+        glfwGetWindowSize(window_.handle, &ww, &wh);
+        const VkExtent2D fb = window_.framebufferSize();
+        return ww > 0 && wh > 0 ? glm::dvec2(double(fb.width) / ww, double(fb.height) / wh) : glm::dvec2(1.0);
     }
 
     std::filesystem::path nextShotName() {
@@ -326,6 +436,14 @@ private:
             }
             if (!panel_.jumpTo.empty()) jumpTo(std::exchange(panel_.jumpTo, ""));
             if (std::exchange(panel_.screenshot, false)) pendingShot_ = nextShotName();
+            try {
+                if (std::exchange(panel_.undo, false)) undo();
+                if (std::exchange(panel_.saveWorld, false)) saveWorld(panel_.saveWorldAs);
+                if (std::exchange(panel_.record, false)) recordKey();
+                if (std::exchange(panel_.savePath, false)) savePath(panel_.savePathAs);
+            } catch (const Error& e) {
+                panel_.message = e.what();
+            }
         }
         ImGui::Render();
         return ImGui::GetDrawData();
@@ -346,14 +464,17 @@ private:
     }
 
     ViewOptions options_;
-    voxel::World world_;
     voxel::WorldDesc desc_;
     Window window_;
     ImguiSession imgui_;
     vk::Context ctx_;
     std::optional<ViewScript> script_;
     AoOptions aoOptions_;
-    std::unique_ptr<GpuScene> scene_;
+    std::unique_ptr<LiveScene> live_;
+    PathRecorder recorder_;
+    double playClock_ = 0.0;  // seconds shown so far: recorded keys' times
+    std::optional<double> recordStart_;  // the play clock at the first key: the path's time 0
+    bool recordPending_ = false;
     std::vector<voxel::World> objectWorlds_;
     std::unique_ptr<SceneObjects> objects_;
     std::unique_ptr<Renderer> renderer_;
@@ -368,7 +489,7 @@ private:
     glm::dvec2 scriptLook_{0.0}, lastCursor_{0.0};
     double scriptWheel_ = 0.0;
     std::optional<std::filesystem::path> pendingShot_;
-    bool f12Down_ = false;
+    bool f12Down_ = false, leftDown_ = false, undoDown_ = false, recordDown_ = false;
     int shotCounter_ = 1;
     std::vector<uint8_t> windowPixels_;
 };
