@@ -59,12 +59,13 @@ class Viewer {
 public:
     explicit Viewer(const ViewOptions& o)
         : options_(o),
-          desc_(voxel::World::load(o.world).desc()),
+          script_(o.script ? std::optional<ViewScript>(ViewScript::load(*o.script)) : std::nullopt),
+          loaded_(voxel::World::load(o.world)),
+          desc_(loaded_.desc()),
           window_("grotto view - " + o.world.filename().string(), o.size.width, o.size.height),
           imgui_(window_.handle),
           ctx_(contextOptions(window_)) {
-        if (o.script) script_ = ViewScript::load(*o.script);
-        live_ = std::make_unique<LiveScene>(ctx_, voxel::World::load(o.world));
+        live_ = std::make_unique<LiveScene>(ctx_, std::move(loaded_));
         const voxel::World& world = live_->world();
         // Command-line AO flags, as every command takes them, over the world's.
         const AoOptions ao = app::resolveAo(world, o.ao);
@@ -464,11 +465,13 @@ private:
     }
 
     ViewOptions options_;
+    // Script and world are read before the window opens: bad input shows no window.
+    std::optional<ViewScript> script_;
+    voxel::World loaded_;  // moved into live_ once the device exists
     voxel::WorldDesc desc_;
     Window window_;
     ImguiSession imgui_;
     vk::Context ctx_;
-    std::optional<ViewScript> script_;
     AoOptions aoOptions_;
     std::unique_ptr<LiveScene> live_;
     PathRecorder recorder_;
