@@ -140,3 +140,35 @@ TEST_F(CliErrors, ViewerDigsUndoesAndSavesTheWorld) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+TEST_F(CliErrors, ViewerPlaysAWorldPathAsFlythroughRendersIt) {
+    REQUIRE_XVFB();
+    // Played from frame 0 at 1/60 s a frame, frame 29 shows the path at 29/60 s:
+    // flythrough's frame 30 at --fps 60.
+    const fs::path script = writeText("play.json", R"({"actions": [
+        {"frame": 0, "set": {"play": "orbit"}}, {"frame": 29, "screenshot": "played.png"}]})");
+    const std::string world = (test::worldsDir() / "rooms.json").string();
+    const test::RunResult v =
+        runGrotto("view " + world + " --size 320x180 --script " + script.string() + " --frames 30", kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    const fs::path out = dir_ / "frames";
+    const test::RunResult f =
+        runGrotto("flythrough " + world + " --path orbit --fps 60 --frames 30-30 --size 320x180 -o " + out.string());
+    ASSERT_EQ(f.exitCode, 0) << f.err;
+    const std::vector<uint8_t> shown = test::readPixels8(dir_ / "played.png"), played = test::readPixels8(out / "frame.0030.png");
+    ASSERT_EQ(shown.size(), played.size());
+    const double diff = meanDifference(shown, played);
+    std::printf("[ measured ] path orbit at 29/60 s: mean |viewer - flythrough| %.3f /255\n", diff);
+    EXPECT_LT(diff, 0.05);  // measured 0.003
+    const test::RunResult bad = runGrotto("view " + world + " --size 64x48 --frames 2 --script " +
+                                              writeText("nopath.json", R"({"actions": [{"frame": 0, "set": {"play": "nope"}}]})").string(),
+                                          kUnderXvfb);
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("set.play"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace grotto

@@ -89,6 +89,12 @@ voxel::json drawPanel(PanelState& s) {
             ImGui::SameLine();
         }
         ImGui::NewLine();
+        for (const std::string& p : s.paths) {
+            if (ImGui::Button(("play " + p).c_str())) s.play = p;
+            ImGui::SameLine();
+        }
+        if (!s.paths.empty()) ImGui::NewLine();
+        if (!s.playing.empty()) ImGui::Text("playing %s (any flight key stops it)", s.playing.c_str());
         if (ImGui::Button("screenshot (F12)")) s.screenshot = true;
         ImGui::Text("fly speed %.3g /s (wheel)", s.speed);
     }

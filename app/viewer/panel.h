@@ -23,6 +23,9 @@ struct PanelState {
     bool hidden = false;                     // Tab hides the panel
     std::vector<std::string> cameras;        // the world's named cameras
     std::string jumpTo;                      // set when a camera button was pressed
+    std::vector<std::string> paths;          // the world's camera paths
+    std::string play;                        // set when a path's play button was pressed
+    std::string playing;                     // the path playing now, if any
     bool screenshot = false;                 // set when the screenshot button was pressed
     FrameStats stats;                        // the last frame's
     std::deque<float> frameMs;               // recent frame times, oldest first

@@ -84,6 +84,7 @@ public:
         const double extent = b.empty() ? 10.0 : glm::length(glm::dvec3(b.max - b.min + 1)) * world.voxelSize();
         fly_ = std::make_unique<FlyCamera>(start, extent / 8.0);  // crosses the world in about 8 s
         for (const auto& [name, c] : desc_.cameras) panel_.cameras.push_back(name);
+        for (const auto& [name, p] : desc_.paths) panel_.paths.push_back(name);
         panel_.quads = live_->gpu().quadCount;
         panel_.activeVoxels = world.stats().solidVoxels;
         panel_.saveWorldAs = (o.world.parent_path() / (o.world.stem().string() + "-edited.vdb")).string();
@@ -108,7 +109,7 @@ public:
             resizeIfNeeded();
             const double dt = script_ ? kScriptStep : std::min(lastFrameSeconds_, 0.25);
             flyFromInput(dt);
-            const Camera camera = makeCamera(fly_->desc(), renderSize_.width, renderSize_.height);
+            const Camera camera = currentCamera(dt);
             const auto beforeRender = Clock::now();
             panel_.stats = renderer_->render(camera, sequence_++);
             const auto afterRender = Clock::now();
@@ -161,6 +162,7 @@ private:
             case ScriptAction::Kind::Set:
                 for (const auto& [key, value] : a.settings) {
                     if (key == "view") setView(value, script_->file());
+                    else if (key == "play") playFromScript(value, where);
                     else if (key.rfind("edit.", 0) == 0) setEdit(key, value, script_->file(), where);
                     else applyPatch(patchFor(key, value), script_->file(), where + ": set." + key);
                 }
@@ -180,6 +182,38 @@ private:
             case ScriptAction::Kind::SaveWorld: saveWorld(a.path); break;
             }
         }
+    }
+
+    // The fly camera, or the playing path's camera at its clock (its cuts restart
+    // the history; at its end the fly camera takes over where it stopped).
+    Camera currentCamera(double dt) {
+        if (playing_) {
+            const double t = std::min(pathClock_, playing_->duration());
+            if (t > 0.0 && playing_->cutBetween(lastPathTime_, t)) cut();
+            lastPathTime_ = t;
+            pathClock_ += dt;
+            const Camera c = playing_->camera(t, renderSize_.width, renderSize_.height);
+            if (t >= playing_->duration()) stopPath(c);
+            return c;
+        }
+        return makeCamera(fly_->desc(), renderSize_.width, renderSize_.height);
+    }
+
+    void playPath(const std::string& name) {
+        playing_.emplace(desc_.paths.at(name), live_->world().camera(""));
+        pathClock_ = lastPathTime_ = 0.0;
+        panel_.playing = name;
+        cut();
+    }
+
+    void stopPath(const Camera& at) {
+        voxel::CameraDesc d = fly_->desc();
+        d.position = at.position;
+        d.target = at.position - at.basis[2];
+        d.fovDegrees = glm::degrees(at.fovY);
+        fly_->jumpTo(d);
+        playing_.reset();
+        panel_.playing.clear();
     }
 
     void pressHotkey(ScriptKey key) {
@@ -210,15 +244,32 @@ private:
     // A click at a window pixel: the panel's edit where the view ray first meets a
     // voxel (dig and paint at the voxel hit, place in front of the face it hit).
     // `primary`: the left button; any other does nothing yet.
-    void click(glm::dvec2 pixel, bool primary) {
-        if (!primary || panel_.editMode == "none") return;
-        const voxel::World& world = live_->world();
+    // The view ray through a window pixel (the window may show the frame scaled)
+    // and the first voxel it hits.
+    struct Pick {
+        glm::dvec3 origin, direction;
+        std::optional<voxel::RayHit> hit;
+    };
+    Pick pick(glm::dvec2 pixel) const {
         const VkExtent2D window = presenter_->extent();
-        // The window may show the frame scaled: the pixel in the frame's terms.
         const Camera camera = makeCamera(fly_->desc(), renderSize_.width, renderSize_.height);
         const glm::dvec2 p = pixel * glm::dvec2(double(renderSize_.width) / std::max(window.width, 1u),
                                                 double(renderSize_.height) / std::max(window.height, 1u));
-        const std::optional<voxel::RayHit> hit = world.raycast(camera.position, camera.rayDirection(p.x, p.y), 1e12);
+        Pick k{camera.position, camera.rayDirection(p.x, p.y), std::nullopt};
+        k.hit = live_->world().raycast(k.origin, k.direction, 1e12);
+        return k;
+    }
+
+    // The orbit's pivot: the surface under the pixel, else the point a second's flight ahead.
+    glm::dvec3 pointUnder(glm::dvec2 pixel) const {
+        const Pick k = pick(pixel);
+        return k.origin + k.direction * (k.hit ? k.hit->distance : fly_->speed());
+    }
+
+    void click(glm::dvec2 pixel, bool primary) {
+        if (!primary || panel_.editMode == "none") return;
+        const voxel::World& world = live_->world();
+        const std::optional<voxel::RayHit> hit = pick(pixel).hit;
         if (!hit) return;
         glm::ivec3 voxel = hit->voxel;
         if (panel_.editMode == "place" && hit->face >= 0) voxel[hit->face / 2] += hit->face % 2 == 0 ? 1 : -1;
@@ -286,6 +337,17 @@ private:
         }
     }
 
+    void playFromScript(const nlohmann::json& v, const std::string& where) {
+        const std::string name = v.is_string() ? v.get<std::string>() : "";
+        if (!desc_.paths.count(name)) {
+            std::string known;
+            for (const std::string& p : panel_.paths) known += (known.empty() ? "" : ", ") + p;
+            throw Error(script_->file().string(), where + ": set.play: no path " + v.dump() + " in the world",
+                        "the world's paths: " + (known.empty() ? std::string("none") : known));
+        }
+        playPath(name);
+    }
+
     void jumpTo(const std::string& name) {
         fly_->jumpTo(live_->world().camera(name));
         cut();
@@ -345,7 +407,16 @@ private:
         in.look += std::exchange(scriptLook_, glm::dvec2(0.0));
         const double wheel = window_.takeWheel();
         in.wheel = (io.WantCaptureMouse ? 0.0 : wheel) + std::exchange(scriptWheel_, 0.0);
-        fly_->update(in, dt);
+        // A flight key or a look takes the camera back from a playing path.
+        if (playing_ && (in.forward || in.back || in.left || in.right || in.up || in.down || in.look != glm::dvec2(0.0)))
+            stopPath(currentCamera(0.0));
+        // Middle drag orbits the point under the cursor where the drag began.
+        const bool middle = window_.mouseDown(GLFW_MOUSE_BUTTON_MIDDLE) && !io.WantCaptureMouse;
+        if (middle && !orbitPivot_) orbitPivot_ = pointUnder(cursor * contentScale());
+        if (!middle) orbitPivot_.reset();
+        if (orbitPivot_) fly_->orbit(*orbitPivot_, cursor - lastOrbitCursor_);
+        lastOrbitCursor_ = cursor;
+        if (!playing_) fly_->update(in, dt);
         addPendingKey();
         playClock_ += dt;
         const bool left = window_.mouseDown(GLFW_MOUSE_BUTTON_LEFT) && !io.WantCaptureMouse;
@@ -436,6 +507,7 @@ private:
                 panel_.message = e.what();
             }
             if (!panel_.jumpTo.empty()) jumpTo(std::exchange(panel_.jumpTo, ""));
+            if (!panel_.play.empty()) playPath(std::exchange(panel_.play, ""));
             if (std::exchange(panel_.screenshot, false)) pendingShot_ = nextShotName();
             try {
                 if (std::exchange(panel_.undo, false)) undo();
@@ -475,6 +547,10 @@ private:
     AoOptions aoOptions_;
     std::unique_ptr<LiveScene> live_;
     PathRecorder recorder_;
+    std::optional<CameraPath> playing_;  // a world's path playing, at pathClock_ seconds
+    double pathClock_ = 0.0, lastPathTime_ = 0.0;
+    std::optional<glm::dvec3> orbitPivot_;
+    glm::dvec2 lastOrbitCursor_{0.0};
     double playClock_ = 0.0;  // seconds shown so far: recorded keys' times
     std::optional<double> recordStart_;  // the play clock at the first key: the path's time 0
     bool recordPending_ = false;
