@@ -29,6 +29,9 @@ void addViewCommand(CLI::App& app) {
     cmd->add_option("--screenshot", args->screenshot, "At exit, write the frame as `render` does (.png, or .exr with AOVs)");
     cmd->add_option("--capture-window", args->capture, "At the last of --frames, write the window as shown, panel included (.png)");
     cmd->add_flag("--hide-panel", args->o.hidePanel, "Start with the panel hidden (Tab toggles it)");
+    cmd->add_option("--render-scale", args->o.renderScale,
+                    "Frame pixels per window pixel, 0.25 to 1: render smaller, scaled up to the window")
+        ->capture_default_str()->check(finiteRange(0.25, 1.0));
     cmd->add_flag("--bench", args->o.bench, "Print the median frame time and fps at exit");
     addAoFlags(cmd, args->o.ao);
     cmd->callback([args] {

@@ -84,6 +84,8 @@ voxel::json drawPanel(PanelState& s) {
     }
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
         combo("show", s.view, kViews);
+        float scale = float(s.renderScale);
+        if (ImGui::SliderFloat("render scale", &scale, 0.25f, 1.0f, "%.2f")) s.renderScale = scale;
         for (const std::string& c : s.cameras) {
             if (ImGui::Button(c.c_str())) s.jumpTo = c;
             ImGui::SameLine();

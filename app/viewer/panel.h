@@ -21,6 +21,7 @@ struct PanelState {
     const AoOptions* ao = nullptr;           // the AO settings in effect
     std::string view = "final";
     bool hidden = false;                     // Tab hides the panel
+    double renderScale = 1.0;                // frame pixels per window pixel
     std::vector<std::string> cameras;        // the world's named cameras
     std::string jumpTo;                      // set when a camera button was pressed
     std::vector<std::string> paths;          // the world's camera paths

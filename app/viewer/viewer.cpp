@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <map>
 
@@ -75,7 +76,8 @@ public:
         objectWorlds_ = voxel::loadObjectWorlds(desc_);
         if (!objectWorlds_.empty()) objects_ = uploadObjects(ctx_, objectWorlds_, desc_);
         const VkExtent2D fb = window_.framebufferSize();
-        renderSize_ = {std::max(fb.width, 1u), std::max(fb.height, 1u)};
+        renderScale_ = o.renderScale;
+        renderSize_ = scaled(fb);
         renderer_ = std::make_unique<Renderer>(ctx_, live_->gpu(), desc_.lighting, ao, renderSize_.width,
                                                renderSize_.height, objects_.get());
         presenter_ = std::make_unique<Presenter>(ctx_, fb, o.vsync);
@@ -90,6 +92,7 @@ public:
         panel_.saveWorldAs = (o.world.parent_path() / (o.world.stem().string() + "-edited.vdb")).string();
         panel_.savePathAs = (o.world.parent_path() / (o.world.stem().string() + "-recorded.json")).string();
         panel_.hidden = o.hidePanel;
+        panel_.renderScale = o.renderScale;
     }
 
     ~Viewer() {
@@ -373,15 +376,23 @@ private:
         cut();
     }
 
+    // The frame's size for a window of `fb` pixels at the render scale.
+    VkExtent2D scaled(VkExtent2D fb) const {
+        return {std::max(uint32_t(std::lround(fb.width * renderScale_)), 1u),
+                std::max(uint32_t(std::lround(fb.height * renderScale_)), 1u)};
+    }
+
     void resizeIfNeeded() {
         const VkExtent2D fb = window_.framebufferSize();
-        if (fb.width == presented_.width && fb.height == presented_.height) return;
-        presented_ = fb;
-        presenter_->resize(fb);
+        if (fb.width != presented_.width || fb.height != presented_.height) {
+            presented_ = fb;
+            presenter_->resize(fb);
+        }
         if (fb.width == 0 || fb.height == 0) return;  // minimised: keep rendering at the last size
-        if (fb.width != renderSize_.width || fb.height != renderSize_.height) {
-            renderSize_ = fb;
-            renderer_->resize(fb.width, fb.height);
+        const VkExtent2D size = scaled(fb);
+        if (size.width != renderSize_.width || size.height != renderSize_.height) {
+            renderSize_ = size;
+            renderer_->resize(size.width, size.height);
             sequence_ = 0;
         }
     }
@@ -510,6 +521,7 @@ private:
             if (!panel_.play.empty()) playPath(std::exchange(panel_.play, ""));
             if (std::exchange(panel_.screenshot, false)) pendingShot_ = nextShotName();
             try {
+                if (panel_.renderScale != renderScale_) renderScale_ = panel_.renderScale;
                 if (std::exchange(panel_.undo, false)) undo();
                 if (std::exchange(panel_.saveWorld, false)) saveWorld(panel_.saveWorldAs);
                 if (std::exchange(panel_.record, false)) recordKey();
@@ -562,6 +574,7 @@ private:
     PanelState panel_;
     vk::Image shown_;  // an AOV view's pixels
     VkExtent2D renderSize_{}, presented_{};
+    double renderScale_ = 1.0;  // frame pixels per window pixel (the panel's "render scale")
     uint32_t frame_ = 0, sequence_ = 0;
     double lastFrameSeconds_ = 1.0 / 60.0;
     std::map<std::string, bool> scriptKeys_;

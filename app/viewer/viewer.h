@@ -21,6 +21,7 @@ struct ViewOptions {
     std::optional<std::filesystem::path> screenshot;  // at exit, as `render` writes it
     std::optional<std::filesystem::path> captureWindow;  // at exit, the window as shown, panel included
     bool hidePanel = false;
+    double renderScale = 1.0;           // frame pixels per window pixel, 0.25 to 1 (the blit scales it up)
     bool bench = false;                 // time frames, print fps
 };
 
