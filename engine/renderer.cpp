@@ -106,13 +106,8 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
         objectUniforms_ = vk::createBuffer(ctx, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         createPasses();
         createTargets(width, height);
-        VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
-                                       .commandPool = ctx.commandPool,
-                                       .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
-                                       .commandBufferCount = 1};
-        VK_CHECK(vkAllocateCommandBuffers(ctx.device, &ai, &cmd_));
-        VkFenceCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-        VK_CHECK(vkCreateFence(ctx.device, &fci, nullptr, &fence_));
+        cmd_ = vk::allocateCommandBuffer(ctx);
+        fence_ = vk::createFence(ctx);
     } catch (...) {  // e.g. a shader that fails to load: free what was made before it
         release();
         throw;

@@ -52,13 +52,8 @@ Presenter::Presenter(vk::Context& ctx, VkExtent2D framebuffer, bool vsync)
                                   .poolSizeCount = 1,
                                   .pPoolSizes = &size};
     VK_CHECK(vkCreateDescriptorPool(ctx.device, &dp, nullptr, &uiPool_));
-    VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
-                                   .commandPool = ctx.commandPool,
-                                   .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
-                                   .commandBufferCount = 1};
-    VK_CHECK(vkAllocateCommandBuffers(ctx.device, &ai, &cmd_));
-    VkFenceCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
-    VK_CHECK(vkCreateFence(ctx.device, &fci, nullptr, &fence_));
+    cmd_ = vk::allocateCommandBuffer(ctx);
+    fence_ = vk::createFence(ctx);
     VkSemaphoreCreateInfo sci{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO};
     VK_CHECK(vkCreateSemaphore(ctx.device, &sci, nullptr, &acquired_));
     createTargets();
@@ -136,19 +131,9 @@ bool Presenter::present(const vk::Image& color, ImDrawData* ui, std::vector<uint
     VkCommandBufferBeginInfo bi{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                 .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
     VK_CHECK(vkBeginCommandBuffer(cmd_, &bi));
-    const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
     auto barrier = [&](VkImage image, VkImageLayout from, VkImageLayout to, VkPipelineStageFlags srcStage,
                        VkAccessFlags srcAccess, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
-        VkImageMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
-                               .srcAccessMask = srcAccess,
-                               .dstAccessMask = dstAccess,
-                               .oldLayout = from,
-                               .newLayout = to,
-                               .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                               .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                               .image = image,
-                               .subresourceRange = all};
-        vkCmdPipelineBarrier(cmd_, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+        vk::transition(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, from, to, srcStage, srcAccess, dstStage, dstAccess);
     };
     const auto transfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
     // The renderer's colour, written by compute in an earlier submission.

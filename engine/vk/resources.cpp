@@ -85,6 +85,12 @@ Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferU
 void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
                 VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
                 VkAccessFlags dstAccess) {
+    transition(cmd, image.image, image.aspect, from, to, srcStage, srcAccess, dstStage, dstAccess);
+}
+
+void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+                VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
+                VkAccessFlags dstAccess) {
     VkImageMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER,
                            .srcAccessMask = srcAccess,
                            .dstAccessMask = dstAccess,
@@ -92,9 +98,26 @@ void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkI
                            .newLayout = to,
                            .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                            .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                           .image = image.image,
-                           .subresourceRange = {image.aspect, 0, 1, 0, 1}};
+                           .image = image,
+                           .subresourceRange = {aspect, 0, 1, 0, 1}};
     vkCmdPipelineBarrier(cmd, srcStage, dstStage, 0, 0, nullptr, 0, nullptr, 1, &b);
+}
+
+VkCommandBuffer allocateCommandBuffer(Context& ctx) {
+    VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO,
+                                   .commandPool = ctx.commandPool,
+                                   .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY,
+                                   .commandBufferCount = 1};
+    VkCommandBuffer cmd;
+    VK_CHECK(vkAllocateCommandBuffers(ctx.device, &ai, &cmd));
+    return cmd;
+}
+
+VkFence createFence(Context& ctx) {
+    VkFenceCreateInfo fci{.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+    VkFence fence;
+    VK_CHECK(vkCreateFence(ctx.device, &fci, nullptr, &fence));
+    return fence;
 }
 
 }  // namespace grotto::vk

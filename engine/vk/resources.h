@@ -35,5 +35,13 @@ Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferU
 void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
                 VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
                 VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+// The same for an image Grotto did not make (a swapchain's): one mip, one layer.
+void transition(VkCommandBuffer cmd, VkImage image, VkImageAspectFlags aspect, VkImageLayout from, VkImageLayout to,
+                VkPipelineStageFlags srcStage, VkAccessFlags srcAccess, VkPipelineStageFlags dstStage,
+                VkAccessFlags dstAccess);
+
+// A primary command buffer from the context's pool, and an unsignalled fence.
+VkCommandBuffer allocateCommandBuffer(Context& ctx);
+VkFence createFence(Context& ctx);
 
 }  // namespace grotto::vk
