@@ -1,12 +1,21 @@
-// `grotto view` in a real window, under Xvfb (xvfb-run), validation layer on: a
+// `grotto view` in a real window, under Xvfb, validation layer on: a
 // scripted flight that ends on a named camera gives the same image as `render` of
 // that camera; resizing, minimising and restoring mid-run stay valid; a bad script
-// is refused. Skipped, saying why, only where xvfb-run is missing.
+// is refused; recorded paths, played paths and digging. Skipped, saying why, only
+// where Xvfb is missing.
 #include "tests/cli_fixture.h"
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <csignal>
 #include <cstdlib>
+#include <fstream>
+#include <thread>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 namespace grotto {
 namespace {
@@ -15,13 +24,54 @@ namespace fs = std::filesystem;
 using test::CliErrors;
 using test::runGrotto;
 
-// The environment prefix that runs grotto inside a fresh virtual X server.
-const char* kUnderXvfb = "GROTTO_VALIDATION=1 xvfb-run -a -s '-screen 0 1280x800x24'";
+// A virtual X server of this test's own. Xvfb picks a free display itself
+// (-displayfd), so tests running side by side never collide; it stops with the test.
+class VirtualDisplay {
+public:
+    VirtualDisplay() {
+        const fs::path file = fs::temp_directory_path() / ("grotto-xvfb-" + std::to_string(getpid()));
+        pid_ = fork();
+        if (pid_ == 0) {
+            const int fd = open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+            const int quiet = open("/dev/null", O_WRONLY);
+            dup2(quiet, 1);
+            dup2(quiet, 2);
+            const std::string fdText = std::to_string(fd);
+            execlp("Xvfb", "Xvfb", "-displayfd", fdText.c_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp",
+                   static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        // The display number arrives once the server accepts connections.
+        for (int i = 0; i < 200 && display_.empty(); ++i) {
+            std::ifstream in(file);
+            std::string n;
+            if (std::getline(in, n) && !in.eof()) display_ = ":" + n;
+            else std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        fs::remove(file);
+    }
+    ~VirtualDisplay() {
+        if (pid_ > 0) {
+            kill(pid_, SIGTERM);
+            waitpid(pid_, nullptr, 0);
+        }
+    }
+    // The environment a viewer run gets: this display, the validation layer on.
+    std::string env() const { return "GROTTO_VALIDATION=1 DISPLAY=" + display_; }
+    bool ready() const { return !display_.empty(); }
 
-bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+private:
+    pid_t pid_ = -1;
+    std::string display_;
+};
 
-#define REQUIRE_XVFB() \
-    if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (Debian: xvfb): no X server for the viewer's window"
+bool haveXvfb() { return std::system("command -v Xvfb >/dev/null 2>&1") == 0; }
+
+#define REQUIRE_XVFB()                                                                                         \
+    if (!haveXvfb()) GTEST_SKIP() << "Xvfb is not installed (Debian: xvfb): no X server for the viewer's window"; \
+    const VirtualDisplay x;                                                                                    \
+    ASSERT_TRUE(x.ready()) << "Xvfb did not start";                                                           \
+    const std::string kUnderXvfb = x.env()
 
 TEST_F(CliErrors, ViewerFlightEndingOnACameraMatchesRender) {
     REQUIRE_XVFB();

@@ -154,7 +154,8 @@ private:
     void applyScript() {
         if (!script_) return;
         for (const ScriptAction& a : script_->at(frame_)) {
-            const std::string where = "actions at frame " + std::to_string(a.frame);
+            // The field errors name: "frame 8 set" (a script's frame, its verb).
+            const std::string where = "frame " + std::to_string(a.frame) + " " + verbName(a.kind);
             switch (a.kind) {
             case ScriptAction::Kind::Key:
                 if (isHeld(a.key)) scriptKeys_[scriptKeyName(a.key)] = a.down;
@@ -164,10 +165,11 @@ private:
             case ScriptAction::Kind::Wheel: scriptWheel_ += a.wheel; break;
             case ScriptAction::Kind::Set:
                 for (const auto& [key, value] : a.settings) {
-                    if (key == "view") setView(value, script_->file());
-                    else if (key == "play") playFromScript(value, where);
-                    else if (key.rfind("edit.", 0) == 0) setEdit(key, value, script_->file(), where);
-                    else applyPatch(patchFor(key, value), script_->file(), where + ": set." + key);
+                    const std::string field = where + "." + key;
+                    if (key == "view") setView(value, field);
+                    else if (key == "play") playFromScript(value, field);
+                    else if (key.rfind("edit.", 0) == 0) setEdit(key, value, field);
+                    else applyPatch(patchFor(key, value), script_->file(), where);
                 }
                 break;
             case ScriptAction::Kind::Resize:
@@ -310,43 +312,47 @@ private:
         }
     }
 
-    void setView(const nlohmann::json& value, const std::filesystem::path& file) {
+    // A script's setting that is the viewer's own, refused as the file readers do.
+    [[noreturn]] void refuse(const std::string& field, const std::string& what, const std::string& hint) const {
+        throw Error(script_->file().string(), "field '" + field + "': " + what, hint);
+    }
+
+    void setView(const nlohmann::json& value, const std::string& field) {
         const std::string v = value.is_string() ? value.get<std::string>() : "";
         if (std::find(kViews.begin(), kViews.end(), v) == kViews.end())
-            throw Error(file.string(), "view: unknown view " + value.dump(), "accepted: final, ao, raw, spatial, "
-                                                                               "temporal, history, edges, normal, depth, shadow");
+            refuse(field, "unknown view " + value.dump(),
+                   "accepted: final, ao, raw, spatial, temporal, history, edges, normal, depth, shadow");
         panel_.view = v;
     }
 
     // The edit brush, as the panel sets it: edit.mode (none, dig, place, paint),
     // edit.radius (voxels, 0.5 to 64), edit.material (1 to 255).
-    void setEdit(const std::string& key, const nlohmann::json& v, const std::filesystem::path& file,
-                 const std::string& where) {
-        auto refuse = [&](const std::string& accepted) {
-            throw Error(file.string(), where + ": set." + key + ": bad value " + v.dump(), "accepted: " + accepted);
-        };
+    void setEdit(const std::string& key, const nlohmann::json& v, const std::string& field) {
         if (key == "edit.mode") {
             const std::string m = v.is_string() ? v.get<std::string>() : "";
-            if (m != "none" && m != "dig" && m != "place" && m != "paint") refuse("none, dig, place, paint");
+            if (m != "none" && m != "dig" && m != "place" && m != "paint")
+                refuse(field, "unknown mode " + v.dump(), "accepted: none, dig, place, paint");
             panel_.editMode = m;
         } else if (key == "edit.radius") {
-            if (!v.is_number() || !(v.get<double>() >= 0.5 && v.get<double>() <= 64.0)) refuse("0.5 to 64 voxels");
+            if (!v.is_number() || !(v.get<double>() >= 0.5 && v.get<double>() <= 64.0))
+                refuse(field, "value " + v.dump() + " is out of range", "accepted: 0.5 to 64 (voxels)");
             panel_.brushRadius = v.get<double>();
         } else if (key == "edit.material") {
-            if (!v.is_number_integer() || v.get<int>() < 1 || v.get<int>() > 255) refuse("1 to 255");
+            if (!v.is_number_integer() || v.get<int>() < 1 || v.get<int>() > 255)
+                refuse(field, "value " + v.dump() + " is out of range", "accepted: whole numbers 1 to 255");
             panel_.material = v.get<int>();
         } else {
-            throw Error(file.string(), where + ": set." + key + ": unknown setting", "edit.mode, edit.radius, edit.material");
+            refuse(field, "unknown setting", "edit.mode, edit.radius, edit.material");
         }
     }
 
-    void playFromScript(const nlohmann::json& v, const std::string& where) {
+    void playFromScript(const nlohmann::json& v, const std::string& field) {
         const std::string name = v.is_string() ? v.get<std::string>() : "";
         if (!desc_.paths.count(name)) {
             std::string known;
             for (const std::string& p : panel_.paths) known += (known.empty() ? "" : ", ") + p;
-            throw Error(script_->file().string(), where + ": set.play: no path " + v.dump() + " in the world",
-                        "the world's paths: " + (known.empty() ? std::string("none") : known));
+            refuse(field, "no path " + v.dump() + " in the world",
+                   "the world's paths: " + (known.empty() ? std::string("none") : known));
         }
         playPath(name);
     }
