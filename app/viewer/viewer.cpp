@@ -113,6 +113,14 @@ public:
             const double dt = script_ ? kScriptStep : std::min(lastFrameSeconds_, 0.25);
             flyFromInput(dt);
             const Camera camera = currentCamera(dt);
+            lastCamera_ = camera;
+            if (objects_) renderer_->setObjectPoses(objects_->poses(playClock_));  // objects move on the play clock
+            const VkExtent2D fb = window_.framebufferSize();
+            if (fb.width == 0 || fb.height == 0) {  // minimised: nothing to show, so nothing to render
+                glfwWaitEventsTimeout(script_ ? 0.0 : 0.05);
+                ++frame_;
+                continue;
+            }
             const auto beforeRender = Clock::now();
             panel_.stats = renderer_->render(camera, sequence_++);
             const auto afterRender = Clock::now();
@@ -506,9 +514,9 @@ private:
         std::printf("wrote %s (%ux%u)\n", path.c_str(), f.width, f.height);
     }
 
+    // The last frame rendered, with the camera it was rendered from.
     void screenshot(const std::filesystem::path& path) {
-        const Camera camera = makeCamera(fly_->desc(), renderSize_.width, renderSize_.height);
-        writeShot(path, renderer_->readback(camera, imageFormatFor(path) == ImageFormat::Exr), camera);
+        writeShot(path, renderer_->readback(lastCamera_, imageFormatFor(path) == ImageFormat::Exr), lastCamera_);
     }
 
     ImDrawData* drawUi() {
@@ -580,6 +588,7 @@ private:
     PanelState panel_;
     vk::Image shown_;  // an AOV view's pixels
     VkExtent2D renderSize_{}, presented_{};
+    Camera lastCamera_;
     double renderScale_ = 1.0;  // frame pixels per window pixel (the panel's "render scale")
     uint32_t frame_ = 0, sequence_ = 0;
     double lastFrameSeconds_ = 1.0 / 60.0;
