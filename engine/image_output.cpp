@@ -68,11 +68,7 @@ uint8_t toSrgb8(float v) {
     return uint8_t(k);
 }
 
-namespace {
-
 float srgbToLinear(float s) { return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f); }
-
-}  // namespace
 
 void showAov(FrameImages& f, const std::string& which) {
     auto valueOr = [](const std::vector<float>& v, size_t i, float none) { return v.empty() ? none : v[i]; };

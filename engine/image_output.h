@@ -31,6 +31,8 @@ void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t h
 
 // Linear [0, 1] -> 8-bit sRGB (clamped; NaN -> 0).
 uint8_t toSrgb8(float linear);
+// An sRGB-encoded value in [0, 1] -> linear.
+float srgbToLinear(float srgb);
 
 // An 8-bit sRGB PNG of `rgb` (3 bytes a pixel, row 0 on top), written atomically.
 void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb);

@@ -32,10 +32,10 @@ voxel::json drawPanel(PanelState& s) {
     voxel::json patch = voxel::json::object();
     const voxel::WorldDesc& d = *s.desc;
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(300, 0), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("grotto");
-
+    ImGui::PushItemWidth(-150.0f);  // room for the longest label
     auto aoDetails = [&] {
         // The values in effect (preset, world file, changes), each control writing its world-file key.
         const AoOptions& ao = *s.ao;
@@ -130,6 +130,7 @@ voxel::json drawPanel(PanelState& s) {
         ImGui::Text("solid voxels %llu", (unsigned long long)s.activeVoxels);
     }
     if (!s.message.empty()) ImGui::TextWrapped("%s", s.message.c_str());
+    ImGui::PopItemWidth();
     ImGui::End();
     return patch;
 }

@@ -39,6 +39,10 @@ struct ImguiSession {
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
         ImGui::StyleColorsDark();
+        // ImGui's colours are sRGB values; the swapchain image encodes what is
+        // written to it, so they go in linear to come out as ImGui meant them.
+        for (ImVec4& c : ImGui::GetStyle().Colors)
+            c = ImVec4(srgbToLinear(c.x), srgbToLinear(c.y), srgbToLinear(c.z), c.w);
         ImGui_ImplGlfw_InitForVulkan(window, true);
     }
     ~ImguiSession() {
