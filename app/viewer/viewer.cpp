@@ -1,7 +1,9 @@
 #include "app/viewer/viewer.h"
 
 #include "app/viewer/fly_camera.h"
+#include "app/viewer/imgui_session.h"
 #include "app/viewer/panel.h"
+#include "app/viewer/path_player.h"
 #include "app/viewer/path_recorder.h"
 #include "app/viewer/presenter.h"
 #include "app/viewer/view_script.h"
@@ -31,25 +33,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 constexpr double kScriptStep = 1.0 / 60.0;  // seconds a scripted frame advances: runs are reproducible
 constexpr size_t kGraphFrames = 120;
-
-// ImGui's context and GLFW backend for the window's lifetime.
-struct ImguiSession {
-    explicit ImguiSession(GLFWwindow* window) {
-        IMGUI_CHECKVERSION();
-        ImGui::CreateContext();
-        ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the working directory
-        ImGui::StyleColorsDark();
-        // ImGui's colours are sRGB values; the swapchain image encodes what is
-        // written to it, so they go in linear to come out as ImGui meant them.
-        for (ImVec4& c : ImGui::GetStyle().Colors)
-            c = ImVec4(srgbToLinear(c.x), srgbToLinear(c.y), srgbToLinear(c.z), c.w);
-        ImGui_ImplGlfw_InitForVulkan(window, true);
-    }
-    ~ImguiSession() {
-        ImGui_ImplGlfw_Shutdown();
-        ImGui::DestroyContext();
-    }
-};
 
 // A dotted world-file key ("lighting.sun.angle") and its value as a patch.
 voxel::json patchFor(const std::string& key, const nlohmann::json& value) {
@@ -204,32 +187,22 @@ private:
     // The fly camera, or the playing path's camera at its clock (its cuts restart
     // the history; at its end the fly camera takes over where it stopped).
     Camera currentCamera(double dt) {
-        if (playing_) {
-            const double t = std::min(pathClock_, playing_->duration());
-            if (t > 0.0 && playing_->cutBetween(lastPathTime_, t)) cut();
-            lastPathTime_ = t;
-            pathClock_ += dt;
-            const Camera c = playing_->camera(t, renderSize_.width, renderSize_.height);
-            if (t >= playing_->duration()) stopPath(c);
-            return c;
-        }
-        return makeCamera(fly_->desc(), renderSize_.width, renderSize_.height);
+        if (!player_.playing()) return makeCamera(fly_->desc(), renderSize_.width, renderSize_.height);
+        const PathPlayer::Frame f = player_.next(dt, renderSize_.width, renderSize_.height);
+        if (f.cut) cut();
+        if (f.ended) stopPath(f.camera);
+        return f.camera;
     }
 
     void playPath(const std::string& name) {
-        playing_.emplace(desc_.paths.at(name), live_->world().camera(""));
-        pathClock_ = lastPathTime_ = 0.0;
+        player_.play(desc_.paths.at(name), live_->world().camera(""));
         panel_.playing = name;
         cut();
     }
 
     void stopPath(const Camera& at) {
-        voxel::CameraDesc d = fly_->desc();
-        d.position = at.position;
-        d.target = at.position - at.basis[2];
-        d.fovDegrees = glm::degrees(at.fovY);
-        fly_->jumpTo(d);
-        playing_.reset();
+        fly_->jumpTo(describe(at, fly_->desc()));
+        player_.stop();
         panel_.playing.clear();
     }
 
@@ -437,7 +410,7 @@ private:
         const double wheel = window_.takeWheel();
         in.wheel = (io.WantCaptureMouse ? 0.0 : wheel) + std::exchange(scriptWheel_, 0.0);
         // A flight key or a look takes the camera back from a playing path.
-        if (playing_ && (in.forward || in.back || in.left || in.right || in.up || in.down || in.look != glm::dvec2(0.0)))
+        if (player_.playing() && (in.forward || in.back || in.left || in.right || in.up || in.down || in.look != glm::dvec2(0.0)))
             stopPath(currentCamera(0.0));
         // Middle drag orbits the point under the cursor where the drag began.
         const bool middle = window_.mouseDown(GLFW_MOUSE_BUTTON_MIDDLE) && !io.WantCaptureMouse;
@@ -445,7 +418,7 @@ private:
         if (!middle) orbitPivot_.reset();
         if (orbitPivot_) fly_->orbit(*orbitPivot_, cursor - lastOrbitCursor_);
         lastOrbitCursor_ = cursor;
-        if (!playing_) fly_->update(in, dt);
+        if (!player_.playing()) fly_->update(in, dt);
         addPendingKey();
         playClock_ += dt;
         const bool left = window_.mouseDown(GLFW_MOUSE_BUTTON_LEFT) && !io.WantCaptureMouse;
@@ -577,8 +550,7 @@ private:
     AoOptions aoOptions_;
     std::unique_ptr<LiveScene> live_;
     PathRecorder recorder_;
-    std::optional<CameraPath> playing_;  // a world's path playing, at pathClock_ seconds
-    double pathClock_ = 0.0, lastPathTime_ = 0.0;
+    PathPlayer player_;  // a world's path playing, if any
     std::optional<glm::dvec3> orbitPivot_;
     glm::dvec2 lastOrbitCursor_{0.0};
     double playClock_ = 0.0;  // seconds shown so far: recorded keys' times
