@@ -3,6 +3,7 @@
 #include "app/commands.h"
 #include "common/printable.h"
 #include "engine/scene.h"
+#include "voxel/live_mesh.h"
 #include "voxel/world.h"
 
 #include <algorithm>
@@ -17,10 +18,17 @@ void addInfoCommand(CLI::App& app) {
     cmd->callback([world] {
         const voxel::World w = voxel::World::load(*world);
         const voxel::WorldStats s = w.stats();
-        const voxel::Mesh mesh = w.mesh();
+        // As a renderer uploads it: every chunk with its coarser levels of detail.
+        const std::vector<voxel::MeshChunkQuads> chunks =
+            voxel::LiveMesh(w, {.coarseLevels = voxel::kMaxCoarseLevels}).list();
+        size_t quads = 0, coarse = 0;
+        for (const voxel::MeshChunkQuads& c : chunks) {
+            quads += c.quads.size();
+            for (const voxel::MeshLevel& l : c.coarser) coarse += l.quads.size();
+        }
         const voxel::IndexBox b = w.bounds();
-        const size_t gpu = sceneBufferBytes(mesh);
-        const size_t host = s.hostBytes + mesh.chunks.size() * sizeof(GpuChunk);
+        const size_t gpu = sceneBufferBytes(chunks);
+        const size_t host = s.hostBytes + chunks.size() * sizeof(GpuChunk);
         const glm::dvec3 lo = w.origin() + glm::dvec3(b.min) * w.voxelSize();
         const glm::dvec3 hi = w.origin() + glm::dvec3(b.max + 1) * w.voxelSize();
         std::printf("world          %s\n", printable(w.desc().source.string()).c_str());
@@ -28,8 +36,8 @@ void addInfoCommand(CLI::App& app) {
         std::printf("voxel size     %g\n", w.voxelSize());
         std::printf("active voxels  %llu\n", (unsigned long long)s.solidVoxels);
         std::printf("bricks         %llu\n", (unsigned long long)s.bricks);
-        std::printf("chunks         %zu\n", mesh.chunks.size());
-        std::printf("quads          %zu\n", mesh.quads.size());
+        std::printf("chunks         %zu\n", chunks.size());
+        std::printf("quads          %zu (coarser levels of detail: %zu more)\n", quads, coarse);
         std::printf("host bytes     %zu (grid as loaded: %zu)\n", host, s.sourceGridBytes);
         std::printf("gpu bytes      %zu\n", gpu);
         if (b.empty())

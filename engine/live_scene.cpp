@@ -3,7 +3,9 @@
 namespace grotto {
 
 LiveScene::LiveScene(vk::Context& ctx, voxel::World world)
-    : world_(std::move(world)), mesh_(world_), gpu_(uploadScene(ctx, mesh_.flatten(), world_.desc())) {
+    : world_(std::move(world)),
+      mesh_(world_, {.coarseLevels = voxel::kMaxCoarseLevels}),
+      gpu_(uploadScene(ctx, mesh_.list(), world_.voxelSize(), world_.origin(), world_.desc())) {
     gpu_->occupancy = std::make_unique<GpuOccupancy>(ctx, world_);
 }
 

@@ -119,6 +119,7 @@ void Renderer::createPasses() {
     if (!gbufferPass_)
         gbufferPass_ = std::make_unique<GBufferPass>(
             ctx, motion() ? GBufferMode::Motion : objects_ ? GBufferMode::Objects : GBufferMode::World);
+    if (!hizPass_) hizPass_ = std::make_unique<HizPass>(ctx);
     if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled, shadows());
     if (shadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows());
     if (!ao_.enabled) return;
@@ -381,7 +382,26 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
                        colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     timestamps_.begin(cmd, "gbuffer");
     FrameStats stats;
-    stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera, objects_ ? &drawObjects : nullptr);
+    // First what was visible last frame; with occlusion culling, then the rest that
+    // its depth does not hide (chunk_culling.h). Between the two the CPU decides,
+    // so the frame is submitted in two parts. The objects are drawn last.
+    const std::vector<QuadDraw>& early = culling_.begin(scene_, camera, cullingOptions_);
+    const GBufferObjects* drawn = objects_ ? &drawObjects : nullptr;
+    stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera, early, true,
+                                            cullingOptions_.occlusion ? nullptr : drawn);
+    if (cullingOptions_.occlusion) {
+        vk::transition(cmd, gbuffer_.depth, depthAttachment, readOnly, fragmentTests,
+                       VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
+        hizPass_->record(cmd, gbuffer_.depth);
+        submitAndWait(cmd);
+        const std::vector<QuadDraw>& late = culling_.late(hizPass_->tiles());
+        VK_CHECK(vkResetCommandBuffer(cmd, 0));
+        VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+        vk::transition(cmd, gbuffer_.depth, readOnly, depthAttachment, compute, VK_ACCESS_SHADER_READ_BIT,
+                       fragmentTests, depthWrite);
+        stats.quadsDrawn += gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera, late, false, drawn);
+    }
+    stats.culling = culling_.stats();
     timestamps_.end(cmd);
 
     // Everything after reads the G-buffer from compute shaders.
@@ -409,16 +429,20 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
                            scene_.palette, gtaoConstants_, objectUniforms_, shadow_);
     timestamps_.end(cmd);
 
-    VK_CHECK(vkEndCommandBuffer(cmd));
-    VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1, .pCommandBuffers = &cmd};
-    VK_CHECK(vkResetFences(ctx_.device, 1, &fence_));
-    VK_CHECK(vkQueueSubmit(ctx_.queue, 1, &si, fence_));
-    VK_CHECK(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, UINT64_MAX));
+    submitAndWait(cmd);
     stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     stats.passMs = timestamps_.read();
     lastCamera_ = camera;
     lastPoses_ = poses_;
     return stats;
+}
+
+void Renderer::submitAndWait(VkCommandBuffer cmd) {
+    VK_CHECK(vkEndCommandBuffer(cmd));
+    VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1, .pCommandBuffers = &cmd};
+    VK_CHECK(vkResetFences(ctx_.device, 1, &fence_));
+    VK_CHECK(vkQueueSubmit(ctx_.queue, 1, &si, fence_));
+    VK_CHECK(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, UINT64_MAX));
 }
 
 void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {

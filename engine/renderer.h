@@ -9,6 +9,7 @@
 #include "engine/passes/depth_prefilter_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/passes/gtao_pass.h"
+#include "engine/passes/hiz_pass.h"
 #include "engine/passes/shadow_pass.h"
 #include "engine/passes/temporal_pass.h"
 #include "engine/passes/upsample_pass.h"
@@ -31,6 +32,7 @@ struct FrameStats {
     std::vector<std::pair<std::string, double>> passMs;  // GPU time per pass
     double wallMs = 0.0;                                 // record + submit + wait
     uint64_t quadsDrawn = 0;
+    CullingStats culling;  // what level of detail and culling left to draw
 };
 
 // A frame read back to host memory; pixel (x, y) at index y * width + x, row 0 on top.
@@ -78,7 +80,12 @@ public:
     void resetHistory() {
         previousCamera_.reset();
         shadowCamera_.reset();
+        culling_.reset();
     }
+    // Levels of detail and occlusion culling for the G-buffer (chunk_culling.h);
+    // the default draws coarse cells of at most kDefaultLodBias pixels and culls.
+    void setCulling(const CullingOptions& options) { cullingOptions_ = options; }
+    const CullingOptions& culling() const { return cullingOptions_; }
     // Voxels in `changed` (world units) were edited: in the next frame, every pixel
     // whose surface lies within the AO's reach of it (aoReach: the radius, times
     // GTAO's multiplier) starts its temporal history afresh. Applies to the next
@@ -116,6 +123,7 @@ private:
     // A sun of finite size: jittered rays accumulated in a history (shadow_pass.h).
     bool softShadows() const { return shadows() && lighting_.sunAngle > 0.0f; }
     void writeTraceConstants(const Camera& camera, uint32_t frameIndex);
+    void submitAndWait(VkCommandBuffer cmd);  // ends the command buffer, submits it and waits
     void requireOccupancy(const AoOptions& ao) const;  // throws for a tracing method without one
     const vk::Image& aoHalfOutput() const;  // the chain's last half-res output: what the composite reads
 
@@ -149,6 +157,9 @@ private:
     uint32_t previousFrame_ = 0;
     HistoryBoxes invalidated_;  // edits since the last frame
     std::unique_ptr<GBufferPass> gbufferPass_;
+    std::unique_ptr<HizPass> hizPass_;
+    ChunkCulling culling_;
+    CullingOptions cullingOptions_{.lodBias = kDefaultLodBias, .occlusion = true};
     std::unique_ptr<DepthPrefilterPass> prefilterPass_;
     std::unique_ptr<GtaoPass> gtaoPass_;
     std::unique_ptr<DenoisePass> denoisePass_;

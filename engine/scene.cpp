@@ -1,6 +1,7 @@
 #include "engine/scene.h"
 
 #include "common/error.h"
+#include "voxel/live_mesh.h"
 #include "voxel/mesh.h"
 #include "voxel/world_desc.h"
 #include "shaders/shared/frame.h"
@@ -27,11 +28,23 @@ uint32_t quadsOf(const std::array<uint32_t, 6>& faceCount) {
     return std::accumulate(faceCount.begin(), faceCount.end(), 0u);
 }
 
+// Every level's quads of a chunk: what its slot holds.
+uint32_t slotContent(const voxel::MeshChunkQuads& c) {
+    uint32_t n = uint32_t(c.quads.size());
+    for (const voxel::MeshLevel& l : c.coarser) n += uint32_t(l.quads.size());
+    return n;
+}
+
 // The longest run of quads one draw covers: the shared index buffer's length.
-uint32_t largestDraw(const voxel::Mesh& mesh) {
+uint32_t longestFace(const voxel::MeshChunkQuads& c) {
+    uint32_t n = *std::max_element(c.faceCount.begin(), c.faceCount.end());
+    for (const voxel::MeshLevel& l : c.coarser) n = std::max(n, *std::max_element(l.faceCount.begin(), l.faceCount.end()));
+    return n;
+}
+
+uint32_t largestDraw(std::span<const voxel::MeshChunkQuads> chunks) {
     uint32_t n = 1;
-    for (const voxel::MeshChunk& c : mesh.chunks)
-        for (uint32_t f = 0; f < 6; ++f) n = std::max(n, c.faceCount[f]);
+    for (const voxel::MeshChunkQuads& c : chunks) n = std::max(n, longestFace(c));
     return n;
 }
 
@@ -43,9 +56,9 @@ std::vector<uint32_t> indexData(uint32_t quads) {
     return indices;
 }
 
-uint64_t slotTotal(const voxel::Mesh& mesh) {
+uint64_t slotTotal(std::span<const voxel::MeshChunkQuads> chunks) {
     uint64_t total = 0;
-    for (const voxel::MeshChunk& c : mesh.chunks) total += slotQuads(c.quadCount());
+    for (const voxel::MeshChunkQuads& c : chunks) total += slotQuads(slotContent(c));
     return total;
 }
 
@@ -55,74 +68,156 @@ void requireQuadRange(uint64_t quads) {
                               "at most " + std::to_string(kMaxQuads) + " fit the draws' vertex offsets");
 }
 
-// One chunk in its slot: face ranges, tight bounds, and its quads packed into
-// `vertices` (4 per quad, in face order).
-GpuChunk placeChunk(glm::ivec3 index, const std::array<uint32_t, 6>& faceCount,
-                    std::span<const gpu::PackedQuad> quads, const GpuScene& scene, uint32_t slotFirst,
-                    uint32_t slotQuads, uint32_t* vertices) {
+void requireFaceCounts(const voxel::MeshChunkQuads& q) {
+    bool ok = quadsOf(q.faceCount) == q.quads.size();
+    for (const voxel::MeshLevel& l : q.coarser) ok = ok && quadsOf(l.faceCount) == l.quads.size();
+    if (!ok)
+        throw Error::internal("GpuScene::updateChunks",
+                              "chunk at voxel (" + std::to_string(q.origin.x) + " " + std::to_string(q.origin.y) + " " +
+                                  std::to_string(q.origin.z) + ") has a level whose face counts do not add up to its quads");
+}
+
+// Quads of one face in cluster order: by 8^3 block, blocks nearest-first along the
+// face's axis as the mesher orders slices (each block keeps the mesher's order).
+constexpr int kClusterShift = 3;
+
+int blockOf(const gpu::PackedQuad& q) {
+    int b = 0;
+    for (uint32_t axis = 0; axis < 3; ++axis) b |= int(gpu::quadCoord(q.bits, axis) >> kClusterShift) << (2 * axis);
+    return b;
+}
+
+// The block order of face f: its axis first (descending for + faces), then the others.
+int blockRank(int block, uint32_t f) {
+    const uint32_t a = gpu::faceAxis(f);
+    int along = (block >> (2 * a)) & 3;
+    if (gpu::facePositive(f)) along = 3 - along;
+    return along << 4 | (block & ~(3 << (2 * a)));
+}
+
+// One level of a chunk written at `first` in the vertex buffer (`vertices` points
+// there): face ranges, clusters, and the level's bounds grown into lo/hi.
+GpuLevel placeLevel(glm::ivec3 index, const std::array<uint32_t, 6>& faceCount, std::span<const gpu::PackedQuad> quads,
+                    uint32_t first, uint32_t* vertices, glm::ivec3& lo, glm::ivec3& hi) {
     static const voxel::Mesh geometry;  // corners() needs only the chunk and the quad
     voxel::MeshChunk mc;
     mc.origin = index;
-    GpuChunk g;
-    g.index = index;
-    g.origin = scene.worldOrigin + glm::dvec3(index) * scene.voxelSize;
-    g.slotFirst = slotFirst;
-    g.slotQuads = slotQuads;
-    glm::ivec3 lo(GROTTO_CHUNK_SIZE), hi(0);
-    uint32_t first = slotFirst, q = 0;
-    for (int f = 0; f < 6; ++f) {
+    GpuLevel g;
+    uint32_t q = 0;
+    std::vector<uint32_t> order;
+    for (uint32_t f = 0; f < 6; ++f) {
         g.faceFirst[f] = first;
         g.faceCount[f] = faceCount[f];
-        for (uint32_t end = q + faceCount[f]; q < end; ++q) {
-            const gpu::PackedQuad quad = quads[q];
+        g.faceClusters[f] = uint32_t(g.clusters.size());
+        order.resize(faceCount[f]);
+        std::iota(order.begin(), order.end(), q);
+        std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
+            return blockRank(blockOf(quads[x]), f) < blockRank(blockOf(quads[y]), f);
+        });
+        int block = -1;
+        for (uint32_t k = 0; k < order.size(); ++k) {
+            const gpu::PackedQuad quad = quads[order[k]];
+            if (blockOf(quad) != block) {
+                block = blockOf(quad);
+                g.clusters.push_back({.first = first + k, .count = 0, .lo = glm::vec3(GROTTO_CHUNK_SIZE), .hi = glm::vec3(0.0f)});
+            }
+            QuadCluster& cluster = g.clusters.back();
+            ++cluster.count;
             for (const glm::ivec3& v : geometry.corners(mc, quad)) {
                 const glm::ivec3 p = v - index;
                 lo = glm::min(lo, p);
                 hi = glm::max(hi, p);
-                *vertices++ = gpu::packVertex(uint32_t(p.x), uint32_t(p.y), uint32_t(p.z), gpu::quadFace(quad.bits),
-                                              quad.material);
+                cluster.lo = glm::min(cluster.lo, glm::vec3(p));
+                cluster.hi = glm::max(cluster.hi, glm::vec3(p));
+                *vertices++ = gpu::packVertex(uint32_t(p.x), uint32_t(p.y), uint32_t(p.z), f, quad.material);
             }
         }
+        q += faceCount[f];
         first += faceCount[f];
+    }
+    g.faceClusters[6] = uint32_t(g.clusters.size());
+    return g;
+}
+
+// One chunk in its slot, every level one after another: its levels, tight bounds,
+// and its quads packed into `vertices` (4 per quad).
+GpuChunk placeChunk(const voxel::MeshChunkQuads& c, const GpuScene& scene, uint32_t slotFirst, uint32_t slotQuads,
+                    uint32_t* vertices) {
+    GpuChunk g;
+    g.index = c.origin;
+    g.origin = scene.worldOrigin + glm::dvec3(c.origin) * scene.voxelSize;
+    g.slotFirst = slotFirst;
+    g.slotQuads = slotQuads;
+    glm::ivec3 lo(GROTTO_CHUNK_SIZE), hi(0);
+    uint32_t first = slotFirst;
+    g.levels.push_back(placeLevel(c.origin, c.faceCount, c.quads, first, vertices, lo, hi));
+    first += uint32_t(c.quads.size());
+    for (const voxel::MeshLevel& l : c.coarser) {
+        g.levels.push_back(placeLevel(c.origin, l.faceCount, l.quads, first, vertices + 4 * size_t(first - slotFirst), lo, hi));
+        first += uint32_t(l.quads.size());
     }
     g.lo = glm::vec3(lo) * float(scene.voxelSize);
     g.hi = glm::vec3(hi) * float(scene.voxelSize);
     return g;
 }
 
+std::vector<voxel::MeshChunkQuads> meshChunks(const voxel::Mesh& mesh) {
+    std::vector<voxel::MeshChunkQuads> chunks;
+    chunks.reserve(mesh.chunks.size());
+    for (const voxel::MeshChunk& c : mesh.chunks)
+        chunks.push_back({.origin = c.origin, .faceCount = c.faceCount,
+                          .quads = std::vector<gpu::PackedQuad>(mesh.quads.begin() + c.firstQuad,
+                                                                mesh.quads.begin() + c.firstQuad + c.quadCount())});
+    return chunks;
+}
+
 }  // namespace
 
-size_t sceneBufferBytes(const voxel::Mesh& mesh) {
-    return bufferQuads(slotTotal(mesh)) * kQuadBytes + size_t(largestDraw(mesh)) * kIndexQuadBytes +
+uint32_t GpuLevel::quads() const { return quadsOf(faceCount); }
+
+size_t GpuScene::hostBytes() const {
+    size_t n = chunks.size() * sizeof(GpuChunk);
+    for (const GpuChunk& c : chunks)
+        for (const GpuLevel& l : c.levels) n += sizeof(GpuLevel) + l.clusters.size() * sizeof(QuadCluster);
+    return n + (occupancy ? occupancy->hostBytes() : 0);
+}
+
+size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks) {
+    return bufferQuads(slotTotal(chunks)) * kQuadBytes + size_t(largestDraw(chunks)) * kIndexQuadBytes +
            GROTTO_MAX_MATERIALS * sizeof(glm::vec4);
 }
 
-std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc) {
+size_t sceneBufferBytes(const voxel::Mesh& mesh) { return sceneBufferBytes(meshChunks(mesh)); }
+
+std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::MeshChunkQuads> chunks,
+                                      double voxelSize, glm::dvec3 worldOrigin, const voxel::WorldDesc& desc) {
     auto scene = std::make_unique<GpuScene>(ctx);
     GpuScene& s = *scene;
-    s.voxelSize = mesh.voxelSize;
-    s.worldOrigin = mesh.origin;
-    s.quadCount = mesh.quads.size();
-    // Chunks by index, as updates keep them (World::mesh() lists them so already).
-    std::vector<size_t> order(mesh.chunks.size());
-    std::iota(order.begin(), order.end(), size_t(0));
+    s.voxelSize = voxelSize;
+    s.worldOrigin = worldOrigin;
+    // Chunks by index, as updates keep them.
+    std::vector<size_t> order;
+    for (size_t i = 0; i < chunks.size(); ++i) {
+        requireFaceCounts(chunks[i]);
+        if (!chunks[i].quads.empty()) order.push_back(i);
+    }
     std::stable_sort(order.begin(), order.end(),
-                     [&](size_t a, size_t b) { return indexLess(mesh.chunks[a].origin, mesh.chunks[b].origin); });
-    const uint64_t capacity = bufferQuads(slotTotal(mesh));
+                     [&](size_t a, size_t b) { return indexLess(chunks[a].origin, chunks[b].origin); });
+    const uint64_t capacity = bufferQuads(slotTotal(chunks));
     requireQuadRange(capacity);
     s.slots = QuadSlots(capacity);
     std::vector<uint32_t> vertices(4 * capacity, 0u);  // spare room zeroed: never drawn
-    s.chunks.reserve(mesh.chunks.size());
+    s.chunks.reserve(order.size());
     for (size_t i : order) {
-        const voxel::MeshChunk& c = mesh.chunks[i];
-        const uint32_t n = c.quadCount(), size = slotQuads(n);
+        const voxel::MeshChunkQuads& c = chunks[i];
+        const uint32_t size = slotQuads(slotContent(c));
         const uint32_t first = uint32_t(*s.slots.allocate(size));  // consecutive: the buffer was sized for them all
-        const std::span<const gpu::PackedQuad> quads(mesh.quads.data() + c.firstQuad, n);
-        s.chunks.push_back(placeChunk(c.origin, c.faceCount, quads, s, first, size, vertices.data() + 4 * size_t(first)));
+        s.chunks.push_back(placeChunk(c, s, first, size, vertices.data() + 4 * size_t(first)));
+        s.quadCount += c.quads.size();
     }
     s.vertices = vk::uploadBuffer(ctx, vertices.data(), vertices.size() * sizeof(uint32_t),
                                   VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
-    s.indexQuads = largestDraw(mesh);
+    s.indexQuads = largestDraw(chunks);
     const std::vector<uint32_t> indices = indexData(s.indexQuads);
     s.indices = vk::uploadBuffer(ctx, indices.data(), indices.size() * sizeof(uint32_t),
                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
@@ -136,8 +231,13 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh,
     return scene;
 }
 
+std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc) {
+    return uploadScene(ctx, meshChunks(mesh), mesh.voxelSize, mesh.origin, desc);
+}
+
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::World& world) {
-    auto scene = uploadScene(ctx, world.mesh(), world.desc());
+    const voxel::LiveMesh mesh(world, {.coarseLevels = voxel::kMaxCoarseLevels});
+    auto scene = uploadScene(ctx, mesh.list(), world.voxelSize(), world.origin(), world.desc());
     scene->occupancy = std::make_unique<GpuOccupancy>(ctx, world);
     return scene;
 }
@@ -162,7 +262,7 @@ void GpuScene::updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std
         const auto it = find(index);
         if (it == chunks.end() || it->index != index) return;
         freeSlot(*it);
-        quadCount -= quadsOf(it->faceCount);
+        quadCount -= it->exact().quads();
         chunks.erase(it);
     };
     for (const glm::ivec3& index : removed) remove(index);
@@ -171,13 +271,9 @@ void GpuScene::updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std
     uint32_t longest = 0;
     std::vector<uint32_t> words;
     for (const voxel::MeshChunkQuads& q : replaced) {
-        const uint32_t n = quadsOf(q.faceCount);
-        if (n != q.quads.size())
-            throw Error::internal("GpuScene::updateChunks",
-                                  "chunk at voxel (" + std::to_string(q.origin.x) + " " + std::to_string(q.origin.y) +
-                                      " " + std::to_string(q.origin.z) + ") has " + std::to_string(q.quads.size()) +
-                                      " quads but face counts adding up to " + std::to_string(n));
-        if (n == 0) {
+        requireFaceCounts(q);
+        const uint32_t n = slotContent(q);
+        if (q.quads.empty()) {
             remove(q.origin);
             continue;
         }
@@ -206,17 +302,17 @@ void GpuScene::updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std
             first = uint32_t(*slot);
         }
         words.resize(4 * size_t(n));
-        const GpuChunk g = placeChunk(q.origin, q.faceCount, q.quads, *this, first, size, words.data());
+        const GpuChunk g = placeChunk(q, *this, first, size, words.data());
         uploads.write(vertices, first * kQuadBytes, words.data(), n * kQuadBytes);
         staged += n * kQuadBytes;
-        quadCount += n;
+        quadCount += q.quads.size();
         if (known) {
-            quadCount -= quadsOf(it->faceCount);
+            quadCount -= it->exact().quads();
             *it = g;
         } else {
             chunks.insert(it, g);
         }
-        longest = std::max(longest, *std::max_element(q.faceCount.begin(), q.faceCount.end()));
+        longest = std::max(longest, longestFace(q));
     }
     if (longest > indexQuads) {  // a draw longer than the index buffer: a longer one, written whole
         indexQuads = std::max(longest, indexQuads + indexQuads / 2);

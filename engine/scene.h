@@ -17,12 +17,30 @@
 namespace grotto {
 namespace voxel { struct WorldDesc; }
 
+// A run of one face's quads in one 8^3 block of a chunk: what occlusion culling
+// tests and draws as a unit. Bounds in voxels, relative to the chunk's corner.
+struct QuadCluster {
+    uint32_t first = 0, count = 0;  // in the vertex buffer, in quads
+    glm::vec3 lo{0.0f}, hi{0.0f};
+};
+
+// One level of detail of a chunk: per-face quad ranges and their clusters.
+struct GpuLevel {
+    std::array<uint32_t, 6> faceFirst{}, faceCount{};
+    std::array<uint32_t, 7> faceClusters{};  // face f's clusters: [faceClusters[f], faceClusters[f + 1])
+    std::vector<QuadCluster> clusters;       // by face, nearest-first within a face as the mesher orders slices
+    uint32_t quads() const;
+};
+
 struct GpuChunk {
     glm::dvec3 origin;            // world position of the chunk's corner
-    glm::vec3 lo, hi;             // tight bounds of its quads, relative to origin
-    std::array<uint32_t, 6> faceFirst{}, faceCount{};  // quad ranges per face
+    glm::vec3 lo, hi;             // tight bounds of its quads at every level, relative to origin
+    // [0]: the exact voxels; [L]: cells of 2^L voxels (voxel::MeshOptions::coarseLevels),
+    // laid out one after another in the chunk's slot.
+    std::vector<GpuLevel> levels;
     glm::ivec3 index{0};          // voxel index of its corner: the key updates find it by
     uint32_t slotFirst = 0, slotQuads = 0;  // the range of the vertex buffer it owns, in quads
+    const GpuLevel& exact() const { return levels.front(); }
 };
 
 // Quads become 4 packed vertices each (shaders/shared/quad.h); one shared index
@@ -71,15 +89,21 @@ struct GpuScene {
         return size_t(vertices.size + indices.size + palette.size + uploads.stagingBytes()) +
                (occupancy ? occupancy->gpuBytes() : 0);
     }
-    size_t hostBytes() const { return chunks.size() * sizeof(GpuChunk) + (occupancy ? occupancy->hostBytes() : 0); }
+    size_t hostBytes() const;
 };
 
+// From chunks as a voxel::LiveMesh keeps them (with their coarser levels, if any).
+std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::MeshChunkQuads> chunks,
+                                      double voxelSize, glm::dvec3 worldOrigin, const voxel::WorldDesc& desc);
+// A mesh alone: the exact voxels only, no levels of detail.
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc);
-// The world's mesh and its occupancy: what rendering with sun shadows and voxel-traced AO needs.
+// The world's mesh with its levels of detail, and its occupancy: what rendering
+// with sun shadows and voxel-traced AO needs.
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::World& world);
 
 // What uploadScene would allocate for these buffers (the vertex buffer with its
 // spare room, before allocator rounding), without a device: for `grotto info`.
+size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks);
 size_t sceneBufferBytes(const voxel::Mesh& mesh);
 
 }  // namespace grotto

@@ -182,7 +182,7 @@ protected:
             EXPECT_EQ(x.origin, y.origin) << i;
             EXPECT_EQ(x.lo, y.lo) << i;
             EXPECT_EQ(x.hi, y.hi) << i;
-            EXPECT_EQ(x.faceCount, y.faceCount) << i;
+            EXPECT_EQ(x.exact().faceCount, y.exact().faceCount) << i;
         }
     }
 };
@@ -207,10 +207,10 @@ TEST_F(LiveScene, UpdatedChunksDrawTheSameGBufferAsAFreshUpload) {
     // Rewritten in place; moved to a new slot; the vertex buffer and the index buffer grown.
     const GpuChunk* rewritten = live->findChunk(inPlace);
     ASSERT_NE(rewritten, nullptr);
-    EXPECT_NE(rewritten->faceCount, inPlaceBefore.faceCount);
+    EXPECT_NE(rewritten->exact().faceCount, inPlaceBefore.exact().faceCount);
     EXPECT_EQ(rewritten->slotFirst, inPlaceBefore.slotFirst);
     EXPECT_NE(live->findChunk(outgrown)->slotFirst, outgrownBefore.slotFirst);
-    EXPECT_GT(live->findChunk(outgrown)->faceCount[2], indexQuadsBefore);
+    EXPECT_GT(live->findChunk(outgrown)->exact().faceCount[2], indexQuadsBefore);
     EXPECT_EQ(live->findChunk(gone), nullptr);
     EXPECT_NE(live->findChunk(added), nullptr);
     EXPECT_EQ(live->vertexBufferGrowths, 1u);

@@ -7,14 +7,11 @@ namespace grotto::voxel {
 
 LiveMesh::LiveMesh(const World& world, const MeshOptions& options)
     : options_(options), voxelSize_(world.voxelSize()), origin_(world.origin()) {
-    // The whole-world mesher already meshes chunks in parallel and lists them in order.
-    const Mesh mesh = world.mesh(options);
-    for (const MeshChunk& c : mesh.chunks) {
-        MeshChunkQuads& q = chunks_[c.origin];
-        q.origin = c.origin;
-        q.faceCount = c.faceCount;
-        q.quads.assign(mesh.quads.begin() + c.firstQuad, mesh.quads.begin() + c.firstQuad + c.quadCount());
-    }
+    const std::vector<glm::ivec3> origins = world.chunkOrigins();
+    std::vector<MeshChunkQuads> meshed(origins.size());
+    tbb::parallel_for(size_t(0), origins.size(), [&](size_t i) { meshed[i] = world.meshChunk(origins[i], options_); });
+    for (MeshChunkQuads& q : meshed)
+        if (!q.quads.empty()) chunks_[q.origin] = std::move(q);
 }
 
 std::vector<glm::ivec3> LiveMesh::update(const World& world, const IndexBox& changed) {
@@ -37,6 +34,13 @@ uint64_t LiveMesh::quadCount() const {
     uint64_t n = 0;
     for (const auto& [origin, q] : chunks_) n += q.quads.size();
     return n;
+}
+
+std::vector<MeshChunkQuads> LiveMesh::list() const {
+    std::vector<MeshChunkQuads> out;
+    out.reserve(chunks_.size());
+    for (const auto& [origin, q] : chunks_) out.push_back(q);
+    return out;
 }
 
 Mesh LiveMesh::flatten() const {

@@ -29,7 +29,9 @@ public:
     double voxelSize() const { return voxelSize_; }
     glm::dvec3 origin() const { return origin_; }
 
-    // The same quads as one Mesh, as World::mesh() lays it out.
+    // The chunks in order, copied: what a GPU scene is uploaded from.
+    std::vector<MeshChunkQuads> list() const;
+    // The same quads as one Mesh, as World::mesh() lays it out (exact voxels only).
     Mesh flatten() const;
 
 private:

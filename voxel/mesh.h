@@ -13,6 +13,18 @@ namespace grotto::voxel {
 
 struct MeshOptions {
     bool greedy = true;  // false: one quad per exposed face
+    // Coarser meshes of each chunk for level of detail (0 to kMaxCoarseLevels):
+    // level L treats cells of 2^L voxels as one, solid where any voxel is, so a
+    // coarse surface never lies inside the exact one and never opens a hole.
+    int coarseLevels = 0;
+};
+
+inline constexpr int kMaxCoarseLevels = 3;  // cells of 2, 4 and 8 voxels
+
+// One level's quads, in the chunk's quad format (positions and sizes in voxels).
+struct MeshLevel {
+    std::array<uint32_t, 6> faceCount{};
+    std::vector<gpu::PackedQuad> quads;  // in face order
 };
 
 struct MeshChunk {
@@ -31,6 +43,7 @@ struct MeshChunkQuads {
     glm::ivec3 origin{0};
     std::array<uint32_t, 6> faceCount{};
     std::vector<gpu::PackedQuad> quads;  // in face order
+    std::vector<MeshLevel> coarser;      // levels 1, 2, ... when MeshOptions::coarseLevels asked for them
 };
 
 struct Mesh {

@@ -11,15 +11,17 @@ namespace grotto::voxel {
 namespace {
 
 constexpr int N = int(GROTTO_CHUNK_SIZE);
-constexpr int P = N + 2;  // with a one-voxel border from the neighbours
 
-// Material ids of a chunk and its border (0 = empty), from leaves and tiles.
-struct ChunkVoxels {
-    std::vector<uint8_t> id = std::vector<uint8_t>(P * P * P, 0);
-    uint8_t& at(int x, int y, int z) { return id[(x * P + y) * P + z]; }
+// One level's cells of a chunk, n^3 of them, with a one-cell border from the
+// neighbours: material ids, 0 = empty. Level 0 is the voxels themselves.
+struct LevelCells {
+    int n;
+    std::vector<uint8_t> id;
+    explicit LevelCells(int size) : n(size), id(size_t(size + 2) * (size + 2) * (size + 2), 0) {}
+    uint8_t& at(int x, int y, int z) { return id[(size_t(x + 1) * (n + 2) + (y + 1)) * (n + 2) + (z + 1)]; }
 };
 
-void gather(const World::Impl& w, const openvdb::Coord& origin, ChunkVoxels& out) {
+void gather(const World::Impl& w, const openvdb::Coord& origin, LevelCells& out) {
     const auto& tree = w.solid->tree();
     openvdb::MaskGrid::ConstAccessor solid = w.solid->getConstAccessor();
     std::optional<openvdb::Int32Grid::ConstAccessor> mat;
@@ -29,7 +31,7 @@ void gather(const World::Impl& w, const openvdb::Coord& origin, ChunkVoxels& out
         return uint8_t(mat ? mat->getValue(c) : w.uniformMaterial);
     };
     auto store = [&](const openvdb::Coord& c) {
-        out.at(c.x() - lo.x(), c.y() - lo.y(), c.z() - lo.z()) = materialOf(c);
+        out.at(c.x() - origin.x(), c.y() - origin.y(), c.z() - origin.z()) = materialOf(c);
     };
     for (int bx = (lo.x() & ~7); bx <= hi.x(); bx += 8)
         for (int by = (lo.y() & ~7); by <= hi.y(); by += 8)
@@ -46,17 +48,60 @@ void gather(const World::Impl& w, const openvdb::Coord& origin, ChunkVoxels& out
             }
 }
 
-// Greedy merge of one 32x32 slice of face materials into rectangles.
+// The next coarser level: cells of twice the size. Inside the chunk a cell is
+// solid where any of its eight is (the commonest material), so the coarse surface
+// only ever grows outward and never opens a hole. Across the chunk's faces a border
+// cell counts as solid only where all four finer ones touching it are, which by
+// induction means the neighbour's whole layer of voxels touching it: a coarse face
+// on the border is dropped only where the neighbour covers it at any level, so no
+// crack opens between chunks drawn at different levels.
+LevelCells coarsen(LevelCells& finer) {
+    LevelCells c(finer.n / 2);
+    for (int x = 0; x < c.n; ++x)
+        for (int y = 0; y < c.n; ++y)
+            for (int z = 0; z < c.n; ++z) {
+                uint8_t ids[8];
+                for (int i = 0; i < 8; ++i) ids[i] = finer.at(2 * x + (i & 1), 2 * y + (i >> 1 & 1), 2 * z + (i >> 2));
+                uint8_t best = 0;
+                int bestCount = 0;
+                for (int i = 0; i < 8; ++i) {
+                    if (!ids[i]) continue;
+                    const int count = int(std::count(ids, ids + 8, ids[i]));
+                    if (count > bestCount || (count == bestCount && ids[i] < best)) best = ids[i], bestCount = count;
+                }
+                c.at(x, y, z) = best;
+            }
+    for (int a = 0; a < 3; ++a) {
+        const int ua = (a + 1) % 3, va = (a + 2) % 3;
+        for (int side = 0; side < 2; ++side)
+            for (int u = 0; u < c.n; ++u)
+                for (int v = 0; v < c.n; ++v) {
+                    uint8_t all = 1;
+                    int p[3];
+                    p[a] = side ? finer.n : -1;
+                    for (int i = 0; i < 4 && all; ++i) {
+                        p[ua] = 2 * u + (i & 1), p[va] = 2 * v + (i >> 1);
+                        all = finer.at(p[0], p[1], p[2]);
+                    }
+                    int q[3];
+                    q[a] = side ? c.n : -1, q[ua] = u, q[va] = v;
+                    c.at(q[0], q[1], q[2]) = all;
+                }
+    }
+    return c;
+}
+
+// Greedy merge of one n x n slice of face materials into rectangles.
 template <typename Emit>
-void mergeSlice(uint8_t (&face)[N][N], bool greedy, Emit emit) {
-    for (int v = 0; v < N; ++v)
-        for (int u = 0; u < N;) {
+void mergeSlice(uint8_t (&face)[N][N], int n, bool greedy, Emit emit) {
+    for (int v = 0; v < n; ++v)
+        for (int u = 0; u < n;) {
             const uint8_t m = face[u][v];
             if (!m) { ++u; continue; }
             int w = 1, h = 1;
             if (greedy) {
-                while (u + w < N && face[u + w][v] == m) ++w;
-                for (bool grow = true; grow && v + h < N; ) {
+                while (u + w < n && face[u + w][v] == m) ++w;
+                for (bool grow = true; grow && v + h < n; ) {
                     for (int k = 0; k < w; ++k)
                         if (face[u + k][v + h] != m) { grow = false; break; }
                     if (grow) ++h;
@@ -69,13 +114,12 @@ void mergeSlice(uint8_t (&face)[N][N], bool greedy, Emit emit) {
         }
 }
 
-// The one chunk mesher: World::mesh() and World::meshChunk() both use it.
-MeshChunkQuads meshOneChunk(const World::Impl& w, const openvdb::Coord& origin, bool greedy) {
-    ChunkVoxels vox;
-    gather(w, origin, vox);
-    MeshChunkQuads chunk;
-    chunk.origin = {origin.x(), origin.y(), origin.z()};
-    std::vector<gpu::PackedQuad>& quads = chunk.quads;
+// Face culling and merging of one level's cells; quads in voxel units (a cell is
+// `scale` voxels), sorted by face.
+MeshLevel meshCells(LevelCells& cells, int scale, bool greedy) {
+    MeshLevel out;
+    std::vector<gpu::PackedQuad>& quads = out.quads;
+    const int n = cells.n;
     uint8_t face[N][N];
     for (uint32_t f = 0; f < 6; ++f) {
         const int a = int(gpu::faceAxis(f)), ua = int(gpu::faceUAxis(f)), va = int(gpu::faceVAxis(f));
@@ -83,26 +127,44 @@ MeshChunkQuads meshOneChunk(const World::Impl& w, const openvdb::Coord& origin, 
         const size_t before = quads.size();
         // Visible +axis faces are nearer the camera the higher their slice, -axis
         // faces the lower: emit them nearest first so depth tests reject more.
-        for (int i = 0; i < N; ++i) {
-            const int d = step > 0 ? N - 1 - i : i;
+        for (int i = 0; i < n; ++i) {
+            const int d = step > 0 ? n - 1 - i : i;
             bool any = false;
-            for (int u = 0; u < N; ++u)
-                for (int v = 0; v < N; ++v) {
+            for (int u = 0; u < n; ++u)
+                for (int v = 0; v < n; ++v) {
                     int c[3];
-                    c[a] = d + 1; c[ua] = u + 1; c[va] = v + 1;
-                    const uint8_t m = vox.at(c[0], c[1], c[2]);
+                    c[a] = d; c[ua] = u; c[va] = v;
+                    const uint8_t m = cells.at(c[0], c[1], c[2]);
                     c[a] += step;
-                    face[u][v] = (m && !vox.at(c[0], c[1], c[2])) ? m : 0;
+                    face[u][v] = (m && !cells.at(c[0], c[1], c[2])) ? m : 0;
                     any |= face[u][v] != 0;
                 }
             if (!any) continue;
-            mergeSlice(face, greedy, [&](int u, int v, int qw, int qh, uint8_t m) {
+            mergeSlice(face, n, greedy, [&](int u, int v, int qw, int qh, uint8_t m) {
                 uint32_t p[3];
-                p[a] = uint32_t(d); p[ua] = uint32_t(u); p[va] = uint32_t(v);
-                quads.push_back({gpu::packQuadBits(p[0], p[1], p[2], qw, qh, f), m});
+                p[a] = uint32_t(d * scale); p[ua] = uint32_t(u * scale); p[va] = uint32_t(v * scale);
+                quads.push_back({gpu::packQuadBits(p[0], p[1], p[2], qw * scale, qh * scale, f), m});
             });
         }
-        chunk.faceCount[f] = uint32_t(quads.size() - before);
+        out.faceCount[f] = uint32_t(quads.size() - before);
+    }
+    return out;
+}
+
+// The one chunk mesher: World::mesh() and World::meshChunk() both use it.
+MeshChunkQuads meshOneChunk(const World::Impl& w, const openvdb::Coord& origin, const MeshOptions& options) {
+    LevelCells voxels(N);
+    gather(w, origin, voxels);
+    MeshLevel exact = meshCells(voxels, 1, options.greedy);
+    MeshChunkQuads chunk;
+    chunk.origin = {origin.x(), origin.y(), origin.z()};
+    chunk.faceCount = exact.faceCount;
+    chunk.quads = std::move(exact.quads);
+    const int levels = std::clamp(options.coarseLevels, 0, kMaxCoarseLevels);
+    LevelCells cells = std::move(voxels);
+    for (int level = 1; level <= levels && !chunk.quads.empty(); ++level) {
+        cells = coarsen(cells);
+        chunk.coarser.push_back(meshCells(cells, 1 << level, options.greedy));
     }
     return chunk;
 }
@@ -120,11 +182,10 @@ std::array<glm::ivec3, 4> Mesh::corners(const MeshChunk& c, const gpu::PackedQua
     return {base, base + du, base + du + dv, base + dv};
 }
 
-Mesh World::mesh(const MeshOptions& options) const {
-    const Impl& w = *impl_;
+std::vector<glm::ivec3> World::chunkOrigins() const {
     // Every chunk touched by a leaf or an active tile.
     std::set<openvdb::Coord> origins;
-    const auto& tree = w.solid->tree();
+    const auto& tree = impl_->solid->tree();
     auto chunkOf = [](const openvdb::Coord& c) {
         return openvdb::Coord(c.x() & ~(N - 1), c.y() & ~(N - 1), c.z() & ~(N - 1));
     };
@@ -138,9 +199,19 @@ Mesh World::mesh(const MeshOptions& options) const {
                 for (int z = box.min().z(); z <= box.max().z(); z += N)
                     origins.insert(chunkOf(openvdb::Coord(x, y, z)));
     }
-    const std::vector<openvdb::Coord> list(origins.begin(), origins.end());
+    std::vector<glm::ivec3> out;
+    out.reserve(origins.size());
+    for (const openvdb::Coord& c : origins) out.push_back({c.x(), c.y(), c.z()});
+    return out;
+}
+
+Mesh World::mesh(const MeshOptions& options) const {
+    const Impl& w = *impl_;
+    const std::vector<glm::ivec3> list = chunkOrigins();
     std::vector<MeshChunkQuads> chunks(list.size());
-    tbb::parallel_for(size_t(0), list.size(), [&](size_t i) { chunks[i] = meshOneChunk(w, list[i], options.greedy); });
+    tbb::parallel_for(size_t(0), list.size(), [&](size_t i) {
+        chunks[i] = meshOneChunk(w, openvdb::Coord(list[i].x, list[i].y, list[i].z), options);
+    });
     Mesh mesh;
     mesh.origin = w.origin;
     mesh.voxelSize = w.voxelSize;
@@ -175,7 +246,7 @@ MeshChunkQuads World::meshChunk(glm::ivec3 chunkOrigin, const MeshOptions& optio
                                                       std::to_string(chunkOrigin.y) + ", " + std::to_string(chunkOrigin.z) +
                                                       ") is not a multiple of the chunk size",
                               "use World::chunksTouching or World::mesh()'s chunk origins");
-    return meshOneChunk(*impl_, openvdb::Coord(chunkOrigin.x, chunkOrigin.y, chunkOrigin.z), options.greedy);
+    return meshOneChunk(*impl_, openvdb::Coord(chunkOrigin.x, chunkOrigin.y, chunkOrigin.z), options);
 }
 
 }  // namespace grotto::voxel

@@ -102,6 +102,9 @@ public:
     // Chunks (origins, GROTTO_CHUNK_SIZE aligned) whose mesh may differ after the
     // voxels in `changed` did: those holding the box grown by one voxel.
     std::vector<glm::ivec3> chunksTouching(const IndexBox& changed) const;
+    // The voxel indices of the corners of the chunks that may hold quads (those
+    // touched by a leaf or an active tile), in World::mesh()'s order.
+    std::vector<glm::ivec3> chunkOrigins() const;
     // The quads of one chunk, as World::mesh() would make them.
     MeshChunkQuads meshChunk(glm::ivec3 chunkOrigin, const MeshOptions& options = {}) const;
 

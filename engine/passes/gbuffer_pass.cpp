@@ -1,5 +1,6 @@
 #include "engine/passes/gbuffer_pass.h"
 
+#include "engine/frustum.h"
 #include "engine/vk/pipeline.h"
 #include "shaders/shared/frame.h"
 #include "shaders/shared/objects.h"
@@ -80,30 +81,6 @@ VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, const char*
     return pipeline;
 }
 
-// Side planes and the near plane of the frustum in camera-relative world space
-// (from the rows of the view-projection matrix; the far plane is tested only when finite).
-struct Frustum {
-    glm::vec4 planes[6];
-    int count = 5;
-    explicit Frustum(const Camera& camera) {
-        const glm::mat4 m = glm::transpose(camera.viewProjRelative());  // m[i] = row i
-        planes[0] = m[3] + m[0];
-        planes[1] = m[3] - m[0];
-        planes[2] = m[3] + m[1];
-        planes[3] = m[3] - m[1];
-        planes[4] = m[3] - m[2];  // reverse-Z: depth <= 1 in front of the near plane
-        if (camera.farPlane > 0.0) planes[count++] = m[2];  // depth >= 0
-    }
-    bool outside(const glm::vec3& lo, const glm::vec3& hi) const {
-        for (int i = 0; i < count; ++i) {
-            const glm::vec4& p = planes[i];
-            const glm::vec3 corner(p.x >= 0 ? hi.x : lo.x, p.y >= 0 ? hi.y : lo.y, p.z >= 0 ? hi.z : lo.z);
-            if (glm::dot(glm::vec3(p), corner) + p.w < 0.0f) return true;
-        }
-        return false;
-    }
-};
-
 }  // namespace
 
 GBufferPass::GBufferPass(vk::Context& ctx, GBufferMode mode) : ctx_(ctx), mode_(mode) {
@@ -162,18 +139,19 @@ void transformedBounds(const glm::dmat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec
 }  // namespace
 
 uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const GpuScene& scene,
-                             const vk::Buffer& frame, const Camera& camera, const GBufferObjects* objects) {
+                             const vk::Buffer& frame, const Camera& camera, std::span<const QuadDraw> draws,
+                             bool clear, const GBufferObjects* objects) {
     const VkExtent2D extent = t.depth.extent;
     const bool motion = mode_ == GBufferMode::Motion;
-    auto attachment = [](const vk::Image& img, VkClearValue clear) {
+    auto attachment = [clear](const vk::Image& img, VkClearValue value) {
         return VkRenderingAttachmentInfo{.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO,
                                          .imageView = img.view,
                                          .imageLayout = img.aspect == VK_IMAGE_ASPECT_DEPTH_BIT
                                                             ? VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL
                                                             : VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
-                                         .loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR,
+                                         .loadOp = clear ? VK_ATTACHMENT_LOAD_OP_CLEAR : VK_ATTACHMENT_LOAD_OP_LOAD,
                                          .storeOp = VK_ATTACHMENT_STORE_OP_STORE,
-                                         .clearValue = clear};
+                                         .clearValue = value};
     };
     VkRenderingAttachmentInfo color[2] = {attachment(t.surface, {}), {}};  // 0 = sky
     if (motion) color[1] = attachment(t.motion, {});                       // sky: no motion
@@ -201,48 +179,38 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
     else
         bind(pipeline_, layout_, scene);
 
-    // Visible chunks, camera-relative, nearest first so early depth tests reject more.
-    const Frustum frustum(camera);
-    struct Visible { size_t index; glm::vec3 offset; float distance; };
-    std::vector<Visible> visible;
-    for (size_t i = 0; i < scene.chunks.size(); ++i) {
-        const GpuChunk& c = scene.chunks[i];
-        const glm::vec3 offset(c.origin - camera.position);
-        if (frustum.outside(offset + c.lo, offset + c.hi)) continue;
-        const glm::vec3 centre = offset + 0.5f * (c.lo + c.hi);
-        visible.push_back({i, offset, glm::dot(centre, centre)});
-    }
-    std::sort(visible.begin(), visible.end(), [](const Visible& a, const Visible& b) { return a.distance < b.distance; });
-
     const Camera& previousCamera = objects && objects->previousCamera ? *objects->previousCamera : camera;
     const glm::dmat4 viewProj = viewProjection(camera), previousViewProj = viewProjection(previousCamera);
     uint64_t drawn = 0;
-    for (const Visible& v : visible) {
-        const GpuChunk& c = scene.chunks[v.index];
-        if (motion) {
-            const gpu::ObjectPush push{glm::mat4(viewProj * chunkMatrix(c.origin - camera.position, scene.voxelSize)),
-                                       glm::mat4(previousViewProj *
-                                                 chunkMatrix(c.origin - previousCamera.position, scene.voxelSize))};
-            vkCmdPushConstants(cmd, objectLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
-        } else {
-            const gpu::ChunkPush push{glm::vec4(v.offset, float(scene.voxelSize))};
-            vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+    uint32_t pushed = UINT32_MAX;  // the chunk whose placement the push constants hold
+    for (const QuadDraw& d : draws) {
+        const GpuChunk& c = scene.chunks[d.chunk];
+        if (d.chunk != pushed) {
+            pushed = d.chunk;
+            if (motion) {
+                const gpu::ObjectPush push{
+                    glm::mat4(viewProj * chunkMatrix(c.origin - camera.position, scene.voxelSize)),
+                    glm::mat4(previousViewProj * chunkMatrix(c.origin - previousCamera.position, scene.voxelSize))};
+                vkCmdPushConstants(cmd, objectLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+            } else {
+                const gpu::ChunkPush push{glm::vec4(glm::vec3(c.origin - camera.position), float(scene.voxelSize))};
+                vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+            }
         }
-        const glm::vec3 lo = v.offset + c.lo, hi = v.offset + c.hi;
-        for (int f = 0; f < 6; ++f) {
-            if (!c.faceCount[f]) continue;
-            // A +axis face is seen only from above its plane: skip when the camera
-            // (at the origin) is below the lowest one, and likewise for -axis faces.
-            const int axis = f / 2;
-            if ((f % 2 == 0) ? lo[axis] >= 0.0f : hi[axis] <= 0.0f) continue;
-            vkCmdDrawIndexed(cmd, 6 * c.faceCount[f], 1, 0, int32_t(4 * c.faceFirst[f]), 0);
-            drawn += c.faceCount[f];
+        // Draws longer than the index buffer (merged clusters of one face range never are,
+        // but runs across faces may be) go in pieces.
+        for (uint32_t done = 0; done < d.count;) {
+            const uint32_t n = std::min(d.count - done, scene.indexQuads);
+            vkCmdDrawIndexed(cmd, 6 * n, 1, 0, int32_t(4 * (d.first + done)), 0);
+            done += n;
         }
+        drawn += d.count;
     }
 
     // Objects: each chunk through its object's pose, camera-relative in double
     // (exact far from the origin), culled by its transformed bounds; the object's
     // index (1, 2, ...) is the instance index, which the surface id carries.
+    const Frustum frustum(camera);
     if (objects)
         for (size_t k = 0; k < objects->scenes.size(); ++k) {
             const GpuScene& s = *objects->scenes[k];
@@ -261,10 +229,11 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
                 const gpu::ObjectPush push{glm::mat4(viewProj * model * chunkMatrix(c.origin, s.voxelSize)),
                                            glm::mat4(previousViewProj * previousModel * chunkMatrix(c.origin, s.voxelSize))};
                 vkCmdPushConstants(cmd, objectLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
+                const GpuLevel& l = c.exact();
                 for (int f = 0; f < 6; ++f) {
-                    if (!c.faceCount[f]) continue;
-                    vkCmdDrawIndexed(cmd, 6 * c.faceCount[f], 1, 0, int32_t(4 * c.faceFirst[f]), uint32_t(k + 1));
-                    drawn += c.faceCount[f];
+                    if (!l.faceCount[f]) continue;
+                    vkCmdDrawIndexed(cmd, 6 * l.faceCount[f], 1, 0, int32_t(4 * l.faceFirst[f]), uint32_t(k + 1));
+                    drawn += l.faceCount[f];
                 }
             }
         }

@@ -2,12 +2,14 @@
 // G-buffer pass. Reads: the scene's vertices, frame uniforms.
 // Writes: depth (D32, reverse-Z) and a 16-bit surface id that encodes the normal
 // (one of six axes) and the material (albedo from the palette). No history.
-// Chunks outside the frustum are skipped; inside one, faces turned away from the
-// camera are skipped as whole per-face ranges; chunks are drawn front to back.
+// Draws the quad runs it is given (engine/chunk_culling.h decides them: levels of
+// detail, frustum, faces turned away, occlusion), clearing the targets first or
+// drawing over what an earlier call drew.
 // With objects: each object's chunks after the world's, through its pose (object
 // index in the surface id); where objects move, every chunk is drawn with this
 // frame's and the last frame's transforms and a motion target is written too.
 #include "engine/camera.h"
+#include "engine/chunk_culling.h"
 #include "engine/scene.h"
 #include "voxel/object_pose.h"
 
@@ -44,9 +46,11 @@ public:
     explicit GBufferPass(vk::Context& ctx, GBufferMode mode = GBufferMode::World);
     ~GBufferPass();
 
-    // Returns the number of quads drawn.
+    // Draws `draws` of the scene, then the objects (when given), clearing the
+    // targets first when `clear`. Returns the number of quads drawn.
     uint64_t record(VkCommandBuffer cmd, const GBufferTargets& targets, const GpuScene& scene,
-                    const vk::Buffer& frame, const Camera& camera, const GBufferObjects* objects = nullptr);
+                    const vk::Buffer& frame, const Camera& camera, std::span<const QuadDraw> draws, bool clear,
+                    const GBufferObjects* objects = nullptr);
 
 private:
     void release();  // handles not made yet are null, which Vulkan ignores
