@@ -74,8 +74,7 @@ void addBenchCommand(CLI::App& app) {
 
         vk::Context ctx;
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
-        auto scene = uploadScene(ctx, mesh, world.desc());
-        scene->occupancy = std::make_unique<GpuOccupancy>(ctx, world);  // for sun shadows and voxel-traced AO
+        auto scene = uploadScene(ctx, world);  // with levels of detail and the occupancy rays need
         // Objects move as in a flythrough at 24 frames a second, so their motion vectors are paid for.
         const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
         auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
@@ -89,6 +88,7 @@ void addBenchCommand(CLI::App& app) {
         {
             const voxel::Lighting& light = world.desc().lighting;
             Renderer renderer(ctx, *scene, light, ao, size.width, size.height, objects.get());
+            renderer.setCulling(cullingOptions(resolveDetail(world, args->ao)));
             targetBytes = renderer.targetBytes();
             AoCostTimer costs(ctx, *scene, light, ao, size.width, size.height, objects.get());
             for (int i = 0; i < args->warmup + args->frames; ++i) {

@@ -81,10 +81,10 @@ json pathJson(const voxel::CameraPathDesc& p) {
 
 // Everything that decides a frame's pixels: a resumed run must match it. The
 // frame range and warm-up are not in it: ranges are parts of one sequence.
-json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptions& ao) {
+json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptions& ao, const voxel::Detail& detail) {
     return {{"world", fs::absolute(a.world).lexically_normal().string()}, {"path", a.path},
             {"path_keys", pathJson(path)}, {"size", a.size}, {"fps", a.fps}, {"format", a.format},
-            {"ao", aoSettingsJson(ao)}};
+            {"ao", aoSettingsJson(ao)}, {"detail", detailJson(detail)}};
 }
 
 void writeJson(const fs::path& file, const json& j) {
@@ -199,6 +199,7 @@ void addFlythroughCommand(CLI::App& app) {
         const int count = pathFrameCount(path, args->fps, args->path);
         const FrameRange range = args->frames.empty() ? FrameRange{1, count} : parseFrameRange(args->frames, count);
         const AoOptions ao = resolveAo(world, args->ao);
+        const voxel::Detail detail = resolveDetail(world, args->ao);
         vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
         const fs::path dir = args->output;
@@ -210,7 +211,7 @@ void addFlythroughCommand(CLI::App& app) {
             // farm): they agree on the manifest one at a time, and each clears
             // only the temporary files of runs that died (a live run's are locked).
             FileLock lock(dir / kLockFile);
-            requireSameRun(dir, runManifest(*args, desc, ao));
+            requireSameRun(dir, runManifest(*args, desc, ao, detail));
             removeAbandonedTemporaries(dir, isOurs);
         }
         earlierFrames(dir / "stats.json");  // a damaged stats file is refused now, not after rendering
@@ -246,6 +247,7 @@ void addFlythroughCommand(CLI::App& app) {
         {
             Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height,
                               objects.get());
+            renderer.setCulling(cullingOptions(detail));
             Progress progress(end - start + 1, stdout);
             for (int i = start; i <= end; ++i) {
                 const double time = double(i - 1) / args->fps;

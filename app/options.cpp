@@ -66,6 +66,25 @@ void addAoFlags(CLI::App* cmd, AoFlags& f) {
     cmd->add_option("--denoise-blur-beta", d.denoiseBlurBeta, "Centre weight of the denoise blur, 0 to 10");
     cmd->add_option("--temporal", d.temporalHistory, "Most frames the temporal pass averages, 0 (off) to 64");
     cmd->add_flag("--ao-full-res", f.fullResolution, "Run the AO chain at full instead of half resolution");
+    cmd->add_option("--lod-bias", f.lodBias,
+                    "Largest size in pixels a coarse cell of far chunks may cover, 0 (exact voxels everywhere) to 64 "
+                    "(default: the world's detail.lod_bias, else 1)")
+        ->check(finiteRange(0.0, 64.0));
+    cmd->add_option("--occlusion-culling", f.occlusionCulling,
+                    "Skip clusters of quads hidden behind nearer geometry: true or false (default: the world's, else true)");
+}
+
+voxel::Detail resolveDetail(const voxel::World& world, const AoFlags& f) {
+    voxel::Detail d = world.desc().detail;
+    if (f.lodBias) d.lodBias = *f.lodBias;
+    if (f.occlusionCulling) d.occlusionCulling = *f.occlusionCulling;
+    return d;
+}
+
+CullingOptions cullingOptions(const voxel::Detail& d) { return {.lodBias = d.lodBias, .occlusion = d.occlusionCulling}; }
+
+nlohmann::json detailJson(const voxel::Detail& d) {
+    return {{"lod_bias", d.lodBias}, {"occlusion_culling", d.occlusionCulling}};
 }
 
 AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {

@@ -2,6 +2,7 @@
 // Small pieces the subcommands share: image sizes and the checks that end a run.
 #include "engine/ao_settings.h"
 #include "engine/camera_path.h"
+#include "engine/chunk_culling.h"
 #include "engine/vk/context.h"
 #include "voxel/world.h"
 
@@ -42,16 +43,24 @@ int pathFrameCount(const CameraPath& path, int fps, const std::string& name);
 // grotto::Error (input) listing the world's paths when there is no such one.
 voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name);
 
-// The AO flags every rendering subcommand takes; unset ones keep the world's values.
+// The AO flags every rendering subcommand takes, with the level-of-detail ones;
+// unset ones keep the world's values.
 struct AoFlags {
     std::string method, quality;
     voxel::AoDesc set;  // the settings given, each flag named after its world-file key
     bool fullResolution = false;
+    std::optional<double> lodBias;
+    std::optional<bool> occlusionCulling;
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);
 
 // Preset, world file, then flags; throws grotto::Error (input) for nonsense.
 AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
+
+// The world file's "detail" block, then --lod-bias and --occlusion-culling.
+voxel::Detail resolveDetail(const voxel::World& world, const AoFlags& flags);
+CullingOptions cullingOptions(const voxel::Detail& detail);
+nlohmann::json detailJson(const voxel::Detail& detail);  // the world file's keys
 
 // Everything about the AO that decides the pixels, with the world file's keys:
 // what a resumed flythrough or a stability baseline must match.

@@ -88,6 +88,7 @@ void addRenderCommand(CLI::App& app) {
         auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
         {
             Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height, objects.get());
+            renderer.setCulling(cullingOptions(resolveDetail(world, args->ao)));
             if (objects) renderer.setObjectPoses(objects->poses(args->time));  // held for every frame
             for (uint32_t i = 0; i < frames; ++i) renderer.render(camera, i);
             FrameImages frame = renderer.readback(camera, aovs);

@@ -231,6 +231,7 @@ void addStabilityCommand(CLI::App& app) {
                           {"ao_resolution", scale == 2 ? "half" : "full"},
                           {"quality", ao.quality}, {"temporal_history", ao.gtao.temporalHistory},
                           {"ao", aoSettingsJson(ao)},
+                          {"detail", detailJson(resolveDetail(world, args->ao))},
                           {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}, {"radius", ao.gtao.radius}}}};
         std::error_code same;
         if (!args->baseline.empty() && std::filesystem::equivalent(args->baseline, out, same))
@@ -259,6 +260,7 @@ void addStabilityCommand(CLI::App& app) {
         {
             const voxel::World& world = live.world();
             Renderer renderer(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height, objects.get());
+            renderer.setCulling(cullingOptions(resolveDetail(world, args->ao)));
             AoCostTimer costs(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height, objects.get());
             AoFrame before;
             Camera beforeCamera;

@@ -20,8 +20,6 @@
 
 namespace grotto {
 
-inline constexpr double kDefaultLodBias = 1.0;
-
 struct CullingOptions {
     // The largest size, in pixels, a coarse cell (2, 4 or 8 voxels) may project to;
     // 0 = the exact voxels everywhere.

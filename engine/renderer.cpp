@@ -387,8 +387,8 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     // so the frame is submitted in two parts. The objects are drawn last.
     const std::vector<QuadDraw>& early = culling_.begin(scene_, camera, cullingOptions_);
     const GBufferObjects* drawn = objects_ ? &drawObjects : nullptr;
-    stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera, early, true,
-                                            cullingOptions_.occlusion ? nullptr : drawn);
+    stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera, early, true, drawn,
+                                            !cullingOptions_.occlusion);
     if (cullingOptions_.occlusion) {
         vk::transition(cmd, gbuffer_.depth, depthAttachment, readOnly, fragmentTests,
                        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);

@@ -83,7 +83,7 @@ public:
         culling_.reset();
     }
     // Levels of detail and occlusion culling for the G-buffer (chunk_culling.h);
-    // the default draws coarse cells of at most kDefaultLodBias pixels and culls.
+    // the default is a world file's (voxel::Detail).
     void setCulling(const CullingOptions& options) { cullingOptions_ = options; }
     const CullingOptions& culling() const { return cullingOptions_; }
     // Voxels in `changed` (world units) were edited: in the next frame, every pixel
@@ -159,7 +159,7 @@ private:
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<HizPass> hizPass_;
     ChunkCulling culling_;
-    CullingOptions cullingOptions_{.lodBias = kDefaultLodBias, .occlusion = true};
+    CullingOptions cullingOptions_{.lodBias = voxel::Detail{}.lodBias, .occlusion = voxel::Detail{}.occlusionCulling};
     std::unique_ptr<DepthPrefilterPass> prefilterPass_;
     std::unique_ptr<GtaoPass> gtaoPass_;
     std::unique_ptr<DenoisePass> denoisePass_;

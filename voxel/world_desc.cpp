@@ -88,6 +88,11 @@ void parseLighting(Reader r, Lighting& l) {
     l.toneMap = toneMap == "filmic" ? ToneMap::Filmic : ToneMap::Linear;
 }
 
+void parseDetail(Reader r, Detail& d) {
+    d.lodBias = r.number("lod_bias", d.lodBias, 0.0, 64.0);
+    d.occlusionCulling = r.boolean("occlusion_culling", d.occlusionCulling);
+}
+
 void parseAo(Reader r, AoDesc& ao) {
     ao.method = r.string("method", ao.method);
     if (ao.method != "gtao" && ao.method != "ssao" && ao.method != "hbao" && ao.method != "voxel" &&
@@ -162,6 +167,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
     }
     if (r.has("lighting")) parseLighting(r.child("lighting"), w.lighting);
     if (r.has("ao")) parseAo(r.child("ao"), w.ao);
+    if (r.has("detail")) parseDetail(r.child("detail"), w.detail);
     std::string firstCamera;  // in file order: the default unless 'default_camera' says otherwise
     if (r.has("cameras")) {
         const json& cams = r.at("cameras");
@@ -207,6 +213,7 @@ void applySettingsPatch(WorldDesc& desc, const json& patch, const fs::path& file
         Reader r(file, patch, field);
         if (r.has("lighting")) parseLighting(r.child("lighting"), changed.lighting);
         if (r.has("ao")) parseAo(r.child("ao"), changed.ao);
+        if (r.has("detail")) parseDetail(r.child("detail"), changed.detail);
     }  // closing the reader refuses unknown fields
     desc = std::move(changed);
 }

@@ -68,6 +68,14 @@ struct AoDesc {
     std::optional<int> slices, steps, denoisePasses, temporalHistory, rays;
 };
 
+// How much of the world the G-buffer draws: levels of detail and occlusion culling.
+struct Detail {
+    // The largest size, in pixels, a coarse cell (2, 4 or 8 voxels as one) may
+    // project to where far chunks are drawn coarser; 0 = the exact voxels everywhere.
+    double lodBias = 1.0;
+    bool occlusionCulling = true;  // skip chunk clusters hidden behind nearer geometry
+};
+
 struct WorldDesc {
     std::filesystem::path source;      // the .json or .vdb the user named
     std::filesystem::path gridFile;    // resolved .vdb path
@@ -78,6 +86,7 @@ struct WorldDesc {
     std::vector<Material> materials;   // id k uses materials[k - 1]
     Lighting lighting;
     AoDesc ao;
+    Detail detail;
     std::map<std::string, CameraDesc> cameras;
     std::string defaultCamera;         // empty = framed from the world's bounds
     std::map<std::string, CameraPathDesc> paths;  // inline or read from files beside the world
@@ -85,8 +94,8 @@ struct WorldDesc {
     size_t memoryBudgetBytes = size_t(8) << 30;  // grids estimated above this are refused
 };
 
-// Changes a loaded world's lighting and AO: `patch` holds "lighting" and "ao"
-// blocks as a world file writes them (each optional; keys left out keep their
+// Changes a loaded world's lighting, AO and detail: `patch` holds "lighting", "ao"
+// and "detail" blocks as a world file writes them (each optional; keys left out keep their
 // values), checked as a world file is, errors naming `file` and `field`. The
 // viewer's panel and scripts change settings through it.
 void applySettingsPatch(WorldDesc& desc, const nlohmann::ordered_json& patch, const std::filesystem::path& file,

@@ -140,7 +140,7 @@ void transformedBounds(const glm::dmat4& m, glm::vec3 lo, glm::vec3 hi, glm::vec
 
 uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const GpuScene& scene,
                              const vk::Buffer& frame, const Camera& camera, std::span<const QuadDraw> draws,
-                             bool clear, const GBufferObjects* objects) {
+                             bool clear, const GBufferObjects* objects, bool drawObjects) {
     const VkExtent2D extent = t.depth.extent;
     const bool motion = mode_ == GBufferMode::Motion;
     auto attachment = [clear](const vk::Image& img, VkClearValue value) {
@@ -211,7 +211,7 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
     // (exact far from the origin), culled by its transformed bounds; the object's
     // index (1, 2, ...) is the instance index, which the surface id carries.
     const Frustum frustum(camera);
-    if (objects)
+    if (objects && drawObjects)
         for (size_t k = 0; k < objects->scenes.size(); ++k) {
             const GpuScene& s = *objects->scenes[k];
             if (s.chunks.empty()) continue;

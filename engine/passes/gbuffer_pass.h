@@ -46,11 +46,12 @@ public:
     explicit GBufferPass(vk::Context& ctx, GBufferMode mode = GBufferMode::World);
     ~GBufferPass();
 
-    // Draws `draws` of the scene, then the objects (when given), clearing the
-    // targets first when `clear`. Returns the number of quads drawn.
+    // Draws `draws` of the scene, then the objects when `drawObjects`, clearing
+    // the targets first when `clear`. `objects` also gives the previous camera the
+    // motion target needs. Returns the number of quads drawn.
     uint64_t record(VkCommandBuffer cmd, const GBufferTargets& targets, const GpuScene& scene,
                     const vk::Buffer& frame, const Camera& camera, std::span<const QuadDraw> draws, bool clear,
-                    const GBufferObjects* objects = nullptr);
+                    const GBufferObjects* objects = nullptr, bool drawObjects = true);
 
 private:
     void release();  // handles not made yet are null, which Vulkan ignores
