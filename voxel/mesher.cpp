@@ -142,7 +142,9 @@ MeshLevel meshCells(LevelCells& cells, int scale, bool greedy) {
             if (!any) continue;
             mergeSlice(face, n, greedy, [&](int u, int v, int qw, int qh, uint8_t m) {
                 uint32_t p[3];
-                p[a] = uint32_t(d * scale); p[ua] = uint32_t(u * scale); p[va] = uint32_t(v * scale);
+                // The voxel whose face it is: a + face belongs to the cell's last layer.
+                p[a] = uint32_t(step > 0 ? (d + 1) * scale - 1 : d * scale);
+                p[ua] = uint32_t(u * scale); p[va] = uint32_t(v * scale);
                 quads.push_back({gpu::packQuadBits(p[0], p[1], p[2], qw * scale, qh * scale, f), m});
             });
         }
