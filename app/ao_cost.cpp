@@ -16,9 +16,11 @@ AoCostTimer::AoCostTimer(vk::Context& ctx, GpuScene& scene, const voxel::Lightin
 FrameStats AoCostTimer::render(Renderer& renderer, const Camera& camera, uint32_t index, bool record) {
     FrameStats f;
     double off = 0.0, noHistory = 0.0;
-    if (!renderer.objectPoses().empty())
-        for (Renderer* r : {withoutAo_.get(), withoutTemporal_.get()})
-            if (r) r->setObjectPoses(renderer.objectPoses());
+    for (Renderer* r : {withoutAo_.get(), withoutTemporal_.get()}) {
+        if (!r) continue;
+        r->setCulling(renderer.culling());  // the same quads drawn, so only the AO differs
+        if (!renderer.objectPoses().empty()) r->setObjectPoses(renderer.objectPoses());
+    }
     for (uint32_t turn = 0; turn < 3; ++turn) {
         const uint32_t which = (index + turn) % 3;
         if (which == 0) f = renderer.render(camera, index);

@@ -18,8 +18,8 @@ public:
                 uint32_t width, uint32_t height, const SceneObjects* objects = nullptr);
 
     // Renders frame `index` with `renderer` (made with the same settings) and with
-    // the two comparisons (at the renderer's object poses); keeps the differences
-    // when `record` is set.
+    // the two comparisons (at the renderer's object poses, with its levels of detail
+    // and culling); keeps the differences when `record` is set.
     FrameStats render(Renderer& renderer, const Camera& camera, uint32_t index, bool record = true);
 
     // Per recorded frame; empty where there is nothing to compare (AO off, no temporal pass).

@@ -33,35 +33,49 @@ double imageChange(const std::vector<float>& withAo, const std::vector<float>& w
 }
 
 AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
-                        const AoOptions& ao, const ReferenceView& reference, int frames, int warmup,
-                        bool timed) {
+                        const AoOptions& ao, const CullingOptions& culling, const ReferenceView& reference,
+                        int frames, int warmup, bool timed, std::vector<float>* color) {
     // Costs as wall-time differences against the same frames without AO, rendered
     // interleaved: lavapipe's timestamps miss passes that follow a barrier.
-    Renderer renderer(ctx, scene, world.desc().lighting, ao, camera.width, camera.height);
+    auto make = [&](const AoOptions& options) {
+        auto r = std::make_unique<Renderer>(ctx, scene, world.desc().lighting, options, camera.width, camera.height);
+        r->setCulling(culling);
+        return r;
+    };
+    const std::unique_ptr<Renderer> renderer = make(ao);
     AoOptions off = ao;
     off.enabled = false;
     std::unique_ptr<Renderer> withoutAo;
-    if (timed) withoutAo = std::make_unique<Renderer>(ctx, scene, world.desc().lighting, off, camera.width, camera.height);
-    std::vector<double> aoMs, frameMs;
+    if (timed) withoutAo = make(off);
+    std::vector<double> aoMs, frameMs, gbufferMs;
+    FrameStats last;
     for (int i = 0; i < frames; ++i) {
         // The two take turns going first, so what one frame leaves behind (caches,
         // clocks) does not always favour the same one.
         const double wallOffFirst = withoutAo && i % 2 ? withoutAo->render(camera, uint32_t(i)).wallMs : 0.0;
-        const double wall = renderer.render(camera, uint32_t(i)).wallMs;
+        last = renderer->render(camera, uint32_t(i));
+        if (i >= warmup)
+            for (const auto& [pass, ms] : last.passMs)
+                if (pass == "gbuffer") gbufferMs.push_back(ms);
         if (!withoutAo) continue;
         const double wallOff = i % 2 ? wallOffFirst : withoutAo->render(camera, uint32_t(i)).wallMs;
         if (i < warmup) continue;
-        aoMs.push_back(wall - wallOff);
-        frameMs.push_back(wall);
+        aoMs.push_back(last.wallMs - wallOff);
+        frameMs.push_back(last.wallMs);
     }
-    const FrameImages img = renderer.readback(camera, true);
+    FrameImages img = renderer->readback(camera, true);
     if (!withoutAo) {
-        withoutAo = std::make_unique<Renderer>(ctx, scene, world.desc().lighting, off, camera.width, camera.height);
+        withoutAo = make(off);
         withoutAo->render(camera, uint32_t(frames - 1));
     }
     const FrameImages plain = withoutAo->readback(camera, false);
-    return {aoError(img.ao, reference.ao, reference.surface), costDifference(aoMs), median(frameMs),
-            imageChange(img.color, plain.color, reference.surface)};
+    AoMeasurement m{aoError(img.ao, reference.ao, reference.surface), costDifference(aoMs), median(frameMs),
+                    imageChange(img.color, plain.color, reference.surface)};
+    m.msGbuffer = median(gbufferMs);
+    m.quadsDrawn = last.quadsDrawn;
+    m.culling = last.culling;
+    if (color) *color = std::move(img.color);
+    return m;
 }
 
 }  // namespace grotto::app

@@ -1,12 +1,13 @@
 #pragma once
 // One AO setting measured against the reference: wall-time cost of the AO chain
 // (the frame minus the same frame without AO) and of the whole frame, medians
-// after warm-up, and the error of the final AO. Shared
-// by `grotto tradeoff` and `grotto tune`.
+// after warm-up, and the error of the final AO. Shared by `grotto tradeoff`,
+// `grotto compare` and `grotto tune`.
 #include "app/cost_difference.h"
 #include "engine/ao_metrics.h"
 #include "engine/ao_settings.h"
 #include "engine/camera.h"
+#include "engine/chunk_culling.h"
 #include "engine/reference_view.h"
 #include "engine/scene.h"
 #include "voxel/world.h"
@@ -22,6 +23,9 @@ struct AoMeasurement {
     // channels of the surface pixels, between the last frame and the same frame
     // with AO off.
     double imageChange = 0.0;
+    double msGbuffer = 0.0;   // the "gbuffer" pass's GPU time, median (both culling phases)
+    uint64_t quadsDrawn = 0;  // by the last frame's G-buffer
+    CullingStats culling;     // of the last frame: chunks drawn at each level of detail
 };
 
 // Throws grotto::Error (input) naming the world and camera when the view shows no
@@ -33,10 +37,12 @@ double imageChange(const std::vector<float>& withAo, const std::vector<float>& w
                    const std::vector<uint8_t>& surface);
 
 // Renders frames 0 .. frames-1 of a static camera (consecutive indices, so the
-// temporal pass accumulates); times are medians over the frames after `warmup`,
-// left at 0 when `timed` is false (no frames without AO are rendered then).
+// temporal pass accumulates), the G-buffer drawn as `culling` says; times are
+// medians over the frames after `warmup`, the AO chain's and the frame's left at 0
+// when `timed` is false (no frames without AO are rendered then). `color`, when
+// given, receives the last frame's linear RGBA.
 AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
-                        const AoOptions& ao, const ReferenceView& reference, int frames, int warmup,
-                        bool timed = true);
+                        const AoOptions& ao, const CullingOptions& culling, const ReferenceView& reference,
+                        int frames, int warmup, bool timed = true, std::vector<float>* color = nullptr);
 
 }  // namespace grotto::app

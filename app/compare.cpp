@@ -1,7 +1,9 @@
 // grotto compare WORLD [--camera NAME] [--size WxH] [--spp N] [AO flags]: one AO
 // setting against the ray-traced reference, as one row of `grotto tradeoff` but for
 // any settings the flags give (e.g. far more slices and steps than a preset, to see
-// how close screen space can come at all; docs/tradeoff.md).
+// how close screen space can come at all; docs/tradeoff.md). The G-buffer is drawn
+// with the world's levels of detail and culling, or --lod-bias and
+// --occlusion-culling; the reference always from the exact voxels.
 #include "app/ao_measure.h"
 #include "app/commands.h"
 #include "app/options.h"
@@ -49,7 +51,8 @@ void addCompareCommand(CLI::App& app) {
         auto scene = uploadScene(ctx, world);
         // As `tradeoff` does: a temporal history gets static frames enough to fill.
         const int frames = std::max(args->warmup + args->frames, ao.gtao.temporalHistory > 0 ? 32 : 0);
-        const AoMeasurement m = measureAo(ctx, *scene, world, camera, ao, ref, frames, args->warmup);
+        const voxel::Detail detail = resolveDetail(world, args->ao);
+        const AoMeasurement m = measureAo(ctx, *scene, world, camera, ao, cullingOptions(detail), ref, frames, args->warmup);
         scene.reset();
         requireNoValidationMessages(ctx);
         const gpu::GtaoSettings& s = ao.gtao;
@@ -69,6 +72,8 @@ void addCompareCommand(CLI::App& app) {
                     m.msFrame);
         std::printf("AO in the image: mean |colour change| %.2f%% over surface pixels (AO on against off)\n",
                     100.0 * m.imageChange);
+        std::printf("G-buffer: lod bias %g, occlusion culling %s, %llu quads, %.2f ms\n", detail.lodBias,
+                    detail.occlusionCulling ? "on" : "off", (unsigned long long)m.quadsDrawn, m.msGbuffer);
     });
 }
 

@@ -66,6 +66,10 @@ void addAoFlags(CLI::App* cmd, AoFlags& f) {
     cmd->add_option("--denoise-blur-beta", d.denoiseBlurBeta, "Centre weight of the denoise blur, 0 to 10");
     cmd->add_option("--temporal", d.temporalHistory, "Most frames the temporal pass averages, 0 (off) to 64");
     cmd->add_flag("--ao-full-res", f.fullResolution, "Run the AO chain at full instead of half resolution");
+    addDetailFlags(cmd, f);
+}
+
+void addDetailFlags(CLI::App* cmd, AoFlags& f) {
     cmd->add_option("--lod-bias", f.lodBias,
                     "Largest size in pixels a coarse cell of far chunks may cover, 0 (exact voxels everywhere) to 64 "
                     "(default: the world's detail.lod_bias, else 1)")

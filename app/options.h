@@ -53,6 +53,9 @@ struct AoFlags {
     std::optional<bool> occlusionCulling;
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);
+// Only --lod-bias and --occlusion-culling (addAoFlags adds them too): for a
+// command that chooses the AO settings itself.
+void addDetailFlags(CLI::App* cmd, AoFlags& flags);
 
 // Preset, world file, then flags; throws grotto::Error (input) for nonsense.
 AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);

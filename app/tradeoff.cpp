@@ -1,6 +1,9 @@
 // grotto tradeoff WORLD... --size WxH --csv FILE [--plot FILE.png]: every AO
 // method and preset against the ray-traced reference, cost against error
 // (docs/tradeoff.md). One CSV row per world x method x preset.
+// With --lod-biases B,...: the world's own AO setting at each level-of-detail
+// bias instead, against the exact voxels (bias 0; docs/detail.md). One row per
+// world x bias.
 #include "app/ao_measure.h"
 #include "app/commands.h"
 #include "app/options.h"
@@ -47,41 +50,88 @@ bool onPath(const std::string& tool) {
     return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
 }
 
-void writeCsv(const std::filesystem::path& file, const std::vector<Row>& rows) {
+// One line a row under `header`, written atomically.
+template <class R>
+void writeRows(const std::filesystem::path& file, const std::string& header, const std::vector<R>& rows,
+               std::string (*line)(const R&)) {
     writeAtomically(file, [&](const std::filesystem::path& tmp) {
         std::ofstream out(tmp);
-        // ms_ao is 0 where it was below its noise, ms_ao_noise (app/cost_difference.h).
-        out << "world,method,quality,ms_ao,ms_frame,mae,rmse,psnr,bias,ms_ao_noise\n";
-        char line[256];
-        for (const Row& r : rows) {
-            std::snprintf(line, sizeof line, "%s,%s,%s,%.3f,%.3f,%.5f,%.5f,%.3f,%.5f,%.3f\n", r.world.c_str(),
-                          r.method.c_str(), r.quality.c_str(), r.m.ao.ms, r.m.msFrame, r.m.error.mae, r.m.error.rmse,
-                          r.m.error.psnr, r.m.error.bias, r.m.ao.noiseMs);
-            out << line;
-        }
+        out << header;
+        for (const R& r : rows) out << line(r);
         out.close();
         if (!out) throw Error(file.string(), "write failed", "is the disk full?");
     });
 }
 
+// ms_ao is 0 where it was below its noise, ms_ao_noise (app/cost_difference.h).
+const char* const kCsvHeader = "world,method,quality,ms_ao,ms_frame,mae,rmse,psnr,bias,ms_ao_noise\n";
+std::string csvLine(const Row& r) {
+    char line[256];
+    std::snprintf(line, sizeof line, "%s,%s,%s,%.3f,%.3f,%.5f,%.5f,%.3f,%.5f,%.3f\n", r.world.c_str(),
+                  r.method.c_str(), r.quality.c_str(), r.m.ao.ms, r.m.msFrame, r.m.error.mae, r.m.error.rmse,
+                  r.m.error.psnr, r.m.error.bias, r.m.ao.noiseMs);
+    return line;
+}
+
 // The rows as a Markdown table, for docs/tradeoff.md (scripts/tradeoff.sh splices it in).
-void writeMarkdown(const std::filesystem::path& file, const std::vector<Row>& rows) {
-    writeAtomically(file, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp);
-        out << "| world | method | quality | ms_ao | ms_frame | MAE | RMSE | PSNR dB | bias |\n"
-               "|---|---|---|---|---|---|---|---|---|\n";
-        char line[256], ms[48];
-        for (const Row& r : rows) {
-            std::snprintf(ms, sizeof ms, "%.2f", r.m.ao.ms);
-            std::snprintf(line, sizeof line, "| %s | %s | %s | %s | %.2f | %.4f | %.4f | %.2f | %+.4f |\n",
-                          r.world.c_str(), r.method.c_str(), r.quality.c_str(),
-                          r.m.ao.belowNoise ? formatCost(r.m.ao).c_str() : ms, r.m.msFrame,
-                          r.m.error.mae, r.m.error.rmse, r.m.error.psnr, r.m.error.bias);
-            out << line;
-        }
-        out.close();
-        if (!out) throw Error(file.string(), "write failed", "is the disk full?");
-    });
+const char* const kMarkdownHeader = "| world | method | quality | ms_ao | ms_frame | MAE | RMSE | PSNR dB | bias |\n"
+                                    "|---|---|---|---|---|---|---|---|---|\n";
+std::string markdownLine(const Row& r) {
+    char line[256], ms[48];
+    std::snprintf(ms, sizeof ms, "%.2f", r.m.ao.ms);
+    std::snprintf(line, sizeof line, "| %s | %s | %s | %s | %.2f | %.4f | %.4f | %.2f | %+.4f |\n", r.world.c_str(),
+                  r.method.c_str(), r.quality.c_str(), r.m.ao.belowNoise ? formatCost(r.m.ao).c_str() : ms,
+                  r.m.msFrame, r.m.error.mae, r.m.error.rmse, r.m.error.psnr, r.m.error.bias);
+    return line;
+}
+
+// --lod-biases: the world's AO setting at one bias, against the same view at bias 0.
+struct LodRow {
+    std::string world, camera;
+    double bias = 0.0;
+    AoMeasurement m;
+    double colourPsnr = 0.0;    // of the final linear colour against bias 0's (+inf: identical)
+    double aoPsnrChange = 0.0;  // AO PSNR against the reference, minus bias 0's
+};
+
+// The PSNR of docs/metrics.md (peak 1) over the RGB channels of every pixel, sky
+// included (a coarse cell may cover sky the exact voxels leave open).
+double colourPsnr(const std::vector<float>& rgba, const std::vector<float>& exact) {
+    std::vector<uint8_t> rgb(rgba.size());
+    for (size_t i = 0; i < rgb.size(); ++i) rgb[i] = i % 4 != 3;
+    return aoError(rgba, exact, rgb).psnr;
+}
+
+std::string chunkLevels(const CullingStats& c) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%u/%u/%u/%u", c.chunksAtLevel[0], c.chunksAtLevel[1], c.chunksAtLevel[2],
+                  c.chunksAtLevel[3]);
+    return text;
+}
+
+// chunks_l0..l3: chunks drawn at each level (1 voxel, cells of 2, 4, 8).
+const char* const kLodCsvHeader =
+    "world,camera,lod_bias,quads,chunks_l0,chunks_l1,chunks_l2,chunks_l3,ms_gbuffer,ms_frame,colour_psnr,ao_psnr,"
+    "ao_psnr_change\n";
+std::string lodCsvLine(const LodRow& r) {
+    char line[256];
+    const auto& c = r.m.culling.chunksAtLevel;
+    std::snprintf(line, sizeof line, "%s,%s,%g,%llu,%u,%u,%u,%u,%.3f,%.3f,%.3f,%.3f,%.3f\n", r.world.c_str(),
+                  r.camera.c_str(), r.bias, (unsigned long long)r.m.quadsDrawn, c[0], c[1], c[2], c[3], r.m.msGbuffer,
+                  r.m.msFrame, r.colourPsnr, r.m.error.psnr, r.aoPsnrChange);
+    return line;
+}
+
+const char* const kLodMarkdownHeader =
+    "| world | camera | lod_bias | quads | chunks per level | ms_gbuffer | ms_frame | colour PSNR dB | AO PSNR dB | "
+    "AO change dB |\n|---|---|---|---|---|---|---|---|---|---|\n";
+std::string lodMarkdownLine(const LodRow& r) {
+    char line[256];
+    std::snprintf(line, sizeof line, "| %s | %s | %g | %llu | %s | %.2f | %.2f | %.2f | %.2f | %+.2f |\n",
+                  r.world.c_str(), r.camera.c_str(), r.bias, (unsigned long long)r.m.quadsDrawn,
+                  chunkLevels(r.m.culling).c_str(), r.m.msGbuffer, r.m.msFrame, r.colourPsnr, r.m.error.psnr,
+                  r.aoPsnrChange);
+    return line;
 }
 
 // RMSE against AO-chain time, both averaged over the worlds, one line per method
@@ -119,6 +169,35 @@ void writePlot(const std::filesystem::path& file, const std::vector<Row>& rows, 
     });
 }
 
+// The world's AO setting at bias 0 and at each of `biases`, each against the exact
+// rendering (bias 0) of the same view, settings and frames.
+std::vector<LodRow> measureLod(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
+                               const LodRow& label, std::vector<double> biases, bool occlusion,
+                               const ReferenceView& ref, int frames, int warmup) {
+    const AoOptions ao = resolveAo(world, {});
+    frames = std::max(frames, ao.enabled && ao.gtao.temporalHistory > 0 ? kTemporalFrames : 0);
+    biases.push_back(0.0);  // the exact rendering comes first: every other row is measured against it
+    std::sort(biases.begin(), biases.end());
+    biases.erase(std::unique(biases.begin(), biases.end()), biases.end());
+    std::vector<LodRow> rows;
+    std::vector<float> exact, color;
+    for (double bias : biases) {
+        LodRow row = label;
+        row.bias = bias;
+        row.m = measureAo(ctx, scene, world, camera, ao, {.lodBias = bias, .occlusion = occlusion}, ref, frames, warmup,
+                          true, bias == 0.0 ? &exact : &color);
+        row.colourPsnr = colourPsnr(bias == 0.0 ? exact : color, exact);
+        row.aoPsnrChange = row.m.error.psnr - (rows.empty() ? row.m.error.psnr : rows[0].m.error.psnr);
+        std::printf("  lod bias %-5g quads %9llu  chunks %-15s gbuffer %7.2f ms  frame %7.2f ms  colour psnr %6.2f dB  "
+                    "ao psnr %6.2f dB (%+.2f)\n",
+                    bias, (unsigned long long)row.m.quadsDrawn, chunkLevels(row.m.culling).c_str(), row.m.msGbuffer,
+                    row.m.msFrame, row.colourPsnr, row.m.error.psnr, row.aoPsnrChange);
+        std::fflush(stdout);
+        rows.push_back(row);
+    }
+    return rows;
+}
+
 }  // namespace
 
 void addTradeoffCommand(CLI::App& app) {
@@ -127,6 +206,8 @@ void addTradeoffCommand(CLI::App& app) {
         std::string camera, size = "640x360", csv, plot, markdown;
         int64_t spp = 1024;
         int frames = 5, warmup = 2;
+        std::vector<double> lodBiases;
+        AoFlags detail;  // --lod-bias and --occlusion-culling only
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("tradeoff", "Cost and error against the reference of every AO method and preset");
@@ -138,12 +219,21 @@ void addTradeoffCommand(CLI::App& app) {
         ->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--warmup", args->warmup, "Frames not timed")->capture_default_str()->check(CLI::Range(0, 1000));
     cmd->add_option("--csv", args->csv, "Output CSV")->required();
-    cmd->add_option("--plot", args->plot, "Also draw error against cost to this PNG (needs gnuplot)");
+    CLI::Option* plot = cmd->add_option("--plot", args->plot, "Also draw error against cost to this PNG (needs gnuplot)");
     cmd->add_option("--markdown", args->markdown, "Also write the rows as a Markdown table to this file");
+    addDetailFlags(cmd, args->detail);
+    cmd->add_option("--lod-biases", args->lodBiases,
+                    "Instead of every AO method: the world's AO setting at each of these level-of-detail biases "
+                    "(comma-separated, 0 to 64; 0, the exact voxels, is always measured), colour and AO against bias 0")
+        ->delimiter(',')
+        ->check(finiteRange(0.0, 64.0))
+        ->excludes(cmd->get_option("--lod-bias"))
+        ->excludes(plot);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
         if (args->spp < 1 || args->spp > (int64_t(1) << 24))
             throw Error("--spp", std::to_string(args->spp) + " is out of range", "accepted: 1 to 16777216 rays per pixel");
+        const bool lod = !args->lodBiases.empty();
         // Everything that can be refused is refused before minutes of rendering.
         requireOutputPath(args->csv);
         if (!args->markdown.empty()) requireOutputPath(args->markdown);
@@ -160,6 +250,7 @@ void addTradeoffCommand(CLI::App& app) {
 
         vk::Context ctx;
         std::vector<Row> rows;
+        std::vector<LodRow> lodRows;
         for (const voxel::World& world : worlds) {
             const std::string name = world.desc().source.stem().string();
             const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
@@ -173,6 +264,17 @@ void addTradeoffCommand(CLI::App& app) {
             std::printf("%s: reference %s, %u spp, stderr max %.4f\n", name.c_str(),
                         ref.cacheHit ? "from the cache" : "traced", uint32_t(args->spp), maxError);
             auto scene = uploadScene(ctx, world);
+            const voxel::Detail detail = resolveDetail(world, args->detail);
+            if (lod) {
+                const std::string view = !args->camera.empty()            ? args->camera
+                                         : !world.desc().defaultCamera.empty() ? world.desc().defaultCamera
+                                                                               : "default";
+                const std::vector<LodRow> measured =
+                    measureLod(ctx, *scene, world, camera, {.world = name, .camera = view}, args->lodBiases,
+                               detail.occlusionCulling, ref, args->warmup + args->frames, args->warmup);
+                lodRows.insert(lodRows.end(), measured.begin(), measured.end());
+                continue;
+            }
             for (const Setting& s : kSettings) {
                 AoFlags flags;
                 flags.method = s.method.substr(0, s.method.find('+'));  // "gtao+temporal" is gtao
@@ -180,7 +282,8 @@ void addTradeoffCommand(CLI::App& app) {
                 flags.set.temporalHistory = s.temporal;
                 const AoOptions ao = resolveAo(world, flags);
                 const int frames = std::max(args->warmup + args->frames, s.temporal ? kTemporalFrames : 0);
-                Row row{name, s.method, s.label, measureAo(ctx, *scene, world, camera, ao, ref, frames, args->warmup)};
+                Row row{name, s.method, s.label,
+                        measureAo(ctx, *scene, world, camera, ao, cullingOptions(detail), ref, frames, args->warmup)};
                 std::printf("  %-14s %-6s ao %s  frame %7.2f ms  mae %.4f  rmse %.4f  psnr %6.2f dB  bias %+.4f\n",
                             row.method.c_str(), row.quality.c_str(), formatCost(row.m.ao).c_str(), row.m.msFrame, row.m.error.mae,
                             row.m.error.rmse, row.m.error.psnr, row.m.error.bias);
@@ -189,10 +292,12 @@ void addTradeoffCommand(CLI::App& app) {
             }
         }
         requireNoValidationMessages(ctx);
-        writeCsv(args->csv, rows);
-        std::printf("wrote %s (%zu rows)\n", args->csv.c_str(), rows.size());
+        if (lod) writeRows(args->csv, kLodCsvHeader, lodRows, lodCsvLine);
+        else writeRows(args->csv, kCsvHeader, rows, csvLine);
+        std::printf("wrote %s (%zu rows)\n", args->csv.c_str(), lod ? lodRows.size() : rows.size());
         if (!args->markdown.empty()) {
-            writeMarkdown(args->markdown, rows);
+            if (lod) writeRows(args->markdown, kLodMarkdownHeader, lodRows, lodMarkdownLine);
+            else writeRows(args->markdown, kMarkdownHeader, rows, markdownLine);
             std::printf("wrote %s\n", args->markdown.c_str());
         }
         if (!args->plot.empty()) {

@@ -68,6 +68,9 @@ void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, do
         Renderer renderer(ctx, *scene, world.desc().lighting, off, camera.width, camera.height,
                           objects.empty() ? nullptr : &drawn);
         if (!objects.empty()) renderer.setObjectPoses(poses);
+        // The exact voxels everywhere, whatever a world's detail settings: the
+        // reference is what coarser levels of detail are measured against.
+        renderer.setCulling({.lodBias = 0.0, .occlusion = false});
         renderer.render(camera);
         frame = renderer.readback(camera, true);
     }
