@@ -57,6 +57,8 @@ void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, do
     off.gtao = gtaoPreset("high", 1.0);
     FrameImages frame;
     {
+        // The mesh alone has no coarser levels: the exact voxels whatever the bias,
+        // as the reference is what levels of detail are measured against.
         auto scene = uploadScene(ctx, world.mesh(), world.desc());
         SceneObjects drawn;
         std::vector<voxel::ObjectPose> poses;
@@ -68,9 +70,6 @@ void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, do
         Renderer renderer(ctx, *scene, world.desc().lighting, off, camera.width, camera.height,
                           objects.empty() ? nullptr : &drawn);
         if (!objects.empty()) renderer.setObjectPoses(poses);
-        // The exact voxels everywhere, whatever a world's detail settings: the
-        // reference is what coarser levels of detail are measured against.
-        renderer.setCulling({.lodBias = 0.0, .occlusion = false});
         renderer.render(camera);
         frame = renderer.readback(camera, true);
     }

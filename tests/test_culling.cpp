@@ -3,11 +3,16 @@
 //    with culling equals the one without, bit for bit (depth and surface ids);
 //  - coarse levels open no holes: where the exact voxels show a surface, the
 //    coarse ones do too, and never behind it;
+//  - the reference AO is traced from the exact voxels even where the default
+//    bias draws coarse chunks;
 //  - the level choice and the tile test on their own.
 #include "engine/camera_path.h"
 #include "engine/chunk_culling.h"
+#include "engine/reference_view.h"
 #include "engine/renderer.h"
+#include "engine/surface_points.h"
 #include "tests/gpu_fixture.h"
+#include "tests/scenes.h"
 #include "tests/test_util.h"
 #include "voxel/solid.h"
 
@@ -107,6 +112,35 @@ TEST_F(LevelsOfDetail, CoarseChunksOpenNoHolesAndNeverLieBehindTheVoxels) {
         EXPECT_GT(changed, surface / 20) << name << ": the coarse levels must be drawn";
     }
     for (int level = 1; level <= 3; ++level) EXPECT_GT(levels[level], 0u) << "no chunk drawn at level " << level;
+}
+
+TEST_F(LevelsOfDetail, TheReferenceIsTracedFromTheExactVoxels) {
+    // Columns one or two voxels tall in a checkerboard, seen from so far that the
+    // default bias (1) draws them from coarse cells: the reference must still be
+    // the one traced from the exact G-buffer's points, bit for bit.
+    const voxel::World world =
+        test::makeVoxelWorld({0, 0, 0}, {63, 1, 63}, [](int x, int y, int z) { return y <= (x + z) % 2; });
+    const Camera camera = makeCamera(test::lookAt({160, 100, 160}, {32, 0, 32}, 40.0), 96, 54);
+    auto scene = uploadScene(ctx(), world);
+    const voxel::Lighting lighting = noShadows(world.desc().lighting);
+    Renderer coarse(ctx(), *scene, lighting, noAo(), 96, 54), exact(ctx(), *scene, lighting, noAo(), 96, 54);
+    coarse.setCulling({.lodBias = voxel::Detail{}.lodBias, .occlusion = true});
+    exact.setCulling({.lodBias = 0.0, .occlusion = false});
+    const FrameStats stats = coarse.render(camera);
+    exact.render(camera);
+    ASSERT_EQ(stats.culling.chunksAtLevel[0], 0u) << "the default bias must draw this view coarse";
+    const FrameImages e = exact.readback(camera, true);
+    ASSERT_GT(differingPixels(coarse.readback(camera, true), e), 0u);
+
+    const SurfacePoints sp = surfacePoints(e, camera, world.voxelSize(), world.origin());
+    const voxel::ReferenceAo traced = voxel::referenceAo(world, sp.points, sp.normals, {.radius = 4.0, .spp = 16});
+    const ReferenceView ref = referenceView(world, camera, 4.0, 16, &ctx());  // built in memory: never cached
+    size_t surface = 0, differing = 0;
+    for (uint8_t s : ref.surface) surface += s;
+    ASSERT_EQ(surface, sp.pixels.size());
+    for (size_t k = 0; k < sp.pixels.size(); ++k)
+        differing += !ref.surface[sp.pixels[k]] || ref.ao[sp.pixels[k]] != traced.visibility[k];
+    EXPECT_EQ(differing, 0u) << "of " << sp.pixels.size() << " surface pixels";
 }
 
 TEST(LevelChoice, FollowsTheBiasWithHysteresis) {
