@@ -17,7 +17,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <string>
 #include <tuple>
+#include <vector>
 
 namespace grotto::app {
 namespace {
@@ -109,30 +111,41 @@ std::string chunkLevels(const CullingStats& c) {
     return text;
 }
 
+// A row's cells: for the CSV (chunks per level in four columns, 3 decimals) or
+// for the Markdown table (one column, 2 decimals, the change signed).
+std::vector<std::string> lodCells(const LodRow& r, bool markdown) {
+    auto text = [](const char* format, auto value) {
+        char cell[64];
+        std::snprintf(cell, sizeof cell, format, value);
+        return std::string(cell);
+    };
+    std::vector<std::string> cells = {r.world, r.camera, text("%g", r.bias),
+                                      text("%llu", (unsigned long long)r.m.quadsDrawn)};
+    if (markdown) cells.push_back(chunkLevels(r.m.culling));
+    else
+        for (uint32_t n : r.m.culling.chunksAtLevel) cells.push_back(std::to_string(n));
+    for (double v : {r.m.msGbuffer, r.m.msFrame, r.colourPsnr, r.m.error.psnr})
+        cells.push_back(text(markdown ? "%.2f" : "%.3f", v));
+    cells.push_back(text(markdown ? "%+.2f" : "%.3f", r.aoPsnrChange));
+    return cells;
+}
+
+std::string joined(const std::vector<std::string>& cells, const std::string& separator) {
+    std::string line;
+    for (const std::string& c : cells) line += (line.empty() ? "" : separator) + c;
+    return line;
+}
+
 // chunks_l0..l3: chunks drawn at each level (1 voxel, cells of 2, 4, 8).
 const char* const kLodCsvHeader =
     "world,camera,lod_bias,quads,chunks_l0,chunks_l1,chunks_l2,chunks_l3,ms_gbuffer,ms_frame,colour_psnr,ao_psnr,"
     "ao_psnr_change\n";
-std::string lodCsvLine(const LodRow& r) {
-    char line[256];
-    const auto& c = r.m.culling.chunksAtLevel;
-    std::snprintf(line, sizeof line, "%s,%s,%g,%llu,%u,%u,%u,%u,%.3f,%.3f,%.3f,%.3f,%.3f\n", r.world.c_str(),
-                  r.camera.c_str(), r.bias, (unsigned long long)r.m.quadsDrawn, c[0], c[1], c[2], c[3], r.m.msGbuffer,
-                  r.m.msFrame, r.colourPsnr, r.m.error.psnr, r.aoPsnrChange);
-    return line;
-}
+std::string lodCsvLine(const LodRow& r) { return joined(lodCells(r, false), ",") + "\n"; }
 
 const char* const kLodMarkdownHeader =
     "| world | camera | lod_bias | quads | chunks per level | ms_gbuffer | ms_frame | colour PSNR dB | AO PSNR dB | "
     "AO change dB |\n|---|---|---|---|---|---|---|---|---|---|\n";
-std::string lodMarkdownLine(const LodRow& r) {
-    char line[256];
-    std::snprintf(line, sizeof line, "| %s | %s | %g | %llu | %s | %.2f | %.2f | %.2f | %.2f | %+.2f |\n",
-                  r.world.c_str(), r.camera.c_str(), r.bias, (unsigned long long)r.m.quadsDrawn,
-                  chunkLevels(r.m.culling).c_str(), r.m.msGbuffer, r.m.msFrame, r.colourPsnr, r.m.error.psnr,
-                  r.aoPsnrChange);
-    return line;
-}
+std::string lodMarkdownLine(const LodRow& r) { return "| " + joined(lodCells(r, true), " | ") + " |\n"; }
 
 // RMSE against AO-chain time, both averaged over the worlds, one line per method
 // through its presets: the Pareto view. Drawn by gnuplot, into a temporary file.
