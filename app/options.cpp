@@ -85,8 +85,6 @@ voxel::Detail resolveDetail(const voxel::World& world, const AoFlags& f) {
     return d;
 }
 
-CullingOptions cullingOptions(const voxel::Detail& d) { return {.lodBias = d.lodBias, .occlusion = d.occlusionCulling}; }
-
 nlohmann::json detailJson(const voxel::Detail& d) {
     return {{"lod_bias", d.lodBias}, {"occlusion_culling", d.occlusionCulling}};
 }

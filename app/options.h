@@ -62,7 +62,6 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
 
 // The world file's "detail" block, then --lod-bias and --occlusion-culling.
 voxel::Detail resolveDetail(const voxel::World& world, const AoFlags& flags);
-CullingOptions cullingOptions(const voxel::Detail& detail);
 nlohmann::json detailJson(const voxel::Detail& detail);  // the world file's keys
 
 // Everything about the AO that decides the pixels, with the world file's keys:

@@ -13,6 +13,7 @@
 #include "engine/camera.h"
 #include "engine/passes/hiz_pass.h"
 #include "engine/scene.h"
+#include "voxel/world_desc.h"
 
 #include <array>
 #include <map>
@@ -26,6 +27,9 @@ struct CullingOptions {
     double lodBias = 0.0;
     bool occlusion = true;
 };
+
+// A world file's detail block as culling options.
+inline CullingOptions cullingOptions(const voxel::Detail& d) { return {.lodBias = d.lodBias, .occlusion = d.occlusionCulling}; }
 
 // A run of quads of one chunk (its index in GpuScene::chunks): one draw.
 struct QuadDraw {

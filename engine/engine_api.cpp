@@ -24,6 +24,7 @@ struct Engine::Impl {
     std::unique_ptr<Renderer> renderer;  // made on the first frame, kept across settings changes
     voxel::CameraDesc camera;
     voxel::Lighting lighting;
+    voxel::Detail detail;  // levels of detail and occlusion culling, from the world file
     AoOptions ao;
     uint32_t width = 0, height = 0, frame = 0;
     std::optional<Camera> last;  // the camera of the last frame rendered
@@ -83,6 +84,7 @@ void Engine::setWorld(voxel::World world) {
     }
     m.camera = world.camera("");
     m.lighting = world.desc().lighting;
+    m.detail = world.desc().detail;
     m.ao = std::move(ao);
     m.scene.emplace(*m.ctx, std::move(world));
     m.last.reset();
@@ -160,6 +162,7 @@ RenderedFrame Engine::render() {
     if (!m.renderer)
         m.renderer =
             std::make_unique<Renderer>(*m.ctx, m.scene->gpu(), m.lighting, m.ao, m.width, m.height, m.objects.get());
+    m.renderer->setCulling(cullingOptions(m.detail));
     if (m.objects) m.renderer->setObjectPoses(m.poses);
     const Camera camera = makeCamera(m.camera, m.width, m.height);
     const FrameStats stats = m.renderer->render(camera, ++m.frame);  // consecutive indices: history accumulates

@@ -159,7 +159,7 @@ private:
     std::unique_ptr<GBufferPass> gbufferPass_;
     std::unique_ptr<HizPass> hizPass_;
     ChunkCulling culling_;
-    CullingOptions cullingOptions_{.lodBias = voxel::Detail{}.lodBias, .occlusion = voxel::Detail{}.occlusionCulling};
+    CullingOptions cullingOptions_ = cullingOptions(voxel::Detail{});
     std::unique_ptr<DepthPrefilterPass> prefilterPass_;
     std::unique_ptr<GtaoPass> gtaoPass_;
     std::unique_ptr<DenoisePass> denoisePass_;

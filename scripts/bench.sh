@@ -14,6 +14,12 @@ for camera in walk overview; do
   "$grotto" bench worlds/caves.json --camera "$camera" --size 1280x720 --frames 40 --warmup 5 --ao off \
     --json "out/bench/caves-$camera-noao.json"
 done
+# Levels of detail and occlusion culling: the caves walk with AO high, both off
+# (every quad in view, as before they existed) and at the world's defaults.
+"$grotto" bench worlds/caves.json --camera walk --size 1280x720 --frames 20 --warmup 3 --quality high \
+  --lod-bias 0 --occlusion-culling false --json out/bench/caves-walk-high-exact.json
+"$grotto" bench worlds/caves.json --camera walk --size 1280x720 --frames 20 --warmup 3 --quality high \
+  --json out/bench/caves-walk-high.json
 for world in rooms thin city; do
   "$grotto" bench "worlds/$world.json" --size 1280x720 --frames 20 --warmup 3 --ao off --json "out/bench/$world-noao.json"
 done

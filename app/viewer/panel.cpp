@@ -86,6 +86,10 @@ voxel::json drawPanel(PanelState& s) {
         combo("show", s.view, kViews);
         float scale = float(s.renderScale);
         if (ImGui::SliderFloat("render scale", &scale, 0.25f, 1.0f, "%.2f")) s.renderScale = scale;
+        float lodBias = float(d.detail.lodBias);
+        bool occlusion = d.detail.occlusionCulling;
+        if (ImGui::SliderFloat("lod bias (px)", &lodBias, 0.0f, 16.0f, "%.2f")) patch["detail"]["lod_bias"] = lodBias;
+        if (ImGui::Checkbox("occlusion culling", &occlusion)) patch["detail"]["occlusion_culling"] = occlusion;
         for (const std::string& c : s.cameras) {
             if (ImGui::Button(c.c_str())) s.jumpTo = c;
             ImGui::SameLine();
@@ -127,6 +131,9 @@ voxel::json drawPanel(PanelState& s) {
                          ms.empty() ? 1.0f : *std::max_element(ms.begin(), ms.end()) * 1.2f, ImVec2(0, 60));
         for (const auto& [name, t] : s.stats.passMs) ImGui::Text("%-10s %7.2f ms", name.c_str(), t);
         ImGui::Text("quads drawn %llu of %llu", (unsigned long long)s.stats.quadsDrawn, (unsigned long long)s.quads);
+        const CullingStats& c = s.stats.culling;
+        ImGui::Text("clusters hidden %u of %u; chunks at levels %u %u %u %u", c.clustersHidden, c.clustersInView,
+                    c.chunksAtLevel[0], c.chunksAtLevel[1], c.chunksAtLevel[2], c.chunksAtLevel[3]);
         ImGui::Text("solid voxels %llu", (unsigned long long)s.activeVoxels);
     }
     if (!s.message.empty()) ImGui::TextWrapped("%s", s.message.c_str());

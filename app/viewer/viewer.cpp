@@ -68,7 +68,7 @@ public:
         renderer_ = std::make_unique<Renderer>(ctx_, live_->gpu(), desc_.lighting, ao, renderSize_.width,
                                                renderSize_.height, objects_.get());
         desc_.detail = app::resolveDetail(world, o.ao);
-        renderer_->setCulling(app::cullingOptions(desc_.detail));
+        renderer_->setCulling(cullingOptions(desc_.detail));
         presenter_ = std::make_unique<Presenter>(ctx_, fb, o.vsync);
         const voxel::CameraDesc start = world.camera(o.camera);
         const voxel::IndexBox b = world.bounds();
@@ -364,7 +364,7 @@ private:
         const AoOptions ao = aoOptionsFor(d.ao, live_->world().voxelSize(), file.string());
         if (patch.contains("lighting")) renderer_->setLighting(d.lighting);
         if (patch.contains("ao")) renderer_->setAo(ao);
-        if (patch.contains("detail")) renderer_->setCulling(app::cullingOptions(d.detail));
+        if (patch.contains("detail")) renderer_->setCulling(cullingOptions(d.detail));
         desc_ = std::move(d);
         aoOptions_ = ao;
         cut();
