@@ -41,15 +41,23 @@ class CliErrors : public ::testing::Test {
 protected:
     void SetUp() override {
         openvdb::initialize();
-        auto grid = openvdb::BoolGrid::create(false);
-        grid->setName("solid");
-        for (int x = 0; x < 16; ++x)
-            for (int z = 0; z < 16; ++z) grid->tree().setValueOn(openvdb::Coord(x, 0, z), true);
         good_ = dir_ / "good.vdb";
-        writeGrids(good_, {grid});
+        writeSolid(good_, 16, 1, [](int, int, int) { return true; });  // a 16 x 16 floor
     }
 
     static void writeGrids(const fs::path& p, openvdb::GridPtrVec grids) { openvdb::io::File(p.string()).write(grids); }
+
+    // A bool grid "solid" over x, z in [0, width) and y in [0, height), set where `solid` says.
+    template <class Solid>
+    static void writeSolid(const fs::path& p, int width, int height, Solid solid) {
+        auto grid = openvdb::BoolGrid::create(false);
+        grid->setName("solid");
+        for (int x = 0; x < width; ++x)
+            for (int y = 0; y < height; ++y)
+                for (int z = 0; z < width; ++z)
+                    if (solid(x, y, z)) grid->tree().setValueOn(openvdb::Coord(x, y, z), true);
+        writeGrids(p, {grid});
+    }
 
     fs::path writeText(const std::string& name, const std::string& text) {
         std::ofstream(dir_ / name) << text;

@@ -80,12 +80,7 @@ class LevelOfDetailCli : public test::CliErrors {
 protected:
     void SetUp() override {
         CliErrors::SetUp();
-        auto grid = openvdb::BoolGrid::create(false);
-        grid->setName("solid");
-        for (int x = 0; x < 64; ++x)
-            for (int z = 0; z < 64; ++z)
-                for (int y = 0; y <= (x + z) % 2; ++y) grid->tree().setValueOn(openvdb::Coord(x, y, z), true);
-        writeGrids(dir_ / "bumps.vdb", {grid});
+        writeSolid(dir_ / "bumps.vdb", 64, 2, [](int x, int y, int z) { return y <= (x + z) % 2; });
     }
     // The world with `detail` as its "detail" block.
     std::filesystem::path world(const std::string& name, const std::string& detail) {
