@@ -81,9 +81,8 @@ void addTuneCommand(CLI::App& app) {
                 ao.gtao.finalValuePower = s.finalValuePower;
                 ao.gtao.thinOccluderCompensation = s.thinOccluderCompensation;
                 const Target& t = targets[i];
-                const AoError e = measureAo(ctx, *t.scene, *t.world, t.camera, ao,
-                                                 cullingOptions(resolveDetail(*t.world, {})), t.reference, 1, 0, false)
-                                           .error;
+                const CullingOptions culling = cullingOptions(resolveDetail(*t.world, {}));
+                const AoError e = measureAo(ctx, *t.scene, *t.world, t.camera, ao, culling, t.reference, 1, 0, false).error;
                 if (print)
                     std::printf("    %-8s rmse %.4f  psnr %6.2f dB  mae %.4f  bias %+.4f\n", t.name.c_str(), e.rmse,
                                 e.psnr, e.mae, e.bias);

@@ -1,8 +1,8 @@
 #pragma once
 // The reference AO of one view (docs/reference.md): the surface points of a
 // G-buffer of the exact voxels (no level of detail) traced by voxel::referenceAo,
-// through the on-disk cache. `grotto reference`
-// writes it to an EXR; `grotto tradeoff` and the tests measure methods against it.
+// through the on-disk cache. `grotto reference` writes it to an EXR; `grotto
+// tradeoff` and the tests measure methods against it.
 #include "engine/camera.h"
 #include "engine/vk/context.h"
 #include "voxel/reference_ao.h"
