@@ -98,7 +98,10 @@ const std::vector<QuadDraw>& ChunkCulling::begin(const GpuScene& scene, const Ca
         const GpuChunk& c = scene.chunks[v.index];
         ChunkState& state = state_[c.index];
         const double voxelPixels = scene.voxelSize * focalPixels / nearestDepth(camera, v.offset + c.lo, v.offset + c.hi);
-        const int level = chooseLevel(voxelPixels, options.lodBias, state.level, int(c.levels.size()));
+        int level = chooseLevel(voxelPixels, options.lodBias, state.level, int(c.levels.size()));
+        // Grown cells may make more faces than the voxels (thin, ragged shapes): a
+        // coarser level is drawn only where it saves quads.
+        while (level > 0 && c.levels[size_t(level)].quads() >= c.levels[size_t(level) - 1].quads()) --level;
         const GpuLevel& l = c.levels[size_t(level)];
         if (level != state.level || state.visible.size() != l.clusters.size()) {
             state.level = level;

@@ -2,7 +2,7 @@
 // Which of a scene's quads a frame draws, decided on the CPU:
 //  - a level of detail per chunk from the size its voxels project to on screen
 //    (lod_bias), with hysteresis so a chunk near a threshold does not flip level
-//    from frame to frame;
+//    from frame to frame, and only where the coarser level has fewer quads;
 //  - frustum culling of chunks and of their clusters (QuadCluster), and of faces
 //    seen only from behind;
 //  - two-phase occlusion culling: the clusters visible last frame are drawn first,
