@@ -4,7 +4,7 @@
 // With AOVs the EXR also holds AO (final), AO_raw, AO_spatial, AO_temporal and
 // AO_history (half res, stored by nearest) and edges. Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
 #include "engine/camera.h"
-#include "engine/renderer.h"
+#include "engine/frame_images.h"
 
 #include <filesystem>
 #include <span>
