@@ -11,22 +11,31 @@ namespace grotto {
 
 FrameCopy::FrameCopy(vk::Context& ctx, bool aovs) : ctx_(ctx), aovs_(aovs) {}
 
-FrameCopy::~FrameCopy() { vk::destroy(ctx_, buffer_); }
+FrameCopy::~FrameCopy() {
+    for (vk::Buffer& b : buffers_) vk::destroy(ctx_, b);
+}
 
-const vk::Buffer& FrameCopy::reserve(VkDeviceSize bytes) {
-    if (buffer_.size < bytes) {
-        vk::destroy(ctx_, buffer_);
-        buffer_ = vk::createBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+void FrameCopy::begin(Layout layout) {
+    layout_ = std::move(layout);
+    std::fill(std::begin(copied_), std::end(copied_), VkDeviceSize(0));
+}
+
+const vk::Buffer& FrameCopy::reserve(Part part, VkDeviceSize bytes) {
+    vk::Buffer& b = buffers_[part];
+    if (b.size < bytes) {
+        vk::destroy(ctx_, b);
+        b = vk::createBuffer(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
     }
-    return buffer_;
+    copied_[part] = bytes;
+    return b;
 }
 
 namespace {
 
 template <class T>
-std::vector<T> values(const vk::Buffer& buffer, FrameCopy::Region r) {
-    std::vector<T> out(r.bytes / sizeof(T));
-    std::memcpy(out.data(), static_cast<const uint8_t*>(buffer.mapped()) + r.offset, out.size() * sizeof(T));
+std::vector<T> values(const vk::Buffer& buffer, VkDeviceSize bytes) {
+    std::vector<T> out(bytes / sizeof(T));
+    std::memcpy(out.data(), buffer.mapped(), out.size() * sizeof(T));
     return out;
 }
 
@@ -43,17 +52,18 @@ std::vector<float> halfToFull(const std::vector<float>& half, VkExtent2D h, uint
 }  // namespace
 
 FrameImages FrameCopy::decode() const {
-    const Layout& l = layout;
+    const Layout& l = layout_;
+    auto part = [&](Part p) { return values<float>(buffers_[p], copied_[p]); };
     FrameImages f;
     f.width = l.width;
     f.height = l.height;
     const size_t n = size_t(f.width) * f.height;
-    f.color = values<float>(buffer_, l.color);
+    f.color = part(Color);
     if (!aovs_) return f;
-    f.shadow = l.shadow.bytes ? values<float>(buffer_, l.shadow) : std::vector<float>(n, 1.0f);
-    f.depthBuffer = values<float>(buffer_, l.depth);
-    f.surfaceIds = values<uint16_t>(buffer_, l.surface);
-    if (l.motion.bytes) f.motion = values<float>(buffer_, l.motion);
+    f.shadow = copied_[Shadow] ? part(Shadow) : std::vector<float>(n, 1.0f);
+    f.depthBuffer = part(Depth);
+    f.surfaceIds = values<uint16_t>(buffers_[Surface], copied_[Surface]);
+    if (copied_[Motion]) f.motion = part(Motion);
     f.depth.resize(n);
     f.normal.assign(3 * n, 0.0f);
     f.albedo.assign(3 * n, 0.0f);
@@ -72,15 +82,15 @@ FrameImages FrameCopy::decode() const {
         f.ao = f.aoRaw = f.aoSpatial = f.aoTemporal = f.aoHistory = f.edges = std::vector<float>(n, 1.0f);
         return f;
     }
-    f.ao = values<float>(buffer_, l.aoFull);
-    const std::vector<float> raw = values<float>(buffer_, l.raw);
-    const std::vector<float> spatial = values<float>(buffer_, l.spatial);
+    f.ao = part(AoFull);
+    const std::vector<float> raw = part(Raw);
+    const std::vector<float> spatial = part(Spatial);
     f.aoRawHalf.resize(raw.size() / 2);
     for (size_t i = 0; i < raw.size() / 4; ++i) f.aoRawHalf[2 * i] = raw[4 * i], f.aoRawHalf[2 * i + 1] = raw[4 * i + 1];
     f.aoRaw = halfToFull(raw, l.half, 4, 0, l.scale, f.width, f.height);
     f.aoSpatial = halfToFull(spatial, l.half, 4, 0, l.scale, f.width, f.height);
-    if (l.history.bytes) {
-        const std::vector<float> history = values<float>(buffer_, l.history);
+    if (copied_[History]) {
+        const std::vector<float> history = part(History);
         f.aoTemporal = halfToFull(history, l.half, 4, 0, l.scale, f.width, f.height);
         f.aoHistory = halfToFull(history, l.half, 4, 1, l.scale, f.width, f.height);
     } else {

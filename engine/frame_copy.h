@@ -28,29 +28,29 @@ public:
     // The copied frame's images, exactly as Renderer::readback returns them.
     FrameImages decode() const;
 
-    // What the renderer records: where each image lies in the buffer (0 bytes: not
-    // copied) and what decoding needs to know of the frame.
-    struct Region {
-        VkDeviceSize offset = 0, bytes = 0;
-    };
+    // What the renderer records: each image into a buffer of its own (the largest
+    // allocation stays one image's), and what decoding needs to know of the frame.
+    enum Part { Color, Shadow, Depth, Surface, Motion, AoFull, Raw, Spatial, History, kParts };
     struct Layout {
         uint32_t width = 0, height = 0;
-        Region color, shadow, depth, surface, motion, aoFull, raw, spatial, history;
-        VkExtent2D half{};  // the AO images' size
-        uint32_t scale = 2; // full size over AO size
+        VkExtent2D half{};   // the AO images' size
+        uint32_t scale = 2;  // full size over AO size
         bool ao = false;
         std::optional<Camera> camera;
         std::vector<voxel::ObjectPose> poses;
         std::vector<glm::vec3> albedo;  // material k at [k - 1]
     };
-    Layout layout;
-    // The buffer, (re)made to hold at least `bytes`.
-    const vk::Buffer& reserve(VkDeviceSize bytes);
+    // Starts a frame's copy: no part copied yet.
+    void begin(Layout layout);
+    // The buffer for `part`, (re)made to hold at least `bytes`, which the frame copies.
+    const vk::Buffer& reserve(Part part, VkDeviceSize bytes);
 
 private:
     vk::Context& ctx_;
     bool aovs_;
-    vk::Buffer buffer_;
+    Layout layout_;
+    vk::Buffer buffers_[kParts];
+    VkDeviceSize copied_[kParts] = {};  // bytes the frame copied into each; 0: none
 };
 
 }  // namespace grotto

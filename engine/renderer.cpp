@@ -453,28 +453,22 @@ void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
 }
 
 void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {
-    FrameCopy::Layout& l = copy.layout;
-    l = {.width = color_.extent.width, .height = color_.extent.height, .half = aoTargets_.half,
-         .scale = ao_.fullResolution ? 1u : 2u, .ao = ao_.enabled, .camera = camera, .poses = poses_,
-         .albedo = scene_.albedo};
+    copy.begin({.width = color_.extent.width, .height = color_.extent.height, .half = aoTargets_.half,
+                .scale = ao_.fullResolution ? 1u : 2u, .ao = ao_.enabled, .camera = camera, .poses = poses_,
+                .albedo = scene_.albedo});
     const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, general = VK_IMAGE_LAYOUT_GENERAL;
-    // Each image's place in the buffer, 16-byte aligned, in the order they are copied.
-    struct Copy {
-        const vk::Image* image;
-        VkImageLayout layout;
-        uint32_t bytesPerPixel;
-        FrameCopy::Region* region;
+    auto copyPart = [&](FrameCopy::Part part, const vk::Image& image, VkImageLayout layout, uint32_t bytesPerPixel) {
+        const VkDeviceSize bytes = VkDeviceSize(image.extent.width) * image.extent.height * bytesPerPixel;
+        vk::recordImageCopy(cmd, image, layout, bytesPerPixel, copy.reserve(part, bytes), 0);
     };
-    std::vector<Copy> copies = {{&color_, general, 16, &l.color}};
-    const bool aovs = copy.aovs();
-    if (aovs) {
-        if (shadows()) copies.push_back({&shadow_, general, 4, &l.shadow});
-        copies.push_back({&gbuffer_.depth, ro, 4, &l.depth});
-        copies.push_back({&gbuffer_.surface, ro, 2, &l.surface});
-        if (motion()) copies.push_back({&gbuffer_.motion, ro, 16, &l.motion});
+    copyPart(FrameCopy::Color, color_, general, 16);
+    if (copy.aovs()) {
+        if (shadows()) copyPart(FrameCopy::Shadow, shadow_, general, 4);
+        copyPart(FrameCopy::Depth, gbuffer_.depth, ro, 4);
+        copyPart(FrameCopy::Surface, gbuffer_.surface, ro, 2);
+        if (motion()) copyPart(FrameCopy::Motion, gbuffer_.motion, ro, 16);
     }
-    const bool aoAovs = aovs && ao_.enabled;
-    if (aoAovs) {
+    if (copy.aovs() && ao_.enabled) {
         // What the frame computed on the way without storing: the full-res AO (the
         // composite upsamples for itself) and, when the temporal pass blurs for
         // itself, the spatial AO. The same shaders on the same inputs give the same values.
@@ -491,18 +485,11 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
         upsamplePass_->record(cmd, gbuffer_.depth, gbuffer_.surface, aoHalfOutput(), aoTargets_.full,
                               gtaoConstants_);
         computeToCompute(cmd);
-        copies.push_back({&aoTargets_.full, general, 4, &l.aoFull});
-        copies.push_back({&aoTargets_.raw, general, 16, &l.raw});
-        copies.push_back({&aoTargets_.denoised(ao_.gtao.denoisePasses), general, 16, &l.spatial});
-        if (temporal()) copies.push_back({&aoHalfOutput(), general, 16, &l.history});
+        copyPart(FrameCopy::AoFull, aoTargets_.full, general, 4);
+        copyPart(FrameCopy::Raw, aoTargets_.raw, general, 16);
+        copyPart(FrameCopy::Spatial, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 16);
+        if (temporal()) copyPart(FrameCopy::History, aoHalfOutput(), general, 16);
     }
-    VkDeviceSize bytes = 0;
-    for (const Copy& c : copies) {
-        *c.region = {.offset = bytes, .bytes = VkDeviceSize(c.image->extent.width) * c.image->extent.height * c.bytesPerPixel};
-        bytes += (c.region->bytes + 15) / 16 * 16;
-    }
-    const vk::Buffer& buffer = copy.reserve(bytes);
-    for (const Copy& c : copies) vk::recordImageCopy(cmd, *c.image, c.layout, c.bytesPerPixel, buffer, c.region->offset);
     vk::recordHostRead(cmd);
 }
 
