@@ -29,7 +29,7 @@ std::string findFfmpeg(const std::string& option) {
             return fs::absolute(candidate).string();
     }
     throw Error(option, "needs ffmpeg, which is not on PATH",
-                "install it: apt-get install ffmpeg (or run scripts/setup.sh as root)");
+                "install it with apt-get install ffmpeg, or run scripts/setup.sh as root");
 }
 
 void requireVideoSize(uint32_t width, uint32_t height, const std::string& option) {
