@@ -39,7 +39,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <optional>
-#include <sstream>
 
 namespace grotto::app {
 
@@ -70,8 +69,9 @@ std::vector<std::string> exrAovs(const Args& a) {
     if (!a.given("--aovs")) return all;
     if (a.aovs == "none") return {};
     std::vector<std::string> asked;
-    std::stringstream list(a.aovs);
-    for (std::string name; std::getline(list, name, ',');) {
+    for (size_t from = 0, comma; from <= a.aovs.size(); from = comma + 1) {
+        comma = std::min(a.aovs.find(',', from), a.aovs.size());
+        const std::string name = a.aovs.substr(from, comma - from);
         if (std::find(all.begin(), all.end(), name) == all.end()) {
             std::string accepted;
             for (const std::string& n : all) accepted += (accepted.empty() ? "" : ", ") + n;
