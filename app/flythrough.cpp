@@ -47,9 +47,9 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
-// Measured in docs/benchmarks.md ("Capture throughput"): the fastest level whose
-// files stay within a quarter of zlib's default size.
-constexpr int kFlythroughPngLevel = 1;
+// Measured in docs/benchmarks.md ("Capture throughput"): about five times as fast
+// to encode as zlib's default level 6, for files about a quarter larger.
+constexpr int kFlythroughPngLevel = 2;
 constexpr int kDefaultVideoQuality = 18;
 
 struct Args {
@@ -207,7 +207,7 @@ void run(const Args& a) {
             if (objects) renderer.setObjectPoses(objects->poses(time));
             const bool write = std::binary_search(missing.begin(), missing.end(), i);
             const bool toVideo = video && i >= range.first;
-            FrameCopy* copy = write || toVideo ? &writer.slot() : nullptr;
+            FrameCopy* copy = (write || toVideo) ? &writer.slot() : nullptr;
             const FrameStats stats = renderer.render(camera, uint32_t(i), copy);
             if (copy)
                 writer.submit(*copy, [&, i, camera, write, toVideo, file = write ? dir / names.name(i) : fs::path()](

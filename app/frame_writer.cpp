@@ -1,5 +1,9 @@
 #include "app/frame_writer.h"
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <algorithm>
 
 namespace grotto::app {
@@ -66,6 +70,10 @@ void FrameWriter::finish() {
 }
 
 void FrameWriter::work() {
+    // Encoding yields the cores to the renderer's threads, which set the pace,
+    // and takes what they leave (the lowest priority: nice 19, this thread only).
+    // Where it cannot be lowered the thread keeps the process's priority.
+    setpriority(PRIO_PROCESS, id_t(syscall(SYS_gettid)), 19);
     std::unique_lock lock(mutex_);
     for (;;) {
         changed_.wait(lock, [&] { return stopping_ || !queue_.empty(); });

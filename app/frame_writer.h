@@ -5,6 +5,8 @@
 // read-back); a worker decodes the slot, hands it back for the frame after next,
 // then encodes and writes the frame. At most two frames wait in slots and
 // `threads` are being encoded, so memory stays bounded however slow the disk.
+// The workers run at the lowest CPU priority: the renderer sets the pace, and
+// encoding takes the cores it leaves.
 // The first error a job throws is rethrown on the main thread by the next call,
 // and jobs not yet started are then dropped.
 #include "engine/frame_copy.h"
