@@ -55,11 +55,7 @@ protected:
         if (onPath("ffmpeg").empty() || onPath("ffprobe").empty())
             GTEST_SKIP() << "ffmpeg is not installed (apt-get install ffmpeg, or scripts/setup.sh)";
         CliErrors::SetUp();
-        // One second over the test floor: 9 frames at --fps 8.
-        world_ = writeText("fly.json", R"({"grid": {"file": "good.vdb"}, "paths": {"p": {"keys": [
-            {"time": 0, "position": [8, 10, 30], "target": [8, 0, 8]},
-            {"time": 0.5, "position": [20, 8, 24], "target": [8, 0, 8]},
-            {"time": 1, "position": [26, 6, 12], "target": [8, 0, 6]}]}}})");
+        world_ = writeFlyWorld();  // 9 frames at --fps 8
     }
     std::string flythrough(const std::string& flags, const std::string& size = "48x32") const {
         return "flythrough " + world_.string() + " --path p --size " + size + " --fps 8 " + flags;
