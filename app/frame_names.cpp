@@ -41,6 +41,10 @@ FrameNames::FrameNames(const std::string& pattern, int startNumber, const std::s
     }
     if (conversions == 0) refuse("has no integer conversion, so every frame would get the same name");
     if (!prefix_.empty() && prefix_[0] == '.') refuse("makes hidden names (starting with '.')");
+    // The temporary name a frame is written under adds about 30 bytes to it, and
+    // file systems allow 255; numbers have up to 10 digits (--start-number).
+    if (prefix_.size() + size_t(std::max(width_, 10)) + suffix_.size() + 1 + extension_.size() > kMaxNameBytes)
+        refuse("makes names longer than " + std::to_string(kMaxNameBytes) + " bytes");
 }
 
 std::string FrameNames::name(int frame) const {

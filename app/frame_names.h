@@ -3,6 +3,7 @@
 // one integer conversion (frame.%04d by default), the number of the path's first
 // frame in the names (1 by default), and the format's extension. Frame i of the
 // path (1-based) is named with the number start + i - 1.
+#include <cstddef>
 #include <string>
 
 namespace grotto::app {
@@ -12,8 +13,10 @@ inline constexpr const char* kDefaultFramePattern = "frame.%04d";
 class FrameNames {
 public:
     // Throws grotto::Error (input) naming --name for a pattern with anything but
-    // one conversion %d, %Nd or %0Nd (and %% for a percent sign), a '/', or a
-    // name that would start with '.' (hidden names are the temporary files').
+    // one conversion %d, %Nd or %0Nd (and %% for a percent sign), a '/', a name
+    // that would start with '.' (hidden names are the temporary files') or be
+    // longer than kMaxNameBytes.
+    static constexpr size_t kMaxNameBytes = 200;
     FrameNames(const std::string& pattern, int startNumber, const std::string& extension);
 
     std::string name(int frame) const;

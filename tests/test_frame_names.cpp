@@ -8,6 +8,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 namespace grotto::app {
 namespace {
 
@@ -34,8 +37,8 @@ TEST(FrameNames, MatchesOnlyItsOwnNames) {
 }
 
 TEST(FrameNames, RefusesPatternsWithoutExactlyOneIntegerConversion) {
-    for (const char* bad : {"frame", "%d_%d", "%s", "%f", "%5.2d", "%x", "%ld", "%-4d", "a/%d", ".%04d", "%d%",
-                            "%99d", "tab\t%d"})
+    for (const std::string& bad : std::vector<std::string>{"frame", "%d_%d", "%s", "%f", "%5.2d", "%x", "%ld", "%-4d", "a/%d", ".%04d", "%d%",
+                            "%99d", "tab\t%d", std::string(190, 'x') + "%d"})
         test::inputErrorOf([&] { FrameNames(bad, 1, "png"); }, {"--name"});
 }
 
