@@ -1,8 +1,10 @@
 #pragma once
-// Writes a read-back frame with OpenImageIO, atomically. PNG: 8-bit sRGB colour.
-// EXR: float RGBA, with AOVs also Z, N.x N.y N.z and albedo.R albedo.G albedo.B.
-// With AOVs the EXR also holds AO (final), AO_raw, AO_spatial, AO_temporal and
-// AO_history (half res, stored by nearest) and edges. Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
+// Writes a read-back frame with OpenImageIO, atomically. PNG: 8-bit sRGB colour
+// (a chosen zlib level, rows filtered with PNG's "up" predictor). EXR: float (or
+// half) RGBA, with AOVs also Z, N.x N.y N.z and albedo.R albedo.G albedo.B, AO
+// (final), AO_raw, AO_spatial, AO_temporal and AO_history (half res, stored by
+// nearest), edges and shadow, or a chosen few of those layers (FrameEncoding).
+// Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
 #include "engine/camera.h"
 #include "engine/frame_images.h"
 
