@@ -1,39 +1,44 @@
-// grotto flythrough WORLD --path NAME [--size WxH] [--fps N] [--frames A-B]
-//                   [--warmup K] [--format png|exr] -o DIR
-// Renders a camera path to DIR/frame.NNNN.png (or .exr with AOVs) and
-// DIR/stats.json. Frame i (1-based) shows the path at time (i - 1) / fps and is
-// rendered with frame index i, so a run split by --frames across machines makes
-// the frames of one whole run: the K frames before the first frame written are
-// rendered but not written, to rebuild the temporal history. The history is a
-// running average, so a split frame converges to the whole run's rather than
-// matching it bit for bit (docs/paths.md states the measured difference). Frames already on
-// disk are skipped, so an interrupted run resumes: it re-renders from K frames
-// before the first missing one (history again) and writes only missing frames.
+// grotto flythrough WORLD --path NAME [--size WxH] [--fps N] [--frames A-B | --chunk K/N]
+//                   [--warmup K] [--format png|exr] [-o DIR] [--video FILE.mp4]
+// Renders a camera path to DIR/frame.NNNN.png (or .exr with AOVs; --name and
+// --start-number choose the names) and DIR/stats.json, and with --video pipes
+// the frames to ffmpeg as well (or instead, without -o). Frame i (1-based)
+// shows the path at time (i - 1) / fps and is rendered with frame index i, so a
+// run split by --frames or --chunk across machines makes the frames of one whole
+// run: the K frames before the first frame written are rendered but not written,
+// to rebuild the temporal history. The history is a running average, so a split
+// frame converges to the whole run's rather than matching it bit for bit
+// (docs/paths.md states the measured difference). Frames already on disk are
+// skipped, so an interrupted run resumes: it re-renders from K frames before the
+// first missing one (history again) and writes only missing frames.
 // DIR/flythrough.json records the settings so a resume never mixes sequences,
-// and DIR/stats.json keeps every run's frame times, merged by frame number.
+// and DIR/stats.json keeps every run's frame times, merged by frame number
+// (app/flythrough_dir.h). Frames are read back and written while the next ones
+// render (app/frame_writer.h).
 #include "app/commands.h"
+#include "app/flythrough_dir.h"
+#include "app/frame_names.h"
+#include "app/frame_writer.h"
 #include "app/options.h"
 #include "app/progress.h"
+#include "app/video_pipe.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/file_lock.h"
-#include "voxel/object_worlds.h"
 #include "engine/camera_path.h"
 #include "engine/image_output.h"
 #include "engine/live_scene.h"
 #include "engine/path_edits.h"
 #include "engine/render_memory.h"
 #include "engine/renderer.h"
+#include "voxel/object_worlds.h"
 #include "voxel/world.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cstdio>
-#include <fstream>
-#include <map>
 #include <optional>
-#include <sstream>
 
 namespace grotto::app {
 
@@ -42,167 +47,116 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+// Measured in docs/benchmarks.md ("Capture throughput"): about five times as fast
+// to encode as zlib's default level 6, for files about a quarter larger.
+constexpr int kFlythroughPngLevel = 2;
+constexpr int kDefaultVideoQuality = 18;
+
 struct Args {
-    std::string world, path, size = "640x360", output, format = "png", frames;
-    int fps = 24;
+    std::string world, path, size = "640x360", output, format = "png", frames, chunk, name = kDefaultFramePattern,
+                aovs, exrType = "float", video;
+    int fps = 24, startNumber = 1, pngLevel = kFlythroughPngLevel, videoQuality = kDefaultVideoQuality;
     std::optional<int> warmup;  // default: four times the temporal history
     AoFlags ao;
+    CLI::App* cmd = nullptr;
+    bool given(const std::string& flag) const { return cmd->count(flag) > 0; }
 };
 
-json pathJson(const voxel::CameraPathDesc& p) {
-    json keys = json::array();
-    for (const voxel::PathKey& k : p.keys) {
-        json key = {{"time", k.time}, {"position", {k.position.x, k.position.y, k.position.z}}};
-        if (k.target) key["target"] = {k.target->x, k.target->y, k.target->z};
-        if (k.rotation) key["quaternion"] = {k.rotation->x, k.rotation->y, k.rotation->z, k.rotation->w};
-        if (k.fovDegrees) key["fov"] = *k.fovDegrees;
-        if (k.cut) key["cut"] = true;
-        keys.push_back(key);
-    }
-    json j = {{"keys", keys}, {"constant_speed", p.constantSpeed}};
-    if (!p.edits.empty()) {  // only then: a resumed run of a path without edits keeps its manifest
-        json edits = json::array();
-        for (const voxel::TimedEdit& t : p.edits) {
-            const voxel::Edit& e = t.edit;
-            json edit = {{"time", t.time}, {"op", int(e.op)}, {"material", e.material}};
-            if (e.shape == voxel::Edit::Shape::Box)
-                edit["voxels"] = {{e.box.min.x, e.box.min.y, e.box.min.z}, {e.box.max.x, e.box.max.y, e.box.max.z}};
-            else
-                edit["sphere"] = {e.centre.x, e.centre.y, e.centre.z, e.radius};
-            edits.push_back(edit);
+// --aovs: names from kExrAovs, comma-separated, or none; all of them by default.
+// Returned in the order they are written.
+std::vector<std::string> exrAovs(const Args& a) {
+    std::vector<std::string> all(std::begin(kExrAovs), std::end(kExrAovs));
+    if (!a.given("--aovs")) return all;
+    if (a.aovs == "none") return {};
+    std::vector<std::string> asked;
+    for (size_t from = 0, comma; from <= a.aovs.size(); from = comma + 1) {
+        comma = std::min(a.aovs.find(',', from), a.aovs.size());
+        const std::string name = a.aovs.substr(from, comma - from);
+        if (std::find(all.begin(), all.end(), name) == all.end()) {
+            std::string accepted;
+            for (const std::string& n : all) accepted += (accepted.empty() ? "" : ", ") + n;
+            throw Error("--aovs", "unknown AOV '" + name + "'", "accepted: none, or a comma-separated list of " + accepted);
         }
-        j["edits"] = edits;
+        asked.push_back(name);
     }
-    if (p.fovDegrees) j["fov"] = *p.fovDegrees;
-    if (p.nearPlane) j["near"] = *p.nearPlane;
-    if (p.farPlane) j["far"] = *p.farPlane;
-    return j;
+    std::erase_if(all, [&](const std::string& n) { return std::find(asked.begin(), asked.end(), n) == asked.end(); });
+    return all;
 }
 
-// Everything that decides a frame's pixels: a resumed run must match it. The
-// frame range and warm-up are not in it: ranges are parts of one sequence.
-json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptions& ao, const voxel::Detail& detail) {
-    return {{"world", fs::absolute(a.world).lexically_normal().string()}, {"path", a.path},
-            {"path_keys", pathJson(path)}, {"size", a.size}, {"fps", a.fps}, {"format", a.format},
-            {"ao", aoSettingsJson(ao)}, {"detail", detailJson(detail)}};
+// The flags that only make sense together, checked before anything is loaded.
+void requireConsistentFlags(const Args& a) {
+    if (a.output.empty() && a.video.empty())
+        throw Error("--output", "is required (or --video FILE.mp4 for a video alone)", "e.g. -o out/frames");
+    if (a.given("--chunk") && a.given("--frames"))
+        throw Error("--chunk", "cannot be combined with --frames", "--chunk K/N picks the frames itself");
+    const bool png = a.format == "png";
+    for (const char* exrOnly : {"--aovs", "--exr-type"})
+        if (a.given(exrOnly) && png) throw Error(exrOnly, "applies to --format exr only", "add --format exr");
+    if (a.given("--png-level") && !png) throw Error("--png-level", "applies to --format png only", "drop it for EXR");
+    if (a.given("--video-quality") && a.video.empty())
+        throw Error("--video-quality", "applies to --video only", "add --video FILE.mp4");
+    if (a.output.empty())
+        for (const char* framesOnly : {"--name", "--start-number", "--aovs", "--exr-type", "--png-level"})
+            if (a.given(framesOnly))
+                throw Error(framesOnly, "names how frames are written, but no -o DIR is given", "add -o DIR");
 }
 
-void writeJson(const fs::path& file, const json& j) {
-    const std::string text = j.dump(2, ' ', false, json::error_handler_t::replace);
-    writeAtomically(file, [&](const fs::path& tmp) {
-        std::ofstream out(tmp);
-        out << text << "\n";
-        out.close();
-        if (!out) throw Error(file.string(), "write failed", "is the disk full?");
-    });
+// Everything that decides the files of a frame: a resumed run must match it. The
+// frame range and warm-up are not in it: ranges are parts of one sequence. What
+// is left at its default is left out, so directories of earlier versions resume.
+json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptions& ao, const voxel::Detail& detail,
+                 const FrameNames& names, const FrameEncoding& encoding) {
+    json m = {{"world", fs::absolute(a.world).lexically_normal().string()}, {"path", a.path},
+              {"path_keys", pathManifest(path)}, {"size", a.size}, {"fps", a.fps}, {"format", a.format},
+              {"ao", aoSettingsJson(ao)}};
+    if (detailJson(detail) != detailJson(voxel::Detail{})) m["detail"] = detailJson(detail);
+    if (!names.isDefault()) m["name"] = names.pattern(), m["start_number"] = names.start();
+    if (a.format == "exr" && (encoding.exrHalf || encoding.exrAovs.size() != std::size(kExrAovs)))
+        m["exr"] = {{"type", encoding.exrHalf ? "half" : "float"}, {"aovs", encoding.exrAovs}};
+    return m;
 }
 
-// Frames already in `dir` are kept only when they came from the same settings,
-// recorded in dir/flythrough.json; otherwise the run refuses to mix sequences.
-void requireSameRun(const fs::path& dir, const json& manifest) {
-    const fs::path file = dir / "flythrough.json";
-    if (fs::exists(file)) {
-        std::ifstream in(file);
-        std::stringstream previous;
-        previous << in.rdbuf();
-        if (previous.str() != manifest.dump(2, ' ', false, json::error_handler_t::replace) + "\n")
-            throw Error(file.string(), "holds frames of a flythrough with other settings",
-                        "render into another directory, or delete this one to start over");
+// Host memory one frame in flight holds: decoded images and encoded pixels.
+size_t bytesPerFrame(const Size& size, const AoOptions& ao, const FrameEncoding& encoding, bool exr) {
+    const size_t n = size_t(size.width) * size.height;
+    if (!exr) return 16 * n + 2 * 3 * n;  // colour, sRGB for the file and the video
+    const size_t images = encoding.exrAovs.empty() ? 16 * n : estimateRenderMemory(size.width, size.height, ao).hostBytes;
+    return images + 4 * 18 * n + 3 * n;  // at most 18 channels of float pixels
+}
+
+void run(const Args& a) {
+    requireConsistentFlags(a);
+    const Size size = parseSize(a.size);
+    const FrameNames names(a.name, a.startNumber, a.format);
+    const FrameEncoding encoding{.pngLevel = a.pngLevel, .exrAovs = a.format == "exr" ? exrAovs(a) : std::vector<std::string>{},
+                                 .exrHalf = a.exrType == "half"};
+    std::string ffmpeg;
+    if (!a.video.empty()) {
+        ffmpeg = findFfmpeg();
+        requireVideoSize(size.width, size.height);
+        requireOutputPath(a.video);
+    }
+    voxel::World world = voxel::World::load(a.world);
+    const voxel::CameraPathDesc desc = findCameraPath(world, a.path);
+    const CameraPath path(desc, world.camera(""));
+    const int count = pathFrameCount(path, a.fps, a.path);
+    const FrameRange range = !a.chunk.empty()   ? parseChunk(a.chunk, count)
+                             : a.frames.empty() ? FrameRange{1, count}
+                                                : parseFrameRange(a.frames, count);
+    if (range.count() == 0) {
+        std::printf("chunk %s has no frames: the path has %d, fewer than the chunks\n", a.chunk.c_str(), count);
         return;
     }
-    for (const auto& entry : fs::directory_iterator(dir))
-        if (entry.path().filename().string().rfind("frame.", 0) == 0)
-            throw Error(dir.string(), "already holds frames but no flythrough.json saying how they were made",
-                        "render into another directory");
-    writeJson(file, manifest);
-}
+    const AoOptions ao = resolveAo(world, a.ao);
+    const voxel::Detail detail = resolveDetail(world, a.ao);
+    vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
+    requireRenderFits(ctx, size.width, size.height, ao, "--size");
 
-// The per-frame entries of earlier runs into the directory (DIR/stats.json), by
-// frame number, so a resumed run adds to them rather than dropping them. Read
-// before rendering, so a damaged file is refused before anything is written.
-std::map<int, json> earlierFrames(const fs::path& file) {
-    std::map<int, json> frames;
-    if (!fs::exists(file)) return frames;
-    std::ifstream in(file);
-    const json doc = json::parse(in, nullptr, false);
-    const std::string hint = "delete it to start the stats afresh";
-    if (doc.is_discarded() || !doc.is_object() || !doc.contains("frames") || !doc["frames"].is_array())
-        throw Error(file.string(), "is not a flythrough stats file (no \"frames\" array)", hint);
-    for (size_t k = 0; k < doc["frames"].size(); ++k) {
-        const json& f = doc["frames"][k];
-        bool ok = f.is_object() && f.contains("frame") && f["frame"].is_number_integer() && f.contains("wall_ms") &&
-                  f["wall_ms"].is_number() && f.contains("pass_ms") && f["pass_ms"].is_object() &&
-                  f.contains("written") && f["written"].is_boolean();
-        if (ok)
-            for (const auto& [name, ms] : f["pass_ms"].items()) ok = ok && ms.is_number();
-        if (!ok)
-            throw Error(file.string(), "frames[" + std::to_string(k) + "] is not a frame entry",
-                        "expected {\"frame\", \"written\", \"wall_ms\", \"pass_ms\"}; " + hint);
-        frames[f["frame"].get<int>()] = f;
-    }
-    return frames;
-}
-
-// This run's entry replaces an earlier one of the same frame, except that a
-// warm-up render keeps the entry of the run that wrote the frame.
-void mergeFrame(std::map<int, json>& frames, const json& entry) {
-    json& slot = frames[entry["frame"].get<int>()];
-    if (slot.is_null() || entry["written"].get<bool>() || !slot["written"].get<bool>()) slot = entry;
-}
-
-// Per-frame times, in frame order, and their medians.
-json statsJson(const std::map<int, json>& byFrame) {
-    json frames = json::array();
-    for (const auto& [i, f] : byFrame) frames.push_back(f);
-    std::vector<double> wall;
-    std::map<std::string, std::vector<double>> passes;
-    for (const json& f : frames) {
-        wall.push_back(f["wall_ms"].get<double>());
-        for (auto& [name, ms] : f["pass_ms"].items()) passes[name].push_back(ms.get<double>());
-    }
-    json medians = {{"wall_ms", median(wall)}, {"pass_ms", json::object()}};
-    for (auto& [name, ms] : passes) medians["pass_ms"][name] = median(ms);
-    return {{"frames", frames}, {"median", medians}};
-}
-
-// Serialises the runs that share a directory while they read and write its
-// manifest and stats; hidden, like the temporary files.
-constexpr const char* kLockFile = ".flythrough.lock";
-
-// The files a flythrough writes into its directory.
-bool isOurs(const std::string& name) {
-    return name.rfind("frame.", 0) == 0 || name == "stats.json" || name == "flythrough.json";
-}
-
-}  // namespace
-
-void addFlythroughCommand(CLI::App& app) {
-    auto args = std::make_shared<Args>();
-    CLI::App* cmd = app.add_subcommand("flythrough", "Render a camera path to DIR/frame.NNNN.png and DIR/stats.json");
-    cmd->add_option("world", args->world, "World .json or .vdb")->required();
-    cmd->add_option("--path", args->path, "Path named in the world file, or a path .json")->required();
-    cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
-    cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
-    cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based, or N for the first N (default: the whole path)");
-    cmd->add_option("--warmup", args->warmup,
-                    "Frames rendered but not written before the first one written; the default (four times the "
-                    "temporal history, 64) keeps a split run within 2/255 of the whole run")
-        ->check(CLI::Range(0, 10000));
-    cmd->add_option("--format", args->format, "png, or exr with AOVs")->capture_default_str()->check(CLI::IsMember({"png", "exr"}));
-    cmd->add_option("-o,--output", args->output, "Output directory")->required();
-    addAoFlags(cmd, args->ao);
-    cmd->callback([args] {
-        const Size size = parseSize(args->size);
-        voxel::World world = voxel::World::load(args->world);
-        const voxel::CameraPathDesc desc = findCameraPath(world, args->path);
-        const CameraPath path(desc, world.camera(""));
-        const int count = pathFrameCount(path, args->fps, args->path);
-        const FrameRange range = args->frames.empty() ? FrameRange{1, count} : parseFrameRange(args->frames, count);
-        const AoOptions ao = resolveAo(world, args->ao);
-        const voxel::Detail detail = resolveDetail(world, args->ao);
-        vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
-        requireRenderFits(ctx, size.width, size.height, ao, "--size");
-        const fs::path dir = args->output;
+    // Frames to write: those of the range not in DIR yet (complete frames are
+    // written atomically, so existing ones are whole). The video takes them all.
+    const fs::path dir = a.output;
+    std::vector<int> missing;
+    if (!a.output.empty()) {
         std::error_code ec;
         fs::create_directories(dir, ec);
         if (!fs::is_directory(dir)) throw Error(dir.string(), "cannot create the output directory", ec ? ec.message() : "");
@@ -210,82 +164,125 @@ void addFlythroughCommand(CLI::App& app) {
             // Chunks of one sequence may start together in one directory (a render
             // farm): they agree on the manifest one at a time, and each clears
             // only the temporary files of runs that died (a live run's are locked).
-            FileLock lock(dir / kLockFile);
-            requireSameRun(dir, runManifest(*args, desc, ao, detail));
-            removeAbandonedTemporaries(dir, isOurs);
+            FileLock lock(dir / kFlythroughLock);
+            requireSameRun(dir, runManifest(a, desc, ao, detail, names, encoding), names);
+            removeAbandonedFiles(dir, names);
         }
         earlierFrames(dir / "stats.json");  // a damaged stats file is refused now, not after rendering
-
-        auto frameFile = [&](int i) {
-            char name[32];
-            std::snprintf(name, sizeof name, "frame.%04d.%s", i, args->format.c_str());
-            return dir / name;
-        };
-        std::vector<int> missing;  // complete frames are written atomically, so existing ones are whole
         for (int i = range.first; i <= range.last; ++i)
-            if (!fs::exists(frameFile(i))) missing.push_back(i);
-        if (missing.empty()) {
-            std::printf("all %d frames already in %s\n", range.last - range.first + 1, dir.c_str());
+            if (!fs::exists(dir / names.name(i))) missing.push_back(i);
+        if (missing.empty() && a.video.empty()) {
+            std::printf("all %d frames already in %s\n", range.count(), dir.c_str());
             return;
         }
-        // History: start K frames before the first frame to write. A split run's
-        // history starts afresh where the whole run's is full; the difference
-        // shrinks by (n-1)/n a frame (n = the history length, 16), so measured at
-        // four times n the split frames are within 1/255 of the whole run's
-        // (twice n: 3/255); docs/paths.md.
-        const int warmup = args->warmup.value_or(4 * int(ao.gtao.temporalHistory));
-        const int start = std::max(1, missing.front() - warmup), end = missing.back();
-        std::vector<json> rendered;  // this run's frame entries
-        // The world as the path's edits have made it by the first frame rendered;
-        // later edits are applied as their frames come. Objects are drawn at each frame's poses.
-        const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
-        auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
-        std::optional<LiveScene> scene;
-        scene.emplace(ctx, std::move(world));
-        PathEdits edits(desc, scene->world());
-        edits.applyUpTo(double(start - 1) / args->fps, *scene);
-        {
-            Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height,
-                              objects.get());
-            renderer.setCulling(cullingOptions(detail));
-            Progress progress(end - start + 1, stdout);
-            for (int i = start; i <= end; ++i) {
-                const double time = double(i - 1) / args->fps;
-                const Camera camera = path.camera(time, size.width, size.height);
-                if (i > start && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
-                edits.applyUpTo(time, *scene, &renderer);
-                if (objects) renderer.setObjectPoses(objects->poses(time));
-                const FrameStats stats = renderer.render(camera, uint32_t(i));
-                const bool write = std::binary_search(missing.begin(), missing.end(), i);
-                if (write) {
-                    const bool aovs = args->format == "exr";
-                    writeFrame(frameFile(i), renderer.readback(camera, aovs), camera, aovs);
-                }
-                json passMs = json::object();
-                for (const auto& [name, ms] : stats.passMs) passMs[name] = ms;
-                rendered.push_back({{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", stats.wallMs},
-                                    {"pass_ms", passMs}});
-                char what[96];
-                std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i, write ? "written" : "warm-up",
-                              stats.wallMs);
-                progress.step(what);
-            }
-            progress.finish();
+    }
+    const bool video = !a.video.empty();
+    // History: start K frames before the first frame to write. A split run's
+    // history starts afresh where the whole run's is full; the difference
+    // shrinks by (n-1)/n a frame (n = the history length, 16), so measured at
+    // four times n the split frames are within 1/255 of the whole run's
+    // (twice n: 3/255); docs/paths.md.
+    const int warmup = a.warmup.value_or(4 * int(ao.gtao.temporalHistory));
+    const int first = video ? range.first : missing.front(), end = video ? range.last : missing.back();
+    const int start = std::max(1, first - warmup);
+    std::vector<json> rendered;  // this run's frame entries
+    // The world as the path's edits have made it by the first frame rendered;
+    // later edits are applied as their frames come. Objects are drawn at each frame's poses.
+    const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
+    auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
+    std::optional<LiveScene> scene;
+    scene.emplace(ctx, std::move(world));
+    PathEdits edits(desc, scene->world());
+    edits.applyUpTo(double(start - 1) / a.fps, *scene);
+    {
+        std::optional<VideoPipe> pipe;
+        if (video) pipe.emplace(ffmpeg, a.video, size.width, size.height, a.fps, a.videoQuality, range.first);
+        const bool exr = a.format == "exr";
+        FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(size, ao, encoding, exr)));
+        Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height, objects.get());
+        renderer.setCulling(cullingOptions(detail));
+        Progress progress(end - start + 1, stdout);
+        for (int i = start; i <= end; ++i) {
+            const double time = double(i - 1) / a.fps;
+            const Camera camera = path.camera(time, size.width, size.height);
+            if (i > start && path.cutBetween(double(i - 2) / a.fps, time)) renderer.resetHistory();
+            edits.applyUpTo(time, *scene, &renderer);
+            if (objects) renderer.setObjectPoses(objects->poses(time));
+            const bool write = std::binary_search(missing.begin(), missing.end(), i);
+            const bool toVideo = video && i >= range.first;
+            FrameCopy* copy = (write || toVideo) ? &writer.slot() : nullptr;
+            const FrameStats stats = renderer.render(camera, uint32_t(i), copy);
+            if (copy)
+                writer.submit(*copy, [&, i, camera, write, toVideo, file = write ? dir / names.name(i) : fs::path()](
+                                         const FrameImages& frame) {
+                    std::vector<uint8_t> rgb = exr && !toVideo ? std::vector<uint8_t>() : srgb8Pixels(frame);
+                    if (write && exr) writeFrame(file, frame, camera, encoding);
+                    else if (write) writeSrgb8(file, frame.width, frame.height, rgb, &camera, encoding.pngLevel);
+                    if (toVideo) pipe->frame(i, std::move(rgb));
+                });
+            json passMs = json::object();
+            for (const auto& [name, ms] : stats.passMs) passMs[name] = ms;
+            rendered.push_back({{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", stats.wallMs},
+                                {"pass_ms", passMs}});
+            char what[96];
+            std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i,
+                          write ? "written" : toVideo ? "to video" : "warm-up", stats.wallMs);
+            progress.step(what);
         }
-        scene.reset();
-        objects.reset();
-        requireNoValidationMessages(ctx);
-        {
-            // Other chunks may have written stats since this run read them: merge
-            // this run's frames into what is there now, one writer at a time.
-            FileLock lock(dir / kLockFile);
-            std::map<int, json> frames = earlierFrames(dir / "stats.json");
-            for (const json& entry : rendered) mergeFrame(frames, entry);
-            writeJson(dir / "stats.json", statsJson(frames));
-        }
+        writer.finish();
+        if (pipe) pipe->finish();
+        progress.finish();
+    }
+    scene.reset();
+    objects.reset();
+    requireNoValidationMessages(ctx);
+    if (!a.output.empty()) {
+        mergeStats(dir, rendered);
         std::printf("wrote %zu frames to %s (%d rendered, %d already there)\n", missing.size(), dir.c_str(),
-                    end - start + 1, range.last - range.first + 1 - int(missing.size()));
-    });
+                    end - start + 1, range.count() - int(missing.size()));
+    }
+    if (video) std::printf("wrote %s (%d frames at %d fps)\n", a.video.c_str(), range.count(), a.fps);
+}
+
+}  // namespace
+
+void addFlythroughCommand(CLI::App& app) {
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("flythrough", "Render a camera path to DIR/frame.NNNN.png and DIR/stats.json");
+    args->cmd = cmd;
+    cmd->add_option("world", args->world, "World .json or .vdb")->required();
+    cmd->add_option("--path", args->path, "Path named in the world file, or a path .json")->required();
+    cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
+    cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
+    cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based, or N for the first N (default: the whole path)");
+    cmd->add_option("--chunk", args->chunk,
+                    "K/N: the K-th of N equal contiguous parts of the path's frames (a render farm's task K of N)");
+    cmd->add_option("--warmup", args->warmup,
+                    "Frames rendered but not written before the first one written; the default (four times the "
+                    "temporal history, 64) keeps a split run within 2/255 of the whole run")
+        ->check(CLI::Range(0, 10000));
+    cmd->add_option("--format", args->format, "png, or exr with AOVs")->capture_default_str()->check(CLI::IsMember({"png", "exr"}));
+    cmd->add_option("-o,--output", args->output, "Output directory (required unless --video)");
+    cmd->add_option("--name", args->name, "File name pattern with one integer conversion, before the extension")
+        ->capture_default_str();
+    cmd->add_option("--start-number", args->startNumber, "The number of the path's first frame in file names")
+        ->capture_default_str()
+        ->check(wholeRange(0, 1'000'000'000));
+    cmd->add_option("--png-level", args->pngLevel, "PNG zlib compression, 0 (none, fastest) to 9 (smallest)")
+        ->capture_default_str()
+        ->check(wholeRange(0, 9));
+    cmd->add_option("--exr-type", args->exrType, "EXR channels: float, or half (Z stays float)")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"float", "half"}));
+    cmd->add_option("--aovs", args->aovs,
+                    "EXR AOV layers, comma-separated: Z, N, albedo, AO, AO_raw, AO_spatial, AO_temporal, AO_history, "
+                    "edges, shadow; or none (default: all)");
+    cmd->add_option("--video", args->video, "Also (or, without -o, only) encode the frames to this .mp4 with ffmpeg");
+    cmd->add_option("--video-quality", args->videoQuality, "x264 constant rate factor, 0 (best) to 51 (smallest)")
+        ->capture_default_str()
+        ->check(wholeRange(0, 51));
+    addAoFlags(cmd, args->ao);
+    cmd->callback([args] { run(*args); });
 }
 
 }  // namespace grotto::app

@@ -31,6 +31,12 @@ struct FrameRange {
 };
 FrameRange parseFrameRange(const std::string& text, int count, const std::string& option = "--frames");
 
+// "K/N": the K-th (1-based) of N contiguous ranges that split frames 1..count as
+// evenly as can be (the first count % N ranges one frame longer than the rest);
+// empty (count() 0) when N > count leaves chunk K without frames. Throws
+// grotto::Error (input) naming the option.
+FrameRange parseChunk(const std::string& text, int count, const std::string& option = "--chunk");
+
 // The most frames a path may have (11.5 hours at 24 fps): frame numbers stay
 // well inside int, and a typo in --fps or a key time is caught before rendering.
 inline constexpr int64_t kMaxPathFrames = 1'000'000;

@@ -44,29 +44,38 @@ void requireOutputPath(const fs::path& file) {
                     "an output may only replace a regular file; name a file path");
 }
 
-void writeAtomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
+PendingFile::PendingFile(const fs::path& target) : target_(target) {
     requireOutputPath(target);
-    const fs::path tmp = temporaryFor(target);
-    const int lock = open(tmp.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
-    if (lock < 0) throw Error(target.string(), "cannot create a temporary file beside it");
-    flock(lock, LOCK_EX);  // held until the rename: the file is not abandoned
-    try {
-        write(tmp);
-        // Flush to disk before the rename, so a crash never leaves an empty target.
-        if (int fd = open(tmp.c_str(), O_RDONLY | O_CLOEXEC); fd >= 0) {
-            fsync(fd);
-            close(fd);
-        }
+    tmp_ = temporaryFor(target);
+    lock_ = open(tmp_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
+    if (lock_ < 0) throw Error(target.string(), "cannot create a temporary file beside it");
+    flock(lock_, LOCK_EX);  // held until the rename: the file is not abandoned
+}
+
+PendingFile::~PendingFile() {
+    if (!committed_) {
         std::error_code ec;
-        fs::rename(tmp, target, ec);
-        if (ec) throw Error(target.string(), "cannot be replaced: " + ec.message());
-    } catch (...) {
-        std::error_code ec;
-        fs::remove(tmp, ec);
-        close(lock);
-        throw;
+        fs::remove(tmp_, ec);
     }
-    close(lock);
+    close(lock_);
+}
+
+void PendingFile::commit() {
+    // Flush to disk before the rename, so a crash never leaves an empty target.
+    if (int fd = open(tmp_.c_str(), O_RDONLY | O_CLOEXEC); fd >= 0) {
+        fsync(fd);
+        close(fd);
+    }
+    std::error_code ec;
+    fs::rename(tmp_, target_, ec);
+    if (ec) throw Error(target_.string(), "cannot be replaced: " + ec.message());
+    committed_ = true;
+}
+
+void writeAtomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
+    PendingFile file(target);
+    write(file.tmp());
+    file.commit();
 }
 
 int removeAbandonedTemporaries(const fs::path& dir, const std::function<bool(const std::string&)>& ours) {

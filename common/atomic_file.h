@@ -19,6 +19,24 @@ void requireOutputPath(const std::filesystem::path& file);
 void writeAtomically(const std::filesystem::path& target,
                      const std::function<void(const std::filesystem::path& tmp)>& write);
 
+// The same for a file written over a longer span (a video from an encoder that
+// runs beside the render): tmp() is the temporary path, commit() renames it into
+// place, and destruction without commit() removes it.
+class PendingFile {
+public:
+    explicit PendingFile(const std::filesystem::path& target);  // checks the target as requireOutputPath
+    ~PendingFile();
+    PendingFile(const PendingFile&) = delete;
+    PendingFile& operator=(const PendingFile&) = delete;
+    const std::filesystem::path& tmp() const { return tmp_; }
+    void commit();  // flushes the temporary file to disk and renames it to the target
+
+private:
+    std::filesystem::path target_, tmp_;
+    int lock_ = -1;
+    bool committed_ = false;
+};
+
 // Removes the temporary files in `dir` that writeAtomically left behind when its
 // process died, for targets whose file name `ours` accepts; files that a live
 // writer still holds are kept. Returns how many were removed.

@@ -9,6 +9,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -114,60 +115,106 @@ void write(const std::filesystem::path& target, const std::filesystem::path& tmp
 
 }  // namespace
 
-void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb) {
+std::vector<uint8_t> srgb8Pixels(const FrameImages& f) {
+    const size_t n = size_t(f.width) * f.height;
+    std::vector<uint8_t> px(3 * n);
+    for (size_t i = 0; i < n; ++i)
+        for (int c = 0; c < 3; ++c) px[3 * i + c] = toSrgb8(f.color[4 * i + c]);
+    return px;
+}
+
+void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb,
+                const Camera* camera, int pngLevel) {
+    if (rgb.size() != size_t(width) * height * 3) throw Error::internal(path.string(), "pixels of the wrong size");
     writeAtomically(path, [&](const std::filesystem::path& tmp) {
         OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
         spec.attribute("oiio:ColorSpace", "sRGB");
-        spec.attribute("Software", "grotto");
+        spec.attribute("png:compressionLevel", std::clamp(pngLevel, 0, 9));
+        // Every row predicted from the one above (PNG_FILTER_UP): as small as
+        // libpng's default of trying all five filters on each row, in about half the time.
+        spec.attribute("png:filter", 0x20);
+        if (camera) addCamera(spec, *camera);
+        else spec.attribute("Software", "grotto");
         write(path, tmp, spec, rgb.data(), OIIO::TypeDesc::UINT8);
     });
 }
 
 void writeFrame(const std::filesystem::path& path, const FrameImages& f, const Camera& camera, bool aovs) {
-    const ImageFormat format = imageFormatFor(path);
+    FrameEncoding encoding;
+    if (aovs) encoding.exrAovs.assign(std::begin(kExrAovs), std::end(kExrAovs));
+    writeFrame(path, f, camera, encoding);
+}
+
+namespace {
+
+// One EXR layer: its channels, and channel c of pixel i.
+struct Layer {
+    const char* name;
+    std::vector<std::string> channels;
+    std::function<float(size_t i, int c)> value;
+};
+
+std::vector<Layer> exrLayers(const FrameImages& f) {
+    auto one = [](const std::vector<float>& v) { return [p = v.data()](size_t i, int) { return p[i]; }; };
+    auto three = [](const std::vector<float>& v) { return [p = v.data()](size_t i, int c) { return p[3 * i + c]; }; };
+    return {
+        // EXR readers expect a finite Z; sky gets the largest float.
+        {"Z", {"Z"}, [&f](size_t i, int) { return std::isfinite(f.depth[i]) ? f.depth[i] : std::numeric_limits<float>::max(); }},
+        {"N", {"N.x", "N.y", "N.z"}, three(f.normal)},
+        {"albedo", {"albedo.R", "albedo.G", "albedo.B"}, three(f.albedo)},
+        {"AO", {"AO"}, one(f.ao)},
+        {"AO_raw", {"AO_raw"}, one(f.aoRaw)},
+        {"AO_spatial", {"AO_spatial"}, one(f.aoSpatial)},
+        {"AO_temporal", {"AO_temporal"}, one(f.aoTemporal)},
+        {"AO_history", {"AO_history"}, one(f.aoHistory)},
+        {"edges", {"edges"}, one(f.edges)},
+        {"shadow", {"shadow"}, [&f](size_t i, int) { return f.shadow.empty() ? 1.0f : f.shadow[i]; }},
+    };
+}
+
+void writeExr(const std::filesystem::path& path, const FrameImages& f, const Camera& camera, const FrameEncoding& e) {
+    std::vector<Layer> layers;
+    for (Layer& layer : exrLayers(f))
+        if (std::find(e.exrAovs.begin(), e.exrAovs.end(), layer.name) != e.exrAovs.end()) layers.push_back(std::move(layer));
+    if (layers.size() != e.exrAovs.size())
+        throw Error::internal(path.string(), "an unknown or repeated EXR AOV layer was asked for");
+    if (!layers.empty() && f.depth.empty()) throw Error::internal(path.string(), "AOV layers of a frame read back without AOVs");
+    std::vector<std::string> names = {"R", "G", "B", "A"};
+    for (const Layer& layer : layers) names.insert(names.end(), layer.channels.begin(), layer.channels.end());
+    const int channels = int(names.size());
+    OIIO::ImageSpec spec(int(f.width), int(f.height), channels, e.exrHalf ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
+    spec.channelnames = names;
+    spec.alpha_channel = 3;
+    const auto z = std::find(names.begin(), names.end(), "Z");
+    if (z != names.end()) {
+        spec.z_channel = int(z - names.begin());
+        if (e.exrHalf) {
+            spec.channelformats.assign(size_t(channels), OIIO::TypeDesc::HALF);
+            spec.channelformats[size_t(spec.z_channel)] = OIIO::TypeDesc::FLOAT;
+        }
+    }
+    spec.attribute("oiio:ColorSpace", "Linear");
+    spec.attribute("compression", "zip");
+    addCamera(spec, camera);
     const size_t n = size_t(f.width) * f.height;
-    writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        if (format == ImageFormat::Png) {
-            OIIO::ImageSpec spec(int(f.width), int(f.height), 3, OIIO::TypeDesc::UINT8);
-            spec.attribute("oiio:ColorSpace", "sRGB");
-            addCamera(spec, camera);
-            std::vector<uint8_t> px(3 * n);
-            for (size_t i = 0; i < n; ++i)
-                for (int c = 0; c < 3; ++c) px[3 * i + c] = toSrgb8(f.color[4 * i + c]);
-            write(path, tmp, spec, px.data(), OIIO::TypeDesc::UINT8);
-            return;
-        }
-        std::vector<std::string> names = {"R", "G", "B", "A"};
-        if (aovs)
-            names.insert(names.end(), {"Z", "N.x", "N.y", "N.z", "albedo.R", "albedo.G", "albedo.B", "AO", "AO_raw",
-                                       "AO_spatial", "AO_temporal", "AO_history", "edges", "shadow"});
-        const int channels = int(names.size());
-        OIIO::ImageSpec spec(int(f.width), int(f.height), channels, OIIO::TypeDesc::FLOAT);
-        spec.channelnames = names;
-        spec.alpha_channel = 3;
-        if (aovs) spec.z_channel = 4;
-        spec.attribute("oiio:ColorSpace", "Linear");
-        spec.attribute("compression", "zip");
-        addCamera(spec, camera);
-        std::vector<float> px(size_t(channels) * n);
-        for (size_t i = 0; i < n; ++i) {
-            float* p = &px[size_t(channels) * i];
-            for (int c = 0; c < 4; ++c) p[c] = f.color[4 * i + c];
-            if (!aovs) continue;
-            // EXR readers expect a finite Z; sky gets the largest float.
-            p[4] = std::isfinite(f.depth[i]) ? f.depth[i] : std::numeric_limits<float>::max();
-            for (int c = 0; c < 3; ++c) p[5 + c] = f.normal[3 * i + c];
-            for (int c = 0; c < 3; ++c) p[8 + c] = f.albedo[3 * i + c];
-            p[11] = f.ao[i];
-            p[12] = f.aoRaw[i];
-            p[13] = f.aoSpatial[i];
-            p[14] = f.aoTemporal[i];
-            p[15] = f.aoHistory[i];
-            p[16] = f.edges[i];
-            p[17] = f.shadow.empty() ? 1.0f : f.shadow[i];
-        }
-        write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT);
-    });
+    std::vector<float> px(size_t(channels) * n);
+    for (size_t i = 0; i < n; ++i) {
+        float* p = &px[size_t(channels) * i];
+        for (int c = 0; c < 4; ++c) *p++ = f.color[4 * i + c];
+        for (const Layer& layer : layers)
+            for (int c = 0; c < int(layer.channels.size()); ++c) *p++ = layer.value(i, c);
+    }
+    writeAtomically(path, [&](const std::filesystem::path& tmp) { write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT); });
+}
+
+}  // namespace
+
+void writeFrame(const std::filesystem::path& path, const FrameImages& f, const Camera& camera,
+                const FrameEncoding& encoding) {
+    if (imageFormatFor(path) == ImageFormat::Png)
+        writeSrgb8(path, f.width, f.height, srgb8Pixels(f), &camera, encoding.pngLevel);
+    else
+        writeExr(path, f, camera, encoding);
 }
 
 void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const Channel> channels,

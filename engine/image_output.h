@@ -1,10 +1,12 @@
 #pragma once
-// Writes a read-back frame with OpenImageIO, atomically. PNG: 8-bit sRGB colour.
-// EXR: float RGBA, with AOVs also Z, N.x N.y N.z and albedo.R albedo.G albedo.B.
-// With AOVs the EXR also holds AO (final), AO_raw, AO_spatial, AO_temporal and
-// AO_history (half res, stored by nearest) and edges. Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
+// Writes a read-back frame with OpenImageIO, atomically. PNG: 8-bit sRGB colour
+// (a chosen zlib level, rows filtered with PNG's "up" predictor). EXR: float (or
+// half) RGBA, with AOVs also Z, N.x N.y N.z and albedo.R albedo.G albedo.B, AO
+// (final), AO_raw, AO_spatial, AO_temporal and AO_history (half res, stored by
+// nearest), edges and shadow, or a chosen few of those layers (FrameEncoding).
+// Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
 #include "engine/camera.h"
-#include "engine/renderer.h"
+#include "engine/frame_images.h"
 
 #include <filesystem>
 #include <span>
@@ -20,6 +22,24 @@ ImageFormat imageFormatFor(const std::filesystem::path& path);
 
 void writeFrame(const std::filesystem::path& path, const FrameImages& frame, const Camera& camera, bool aovs);
 
+// The AOV layers an EXR frame can hold, in the order they are written; "N" is
+// N.x N.y N.z and "albedo" albedo.R albedo.G albedo.B, the others one channel each.
+inline constexpr const char* kExrAovs[] = {"Z",           "N",          "albedo", "AO",    "AO_raw",
+                                           "AO_spatial", "AO_temporal", "AO_history", "edges", "shadow"};
+// How a frame is encoded. PNG: the zlib level, 0 (none, fastest) to 9 (smallest).
+// EXR: which AOV layers beside the colour (kExrAovs names; the frame must have
+// been read back with AOVs when any is asked for), and half-float channels
+// instead of float ones (Z stays float: half's 65504 range and 11-bit precision
+// would garble depth).
+struct FrameEncoding {
+    int pngLevel = kDefaultPngLevel;
+    std::vector<std::string> exrAovs;
+    bool exrHalf = false;
+    static constexpr int kDefaultPngLevel = 6;  // zlib's own default, as OpenImageIO's
+};
+void writeFrame(const std::filesystem::path& path, const FrameImages& frame, const Camera& camera,
+                const FrameEncoding& encoding);
+
 // An EXR of named float channels, each width * height values (row 0 on top), with
 // the same camera attributes as writeFrame; written atomically.
 struct Channel {
@@ -34,8 +54,13 @@ uint8_t toSrgb8(float linear);
 // An sRGB-encoded value in [0, 1] -> linear.
 float srgbToLinear(float srgb);
 
-// An 8-bit sRGB PNG of `rgb` (3 bytes a pixel, row 0 on top), written atomically.
-void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb);
+// The colour as 8-bit sRGB, 3 bytes a pixel: the pixels a PNG of the frame holds.
+std::vector<uint8_t> srgb8Pixels(const FrameImages& frame);
+
+// An 8-bit sRGB PNG of `rgb` (3 bytes a pixel, row 0 on top), written atomically,
+// with the camera attributes when given one; zlib level 0 to 9.
+void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb,
+                const Camera* camera = nullptr, int pngLevel = FrameEncoding::kDefaultPngLevel);
 
 // The AOVs showAov draws.
 inline constexpr const char* kShownAovs = "ao, normal, depth, edges, shadow, raw, spatial, temporal, history";

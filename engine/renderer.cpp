@@ -322,7 +322,7 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     }
 }
 
-FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
+FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy* copy) {
     const auto start = std::chrono::steady_clock::now();
     const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
     std::memcpy(frame_.mapped(), &uniforms, sizeof uniforms);
@@ -428,6 +428,7 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex) {
     compositePass_->record(cmd, gbuffer_, ao_.enabled ? aoHalfOutput() : aoTargets_.raw, color_, frame_,
                            scene_.palette, gtaoConstants_, objectUniforms_, shadow_);
     timestamps_.end(cmd);
+    if (copy) recordCopy(cmd, *copy, camera);
 
     submitAndWait(cmd);
     stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -475,107 +476,51 @@ void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
     poses_.assign(poses.begin(), poses.end());
 }
 
-namespace {
-
-std::vector<float> floats(const std::vector<uint8_t>& bytes) {
-    std::vector<float> out(bytes.size() / 4);
-    std::memcpy(out.data(), bytes.data(), out.size() * 4);
-    return out;
-}
-
-// Channel `c` of a `channels`-wide half-res image, stored at full size by nearest.
-std::vector<float> halfToFull(const std::vector<float>& half, VkExtent2D h, uint32_t channels, uint32_t c,
-                              uint32_t scale, uint32_t width, uint32_t height) {
-    std::vector<float> out(size_t(width) * height);
-    for (uint32_t y = 0; y < height; ++y)
-        for (uint32_t x = 0; x < width; ++x)
-            out[size_t(y) * width + x] = half[(size_t(y / scale) * h.width + x / scale) * channels + c];
-    return out;
-}
-
-}  // namespace
-
-FrameImages Renderer::readback(const Camera& camera, bool aovs) {
-    FrameImages f;
-    f.width = color_.extent.width;
-    f.height = color_.extent.height;
-    const size_t n = size_t(f.width) * f.height;
-    f.color = floats(vk::readImage(ctx_, color_, VK_IMAGE_LAYOUT_GENERAL, 16));
-    if (!aovs) return f;
-    f.shadow = shadows() ? floats(vk::readImage(ctx_, shadow_, VK_IMAGE_LAYOUT_GENERAL, 4))
-                         : std::vector<float>(size_t(f.width) * f.height, 1.0f);
-
-    const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    const std::vector<float> depth = floats(vk::readImage(ctx_, gbuffer_.depth, ro, 4));
-    const auto surface = vk::readImage(ctx_, gbuffer_.surface, ro, 2);
-    f.depthBuffer = depth;
-    if (motion()) f.motion = floats(vk::readImage(ctx_, gbuffer_.motion, ro, 16));
-    f.surfaceIds.resize(n);
-    std::memcpy(f.surfaceIds.data(), surface.data(), 2 * n);
-    f.depth.resize(n);
-    f.normal.assign(3 * n, 0.0f);
-    f.albedo.assign(3 * n, 0.0f);
-    for (size_t i = 0; i < n; ++i) {
-        f.depth[i] = depth[i] > 0.0f ? float(camera.linearDepth(depth[i])) : std::numeric_limits<float>::infinity();
-        uint16_t id;
-        std::memcpy(&id, surface.data() + 2 * i, 2);
-        if (id == 0) continue;  // sky
-        const uint32_t material = gpu::surfaceMaterial(id);
-        const glm::dvec3 n = surfaceNormal(id, poses_);  // an axis, or an object's face turned with it
-        for (int c = 0; c < 3; ++c) f.normal[3 * i + c] = float(n[c]);
-        if (material >= 1 && material <= scene_.albedo.size())
-            for (int c = 0; c < 3; ++c) f.albedo[3 * i + c] = scene_.albedo[material - 1][c];
+void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {
+    copy.begin({.width = color_.extent.width, .height = color_.extent.height, .half = aoTargets_.half,
+                .scale = ao_.fullResolution ? 1u : 2u, .ao = ao_.enabled, .camera = camera, .poses = poses_,
+                .albedo = scene_.albedo});
+    const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, general = VK_IMAGE_LAYOUT_GENERAL;
+    auto copyPart = [&](FrameCopy::Part part, const vk::Image& image, VkImageLayout layout, uint32_t bytesPerPixel) {
+        const VkDeviceSize bytes = VkDeviceSize(image.extent.width) * image.extent.height * bytesPerPixel;
+        vk::recordImageCopy(cmd, image, layout, bytesPerPixel, copy.reserve(part, bytes), 0);
+    };
+    copyPart(FrameCopy::Color, color_, general, 16);
+    if (copy.aovs()) {
+        if (shadows()) copyPart(FrameCopy::Shadow, shadow_, general, 4);
+        copyPart(FrameCopy::Depth, gbuffer_.depth, ro, 4);
+        copyPart(FrameCopy::Surface, gbuffer_.surface, ro, 2);
+        if (motion()) copyPart(FrameCopy::Motion, gbuffer_.motion, ro, 16);
     }
-    if (!ao_.enabled) {
-        f.ao = f.aoRaw = f.aoSpatial = f.aoTemporal = f.aoHistory = f.edges = std::vector<float>(n, 1.0f);
-        return f;
-    }
-    const VkExtent2D h = aoTargets_.half;
-    const auto general = VK_IMAGE_LAYOUT_GENERAL;
-    // What the frame computed on the way without storing: the full-res AO (the
-    // composite upsamples for itself) and, when the temporal pass blurs for itself,
-    // the spatial AO. The same shaders on the same inputs give the same values.
-    const bool firstAovs = !aoTargets_.full.image;  // made on first use: frames do not store it
-    if (firstAovs)
-        aoTargets_.full = vk::createImage(ctx_, color_.extent, VK_FORMAT_R32_SFLOAT,
-                                          VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-        if (firstAovs)
+    if (copy.aovs() && ao_.enabled) {
+        // What the frame computed on the way without storing: the full-res AO (the
+        // composite upsamples for itself) and, when the temporal pass blurs for
+        // itself, the spatial AO. The same shaders on the same inputs give the same values.
+        const bool firstAovs = !aoTargets_.full.image;  // made on first use: frames do not store it
+        if (firstAovs) {
+            aoTargets_.full = vk::createImage(ctx_, color_.extent, VK_FORMAT_R32_SFLOAT,
+                                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
             vk::transition(cmd, aoTargets_.full, VK_IMAGE_LAYOUT_UNDEFINED, general, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
                            0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+        }
         computeToCompute(cmd);  // after the frame's own writes
         if (temporal() && ao_.gtao.denoisePasses > 0)
             denoisePass_->recordFinal(cmd, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);
         upsamplePass_->record(cmd, gbuffer_.depth, gbuffer_.surface, aoHalfOutput(), aoTargets_.full,
                               gtaoConstants_);
         computeToCompute(cmd);
-    });
-    f.ao = floats(vk::readImage(ctx_, aoTargets_.full, general, 4));
-    const std::vector<float> raw = floats(vk::readImage(ctx_, aoTargets_.raw, general, 16));
-    const std::vector<float> spatial =
-        floats(vk::readImage(ctx_, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 16));
-    f.aoRawHalf.resize(raw.size() / 2);
-    for (size_t i = 0; i < raw.size() / 4; ++i) f.aoRawHalf[2 * i] = raw[4 * i], f.aoRawHalf[2 * i + 1] = raw[4 * i + 1];
-    const uint32_t scale = ao_.fullResolution ? 1 : 2;
-    f.aoRaw = halfToFull(raw, h, 4, 0, scale, f.width, f.height);
-    f.aoSpatial = halfToFull(spatial, h, 4, 0, scale, f.width, f.height);
-    if (temporal()) {
-        const std::vector<float> history = floats(vk::readImage(ctx_, aoHalfOutput(), general, 16));
-        f.aoTemporal = halfToFull(history, h, 4, 0, scale, f.width, f.height);
-        f.aoHistory = halfToFull(history, h, 4, 1, scale, f.width, f.height);
-    } else {
-        f.aoTemporal = f.aoSpatial;
-        f.aoHistory.assign(n, 1.0f);
+        copyPart(FrameCopy::AoFull, aoTargets_.full, general, 4);
+        copyPart(FrameCopy::Raw, aoTargets_.raw, general, 16);
+        copyPart(FrameCopy::Spatial, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 16);
+        if (temporal()) copyPart(FrameCopy::History, aoHalfOutput(), general, 16);
     }
-    const std::vector<float> packed = halfToFull(raw, h, 4, 1, scale, f.width, f.height);
-    f.edges.resize(n);
-    for (size_t i = 0; i < n; ++i) {
-        const uint32_t v = uint32_t(packed[i] * 255.0f + 0.5f);
-        float e = 1.0f;
-        for (int k = 0; k < 4; ++k) e = std::min(e, float((v >> (2 * k)) & 3u) / 3.0f);
-        f.edges[i] = e;
-    }
-    return f;
+    vk::recordHostRead(cmd);
+}
+
+FrameImages Renderer::readback(const Camera& camera, bool aovs) {
+    FrameCopy copy(ctx_, aovs);
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) { recordCopy(cmd, copy, camera); });
+    return copy.decode();
 }
 
 }  // namespace grotto

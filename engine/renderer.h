@@ -2,6 +2,8 @@
 // Orders the passes of a frame and places every barrier between them.
 #include "engine/ao_settings.h"
 #include "engine/camera.h"
+#include "engine/frame_copy.h"
+#include "engine/frame_images.h"
 #include "engine/history_boxes.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/composite_pass.h"
@@ -35,30 +37,6 @@ struct FrameStats {
     CullingStats culling;  // what level of detail and culling left to draw
 };
 
-// A frame read back to host memory; pixel (x, y) at index y * width + x, row 0 on top.
-// Half-resolution AOVs are stored at full size, each pixel taking its half-res
-// pixel (x / 2, y / 2).
-struct FrameImages {
-    uint32_t width = 0, height = 0;
-    std::vector<float> color;      // linear RGBA
-    std::vector<float> depth;      // view-axis distance in world units; +inf for sky
-    std::vector<float> normal;     // world-space xyz; 0 for sky
-    std::vector<float> albedo;     // linear rgb; 0 for sky
-    std::vector<float> ao;         // final visibility, full res (1 without AO)
-    std::vector<float> aoRaw;      // GTAO main pass output (half res)
-    std::vector<float> aoSpatial;  // after the spatial denoiser (half res)
-    std::vector<float> aoTemporal; // after the temporal pass (half res; the spatial AO without one)
-    std::vector<float> aoHistory;  // frames of history behind each temporal pixel (half res; 1 without)
-    std::vector<float> edges;      // smallest of the four edge weights (half res)
-    std::vector<float> depthBuffer;       // raw reverse-Z values, as the GPU stored them
-    std::vector<uint16_t> surfaceIds;     // raw G-buffer surface ids
-    std::vector<float> aoRawHalf;         // GTAO output at half res: visibility, packed edges
-    std::vector<float> motion;            // where objects move: xy previous minus current pixel, z previous
-                                          // view depth, 0 for sky (4 floats a pixel); empty otherwise
-    std::vector<float> shadow;            // 1 where the sun reaches a surface, 0 where it does not (full res;
-                                          // 1 everywhere without sun shadows)
-};
-
 class Renderer {
 public:
     // The scene may change between frames (GpuScene::updateChunks): each frame
@@ -70,8 +48,10 @@ public:
 
     // Renders frame `frameIndex` (it advances the GTAO noise). The temporal pass
     // accumulates over consecutive frame indices (wrapping); any other index starts
-    // the history afresh.
-    FrameStats render(const Camera& camera, uint32_t frameIndex = 0);
+    // the history afresh. With `copy`, the frame's own command buffer also copies
+    // its images into it (the AOVs when copy->aovs()), for decoding later on any
+    // thread: the same images readback(camera, copy->aovs()) would return.
+    FrameStats render(const Camera& camera, uint32_t frameIndex = 0, FrameCopy* copy = nullptr);
     // The objects' poses for the next frames, one per object. The poses of the
     // frame before are kept for the motion vectors.
     void setObjectPoses(std::span<const voxel::ObjectPose> poses);
@@ -99,7 +79,8 @@ public:
     void resize(uint32_t width, uint32_t height);
     void setLighting(const voxel::Lighting& lighting);
     void setAo(const AoOptions& ao);
-    // Reads back the last frame; the G-buffer and AO AOVs only when asked for.
+    // Reads back the last frame, waiting for the copy; the G-buffer and AO AOVs
+    // only when asked for.
     FrameImages readback(const Camera& camera, bool aovs);
 
     // The last frame's images, for an embedding game (include/grotto/grotto.h says
@@ -117,6 +98,8 @@ private:
     void releaseTargets();
     void release();  // frees whatever exists; null handles are skipped
     void recordAo(VkCommandBuffer cmd);
+    // The last frame's images into `copy`, after everything recorded before.
+    void recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera);
     bool temporal() const { return ao_.enabled && ao_.gtao.temporalHistory > 0; }
     // Sun shadows need the scene's occupancy; a scene uploaded from a mesh alone has none.
     bool shadows() const { return lighting_.sunShadows && scene_.occupancy; }

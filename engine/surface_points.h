@@ -3,7 +3,7 @@
 // same points and normals the screen-space method sees, snapped onto the voxel
 // face planes they lie on so that float depth never puts a point inside a voxel.
 #include "engine/camera.h"
-#include "engine/renderer.h"
+#include "engine/frame_images.h"
 #include "voxel/reference_ao.h"
 
 #include <cstdint>

@@ -10,7 +10,7 @@
 // A point on an object is carried along with it: q must show the same point of the
 // same object at the object's previous pose.
 #include "engine/camera.h"
-#include "engine/renderer.h"
+#include "engine/frame_images.h"
 #include "voxel/object_pose.h"
 
 #include <array>

@@ -12,6 +12,7 @@ packages=(
   libopenimageio-dev
   libgtest-dev libcli11-dev nlohmann-json3-dev
   gnuplot-nox                                                     # grotto tradeoff --plot
+  ffmpeg                                                          # grotto flythrough --video
   libglfw3-dev libimgui-dev                                       # grotto view
   xvfb xauth                                                      # the viewer's tests, headless
   "$@"

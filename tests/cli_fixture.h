@@ -78,6 +78,14 @@ protected:
         return r;
     }
 
+    // A world over the test floor with a path "p" of one second: 9 frames at --fps 8.
+    fs::path writeFlyWorld() {
+        return writeText("fly.json", R"({"grid": {"file": "good.vdb"}, "paths": {"p": {"keys": [
+            {"time": 0, "position": [8, 10, 30], "target": [8, 0, 8]},
+            {"time": 0.5, "position": [20, 8, 24], "target": [8, 0, 8]},
+            {"time": 1, "position": [26, 6, 12], "target": [8, 0, 6]}]}}})");
+    }
+
     std::string render(const fs::path& world) { return "render " + world.string() + " --size 32x16 -o " + out().string(); }
     fs::path out() const { return dir_ / "out.png"; }
 

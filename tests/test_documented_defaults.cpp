@@ -1,8 +1,13 @@
 // What the docs promise of a world that leaves things unset: the default camera
-// is the first one in the file, and a bare .vdb is lit like the shipped worlds.
+// is the first one in the file, and a bare .vdb is lit like the shipped worlds;
+// and of flythrough's output flags: the defaults docs/paths.md states.
 #include "tests/cli_fixture.h"
 
 #include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <regex>
 
 namespace grotto {
 namespace {
@@ -44,6 +49,25 @@ TEST_F(CliErrors, BareVdbIsLitLikeTheShippedWorlds) {
     size_t clipped = 0;
     for (uint8_t c : pixels) clipped += c == 255;
     EXPECT_LT(double(clipped) / double(pixels.size()), 0.01) << clipped << " clipped channels";
+}
+
+// docs/paths.md's table of flythrough output flags states each default; --help
+// must state the same.
+TEST(CliUsage, FlythroughOutputDefaultsMatchTheDocs) {
+    std::ifstream in(test::worldsDir().parent_path() / "docs" / "paths.md");
+    ASSERT_TRUE(in) << "docs/paths.md";
+    std::map<std::string, std::string> documented;  // flag -> default, from rows "| `--flag ...` | meaning | default |"
+    const std::regex row(R"(^\| `(--[a-z-]+)[^`]*` \|.*\| `?([^`|]+?)`? \|\s*$)");
+    std::smatch m;
+    for (std::string line; std::getline(in, line);)
+        if (std::regex_match(line, m, row)) documented[m[1]] = m[2];
+    const test::RunResult help = runGrotto("flythrough --help");
+    ASSERT_EQ(help.exitCode, 0);
+    for (const char* flag : {"--name", "--start-number", "--png-level", "--exr-type"}) {
+        ASSERT_TRUE(documented.count(flag)) << flag << " has no row in docs/paths.md";
+        const std::regex stated(std::string(flag) + R"( [^\n]*=)" + documented[flag] + R"((\s|$))");
+        EXPECT_TRUE(std::regex_search(help.out, stated)) << flag << " default " << documented[flag] << ":\n" << help.out;
+    }
 }
 
 }  // namespace

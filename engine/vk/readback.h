@@ -1,11 +1,20 @@
 #pragma once
-// Copies a whole image to host memory (tightly packed rows) and restores its layout.
+// Copies images to host memory (tightly packed rows), restoring their layouts:
+// recorded into a command buffer of the caller's, or at once with readImage.
 #include "engine/vk/resources.h"
 
 #include <cstdint>
 #include <vector>
 
 namespace grotto::vk {
+
+// Records copying `image` (in `layout`, restored afterwards) into `buffer` at
+// `offset`, after every write recorded before it. Returns the bytes copied.
+VkDeviceSize recordImageCopy(VkCommandBuffer cmd, const Image& image, VkImageLayout layout, uint32_t bytesPerPixel,
+                             const Buffer& buffer, VkDeviceSize offset);
+// Records the barrier that makes the copies before it visible to the host once
+// the command buffer has completed (a fence wait alone does not).
+void recordHostRead(VkCommandBuffer cmd);
 
 std::vector<uint8_t> readImage(Context& ctx, const Image& image, VkImageLayout layout, uint32_t bytesPerPixel);
 

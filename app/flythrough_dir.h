@@ -1,0 +1,49 @@
+#pragma once
+// What a flythrough keeps in its output directory beside the frames: the
+// manifest (DIR/flythrough.json: the settings that decide the frames, so a
+// resumed run never mixes sequences), the stats (DIR/stats.json: every run's
+// frame times, merged by frame number) and the lock that serialises the runs
+// sharing the directory while they read and write those two.
+#include "app/frame_names.h"
+#include "engine/camera_path.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+namespace grotto::app {
+
+// Hidden, like the temporary files.
+inline constexpr const char* kFlythroughLock = ".flythrough.lock";
+
+// The path as the manifest records it: keys, edits and the camera settings.
+nlohmann::json pathManifest(const voxel::CameraPathDesc& path);
+
+// Frames already in `dir` are kept only when they came from the same settings,
+// recorded in dir/flythrough.json; otherwise (or when frames `names` matches are
+// there with no manifest) throws grotto::Error (input). Writes the manifest when
+// there is none. Call with the lock held.
+void requireSameRun(const std::filesystem::path& dir, const nlohmann::json& manifest, const FrameNames& names);
+
+// Removes what killed runs left: temporaries of frames, stats and manifest.
+void removeAbandonedFiles(const std::filesystem::path& dir, const FrameNames& names);
+
+// The per-frame entries of earlier runs (DIR/stats.json), by frame number.
+// Throws grotto::Error (input) for a file that is not a stats file: read it
+// before rendering, so a damaged file is refused before anything is written.
+std::map<int, nlohmann::json> earlierFrames(const std::filesystem::path& file);
+
+// This run's entry replaces an earlier one of the same frame, except that a
+// warm-up render keeps the entry of the run that wrote the frame.
+void mergeFrame(std::map<int, nlohmann::json>& frames, const nlohmann::json& entry);
+
+// Merges `entries` into DIR/stats.json as it is now (other chunks may have
+// written it since this run read it), with the lock held; written atomically.
+void mergeStats(const std::filesystem::path& dir, const std::vector<nlohmann::json>& entries);
+
+// A JSON file written atomically.
+void writeJson(const std::filesystem::path& file, const nlohmann::json& j);
+
+}  // namespace grotto::app
