@@ -49,8 +49,10 @@ glm::dmat4 Camera::projection(bool flipY) const {
     return p;
 }
 
+glm::dmat4 Camera::viewProjRelativeDouble() const { return projection() * glm::dmat4(glm::transpose(basis)); }
+
 glm::mat4 Camera::viewProjRelative() const {
-    return glm::mat4(projection() * glm::dmat4(glm::transpose(basis)));
+    return glm::mat4(viewProjRelativeDouble());
 }
 
 double Camera::linearDepth(double depth) const {

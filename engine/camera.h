@@ -18,7 +18,8 @@ struct Camera {
     double aspect() const { return double(width) / double(height); }
     glm::dmat4 viewFromWorld() const;                 // absolute, for file metadata
     glm::dmat4 projection(bool flipY = true) const;  // reverse-Z; Vulkan's y points down
-    glm::mat4 viewProjRelative() const;              // camera-relative world -> clip
+    glm::dmat4 viewProjRelativeDouble() const;       // camera-relative world -> clip, in double
+    glm::mat4 viewProjRelative() const;              // the same in float, for shaders
     // Positive distance along the view axis for a depth-buffer value (inf for 0 with
     // an infinite far plane); read from the projection matrix, never a constant.
     double linearDepth(double depth) const;

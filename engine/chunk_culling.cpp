@@ -11,9 +11,6 @@ namespace {
 
 constexpr double kCoarserMargin = 1.25;  // hysteresis: a coarser cell must be this far below the bias
 
-// Camera-relative world to clip, in double.
-glm::dmat4 viewProjection(const Camera& c) { return c.projection() * glm::dmat4(glm::transpose(c.basis)); }
-
 // The nearest view-axis distance of a camera-relative box, at least the near plane.
 double nearestDepth(const Camera& camera, glm::vec3 lo, glm::vec3 hi) {
     const glm::dvec3 forward = -camera.basis[2];
@@ -72,7 +69,7 @@ void ChunkCulling::append(std::vector<QuadDraw>& draws, uint32_t chunk, const Qu
 const std::vector<QuadDraw>& ChunkCulling::begin(const GpuScene& scene, const Camera& camera,
                                                  const CullingOptions& options) {
     scene_ = &scene;
-    viewProj_ = viewProjection(camera);
+    viewProj_ = camera.viewProjRelativeDouble();
     candidates_.clear();
     early_.clear();
     late_.clear();
@@ -118,7 +115,7 @@ const std::vector<QuadDraw>& ChunkCulling::begin(const GpuScene& scene, const Ca
                 if (gpu::facePositive(f) ? lo[axis] >= 0.0f : hi[axis] <= 0.0f) continue;
                 if (frustum.outside(lo, hi)) continue;
                 const bool early = !options.occlusion || state.visible[k];
-                candidates_.push_back({v.index, k, lo, hi, early});
+                candidates_.push_back({&state, v.index, k, lo, hi, early});
                 if (early) {
                     append(early_, v.index, q);
                     stats_.quadsEarly += q.count;
@@ -133,11 +130,9 @@ const std::vector<QuadDraw>& ChunkCulling::begin(const GpuScene& scene, const Ca
 const std::vector<QuadDraw>& ChunkCulling::late(const DepthTiles& tiles) {
     late_.clear();
     for (const Candidate& c : candidates_) {
-        const GpuChunk& chunk = scene_->chunks[c.chunk];
-        ChunkState& state = state_[chunk.index];
-        const QuadCluster& q = chunk.levels[size_t(state.level)].clusters[c.cluster];
+        const QuadCluster& q = scene_->chunks[c.chunk].levels[size_t(c.state->level)].clusters[c.cluster];
         const bool hidden = hiddenBehind(tiles, viewProj_, c.lo, c.hi);
-        state.visible[c.cluster] = !hidden;
+        c.state->visible[c.cluster] = !hidden;
         stats_.clustersHidden += hidden;
         if (!c.early && !hidden) {
             append(late_, c.chunk, q);

@@ -77,6 +77,7 @@ private:
         std::vector<uint8_t> visible;  // per cluster of that level, last frame
     };
     struct Candidate {
+        ChunkState* state;  // map nodes stay put
         uint32_t chunk, cluster;
         glm::vec3 lo, hi;  // camera-relative bounds
         bool early;

@@ -162,7 +162,7 @@ TEST(DepthTileTest, HidesOnlyBoxesBehindEveryTileTheyCover) {
     Camera camera;
     camera.width = 64, camera.height = 64;
     camera.fovY = glm::radians(90.0);
-    const glm::dmat4 viewProj = camera.projection() * glm::dmat4(glm::transpose(camera.basis));
+    const glm::dmat4 viewProj = camera.viewProjRelativeDouble();
     // A wall at view depth 10 over the whole image: depth near / 10 (reverse-Z, infinite far).
     const float wall = float(camera.nearPlane / 10.0);
     std::vector<float> tiles(8 * 8, wall);

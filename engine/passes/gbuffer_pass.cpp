@@ -115,9 +115,6 @@ void GBufferPass::release() {
 
 namespace {
 
-// Camera-relative world to clip, in double.
-glm::dmat4 viewProjection(const Camera& c) { return c.projection() * glm::dmat4(glm::transpose(c.basis)); }
-
 // A chunk's voxel coordinates to camera-relative world units: its corner and voxel size.
 glm::dmat4 chunkMatrix(glm::dvec3 origin, double voxelSize) {
     glm::dmat4 m(voxelSize);
@@ -180,7 +177,8 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
         bind(pipeline_, layout_, scene);
 
     const Camera& previousCamera = objects && objects->previousCamera ? *objects->previousCamera : camera;
-    const glm::dmat4 viewProj = viewProjection(camera), previousViewProj = viewProjection(previousCamera);
+    const glm::dmat4 viewProj = camera.viewProjRelativeDouble();
+    const glm::dmat4 previousViewProj = previousCamera.viewProjRelativeDouble();
     uint64_t drawn = 0;
     uint32_t pushed = UINT32_MAX;  // the chunk whose placement the push constants hold
     for (const QuadDraw& d : draws) {
