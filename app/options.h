@@ -45,8 +45,9 @@ inline constexpr int64_t kMaxPathFrames = 1'000'000;
 // path's duration when there would be more than kMaxPathFrames.
 int pathFrameCount(const CameraPath& path, int fps, const std::string& name);
 
-// A path named in the world file, or a path .json given directly; throws
-// grotto::Error (input) listing the world's paths when there is no such one.
+// A path named in the world file, or a path .json given directly, with its edits
+// checked against the world (checkPathEdits); throws grotto::Error (input)
+// listing the world's paths when there is no such one.
 voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name);
 
 // The AO flags every rendering subcommand takes, with the level-of-detail ones;

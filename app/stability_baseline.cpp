@@ -1,10 +1,9 @@
 #include "app/stability_baseline.h"
 
 #include "common/error.h"
-#include "common/file_kind.h"
+#include "common/json_text.h"
 
 #include <cmath>
-#include <fstream>
 
 namespace grotto::app {
 namespace {
@@ -24,15 +23,7 @@ std::string metricName(const char* pointer) { return pointer + 1; }
 }  // namespace
 
 json loadBaseline(const std::filesystem::path& file, const json& run) {
-    requireInputFile(file, "give the --json output of an earlier stability run");
-    std::ifstream in(file);
-    if (!in) throw Error(file.string(), "cannot be read", "give the --json output of an earlier stability run");
-    json baseline;
-    try {
-        baseline = json::parse(in, nullptr, false);
-    } catch (const std::exception&) {  // a read error, not bad JSON
-        throw Error(file.string(), "cannot be read", "give the --json output of an earlier stability run");
-    }
+    json baseline = json::parse(readJsonText(file, "give the --json output of an earlier stability run"), nullptr, false);
     if (baseline.is_discarded() || !baseline.is_object())
         throw Error(file.string(), "is not JSON", "give the --json output of an earlier stability run");
     auto require = [&](const std::string& field, json was, json is) {

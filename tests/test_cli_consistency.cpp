@@ -37,6 +37,22 @@ TEST(CliUsage, VersionAndBareUsage) {
     EXPECT_NE(bare.err.find("subcommand"), std::string::npos) << bare.err;
 }
 
+// A mistyped subcommand is named, with the one it was likely meant to be.
+TEST(CliUsage, MistypedSubcommandIsNamed) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"rendr", "unknown subcommand 'rendr' (did you mean 'render'? see --help)"},
+        {"Flythru", "unknown subcommand 'Flythru' (did you mean 'flythrough'? see --help)"},
+        {"stabilty", "did you mean 'stability'?"},
+        {"paint", "unknown subcommand 'paint' (see --help for the subcommands)"},
+    };
+    for (const auto& [word, expected] : cases) {
+        const test::RunResult r = runGrotto(std::string(word) + " world.json");
+        EXPECT_EQ(r.exitCode, 2) << word;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    }
+}
+
 // Every command that renders states its --size default in --help.
 TEST(CliUsage, EverySizeDefaultIsStated) {
     const std::regex stated(R"(--size TEXT=\d+x\d+ )");

@@ -29,6 +29,16 @@ struct World::Impl {
 // World::bricks()'s list and its occupancy in the reference's brick table.
 constexpr uint64_t kBytesPerBrick = sizeof(Brick) + 64;
 
+// What a leaf node costs (a tile costs next to nothing), for estimates made
+// before the grid exists: mask and bool leaves hold bits; int32 and float
+// leaves hold 512 values besides, on the heap.
+constexpr uint64_t kMaskLeafBytes = sizeof(openvdb::BoolTree::LeafNodeType);
+constexpr uint64_t kValueLeafBytes = sizeof(openvdb::Int32Tree::LeafNodeType) + 512 * sizeof(int32_t);
+
+// Bricks a solid tree stands for: its leaves, and every active tile as the full
+// bricks World::bricks() splits it into. Leaves are counted, not walked.
+uint64_t brickCount(const openvdb::MaskTree& tree);
+
 // Registers OpenVDB's grid types, once per process (before any file is read or written).
 void initializeOpenVdb();
 

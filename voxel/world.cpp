@@ -1,4 +1,5 @@
 #include "common/error.h"
+#include "voxel/object_worlds.h"
 #include "voxel/solid.h"
 
 #include <glm/common.hpp>
@@ -12,10 +13,6 @@
 
 namespace grotto::voxel {
 
-namespace {
-
-// Bricks the solid tree stands for: its leaves, and every active tile as the full
-// bricks World::bricks() splits it into. Tiles only: leaves are counted, not walked.
 uint64_t brickCount(const openvdb::MaskTree& tree) {
     uint64_t bricks = tree.leafCount();
     auto it = tree.cbeginValueOn();
@@ -23,6 +20,8 @@ uint64_t brickCount(const openvdb::MaskTree& tree) {
     for (; it; ++it) bricks += it.getVoxelCount() / 512;
     return bricks;
 }
+
+namespace {
 
 // Above this many bricks a region's bricks come from walking the tree.
 constexpr double kProbedBricks = 4096;
@@ -100,6 +99,7 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
 
 World World::load(const std::filesystem::path& path) {
     WorldDesc desc = loadWorldDesc(path);
+    requireObjectsFit(desc);  // from their sizes: refused now, not after the world's grid is read
     openvdb::GridBase::Ptr grid = loadGrid(desc);
     World world = makeWorld(grid, std::move(desc));
     // Nothing solid would render sky and measure nothing: a file meant to be a

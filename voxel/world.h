@@ -85,9 +85,14 @@ public:
     // nothing returns an empty result and is not recorded. Throws grotto::Error
     // (input) for an edit out of range (material, radius, index limits).
     EditResult apply(const Edit& edit);
+    // Throws what apply would refuse before changing anything (range, palette,
+    // the memory budget), without applying it: edits read from files are checked
+    // when they are read, not when their time comes.
+    void check(const Edit& edit) const;
     // Reverts the last recorded edit; an empty result when there is none. Undo
     // keeps the last 1024 edits and at most 64 MiB of the voxels' prior states
-    // (16 bytes per changed voxel); an edit larger than that cannot be undone,
+    // (16 bytes per changed voxel, 28 per changed part of a brick that held one
+    // state throughout); an edit larger than that cannot be undone,
     // nor can any before it.
     EditResult undo();
     size_t undoDepth() const;
