@@ -41,7 +41,7 @@ TEST(CliUsage, VersionAndBareUsage) {
 TEST(CliUsage, MistypedSubcommandIsNamed) {
     const std::pair<const char*, const char*> cases[] = {
         {"rendr", "unknown subcommand 'rendr' (did you mean 'render'? see --help)"},
-        {"Flythru", "unknown subcommand 'Flythru' (did you mean 'flythrough'? see --help)"},
+        {"Flythrogh", "unknown subcommand 'Flythrogh' (did you mean 'flythrough'? see --help)"},
         {"stabilty", "did you mean 'stability'?"},
         {"paint", "unknown subcommand 'paint' (see --help for the subcommands)"},
     };

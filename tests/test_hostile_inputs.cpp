@@ -209,7 +209,7 @@ TEST_F(HostileInputs, JsonBombs) {
     const std::string brackets = std::string(100, '[');
     expectCommandRefusedWithinCaps("info " + writeText("quoted.json", R"({"grid": {"file": ")" + brackets + R"("}})").string(),
                                    brackets + ": no such file");
-    const std::string wide = R"({"grid": {"file": "good.vdb"}, "x": ")" + std::string(17 << 20, 'a') + ""}";
+    const std::string wide = R"({"grid": {"file": "good.vdb"}, "x": ")" + std::string(17 << 20, 'a') + R"("})";
     expectCommandRefusedWithinCaps("info " + writeBytes("wide.json", wide).string(), "wide.json: is larger than 16 MiB");
 }
 

@@ -27,6 +27,11 @@ GeneratedSize boxSize(glm::ivec3 size) {
     return {bricks, bricks - whole, kValueLeafBytes};
 }
 
+// A generator's error names mkworld's flags: named here as the object's field in the world file.
+Error asObjectField(const WorldDesc& world, const std::string& field, const Error& e) {
+    return Error(world.source.string(), "field '" + field + ".generator': " + e.problem(), e.hint());
+}
+
 std::string mib(double bytes) {
     char text[32];
     std::snprintf(text, sizeof text, "%.0f MiB", bytes / (1 << 20));
@@ -37,7 +42,12 @@ std::string mib(double bytes) {
 // when the world made of it could pass the budget: kBytesPerBrick a brick (tiles
 // included, as on load) and its grid's and the solid mask's leaves.
 void requireGeneratedFits(const WorldDesc& world, const ObjectDesc& o, const std::string& field) {
-    const GeneratedSize s = o.generator == "box" ? boxSize(o.boxSize) : generatedSize(o.generator, o.generatorOptions);
+    GeneratedSize s;
+    try {
+        s = o.generator == "box" ? boxSize(o.boxSize) : generatedSize(o.generator, o.generatorOptions);
+    } catch (const Error& e) {
+        throw asObjectField(world, field, e);
+    }
     const double bytes = s.bricks * double(kBytesPerBrick) + s.leaves * double(s.leafBytes + kMaskLeafBytes);
     if (bytes > double(world.memoryBudgetBytes))
         throw Error(world.source.string(),
@@ -65,8 +75,8 @@ World objectVoxels(const WorldDesc& world, const ObjectDesc& o, const std::strin
         openvdb::GridBase::Ptr grid = o.generator == "box" ? boxGrid(o.boxSize, o.material, o.generatorOptions.voxelSize)
                                                            : generateWorld(o.generator, o.generatorOptions);
         return makeWorld(grid, std::move(d));
-    } catch (const Error& e) {  // name the world file and the object, not mkworld's flags or a grid in memory
-        throw Error(world.source.string(), "field '" + field + ".generator': " + e.problem(), e.hint());
+    } catch (const Error& e) {
+        throw asObjectField(world, field, e);
     }
 }
 
