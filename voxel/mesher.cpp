@@ -153,13 +153,35 @@ MeshLevel meshCells(LevelCells& cells, int scale, bool greedy) {
     return out;
 }
 
+// A chunk with no solid voxel, or whose voxels and their neighbours are all
+// solid (inside a large fill: active tiles), has no faces. Told from its bricks
+// and those around it, without gathering its cells: an edit across a large
+// region touches many such chunks.
+bool hasNoFaces(const World::Impl& w, const openvdb::Coord& origin) {
+    openvdb::MaskGrid::ConstAccessor solid = w.solid->getConstAccessor();
+    bool anySolid = false, allSolid = true;
+    for (int bx = -8; bx <= N && (allSolid || !anySolid); bx += 8)
+        for (int by = -8; by <= N; by += 8)
+            for (int bz = -8; bz <= N; bz += 8) {
+                const openvdb::Coord b = origin.offsetBy(bx, by, bz);
+                const auto* leaf = solid.probeConstLeaf(b);
+                const bool full = leaf ? leaf->isValueMaskOn() : solid.isValueOn(b);
+                const bool empty = leaf ? leaf->isEmpty() : !full;
+                allSolid = allSolid && full;
+                const bool own = bx >= 0 && by >= 0 && bz >= 0 && bx < N && by < N && bz < N;
+                anySolid = anySolid || (own && !empty);
+            }
+    return !anySolid || allSolid;
+}
+
 // The one chunk mesher: World::mesh() and World::meshChunk() both use it.
 MeshChunkQuads meshOneChunk(const World::Impl& w, const openvdb::Coord& origin, const MeshOptions& options) {
+    MeshChunkQuads chunk;
+    chunk.origin = {origin.x(), origin.y(), origin.z()};
+    if (hasNoFaces(w, origin)) return chunk;
     LevelCells voxels(N);
     gather(w, origin, voxels);
     MeshLevel exact = meshCells(voxels, 1, options.greedy);
-    MeshChunkQuads chunk;
-    chunk.origin = {origin.x(), origin.y(), origin.z()};
     chunk.faceCount = exact.faceCount;
     chunk.quads = std::move(exact.quads);
     const int levels = std::clamp(options.coarseLevels, 0, kMaxCoarseLevels);
