@@ -435,6 +435,24 @@ TEST(LiveWorld, LargeFillsAreTilesAndUndoExactly) {
     EXPECT_EQ(w.material(glm::ivec3(200, 300, 400)), 0);
 }
 
+// The chunks inside a large fill (solid with all their neighbours) and those
+// beside it (empty) are told from their bricks to have no faces: the mesh is the
+// fill's surface, every face of it once.
+TEST(LiveWorld, MeshOfALargeFillIsItsSurface) {
+    World w = slabWorld();  // the slab lies inside the fill
+    const IndexBox box{{-37, -5, -3}, {218, 250, 252}};  // 256^3, off brick and chunk boundaries
+    w.apply(Edit::fillBox(box, 2));
+    const Mesh mesh = w.mesh();
+    uint64_t area = 0;
+    for (const gpu::PackedQuad& q : mesh.quads) area += uint64_t(gpu::quadWidth(q.bits)) * gpu::quadHeight(q.bits);
+    EXPECT_EQ(area, 6ull * 256 * 256);
+    for (const MeshChunk& c : mesh.chunks) {  // only chunks on the surface hold quads
+        const glm::ivec3 lo = c.origin, hi = c.origin + 31;
+        const bool inside = glm::all(glm::greaterThan(lo, box.min)) && glm::all(glm::lessThan(hi, box.max));
+        EXPECT_FALSE(inside) << c.origin.x << " " << c.origin.y << " " << c.origin.z;
+    }
+}
+
 // Off brick boundaries, over solid voxels and tiles, and spheres: each changes
 // exactly what a plain model of the voxels says, and undo brings back the world.
 TEST(LiveWorld, FillsAndCarvesAcrossTilesMatchTheModel) {
