@@ -31,12 +31,12 @@ void requireShallowJson(const std::string& text, const std::string& where) {
 
 }  // namespace
 
-std::string readJsonText(const std::filesystem::path& path, const std::string& hint) {
+std::string readJsonText(const std::filesystem::path& path, const std::string& hint, size_t maxBytes) {
     requireInputFile(path, hint);
-    const std::string tooLarge = "is larger than " + std::to_string(kMaxJsonBytes >> 20) + " MiB, the most a JSON input may be";
+    const std::string tooLarge = "is larger than " + std::to_string(maxBytes >> 20) + " MiB, the most this JSON input may be";
     std::error_code ec;
     const auto size = std::filesystem::file_size(path, ec);
-    if (!ec && size > kMaxJsonBytes) throw Error(path.string(), tooLarge, hint);
+    if (!ec && size > maxBytes) throw Error(path.string(), tooLarge, hint);
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(path.string(), "cannot be read", hint);
     std::string text;
@@ -44,7 +44,7 @@ std::string readJsonText(const std::filesystem::path& path, const std::string& h
     char chunk[1 << 16];
     while (in.read(chunk, sizeof chunk) || in.gcount() > 0) {
         text.append(chunk, size_t(in.gcount()));
-        if (text.size() > kMaxJsonBytes) throw Error(path.string(), tooLarge, hint);  // it grew since
+        if (text.size() > maxBytes) throw Error(path.string(), tooLarge, hint);  // it grew since
     }
     if (in.bad()) throw Error(path.string(), "cannot be read", hint);
     requireShallowJson(text, path.string());

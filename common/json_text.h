@@ -13,9 +13,10 @@ namespace grotto {
 inline constexpr size_t kMaxJsonBytes = size_t(16) << 20;
 inline constexpr int kMaxJsonDepth = 64;
 
-// The whole file, once it is known to be a regular file of at most kMaxJsonBytes
+// The whole file, once it is known to be a regular file of at most `maxBytes`
 // whose arrays and objects nest at most kMaxJsonDepth deep. Throws grotto::Error
 // (input) naming the file otherwise; `hint` says what the file should hold.
-std::string readJsonText(const std::filesystem::path& path, const std::string& hint);
+// (A file that grows with a run, like a flythrough's stats, may allow more bytes.)
+std::string readJsonText(const std::filesystem::path& path, const std::string& hint, size_t maxBytes = kMaxJsonBytes);
 
 }  // namespace grotto
