@@ -77,6 +77,10 @@ public:
     void loadWorld(const std::filesystem::path& file);
     void setWorld(voxel::World world);
     const voxel::World& world() const;
+    // Writes the world as edited with the engine's lighting and AO settings: FILE.json,
+    // the world file (palette, lighting, AO, detail, cameras, paths, objects), and
+    // FILE.vdb, its voxels; `file` names either. loadWorld(FILE.json) is the same world.
+    void saveWorld(const std::filesystem::path& file) const;
 
     // Edits change the world between any two frames; only the chunks they touch
     // are re-meshed and re-uploaded, and temporal AO history near them restarts.
