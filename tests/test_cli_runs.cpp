@@ -361,7 +361,10 @@ TEST_F(CliErrors, StabilityBaselineCatchesAChangedImage) {
     const json same = json::parse(std::ifstream(dir_ / "same.json"));
     bool checked = false;
     for (const json& c : same["baseline"]["checks"])
-        if (c["metric"] == "color/error_vs_baseline") checked = true, EXPECT_EQ(c["is"].get<double>(), 0.0);
+        if (c["metric"] == "color/error_vs_baseline") {
+            checked = true;
+            EXPECT_EQ(c["is"].get<double>(), 0.0);
+        }
     EXPECT_TRUE(checked) << same["baseline"].dump();
     for (const auto& [name, lighting] : std::vector<std::pair<std::string, std::string>>{
              {"shading", R"("exposure": 0.63)"}, {"shadows", R"("sun": {"shadows": false})"}, {"tonemap", R"("tone_map": "linear")"}}) {

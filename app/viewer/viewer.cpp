@@ -348,7 +348,7 @@ private:
     }
 
     void jumpTo(const std::string& name) {
-        fly_->jumpTo(live_->world().camera(name));
+        fly_->jumpTo(live_->world().camera(name, aspect()));
         cut();
     }
 
