@@ -314,16 +314,14 @@ TEST_F(CliErrors, StabilityBaselineCatchesARegressionAndRefusesAnotherRun) {
     auto refusedWith = [&](const std::string& name, const std::function<void(json&)>& damage, const std::string& field) {
         json bad = json::parse(std::ifstream(baseline));
         damage(bad);
-        std::string text = bad.dump();
-        if (const size_t at = text.find("12345.678"); at != std::string::npos) text.replace(at, 9, "1e400");  // JSON's infinity
         const fs::path file = dir_ / (name + ".json");
-        std::ofstream(file) << text;
+        std::ofstream(file) << bad.dump();
         const test::RunResult r =
             expectRefused(run + (dir_ / "x.json").string() + " --baseline " + file.string(), file.string() + ": " + field, dir_ / "x.json");
         EXPECT_EQ(r.exitCode, 2) << name;
     };
     refusedWith("negative", [](json& j) { j["flicker"]["temporal"] = -0.01; }, "flicker/temporal");
-    refusedWith("huge", [](json& j) { j["error_mean"]["spatial"]["rmse"] = 12345.678; }, "error_mean/spatial/rmse");
+    refusedWith("null", [](json& j) { j["error_mean"]["spatial"]["rmse"] = nullptr; }, "error_mean/spatial/rmse");
     refusedWith("text", [](json& j) { j["color"]["flicker"] = "0.1"; }, "color/flicker");
     refusedWith("old", [](json& j) { j.erase("color"); }, "color/flicker");
     refusedWith("cells", [](json& j) { j["color"]["thumbnails"]["cells"] = {16, 99}; }, "color.thumbnails.cells");
