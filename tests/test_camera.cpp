@@ -111,11 +111,11 @@ TEST(Camera, DefaultCameraFramesTheBoundsTightlyAtAnyAspect) {
             // Not cut: inside the margin on every side.
             EXPECT_GE(std::min(least.x, least.y), -voxel::kFramedFill - 1e-9);
             EXPECT_LE(std::max(most.x, most.y), voxel::kFramedFill + 1e-9);
-            // Filling: the axis that binds spans the whole of kFramedFill, centred.
+            // Filling: the axis that binds spans the whole of kFramedFill; both are centred.
             const glm::dvec2 span = 0.5 * (most - least);
-            const int binding = span.x > span.y ? 0 : 1;
-            EXPECT_NEAR(span[binding], voxel::kFramedFill, 1e-9);
-            EXPECT_NEAR(most[binding] + least[binding], 0.0, 1e-9);
+            EXPECT_NEAR(std::max(span.x, span.y), voxel::kFramedFill, 1e-9);
+            EXPECT_NEAR(most.x + least.x, 0.0, 1e-9);
+            EXPECT_NEAR(most.y + least.y, 0.0, 1e-9);
         }
     }
 }
