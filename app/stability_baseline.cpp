@@ -118,7 +118,8 @@ json loadBaseline(const std::filesystem::path& file, const json& run) {
     for (const char* m : kMetrics) {
         if (!baseline.contains(json::json_pointer(m)) || !baseline[json::json_pointer(m)].is_number())
             throw Error(file.string() + ": " + metricName(m), "is missing or not a number",
-                        "give the --json output of an earlier stability run (of this version: make it again)");
+                        "give the --json output of an earlier stability run of this version; older ones lack "
+                        "the colour figures: make it again");
         requireFigure(file, baseline[json::json_pointer(m)], metricName(m));
     }
     for (const char* m : kEditMetrics)  // compared when there (null: not measured)

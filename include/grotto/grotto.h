@@ -73,7 +73,8 @@ public:
 
     // The world: a world .json or .vdb, or one built in memory
     // (voxel::World::fromDense). Its lighting, AO settings and default camera
-    // become the engine's. Throws grotto::Error (input) on bad input.
+    // become the engine's (without cameras of its own: one framing its bounds in
+    // the engine's image size). Throws grotto::Error (input) on bad input.
     void loadWorld(const std::filesystem::path& file);
     void setWorld(voxel::World world);
     const voxel::World& world() const;
