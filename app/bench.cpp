@@ -69,7 +69,7 @@ void addBenchCommand(CLI::App& app) {
         const voxel::WorldStats stats = world.stats();
         std::optional<EditBenchFigures> edits;
         if (args->edits) edits = benchEdits(world);
-        const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         const AoOptions ao = resolveAo(world, args->ao);
 
         vk::Context ctx;

@@ -1,5 +1,5 @@
 // grotto flythrough WORLD --path NAME [--size WxH] [--fps N] [--frames A-B | --chunk K/N]
-//                   [--warmup K] [--format png|exr] [-o DIR] [--video FILE.mp4]
+//                   [--warmup K] [--format png|exr] [-o DIR] [--video FILE.mp4] [--quiet]
 // Renders a camera path to DIR/frame.NNNN.png (or .exr with AOVs; --name and
 // --start-number choose the names) and DIR/stats.json, and with --video pipes
 // the frames to ffmpeg as well (or instead, without -o). Frame i (1-based)
@@ -57,6 +57,7 @@ struct Args {
                 aovs, exrType = "float", video;
     int fps = 24, startNumber = 1, pngLevel = kFlythroughPngLevel, videoQuality = kDefaultVideoQuality;
     std::optional<int> warmup;  // default: four times the temporal history
+    bool quiet = false;
     AoFlags ao;
     CLI::App* cmd = nullptr;
     bool given(const std::string& flag) const { return cmd->count(flag) > 0; }
@@ -138,7 +139,7 @@ void run(const Args& a) {
     }
     voxel::World world = voxel::World::load(a.world);
     const voxel::CameraPathDesc desc = findCameraPath(world, a.path);
-    const CameraPath path(desc, world.camera(""));
+    const CameraPath path(desc, world.camera("", size.aspect()));
     const int count = pathFrameCount(path, a.fps, a.path);
     const FrameRange range = !a.chunk.empty()   ? parseChunk(a.chunk, count)
                              : a.frames.empty() ? FrameRange{1, count}
@@ -201,7 +202,8 @@ void run(const Args& a) {
         FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(size, ao, encoding, exr)));
         Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height, objects.get());
         renderer.setCulling(cullingOptions(detail));
-        Progress progress(end - start + 1, stdout);
+        std::optional<Progress> progress;
+        if (!a.quiet) progress.emplace(end - start + 1, stdout);
         for (int i = start; i <= end; ++i) {
             const double time = double(i - 1) / a.fps;
             const Camera camera = path.camera(time, size.width, size.height);
@@ -227,11 +229,11 @@ void run(const Args& a) {
             char what[96];
             std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i,
                           write ? "written" : toVideo ? "to video" : "warm-up", stats.wallMs);
-            progress.step(what);
+            if (progress) progress->step(what);
         }
         writer.finish();
         if (pipe) pipe->finish();
-        progress.finish();
+        if (progress) progress->finish();
     }
     scene.reset();
     objects.reset();
@@ -281,6 +283,7 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->add_option("--video-quality", args->videoQuality, "x264 constant rate factor, 0 (best) to 51 (smallest)")
         ->capture_default_str()
         ->check(wholeRange(0, 51));
+    cmd->add_flag("--quiet", args->quiet, "No progress lines, only the results");
     addAoFlags(cmd, args->ao);
     cmd->callback([args] { run(*args); });
 }

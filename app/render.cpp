@@ -77,7 +77,7 @@ void addRenderCommand(CLI::App& app) {
             throw Error(out.string(), "--show needs a .png output", "EXR holds every AOV with --aov");
         requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
-        const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         AoOptions ao = resolveAo(world, args->ao);
         const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao);
         const bool aovs = args->aov || !args->show.empty();

@@ -259,14 +259,14 @@ void addTradeoffCommand(CLI::App& app) {
         }
         std::vector<voxel::World> worlds;
         for (const std::string& w : args->worlds) worlds.push_back(voxel::World::load(w));
-        for (const voxel::World& w : worlds) w.camera(args->camera);  // a missing camera fails now
+        for (const voxel::World& w : worlds) w.camera(args->camera, size.aspect());  // a missing camera fails now
 
         vk::Context ctx;
         std::vector<Row> rows;
         std::vector<LodRow> lodRows;
         for (const voxel::World& world : worlds) {
             const std::string name = world.desc().source.stem().string();
-            const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+            const Camera camera = worldCamera(world, args->camera, size.width, size.height);
             // R is GTAO's radius before its multiplier, as for `grotto reference`.
             const double radius = double(resolveAo(world, {}).gtao.radius);
             requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing

@@ -48,6 +48,34 @@ TEST(EngineApi, AnEditShowsInTheNextFrameAsAWorldLoadedEdited) {
     EXPECT_EQ(fresh.validationMessages(), 0);
 }
 
+// A saved world reloads as the same world: a fresh engine loading the saved file
+// renders what the engine that saved it renders (edits, objects, lighting and AO
+// settings as set, the world's cameras).
+TEST(EngineApi, ASavedWorldRendersAsTheEngineThatSavedIt) {
+    const test::ScratchDir dir;
+    Engine live({.width = 48, .height = 27, .validation = true});
+    live.loadWorld(test::worldsDir() / "yard.json");
+    live.edit(kDig);
+    voxel::Lighting evening = live.world().desc().lighting;
+    evening.sunDirection = glm::normalize(glm::vec3(-0.8f, 0.3f, 0.2f));
+    evening.sunColor = {1.0f, 0.6f, 0.3f};
+    evening.exposure = 0.9f;
+    live.setLighting(evening);
+    live.setAo({.method = "gtao", .quality = "medium", .radius = 2.0});
+    live.setTime(0.7);
+    live.saveWorld(dir / "yard-dug.json");
+
+    Engine fresh({.width = 48, .height = 27, .validation = true});
+    fresh.loadWorld(dir / "yard-dug.json");
+    ASSERT_EQ(fresh.objectCount(), live.objectCount());
+    fresh.setTime(0.7);
+    const Pixels saved = renderOnce(fresh), shown = renderOnce(live);
+    EXPECT_EQ(saved.rgba, shown.rgba);
+    EXPECT_EQ(saved.ao, shown.ao);
+    EXPECT_EQ(live.validationMessages(), 0);
+    EXPECT_EQ(fresh.validationMessages(), 0);
+}
+
 // Size, lighting and AO change between frames without a new engine or a reload.
 TEST(EngineApi, SettingsChangeInPlace) {
     Engine engine({.width = 64, .height = 48, .validation = true});

@@ -6,6 +6,7 @@
 #include "tests/cli_fixture.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <csignal>
@@ -168,20 +169,33 @@ TEST_F(CliErrors, ViewerRecordsAPathThatFlythroughPlaysThroughTheSameCameras) {
 TEST_F(CliErrors, ViewerDigsUndoesAndSavesTheWorld) {
     REQUIRE_XVFB();
     // A click at the window's centre digs a sphere out of the 16 x 16 floor; the
-    // undo puts it back. Each state is saved as a .vdb.
+    // undo puts it back. Each state is saved as a world file and its .vdb, with
+    // the settings the panel has then.
     const fs::path script = writeText("dig.json", R"({"actions": [
-        {"frame": 1, "set": {"edit.mode": "dig", "edit.radius": 3}}, {"frame": 2, "click": [32, 24]},
-        {"frame": 3, "save_world": "dug.vdb"}, {"frame": 4, "undo": true}, {"frame": 5, "save_world": "undone.vdb"}]})");
+        {"frame": 1, "set": {"edit.mode": "dig", "edit.radius": 3, "lighting.exposure": 0.8, "ao.quality": "low"}},
+        {"frame": 2, "click": [32, 24]},
+        {"frame": 3, "save_world": "dug.vdb"}, {"frame": 4, "undo": true}, {"frame": 5, "save_world": "undone.json"}]})");
     const test::RunResult v = runGrotto("view " + good_.string() + " --size 64x48 --script " + script.string() +
                                             " --frames 6", kUnderXvfb);
     ASSERT_EQ(v.exitCode, 0) << v.err;
+    EXPECT_NE(v.out.find("wrote " + (dir_ / "dug.json").string() + " and " + (dir_ / "dug.vdb").string()),
+              std::string::npos) << v.out;
+    for (const char* saved : {"dug.json", "undone.json"}) {
+        std::ifstream in(dir_ / saved);
+        const nlohmann::json world = nlohmann::json::parse(in, nullptr, false);
+        ASSERT_TRUE(world.is_object()) << saved;
+        EXPECT_EQ(world["grid"]["file"], std::string(saved).substr(0, std::string(saved).size() - 5) + ".vdb") << saved;
+        EXPECT_NEAR(world["lighting"]["exposure"].get<double>(), 0.8, 1e-6) << saved;
+        EXPECT_EQ(world["ao"]["quality"], "low") << saved;
+        EXPECT_EQ(world["default_camera"], "") << saved << ": framed from the bounds, as the bare .vdb was";
+    }
     auto activeVoxels = [&](const fs::path& file) {
         const test::RunResult r = runGrotto("info " + file.string());
         EXPECT_EQ(r.exitCode, 0) << r.err;
         const size_t at = r.out.find("active voxels");
         return at == std::string::npos ? -1L : std::stol(r.out.substr(at + 13));
     };
-    const long dug = activeVoxels(dir_ / "dug.vdb"), undone = activeVoxels(dir_ / "undone.vdb");
+    const long dug = activeVoxels(dir_ / "dug.json"), undone = activeVoxels(dir_ / "undone.vdb");
     EXPECT_EQ(undone, 256);
     // A sphere of radius 3 voxels removes the floor voxels within 3 of its centre: 25 to 29 of them.
     EXPECT_GE(256 - dug, 20);

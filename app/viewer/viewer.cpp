@@ -70,7 +70,7 @@ public:
         desc_.detail = app::resolveDetail(world, o.ao);
         renderer_->setCulling(cullingOptions(desc_.detail));
         presenter_ = std::make_unique<Presenter>(ctx_, fb, o.vsync);
-        const voxel::CameraDesc start = world.camera(o.camera);
+        const voxel::CameraDesc start = world.camera(o.camera, aspect());
         const voxel::IndexBox b = world.bounds();
         const double extent = b.empty() ? 10.0 : glm::length(glm::dvec3(b.max - b.min + 1)) * world.voxelSize();
         fly_ = std::make_unique<FlyCamera>(start, extent / 8.0);  // crosses the world in about 8 s
@@ -78,7 +78,7 @@ public:
         for (const auto& [name, p] : desc_.paths) panel_.paths.push_back(name);
         panel_.quads = live_->gpu().quadCount;
         panel_.activeVoxels = world.stats().solidVoxels;
-        panel_.saveWorldAs = (o.world.parent_path() / (o.world.stem().string() + "-edited.vdb")).string();
+        panel_.saveWorldAs = (o.world.parent_path() / (o.world.stem().string() + "-edited.json")).string();
         panel_.savePathAs = (o.world.parent_path() / (o.world.stem().string() + "-recorded.json")).string();
         panel_.hidden = o.hidePanel;
         panel_.renderScale = o.renderScale;
@@ -196,8 +196,10 @@ private:
         return f.camera;
     }
 
+    double aspect() const { return double(renderSize_.width) / double(renderSize_.height); }
+
     void playPath(const std::string& name) {
-        player_.play(desc_.paths.at(name), live_->world().camera(""));
+        player_.play(desc_.paths.at(name), live_->world().camera("", aspect()));
         panel_.playing = name;
         cut();
     }
@@ -286,9 +288,10 @@ private:
 
     void saveWorld(const std::filesystem::path& file) {
         requireOutputPath(file);
-        live_->world().save(file);
-        panel_.message = "wrote " + file.string();
-        std::printf("wrote %s\n", file.c_str());
+        // With the settings as the panel has them.
+        const voxel::World::SavedFiles saved = live_->world().save(file, desc_);
+        panel_.message = "wrote " + saved.world.string() + " and " + saved.grid.string();
+        std::printf("wrote %s and %s\n", saved.world.c_str(), saved.grid.c_str());
     }
 
     // The window system applies size changes asynchronously: give it a moment.
@@ -345,7 +348,7 @@ private:
     }
 
     void jumpTo(const std::string& name) {
-        fly_->jumpTo(live_->world().camera(name));
+        fly_->jumpTo(live_->world().camera(name, aspect()));
         cut();
     }
 

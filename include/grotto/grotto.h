@@ -73,10 +73,15 @@ public:
 
     // The world: a world .json or .vdb, or one built in memory
     // (voxel::World::fromDense). Its lighting, AO settings and default camera
-    // become the engine's. Throws grotto::Error (input) on bad input.
+    // become the engine's (without cameras of its own: one framing its bounds in
+    // the engine's image size). Throws grotto::Error (input) on bad input.
     void loadWorld(const std::filesystem::path& file);
     void setWorld(voxel::World world);
     const voxel::World& world() const;
+    // Writes the world as edited with the engine's lighting and AO settings: FILE.json,
+    // the world file (palette, lighting, AO, detail, cameras, paths, objects), and
+    // FILE.vdb, its voxels; `file` names either. loadWorld(FILE.json) is the same world.
+    void saveWorld(const std::filesystem::path& file) const;
 
     // Edits change the world between any two frames; only the chunks they touch
     // are re-meshed and re-uploaded, and temporal AO history near them restarts.
