@@ -4,14 +4,24 @@
 #include "voxel/world_json.h"
 
 #include <algorithm>
+#include <charconv>
 
 namespace grotto::voxel {
 namespace fs = std::filesystem;
 namespace {
 
+// A float as the shortest decimal that reads back as it (0.62, not 0.6200000047683716).
+double decimal(float f) {
+    char text[32];
+    const char* end = std::to_chars(text, text + sizeof text, f).ptr;
+    double d = f;
+    std::from_chars(text, end, d);
+    return d;
+}
+
 json triple(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
 json triple(glm::ivec3 v) { return json::array({v.x, v.y, v.z}); }
-json triple(glm::vec3 v) { return triple(glm::dvec3(v)); }
+json triple(glm::vec3 v) { return json::array({decimal(v.x), decimal(v.y), decimal(v.z)}); }
 json quaternion(const glm::dquat& q) { return json::array({q.x, q.y, q.z, q.w}); }  // [x, y, z, w]
 
 // `file` as a world file in `dir` names it: relative to `dir` where a relative path reaches it.
@@ -39,11 +49,11 @@ json cameraJson(const CameraDesc& c) {
 }
 
 json lightingJson(const Lighting& l) {
-    return {{"sun", {{"direction", triple(l.sunDirection)}, {"color", triple(l.sunColor)}, {"intensity", l.sunIntensity},
-                     {"shadows", l.sunShadows}, {"angle", l.sunAngle}}},
-            {"ambient", {{"color", triple(l.ambientColor)}, {"intensity", l.ambientIntensity}}},
+    return {{"sun", {{"direction", triple(l.sunDirection)}, {"color", triple(l.sunColor)}, {"intensity", decimal(l.sunIntensity)},
+                     {"shadows", l.sunShadows}, {"angle", decimal(l.sunAngle)}}},
+            {"ambient", {{"color", triple(l.ambientColor)}, {"intensity", decimal(l.ambientIntensity)}}},
             {"sky", {{"zenith", triple(l.skyZenith)}, {"horizon", triple(l.skyHorizon)}}},
-            {"exposure", l.exposure},
+            {"exposure", decimal(l.exposure)},
             {"tone_map", l.toneMap == ToneMap::Filmic ? "filmic" : "linear"}};
 }
 
@@ -137,7 +147,7 @@ json worldFileJson(const WorldDesc& d, const fs::path& dir) {
     if (!d.materials.empty()) {
         j["materials"] = json::array();
         for (const Material& m : d.materials)
-            j["materials"].push_back({{"name", m.name}, {"albedo", triple(m.albedo)}, {"ao", m.ao}});
+            j["materials"].push_back({{"name", m.name}, {"albedo", triple(m.albedo)}, {"ao", decimal(m.ao)}});
     }
     j["lighting"] = lightingJson(d.lighting);
     j["ao"] = aoJson(d.ao);
