@@ -175,7 +175,8 @@ TEST_F(FlythroughVideo, AVideoThatDoesNotReadBackIsNotCommitted) {
 
 // A run killed with SIGKILL leaves its hidden temporary video; the next run removes it.
 TEST_F(FlythroughVideo, AKilledRunsTemporaryVideoIsRemovedByTheNextRun) {
-    const int pid = test::startGrotto(flythrough("--fps 400 --video " + video().string()));
+    const int pid = test::startGrotto("flythrough " + world_.string() + " --path p --size 48x32 --fps 400 --video " +
+                                      video().string());  // 401 frames
     auto temporary = [&] {
         for (auto& e : fs::directory_iterator(dir_.path))
             if (e.path().filename().string().rfind(".fly.tmp", 0) == 0) return true;
@@ -184,9 +185,10 @@ TEST_F(FlythroughVideo, AKilledRunsTemporaryVideoIsRemovedByTheNextRun) {
     bool killed = false;
     for (int k = 0; k < 60000 && !killed; ++k) {
         if (temporary()) killed = kill(pid, SIGKILL) == 0;
+        else if (waitpid(pid, nullptr, WNOHANG) == pid) break;
         else std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
-    waitpid(pid, nullptr, 0);
+    if (killed) waitpid(pid, nullptr, 0);
     ASSERT_TRUE(killed) << "the run never started its video";
     ASSERT_TRUE(temporary());
     const test::RunResult r = runGrotto(flythrough("--video " + video().string()));
