@@ -10,6 +10,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <string>
@@ -240,7 +241,21 @@ void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t h
     writeImage(path, spec, px.data(), OIIO::TypeDesc::FLOAT);
 }
 
+namespace {
+
+// Whether a PNG ends with its IEND chunk, as a whole one does and a truncated one
+// does not: libpng prints its errors on stderr, so those are not handed to it.
+bool endsWithPngEnd(const std::filesystem::path& path) {
+    static constexpr char kEnd[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', char(0xAE), 0x42, 0x60, char(0x82)};
+    std::ifstream in(path, std::ios::binary);
+    char tail[12] = {};
+    return in.seekg(-12, std::ios::end) && in.read(tail, 12) && std::equal(tail, tail + 12, kEnd);
+}
+
+}  // namespace
+
 bool imageDecodes(const std::filesystem::path& path, uint32_t width, uint32_t height) {
+    if (imageFormatFor(path) == ImageFormat::Png && !endsWithPngEnd(path)) return false;
     auto in = OIIO::ImageInput::open(path.string());
     if (!in) {
         OIIO::geterror();  // taken, so OpenImageIO does not print it
