@@ -25,7 +25,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -154,12 +153,7 @@ void addBenchCommand(CLI::App& app) {
             j["edits"] = editFiguresJson(*edits);
         }
         if (!args->json.empty())
-            writeAtomically(args->json, [&](const std::filesystem::path& tmp) {
-                std::ofstream out(tmp);
-                out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-                out.close();
-                if (!out) throw Error(args->json, "write failed", "is the disk full?");
-            });
+            writeAtomically(args->json, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     });
 }
 

@@ -41,7 +41,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <optional>
 
@@ -430,11 +429,7 @@ void addStabilityCommand(CLI::App& app) {
             result["baseline"] = {{"file", args->baseline}, {"relative", args->tolerance.relative},
                                   {"absolute", args->tolerance.absolute}, {"checks", listed}};
         }
-        writeAtomically(out, [&](const std::filesystem::path& tmp) {
-            std::ofstream f(tmp);
-            f << result.dump(2) << "\n";
-            if (!f) throw Error(out.string(), "could not be written", "check free space");
-        });
+        writeAtomically(out, result.dump(2) + "\n");
         std::printf("flicker raw %.4f spatial %.4f temporal %.4f (%.2fx spatial) reference %.4f\n",
                     flickerRaw.value(), flickerSpatial.value(), flickerTemporal.value(),
                     flickerTemporal.value() / std::max(flickerSpatial.value(), 1e-12), flickerReference.value());

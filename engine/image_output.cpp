@@ -3,12 +3,14 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <string>
@@ -106,11 +108,17 @@ void addCamera(OIIO::ImageSpec& spec, const Camera& camera) {
     spec.attribute("Software", "grotto");
 }
 
-void write(const std::filesystem::path& target, const std::filesystem::path& tmp, const OIIO::ImageSpec& spec,
-           const void* pixels, OIIO::TypeDesc type) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out || !out->open(tmp.string(), spec) || !out->write_image(type, pixels) || !out->close())
-        throw Error(target.string(), "cannot be written: " + (out ? out->geterror() : OIIO::geterror()));
+// Encodes in memory and writes the bytes through writeAtomically, which checks
+// every write: OpenImageIO's PNG writer ignores a failed fwrite, so a full disk
+// would otherwise leave a truncated file that it reports as written.
+void writeImage(const std::filesystem::path& target, const OIIO::ImageSpec& spec, const void* pixels, OIIO::TypeDesc type) {
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    auto out = OIIO::ImageOutput::create(target.string());
+    if (!out || !out->set_ioproxy(&memory) || !out->open(target.string(), spec) || !out->write_image(type, pixels) ||
+        !out->close())
+        throw Error::internal(target.string(), "cannot be encoded: " + (out ? out->geterror() : OIIO::geterror()));
+    writeAtomically(target, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace
@@ -126,17 +134,15 @@ std::vector<uint8_t> srgb8Pixels(const FrameImages& f) {
 void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb,
                 const Camera* camera, int pngLevel) {
     if (rgb.size() != size_t(width) * height * 3) throw Error::internal(path.string(), "pixels of the wrong size");
-    writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
-        spec.attribute("oiio:ColorSpace", "sRGB");
-        spec.attribute("png:compressionLevel", std::clamp(pngLevel, 0, 9));
-        // Every row predicted from the one above (PNG_FILTER_UP): as small as
-        // libpng's default of trying all five filters on each row, in about half the time.
-        spec.attribute("png:filter", 0x20);
-        if (camera) addCamera(spec, *camera);
-        else spec.attribute("Software", "grotto");
-        write(path, tmp, spec, rgb.data(), OIIO::TypeDesc::UINT8);
-    });
+    OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("png:compressionLevel", std::clamp(pngLevel, 0, 9));
+    // Every row predicted from the one above (PNG_FILTER_UP): as small as
+    // libpng's default of trying all five filters on each row, in about half the time.
+    spec.attribute("png:filter", 0x20);
+    if (camera) addCamera(spec, *camera);
+    else spec.attribute("Software", "grotto");
+    writeImage(path, spec, rgb.data(), OIIO::TypeDesc::UINT8);
 }
 
 void writeFrame(const std::filesystem::path& path, const FrameImages& f, const Camera& camera, bool aovs) {
@@ -204,7 +210,7 @@ void writeExr(const std::filesystem::path& path, const FrameImages& f, const Cam
         for (const Layer& layer : layers)
             for (int c = 0; c < int(layer.channels.size()); ++c) *p++ = layer.value(i, c);
     }
-    writeAtomically(path, [&](const std::filesystem::path& tmp) { write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT); });
+    writeImage(path, spec, px.data(), OIIO::TypeDesc::FLOAT);
 }
 
 }  // namespace
@@ -224,17 +230,43 @@ void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t h
     const size_t n = size_t(width) * height, count = channels.size();
     for (const Channel& c : channels)
         if (c.values->size() != n) throw Error::internal(path.string(), "channel " + c.name + " has the wrong size");
-    writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        OIIO::ImageSpec spec(int(width), int(height), int(count), OIIO::TypeDesc::FLOAT);
-        spec.channelnames.clear();
-        for (const Channel& c : channels) spec.channelnames.push_back(c.name);
-        spec.attribute("compression", "zip");
-        addCamera(spec, camera);
-        std::vector<float> px(count * n);
-        for (size_t i = 0; i < n; ++i)
-            for (size_t c = 0; c < count; ++c) px[count * i + c] = (*channels[c].values)[i];
-        write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT);
-    });
+    OIIO::ImageSpec spec(int(width), int(height), int(count), OIIO::TypeDesc::FLOAT);
+    spec.channelnames.clear();
+    for (const Channel& c : channels) spec.channelnames.push_back(c.name);
+    spec.attribute("compression", "zip");
+    addCamera(spec, camera);
+    std::vector<float> px(count * n);
+    for (size_t i = 0; i < n; ++i)
+        for (size_t c = 0; c < count; ++c) px[count * i + c] = (*channels[c].values)[i];
+    writeImage(path, spec, px.data(), OIIO::TypeDesc::FLOAT);
+}
+
+namespace {
+
+// Whether a PNG ends with its IEND chunk, as a whole one does and a truncated one
+// does not: libpng prints its errors on stderr, so those are not handed to it.
+bool endsWithPngEnd(const std::filesystem::path& path) {
+    static constexpr char kEnd[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', char(0xAE), 0x42, 0x60, char(0x82)};
+    std::ifstream in(path, std::ios::binary);
+    char tail[12] = {};
+    return in.seekg(-12, std::ios::end) && in.read(tail, 12) && std::equal(tail, tail + 12, kEnd);
+}
+
+}  // namespace
+
+bool imageDecodes(const std::filesystem::path& path, uint32_t width, uint32_t height) {
+    if (imageFormatFor(path) == ImageFormat::Png && !endsWithPngEnd(path)) return false;
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) {
+        OIIO::geterror();  // taken, so OpenImageIO does not print it
+        return false;
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width != int(width) || spec.height != int(height) || spec.depth != 1) return false;
+    std::vector<unsigned char> pixels(spec.image_bytes(true));
+    const bool whole = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeUnknown, pixels.data()) && in->close();
+    in->geterror();
+    return whole;
 }
 
 }  // namespace grotto

@@ -49,6 +49,10 @@ struct Channel {
 void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const Channel> channels,
                    const Camera& camera);
 
+// Whether an image file is width x height and decodes whole, every pixel of
+// every channel: how a resumed flythrough tells a finished frame from a damaged one.
+bool imageDecodes(const std::filesystem::path& path, uint32_t width, uint32_t height);
+
 // Linear [0, 1] -> 8-bit sRGB (clamped; NaN -> 0).
 uint8_t toSrgb8(float linear);
 // An sRGB-encoded value in [0, 1] -> linear.

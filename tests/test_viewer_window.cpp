@@ -236,3 +236,25 @@ TEST_F(CliErrors, ViewerPlaysAWorldPathAsFlythroughRendersIt) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+// A screenshot onto a full disk: exit code 1 and one line naming it, no
+// truncated image under its name (once, the viewer reported it written).
+TEST_F(CliErrors, ViewerScreenshotOnAFullDiskIsRefusedNotTruncated) {
+    test::SmallDisk disk(256 << 10);
+    if (!disk.mounted()) GTEST_SKIP() << disk.reason();
+    REQUIRE_XVFB();
+    disk.fillLeaving(0);
+    const fs::path shot = disk / "shot.png";
+    const test::RunResult v =
+        runGrotto("view " + good_.string() + " --size 64x48 --frames 3 --screenshot " + shot.string(), kUnderXvfb);
+    EXPECT_EQ(v.exitCode, 1) << v.err;
+    EXPECT_EQ(std::count(v.err.begin(), v.err.end(), '\n'), 1) << v.err;
+    EXPECT_NE(v.err.find(shot.string() + ": cannot be written: No space left on device"), std::string::npos) << v.err;
+    EXPECT_FALSE(fs::exists(shot));
+}
+
+}  // namespace
+}  // namespace grotto

@@ -153,6 +153,29 @@ TEST(WorldSave, Int32WorldRoundTripsWithMetadata) {
     EXPECT_EQ(saved->metaValue<int64_t>("grotto_seed"), 42);
 }
 
+// A save onto a full disk throws an internal error naming the file and the
+// reason (it once read "KeyError: Map"), and leaves the old file whole.
+TEST(WorldSave, AFullDiskIsReportedAndLeavesTheOldFile) {
+    test::SmallDisk disk(1 << 20);
+    if (!disk.mounted()) GTEST_SKIP() << disk.reason();
+    const glm::ivec3 size(40, 40, 40);
+    const World small = World::fromDense({2, 2, 2}, std::vector<uint8_t>(8, 1).data(), 1.0, {});
+    small.save(disk / "world.vdb");
+    disk.fillLeaving(8192);
+    const World large = World::fromDense(size, randomIds(size, 8, 0.5, 3).data(), 1.0, {});
+    try {
+        large.save(disk / "world.vdb");
+        FAIL() << "saved onto a full disk";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), Error::Kind::Internal) << e.what();
+        EXPECT_EQ(e.where(), (disk / "world.vdb").string());
+        EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
+    }
+    expectSameWorld(World::load(disk / "world.vdb"), small, "the file a failed save was replacing");
+    for (const auto& entry : fs::directory_iterator(disk.path()))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
 TEST(WorldSave, MaskWorldsKeepTheirKindUnlessPainted) {
     openvdb::initialize();
     test::ScratchDir dir;
