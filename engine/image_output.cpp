@@ -2,6 +2,7 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "shaders/shared/tone_map.h"
 
 #include <OpenImageIO/imageio.h>
 
@@ -71,13 +72,14 @@ uint8_t toSrgb8(float v) {
 
 float srgbToLinear(float s) { return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f); }
 
-void showAov(FrameImages& f, const std::string& which) {
+std::vector<float> aovDisplay(const FrameImages& f, const std::string& which) {
     auto valueOr = [](const std::vector<float>& v, size_t i, float none) { return v.empty() ? none : v[i]; };
     const size_t n = size_t(f.width) * f.height;
     float zMin = std::numeric_limits<float>::max(), zMax = 0.0f;
     for (float z : f.depth)
         if (std::isfinite(z)) zMin = std::min(zMin, z), zMax = std::max(zMax, z);
     const float logRange = std::max(std::log(std::max(zMax, 1e-30f) / std::max(zMin, 1e-30f)), 1e-6f);
+    std::vector<float> out(4 * n, 1.0f);
     for (size_t i = 0; i < n; ++i) {
         glm::vec3 v(0.0f);
         const bool sky = !std::isfinite(f.depth[i]);
@@ -91,8 +93,15 @@ void showAov(FrameImages& f, const std::string& which) {
         else if (which == "temporal") v = glm::vec3(valueOr(f.aoTemporal, i, 1.0f));
         else if (which == "history") v = glm::vec3(valueOr(f.aoHistory, i, 1.0f) / 64.0f);  // the longest history is 64
         else throw Error("--show", "unknown AOV '" + which + "'", "accepted: " + std::string(kShownAovs));
-        for (int c = 0; c < 3; ++c) f.color[4 * i + c] = srgbToLinear(std::clamp(v[c], 0.0f, 1.0f));
+        for (int c = 0; c < 3; ++c) out[4 * i + c] = srgbToLinear(std::clamp(v[c], 0.0f, 1.0f));
     }
+    return out;
+}
+
+std::vector<float> displayColor(const FrameImages& f) {
+    std::vector<float> out(f.color.size());
+    for (size_t k = 0; k < out.size(); ++k) out[k] = k % 4 == 3 ? f.color[k] : gpu::toneMap(f.color[k], f.toneMap);
+    return out;
 }
 
 namespace {
@@ -119,7 +128,14 @@ std::vector<uint8_t> srgb8Pixels(const FrameImages& f) {
     const size_t n = size_t(f.width) * f.height;
     std::vector<uint8_t> px(3 * n);
     for (size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) px[3 * i + c] = toSrgb8(f.color[4 * i + c]);
+        for (int c = 0; c < 3; ++c) px[3 * i + c] = toSrgb8(gpu::toneMap(f.color[4 * i + c], f.toneMap));
+    return px;
+}
+
+std::vector<uint8_t> encodeSrgb8(std::span<const float> rgba) {
+    std::vector<uint8_t> px(rgba.size() / 4 * 3);
+    for (size_t i = 0; i < rgba.size() / 4; ++i)
+        for (int c = 0; c < 3; ++c) px[3 * i + c] = toSrgb8(rgba[4 * i + c]);
     return px;
 }
 
@@ -193,7 +209,11 @@ void writeExr(const std::filesystem::path& path, const FrameImages& f, const Cam
             spec.channelformats[size_t(spec.z_channel)] = OIIO::TypeDesc::FLOAT;
         }
     }
+    // Scene-linear Rec. 709 / sRGB primaries with a D65 white (OpenEXR's chromaticities:
+    // red, green, blue and white xy), as the composite lights them.
     spec.attribute("oiio:ColorSpace", "Linear");
+    static constexpr float kRec709[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709);
     spec.attribute("compression", "zip");
     addCamera(spec, camera);
     const size_t n = size_t(f.width) * f.height;
