@@ -15,9 +15,11 @@ GROTTO_NAMESPACE_BEGIN
 
 // Narkowicz's fit of the ACES filmic curve: a soft toe keeps ambient-lit shade
 // from crushing to black, the shoulder rolls bright sunlit faces off toward
-// white instead of clipping them. Clamped to [0, 1]; NaN stays NaN (8-bit
+// white instead of clipping them. Negative input is black (the rational fit
+// would turn it up again), the output clamped to [0, 1]; NaN stays NaN (8-bit
 // encoding makes it 0).
-GROTTO_INLINE float toneMap(float x, uint curve) {
+GROTTO_INLINE float toneMap(float value, uint curve) {
+    float x = value < 0.0f ? 0.0f : value;
     float y = curve == GROTTO_TONE_MAP_FILMIC ? (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f) : x;
     return y < 0.0f ? 0.0f : (y > 1.0f ? 1.0f : y);
 }
