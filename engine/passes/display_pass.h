@@ -2,7 +2,9 @@
 // Display pass, for the window and an embedding game only (image files tone-map
 // on the CPU). Reads: the composite's scene-linear colour. Writes: RGBA16F
 // display-linear colour in [0, 1], through the tone map (shaders/shared/tone_map.h);
-// an sRGB target encodes it. No history.
+// an sRGB target encodes it. No history. A pass of its own: writing the display
+// image from the composite's invocations cost 2.5 times as much on lavapipe
+// (docs/benchmarks.md).
 #include "engine/passes/compute_pass.h"
 #include "engine/vk/resources.h"
 

@@ -25,7 +25,7 @@ namespace grotto {
 using VulkanDevice = vk::ExternalDevice;
 
 // An image Grotto rendered, owned by Grotto and valid until the next render(),
-// resize(), setAo() or the engine's end.
+// resize(), setAo(), setLighting() or the engine's end.
 struct RenderedImage {
     VkImage image = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
