@@ -88,7 +88,7 @@ struct LodRow {
     std::string world, camera;
     double bias = 0.0;
     AoMeasurement m;
-    double colourPsnr = 0.0;    // of the final linear colour against bias 0's (+inf: identical)
+    double colourPsnr = 0.0;    // of the displayed colour (tone-mapped, before sRGB encoding) against bias 0's (+inf: identical)
     double aoPsnrChange = 0.0;  // AO PSNR against the reference, minus bias 0's
 };
 

@@ -174,6 +174,7 @@ RenderedFrame Engine::render() {
     if (!m.renderer)
         m.renderer =
             std::make_unique<Renderer>(*m.ctx, m.scene->gpu(), m.lighting, m.ao, m.width, m.height, m.objects.get());
+    m.renderer->setDisplayImage(true);  // what the game shows
     m.renderer->setCulling(cullingOptions(m.detail));
     if (m.objects) m.renderer->setObjectPoses(m.poses);
     const Camera camera = makeCamera(m.camera, m.width, m.height);
@@ -182,8 +183,8 @@ RenderedFrame Engine::render() {
     auto image = [](const vk::Image& i) {
         return RenderedImage{.image = i.image, .format = i.format, .extent = i.extent, .layout = VK_IMAGE_LAYOUT_GENERAL};
     };
-    return {.color = image(m.renderer->colorImage()), .ao = image(m.renderer->aoImage()),
-            .quadsDrawn = stats.quadsDrawn, .wallMs = stats.wallMs};
+    return {.color = image(m.renderer->colorImage()), .display = image(m.renderer->displayImage()),
+            .ao = image(m.renderer->aoImage()), .quadsDrawn = stats.quadsDrawn, .wallMs = stats.wallMs};
 }
 
 Pixels Engine::readPixels() {

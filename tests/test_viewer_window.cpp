@@ -3,7 +3,9 @@
 // that camera; resizing, minimising and restoring mid-run stay valid; a bad script
 // is refused; recorded paths, played paths and digging. Skipped, saying why, only
 // where Xvfb is missing.
+#include "common/printable.h"
 #include "tests/cli_fixture.h"
+#include "tests/display_checks.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -254,6 +256,74 @@ TEST_F(CliErrors, ViewerScreenshotOnAFullDiskIsRefusedNotTruncated) {
     EXPECT_EQ(std::count(v.err.begin(), v.err.end(), '\n'), 1) << v.err;
     EXPECT_NE(v.err.find(shot.string() + ": cannot be written: No space left on device"), std::string::npos) << v.err;
     EXPECT_FALSE(fs::exists(shot));
+}
+
+// Every pixel grey: R = G = B, as an AO view draws it.
+bool grey(const std::vector<uint8_t>& rgb) {
+    for (size_t i = 0; i + 2 < rgb.size(); i += 3)
+        if (rgb[i] != rgb[i + 1] || rgb[i] != rgb[i + 2]) return false;
+    return !rgb.empty();
+}
+
+TEST_F(CliErrors, ViewerScreenshotsWriteWhatTheViewShows) {
+    REQUIRE_XVFB();
+    // The AO view: the script's screenshot, --screenshot at exit and the window
+    // captured at the last frame all show that frame's AO, not its colour.
+    const fs::path script = writeText("ao.json", R"({"actions": [
+        {"frame": 1, "set": {"view": "ao"}}, {"frame": 4, "screenshot": "shot.png"}]})");
+    const fs::path shot = dir_ / "shot.png", atExit = dir_ / "exit.png", window = dir_ / "window.png";
+    const test::RunResult v = runGrotto("view " + (test::worldsDir() / "rooms.json").string() +
+                                            " --camera table --size 96x64 --hide-panel --script " + script.string() +
+                                            " --frames 5 --screenshot " + atExit.string() + " --capture-window " +
+                                            window.string(),
+                                        kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    EXPECT_NE(v.out.find("wrote " + window.string()), std::string::npos) << v.out;
+    const std::vector<uint8_t> a = test::readPixels8(shot), b = test::readPixels8(atExit), w = test::readPixels8(window);
+    EXPECT_TRUE(grey(a)) << "the screenshot is not the AO view";
+    EXPECT_EQ(a, b) << "--screenshot at exit shows the same frame as the script's last screenshot";
+    // The window blits the same values; the GPU's sRGB encoding may round the other way.
+    EXPECT_LE(test::worstDifference(a, w), 1);
+}
+
+TEST_F(CliErrors, ViewerShowsToneMappedColourAndWritesSceneLinearExr) {
+    REQUIRE_XVFB();
+    // The final view of a bright world: the window (the display pass) and a PNG
+    // screenshot (the CPU's tone map) agree, and an EXR of the same frame is its
+    // scene-linear colour.
+    const fs::path world = writeText("bright.json", test::brightWorld("filmic"));
+    const fs::path script = writeText("final.json", R"({"actions": [{"frame": 3, "screenshot": "shot.png"}]})");
+    const fs::path shot = dir_ / "shot.png", exr = dir_ / "shot.exr", window = dir_ / "window.png";
+    const test::RunResult v = runGrotto("view " + world.string() + " --camera c --size 96x64 --hide-panel --script " +
+                                            script.string() + " --frames 4 --screenshot " + exr.string() +
+                                            " --capture-window " + window.string(),
+                                        kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    test::expectSceneLinear(test::compareExrWithPng(exr, shot), "viewer screenshot");
+    // The display image is half floats: a value may round across an 8-bit step.
+    EXPECT_LE(test::worstDifference(test::readPixels8(shot), test::readPixels8(window)), 1);
+}
+
+TEST_F(CliErrors, ViewerPrintsTheNamesOfWhatItWritesEscaped) {
+    REQUIRE_XVFB();
+    // Names from a script with a terminal escape and a newline in them: written
+    // under those names, printed escaped, one line each.
+    const fs::path script = writeText("names.json", R"({"actions": [
+        {"frame": 1, "save_world": "a\u001b[2Jb\nc.vdb"}, {"frame": 2, "screenshot": "s\u001b]0;t\u0007.png"}]})");
+    const test::RunResult v =
+        runGrotto("view " + good_.string() + " --size 32x24 --script " + script.string() + " --frames 3", kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    const fs::path world = dir_ / "a\x1b[2Jb\nc.vdb", worldFile = dir_ / "a\x1b[2Jb\nc.json", shot = dir_ / "s\x1b]0;t\x07.png";
+    EXPECT_TRUE(fs::exists(world));
+    EXPECT_TRUE(fs::exists(worldFile));
+    EXPECT_TRUE(fs::exists(shot));
+    EXPECT_EQ(v.out.find('\x1b'), std::string::npos) << printable(v.out);
+    EXPECT_EQ(v.out.find('\x07'), std::string::npos) << printable(v.out);
+    EXPECT_EQ(std::count(v.out.begin(), v.out.end(), '\n'), 2) << printable(v.out);
+    EXPECT_NE(v.out.find("wrote " + printable(worldFile.string()) + " and " + printable(world.string()) + "\n"),
+              std::string::npos)
+        << printable(v.out);
+    EXPECT_NE(v.out.find("wrote " + printable(shot.string()) + " (32x24)\n"), std::string::npos) << printable(v.out);
 }
 
 }  // namespace
