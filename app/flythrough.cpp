@@ -14,8 +14,8 @@
 // writes only missing frames.
 // DIR/flythrough.json records the settings so a resume never mixes sequences,
 // and DIR/stats.json keeps every run's frame times, merged by frame number as
-// frames are written (app/flythrough_dir.h). Frames are read back and written while the next ones
-// render (app/frame_writer.h).
+// frames are written (app/flythrough_dir.h). Frames are read back and written
+// while the next ones render (app/frame_writer.h).
 #include "app/commands.h"
 #include "app/flythrough_dir.h"
 #include "app/frame_names.h"
@@ -153,7 +153,8 @@ void run(const Args& a) {
     vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
     requireRenderFits(ctx, size.width, size.height, ao, "--size");
 
-    // Frames to write: those of the range not in DIR whole and recorded yet. The video takes them all.
+    // Frames to write: those of the range not in DIR whole and recorded yet. The
+    // video takes them all.
     const fs::path dir = a.output;
     std::vector<int> missing;
     if (!a.output.empty()) {

@@ -107,7 +107,7 @@ bool holdsFrames(const fs::path& dir, const FrameNames& names, const json& previ
 void requireSameRun(const fs::path& dir, const json& manifest, const FrameNames& names) {
     const fs::path file = dir / "flythrough.json";
     const std::string hint = "render into another directory, or delete this one to start over";
-    if (fs::exists(file) || !irregularKind(file).empty()) {
+    if (fs::exists(file)) {
         const json previous = readDirectoryJson(file, hint);
         if (previous == manifest) return;
         if (holdsFrames(dir, names, previous))
@@ -134,7 +134,7 @@ void removeAbandonedFiles(const fs::path& dir, const FrameNames& names) {
 std::map<int, json> earlierFrames(const fs::path& file) {
     std::map<int, json> frames;
     const std::string hint = "delete it to start the stats afresh";
-    if (!fs::exists(file) && irregularKind(file).empty()) return frames;
+    if (!fs::exists(file)) return frames;
     const json doc = readDirectoryJson(file, hint);
     if (!doc.is_object() || !doc.contains("frames") || !doc["frames"].is_array())
         throw Error(file.string(), "is not a flythrough stats file (no \"frames\" array)", hint);

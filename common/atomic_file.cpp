@@ -51,7 +51,8 @@ protected:
     // Seekable, for writers that go back to fill in offsets (OpenVDB's archives).
     pos_type seekoff(off_type off, std::ios_base::seekdir dir, std::ios_base::openmode) override {
         if (!drain()) return pos_type(off_type(-1));
-        return pos_type(off_type(lseek(fd_, off, dir == std::ios_base::beg ? SEEK_SET : dir == std::ios_base::cur ? SEEK_CUR : SEEK_END)));
+        const int whence = dir == std::ios_base::beg ? SEEK_SET : dir == std::ios_base::cur ? SEEK_CUR : SEEK_END;
+        return pos_type(off_type(lseek(fd_, off, whence)));
     }
     pos_type seekpos(pos_type pos, std::ios_base::openmode which) override {
         return seekoff(off_type(pos), std::ios_base::beg, which);
