@@ -65,12 +65,7 @@ World::SavedFiles World::save(const std::filesystem::path& path, const WorldDesc
     saved.threshold = WorldDesc{}.threshold;
     saved.material = w.uniformMaterial;
     const std::string text = worldFileJson(saved, file.parent_path()).dump(2, ' ', false, json::error_handler_t::replace);
-    writeAtomically(file, [&](const fs::path& tmp) {
-        std::ofstream out(tmp);
-        out << text << "\n";
-        out.close();
-        if (!out) throw Error(file.string(), "could not be written", "check free disk space and permissions");
-    });
+    writeAtomically(file, text + "\n");
     return {file, vdb};
 }
 
