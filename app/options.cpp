@@ -222,7 +222,7 @@ double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());
     const size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+    return v.size() % 2 ? v[m] : 0.5 * v[m - 1] + 0.5 * v[m];  // halves first: the sum of two large values overflows
 }
 
 void requireNoValidationMessages(const vk::Context& ctx) {

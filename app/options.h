@@ -18,6 +18,7 @@ namespace grotto::app {
 
 struct Size {
     uint32_t width = 0, height = 0;
+    double aspect() const { return double(width) / double(height); }
 };
 
 // "WxH" with both in 1..16384; throws grotto::Error (input) naming the option.

@@ -410,7 +410,7 @@ TEST(ShippedPaths, CameraStaysOutOfSolid) {
         for (const auto& [name, desc] : paths) {
             SCOPED_TRACE(worldName + " " + name);
             EXPECT_GE(desc.keys.size(), 2u);
-            const CameraPath path(desc, world.camera(""));
+            const CameraPath path(desc, world.camera("", 16.0 / 9.0));
             const double margin = 0.3 * world.voxelSize();
             glm::dvec3 last = path.pose(0.0).position;
             for (double t = 0.0; t <= path.duration() + 1e-9; t += 1.0 / 30.0) {

@@ -241,6 +241,22 @@ TEST_F(HostileInputs, ObjectsAndEditsPastTheMemoryBudget) {
                                    "far.json: field 'edits[0]': reaches outside the supported index range on y", frames);
 }
 
+// What a flythrough reads in its output directory: a FIFO there once blocked the
+// run forever, and a directory named stats.json ended it as an internal failure.
+TEST_F(HostileInputs, FlythroughDirectoryFilesThatAreNotRegularFiles) {
+    const std::string run = "flythrough " + writeFlyWorld().string() + " --path p --size 16x8 --fps 8 --frames 2 -o ";
+    for (const char* name : {"flythrough.json", "stats.json"}) {
+        const fs::path seq = dir_ / (std::string("fifo-") + name);
+        fs::create_directory(seq);
+        ASSERT_EQ(mkfifo((seq / name).c_str(), 0644), 0);
+        expectRefused(run + seq.string(), name + std::string(": is a FIFO, not a regular file"), seq / "frame.0001.png",
+                      "", {.hangSeconds = 60});
+    }
+    const fs::path seq = dir_ / "folder";
+    fs::create_directories(seq / "stats.json");
+    expectRefused(run + seq.string(), "stats.json: is a directory, not a regular file", seq / "frame.0001.png");
+}
+
 TEST_F(HostileInputs, TextFromFilesIsPrintedEscaped) {
     auto grid = openvdb::BoolGrid::create(false);
     grid->setName("evil\n\x1b[2J\x07name");

@@ -61,7 +61,7 @@ void buildSolid(const openvdb::GridBase::Ptr& grid, World::Impl& impl);
 // Voxel size and corner origin from a uniform, axis-aligned transform (else Error).
 void readTransform(const openvdb::GridBase& grid, const std::string& file, World::Impl& impl);
 
-// Writes one grid to a .vdb atomically, read back before it replaces `out`.
+// Writes one grid to a .vdb atomically, every write checked (common/atomic_file.h).
 // Throws grotto::Error naming `out`.
 void writeGridFile(const openvdb::GridBase::ConstPtr& grid, const std::filesystem::path& out);
 

@@ -1,5 +1,6 @@
 #include "common/error.h"
 #include "voxel/object_worlds.h"
+#include "voxel/camera_frame.h"
 #include "voxel/solid.h"
 
 #include <glm/common.hpp>
@@ -191,7 +192,7 @@ int World::material(glm::ivec3 v) const {
     return impl_->materials ? impl_->materials->tree().getValue(c) : impl_->uniformMaterial;
 }
 
-CameraDesc World::camera(const std::string& name) const {
+CameraDesc World::camera(const std::string& name, double aspect) const {
     const WorldDesc& d = impl_->desc;
     const std::string& pick = name.empty() ? d.defaultCamera : name;
     if (!pick.empty()) {
@@ -204,19 +205,10 @@ CameraDesc World::camera(const std::string& name) const {
         }
         return it->second;
     }
-    // Frame the bounds from above and to the side.
-    CameraDesc c;
     IndexBox b = bounds();
     if (b.empty()) b = {glm::ivec3(0), glm::ivec3(0)};
-    const glm::dvec3 lo = impl_->origin + glm::dvec3(b.min) * impl_->voxelSize;
-    const glm::dvec3 hi = impl_->origin + glm::dvec3(b.max + 1) * impl_->voxelSize;
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double radius = 0.5 * glm::length(hi - lo);
-    const double distance = radius / std::sin(glm::radians(c.fovDegrees) * 0.5);
-    c.target = centre;
-    c.position = centre + glm::normalize(glm::dvec3(0.8, 0.7, 1.0)) * distance;
-    c.nearPlane = std::clamp(distance * 1e-3, 1e-4, 10.0);
-    return c;
+    return frameBox(impl_->origin + glm::dvec3(b.min) * impl_->voxelSize,
+                    impl_->origin + glm::dvec3(b.max + 1) * impl_->voxelSize, aspect);
 }
 
 }  // namespace grotto::voxel
