@@ -3,12 +3,11 @@
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
-#include "common/file_kind.h"
 #include "common/file_lock.h"
+#include "common/json_text.h"
 #include "engine/image_output.h"
 
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <vector>
 
@@ -54,13 +53,14 @@ void writeJson(const fs::path& file, const json& j) {
 
 namespace {
 
+// A frame's entry in stats.json is well under 1 KiB: room for the longest path.
+constexpr size_t kMaxStatsBytes = size_t(1) << 30;
+
 // A JSON file the run keeps in its directory, null when it does not parse.
-// Anything but a regular file is refused: a FIFO would block the run.
+// Anything but a regular file is refused (a FIFO would block the run), and so
+// is one nested past reason (common/json_text.h).
 json readDirectoryJson(const fs::path& file, const std::string& hint) {
-    if (const std::string kind = irregularKind(file); !kind.empty())
-        throw Error(file.string(), "is " + kind + ", not a regular file", hint);
-    std::ifstream in(file);
-    json j = json::parse(in, nullptr, false);
+    json j = json::parse(readJsonText(file, hint, kMaxStatsBytes), nullptr, false);
     return j.is_discarded() ? json() : j;
 }
 

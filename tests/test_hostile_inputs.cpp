@@ -205,6 +205,18 @@ TEST_F(HostileInputs, JsonBombs) {
     expectCommandRefusedWithinCaps("stability " + world + " --path p --size 32x16 --baseline " + bomb + " --json " +
                                        (dir_ / "s.json").string(),
                                    "bomb.json: nests", dir_ / "s.json");
+    // The files a flythrough keeps in its directory: its manifest, and the stats
+    // of a run made there first.
+    const fs::path kept = dir_ / "kept";
+    fs::create_directory(kept);
+    fs::copy_file(bomb, kept / "flythrough.json");
+    expectCommandRefusedWithinCaps("flythrough " + world + " --path p --size 32x16 -o " + kept.string(), "flythrough.json: nests",
+                                   kept / "frame.0001.png");
+    const test::RunResult first = runGrotto("flythrough " + world + " --path p --size 32x16 --frames 2 -o " + frames);
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    fs::copy_file(bomb, fs::path(frames) / "stats.json", fs::copy_options::overwrite_existing);
+    expectCommandRefusedWithinCaps("flythrough " + world + " --path p --size 32x16 -o " + frames, "stats.json: nests",
+                                   fs::path(frames) / "frame.0003.png");
     // Brackets in strings are text, not nesting: a deep-looking name is only a name.
     const std::string brackets = std::string(100, '[');
     expectCommandRefusedWithinCaps("info " + writeText("quoted.json", R"({"grid": {"file": ")" + brackets + R"("}})").string(),
@@ -224,7 +236,7 @@ TEST_F(HostileInputs, ObjectsAndEditsPastTheMemoryBudget) {
     const std::string box4096 = world("box4096.json", R"("objects": [{"generator": {"kind": "box", "size": [4096, 4096, 4096]}, )" + key + "}]");
     expectCommandRefusedWithinCaps(render(box4096), "box4096.json: field 'objects[0].generator.size': object 'object1' could make", out());
     const std::string box1024 = world("box1024.json", R"("memory_budget_mib": 64, "objects": [{"generator": {"kind": "box", "size": [1024, 1024, 1024]}, )" + key + "}]");
-    expectCommandRefusedWithinCaps(render(box1024), "more than the memory budget of 64 MiB", out());
+    expectCommandRefusedWithinCaps(render(box1024), "more than the memory budget of 64.0 MiB", out());
     const std::string caves = world("caves.json", R"("memory_budget_mib": 1024, "objects": [{"generator": {"kind": "caves", "size": 4096}, )" + key + "}]");
     expectCommandRefusedWithinCaps(render(caves), "caves.json: field 'objects[0].generator.size'", out());
     // A path's edit: refused when the path is read, before the output directory is made.

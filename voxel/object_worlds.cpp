@@ -5,7 +5,6 @@
 #include "voxel/solid.h"
 
 #include <cmath>
-#include <cstdio>
 
 namespace grotto::voxel {
 namespace {
@@ -32,12 +31,6 @@ Error asObjectField(const WorldDesc& world, const std::string& field, const Erro
     return Error(world.source.string(), "field '" + field + ".generator': " + e.problem(), e.hint());
 }
 
-std::string mib(double bytes) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.0f MiB", bytes / (1 << 20));
-    return text;
-}
-
 // A generated object is refused from its size alone, before any of it is made,
 // when the world made of it could pass the budget: kBytesPerBrick a brick (tiles
 // included, as on load) and its grid's and the solid mask's leaves.
@@ -51,9 +44,8 @@ void requireGeneratedFits(const WorldDesc& world, const ObjectDesc& o, const std
     const double bytes = s.bricks * double(kBytesPerBrick) + s.leaves * double(s.leafBytes + kMaskLeafBytes);
     if (bytes > double(world.memoryBudgetBytes))
         throw Error(world.source.string(),
-                    "field '" + field + ".generator.size': object '" + o.name + "' could make " + std::to_string(uint64_t(s.bricks)) +
-                        " bricks of 8^3 voxels, an estimated " + mib(bytes) + ", more than the memory budget of " +
-                        mib(double(world.memoryBudgetBytes)),
+                    "field '" + field + ".generator.size': object '" + o.name + "' could make " +
+                        overBudget(s.bricks, bytes, world.memoryBudgetBytes),
                     "make it smaller, or raise 'memory_budget_mib' in the world file");
 }
 

@@ -39,6 +39,10 @@ constexpr uint64_t kValueLeafBytes = sizeof(openvdb::Int32Tree::LeafNodeType) + 
 // bricks World::bricks() splits it into. Leaves are counted, not walked.
 uint64_t brickCount(const openvdb::MaskTree& tree);
 
+// "N bricks of 8^3 voxels, an estimated X MiB, more than the memory budget of Y MiB":
+// the figures every refusal over the budget gives.
+std::string overBudget(double bricks, double bytes, size_t budget);
+
 // Registers OpenVDB's grid types, once per process (before any file is read or written).
 void initializeOpenVdb();
 

@@ -88,14 +88,17 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     // expands into full bricks here: refused before any of them is made.
     const uint64_t bricks = brickCount(impl->solid->tree());
     const double bytes = double(bricks) * double(kBytesPerBrick);
-    if (bytes > double(impl->desc.memoryBudgetBytes)) {
-        char figures[128];
-        std::snprintf(figures, sizeof figures, "%llu bricks of 8^3 voxels, an estimated %.1f MiB, more than the memory budget of %.1f MiB",
-                      (unsigned long long)bricks, bytes / (1 << 20), double(impl->desc.memoryBudgetBytes) / (1 << 20));
-        throw Error(file, "grid '" + grid->getName() + "' is solid over " + figures,
+    if (bytes > double(impl->desc.memoryBudgetBytes))
+        throw Error(file, "grid '" + grid->getName() + "' is solid over " + overBudget(double(bricks), bytes, impl->desc.memoryBudgetBytes),
                     "raise 'memory_budget_mib' in the world file, or make the grid smaller or sparser");
-    }
     return World(std::move(impl));
+}
+
+std::string overBudget(double bricks, double bytes, size_t budget) {
+    char figures[160];
+    std::snprintf(figures, sizeof figures, "%.0f bricks of 8^3 voxels, an estimated %.1f MiB, more than the memory budget of %.1f MiB",
+                  bricks, bytes / (1 << 20), double(budget) / (1 << 20));
+    return figures;
 }
 
 World World::load(const std::filesystem::path& path) {

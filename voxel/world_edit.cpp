@@ -243,11 +243,8 @@ void requireEditFits(const Edit& e, const IndexBox& region, const World::Impl& w
     const double leafBytes = double(kMaskLeafBytes + (w.materials || newMaterials ? kValueLeafBytes : 0));
     const double bytes = bricks * double(kBytesPerBrick) + leaves * leafBytes +
                          (newMaterials ? worldLeaves * double(kValueLeafBytes) : 0.0);
-    const double budget = double(w.desc.memoryBudgetBytes);
-    if (bytes > budget)
-        throw Error("edit '" + describe(e) + "'", "could make the world " + num(bricks) + " bricks of 8^3 voxels, an estimated " +
-                                                      num(bytes / (1 << 20)) + " MiB, more than the memory budget of " +
-                                                      num(budget / (1 << 20)) + " MiB",
+    if (bytes > double(w.desc.memoryBudgetBytes))
+        throw Error("edit '" + describe(e) + "'", "could make the world " + overBudget(bricks, bytes, w.desc.memoryBudgetBytes),
                     "edit a smaller region, or raise 'memory_budget_mib' in the world file");
 }
 
