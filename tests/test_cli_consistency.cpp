@@ -184,10 +184,7 @@ TEST_F(CliErrors, FlythroughQuietPrintsOnlyTheResults) {
 }
 
 // info lists each object: where its voxels come from, how many and where, and how it moves.
-// DISABLED: after merging the input-validation work, `info` of a world whose object
-// comes from a grid file fails with "no such file" and an empty path (generator
-// objects list fine); open bug, to be fixed and this test re-enabled next.
-TEST_F(CliErrors, DISABLED_InfoListsObjects) {
+TEST_F(CliErrors, InfoListsObjects) {
     const fs::path world = writeText("objects.json", R"({"grid": {"file": "good.vdb"}, "objects": [
         {"name": "door", "generator": {"kind": "box", "size": [1, 10, 6], "material": 4}, "pivot": [0, -0.5, -0.5],
          "keys": [{"time": 0, "position": [15, -0.5, 9]}, {"time": 1.5, "position": [15, -0.5, 9], "angle_degrees": -100, "axis": [0, 1, 0]}]},

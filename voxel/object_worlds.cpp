@@ -61,7 +61,10 @@ World objectVoxels(const WorldDesc& world, const ObjectDesc& o, const std::strin
     d.materials = world.materials;
     d.lighting = world.lighting;
     d.memoryBudgetBytes = world.memoryBudgetBytes;
-    if (!o.gridFile.empty()) return makeWorld(loadGrid(d), std::move(d));
+    if (!o.gridFile.empty()) {
+        openvdb::GridBase::Ptr grid = loadGrid(d);  // before d moves into the world
+        return makeWorld(grid, std::move(d));
+    }
     requireGeneratedFits(world, o, field);
     try {
         openvdb::GridBase::Ptr grid = o.generator == "box" ? boxGrid(o.boxSize, o.material, o.generatorOptions.voxelSize)
