@@ -20,8 +20,19 @@ namespace grotto::test {
 
 namespace fs = std::filesystem;
 
+// Whether a file ends with a PNG's end chunk. libpng leaves a truncated PNG by a
+// longjmp that leaks OpenImageIO's error string (LeakSanitizer fails the test),
+// so a PNG without it is not handed to OpenImageIO.
+inline bool endsWithPngEnd(const fs::path& file) {
+    static constexpr char kEnd[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', char(0xAE), 0x42, 0x60, char(0x82)};
+    std::ifstream in(file, std::ios::binary);
+    char tail[12] = {};
+    return in.seekg(-12, std::ios::end) && in.read(tail, 12) && std::equal(tail, tail + 12, kEnd);
+}
+
 // An image's pixels as 8-bit channels, interleaved; empty if it cannot be read.
 inline std::vector<uint8_t> readPixels8(const fs::path& file) {
+    if (file.extension() == ".png" && !endsWithPngEnd(file)) return {};
     auto in = OIIO::ImageInput::open(file.string());
     if (!in) return {};
     std::vector<uint8_t> pixels(size_t(in->spec().image_pixels()) * size_t(in->spec().nchannels));
