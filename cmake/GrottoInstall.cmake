@@ -6,13 +6,14 @@ include(CMakePackageConfigHelpers)
 
 set_target_properties(grotto_common PROPERTIES EXPORT_NAME common)
 set_target_properties(grotto_voxel PROPERTIES EXPORT_NAME voxel)
+set_target_properties(grotto_vdb_read PROPERTIES EXPORT_NAME vdb_read)
 set_target_properties(grotto_vk PROPERTIES EXPORT_NAME vk)
 set_target_properties(grotto_engine PROPERTIES EXPORT_NAME engine)
 set_target_properties(grotto_shaders PROPERTIES EXPORT_NAME shaders)
 set_target_properties(grotto_oiio PROPERTIES EXPORT_NAME oiio)
 
 install(TARGETS grotto RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS grotto_common grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_oiio
+install(TARGETS grotto_common grotto_vdb_read grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_oiio
         EXPORT GrottoTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY common engine voxel DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto FILES_MATCHING PATTERN "*.h")
 install(FILES include/grotto/grotto.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto)

@@ -5,19 +5,28 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <spawn.h>
+#include <sys/mman.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <new>
+
+extern char** environ;
 
 namespace grotto {
 namespace {
 
-size_t g_inheritedBytes = 0;  // the child's address space when it started
-size_t g_allowedBytes = 0;    // what it may add to that now
+// The child's descriptors: what it reads, and where it reports.
+constexpr int kInputFd = 3;
+constexpr int kReportFd = 4;
+
+size_t g_startBytes = 0;    // the child's address space when it started
+size_t g_allowedBytes = 0;  // what it may add to that now
 
 size_t addressSpaceBytes() {
     unsigned long pages = 0;
@@ -32,77 +41,129 @@ void limitAddressSpace(size_t extra) {
     g_allowedBytes = extra;
     rlimit r{};
     getrlimit(RLIMIT_AS, &r);
-    rlim_t want = rlim_t(g_inheritedBytes + extra);
+    rlim_t want = rlim_t(g_startBytes + extra);
     if (r.rlim_max != RLIM_INFINITY && want > r.rlim_max) want = r.rlim_max;
     r.rlim_cur = want;
     setrlimit(RLIMIT_AS, &r);
 }
 
-std::string mib(size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
-
-// The child's report on the pipe: a kind letter, then where, what and hint, NUL-separated.
-void report(int fd, char kind, const std::string& where = {}, const std::string& what = {},
-            const std::string& hint = {}) {
-    std::string msg(1, kind);
-    msg += where + '\0' + what + '\0' + hint;
-    for (size_t done = 0; done < msg.size();) {
-        const ssize_t n = write(fd, msg.data() + done, msg.size() - done);
-        if (n <= 0 && errno != EINTR) break;
-        if (n > 0) done += size_t(n);
-    }
-}
-
-[[noreturn]] void runChild(int fd, const ChildLimits& limits, const std::function<void()>& work) {
-    // What the child prints (a library's warnings, a sanitizer's report) is not
-    // the user's business: the parent turns the outcome into one line.
-    const int null = open("/dev/null", O_WRONLY | O_CLOEXEC);
-    if (null >= 0) dup2(null, STDERR_FILENO);
-    g_inheritedBytes = addressSpaceBytes();
-    limitAddressSpace(limits.memoryBytes);
+void limitCpu(int seconds) {
     rlimit cpu{};
     getrlimit(RLIMIT_CPU, &cpu);
-    const rlim_t soft = rlim_t(limits.cpuSeconds);
+    const rlim_t soft = rlim_t(seconds);
     if (cpu.rlim_max == RLIM_INFINITY || soft < cpu.rlim_max) {
         cpu.rlim_cur = soft;
         cpu.rlim_max = soft + 1;  // SIGXCPU at the soft limit, SIGKILL a second later
         setrlimit(RLIMIT_CPU, &cpu);
     }
-    try {
-        work();
-        report(fd, 'K');
-    } catch (const Error& e) {
-        report(fd, "IXR"[int(e.kind())], e.where(), e.problem(), e.hint());
-    } catch (const std::bad_alloc&) {
-        report(fd, 'M', {}, std::to_string(g_allowedBytes));
-    } catch (const std::exception& e) {
-        report(fd, 'E', {}, e.what());
-    } catch (...) {
-        report(fd, 'E', {}, "unknown exception");
+}
+
+std::string mib(size_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MiB"; }
+
+// The child's report: a kind letter, then where, what and hint, NUL-separated.
+void report(char kind, const std::string& where = {}, const std::string& what = {}, const std::string& hint = {}) {
+    std::string msg(1, kind);
+    msg += where + '\0' + what + '\0' + hint;
+    for (size_t done = 0; done < msg.size();) {
+        const ssize_t n = write(kReportFd, msg.data() + done, msg.size() - done);
+        if (n <= 0 && errno != EINTR) break;
+        if (n > 0) done += size_t(n);
     }
-    _exit(0);  // no destructors, atexit handlers or leak checks of the parent's state
+}
+
+// A copy of fd numbered above the child's fixed descriptors, so that placing
+// those cannot overwrite it (the original is closed).
+int aboveChildFds(int fd) {
+    const int high = fd < 0 ? -1 : fcntl(fd, F_DUPFD_CLOEXEC, kReportFd + 1);
+    if (fd >= 0) close(fd);
+    return high;
+}
+
+// The program's bytes as a file that can be executed (sealed: nothing changes it).
+int programFile(const std::string& where, std::span<const unsigned char> program) {
+    const int fd = aboveChildFds(memfd_create("grotto-reader", MFD_CLOEXEC | MFD_ALLOW_SEALING));
+    if (fd < 0) throw Error::internal(where, std::string("cannot create the reader program: ") + std::strerror(errno));
+    for (size_t done = 0; done < program.size();) {
+        const ssize_t n = write(fd, program.data() + done, program.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) {
+            close(fd);
+            throw Error::internal(where, "cannot write the reader program to memory");
+        }
+        done += size_t(n);
+    }
+    fcntl(fd, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL);
+    return fd;
+}
+
+pid_t spawn(const std::string& where, int programFd, int input, int reportWrite, const std::vector<std::string>& argv) {
+    const std::string path = "/proc/self/fd/" + std::to_string(programFd);
+    std::vector<char*> args;
+    for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, input, kInputFd);
+    posix_spawn_file_actions_adddup2(&actions, reportWrite, kReportFd);
+    // What the child prints (a library's warnings, a sanitizer's report) is not
+    // the user's business: the parent turns the outcome into one line.
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+    pid_t pid = -1;
+    const int err = posix_spawn(&pid, path.c_str(), &actions, nullptr, args.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    if (err != 0) throw Error::internal(where, std::string("cannot start a reader process: ") + std::strerror(err));
+    return pid;
 }
 
 }  // namespace
 
 void allowChildMemory(size_t bytes) {
-    if (g_inheritedBytes > 0 && bytes > g_allowedBytes) limitAddressSpace(bytes);  // in a child only
+    if (g_startBytes > 0 && bytes > g_allowedBytes) limitAddressSpace(bytes);  // in a child only
 }
 
-void runInLimitedChild(const std::string& where, const ChildLimits& limits, const std::function<void()>& work) {
+void serveAsLimitedChild(int argc, char** argv, const std::function<void(const std::vector<std::string>&)>& work) {
+    try {
+        if (argc < 3) throw Error::internal(argc > 0 ? argv[0] : "reader", "started without its limits");
+        g_startBytes = addressSpaceBytes();
+        limitAddressSpace(std::stoull(argv[1]));
+        limitCpu(std::stoi(argv[2]));
+        work(std::vector<std::string>(argv + 3, argv + argc));
+        report('K');
+    } catch (const Error& e) {
+        report("IXR"[int(e.kind())], e.where(), e.problem(), e.hint());
+    } catch (const std::bad_alloc&) {
+        report('M', {}, std::to_string(g_allowedBytes));
+    } catch (const std::exception& e) {
+        report('E', {}, e.what());
+    } catch (...) {
+        report('E', {}, "unknown exception");
+    }
+    _exit(0);  // no destructors, atexit handlers or leak checks of what the reading left
+}
+
+void runInLimitedChild(const std::string& where, const ChildLimits& limits, std::span<const unsigned char> program,
+                       const std::vector<std::string>& args, int input) {
+    const int programFd = programFile(where, program);
     int fds[2];
-    if (pipe2(fds, O_CLOEXEC) != 0) throw Error::internal(where, "cannot create a pipe to a reader process");
-    std::fflush(nullptr);
-    const pid_t pid = fork();
-    if (pid < 0) {
-        close(fds[0]);
-        close(fds[1]);
-        throw Error::internal(where, "cannot start a reader process");
+    if (pipe2(fds, O_CLOEXEC) != 0) {
+        close(programFd);
+        throw Error::internal(where, "cannot create a pipe to a reader process");
     }
-    if (pid == 0) {
-        close(fds[0]);
-        runChild(fds[1], limits, work);
+    const int inputFd = aboveChildFds(fcntl(input, F_DUPFD_CLOEXEC, 0)), reportWrite = aboveChildFds(fds[1]);
+    std::vector<std::string> argv = {"grotto-reader", std::to_string(limits.memoryBytes),
+                                     std::to_string(limits.cpuSeconds)};
+    argv.insert(argv.end(), args.begin(), args.end());
+    pid_t pid = -1;
+    try {
+        if (inputFd < 0 || reportWrite < 0) throw Error::internal(where, "cannot pass descriptors to a reader process");
+        pid = spawn(where, programFd, inputFd, reportWrite, argv);
+    } catch (...) {
+        for (int fd : {programFd, inputFd, reportWrite, fds[0]})
+            if (fd >= 0) close(fd);
+        throw;
     }
-    close(fds[1]);
+    for (int fd : {programFd, inputFd, reportWrite}) close(fd);
     // The child's CPU limit stops a spinning parse; this stops one that waits on
     // something forever (it uses no CPU meanwhile).
     const int waitMs = (limits.cpuSeconds * 10 + 10) * 1000;
@@ -130,6 +191,8 @@ void runInLimitedChild(const std::string& where, const ChildLimits& limits, cons
     if (timedOut) throw Error::internal(where, "reading it stalled for " + std::to_string(waitMs / 1000) + " s");
     if (msg.empty()) {
         const int sig = WIFSIGNALED(status) ? WTERMSIG(status) : 0;
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+            throw Error::internal(where, "the reader process could not run");
         if (sig == SIGXCPU || sig == SIGKILL)
             throw Error(where, "reading it took more than " + std::to_string(limits.cpuSeconds) + " s of CPU time",
                         damaged);

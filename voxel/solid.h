@@ -1,6 +1,7 @@
 #pragma once
 // Internal to voxel/: the OpenVDB side of a World.
 #include "voxel/edit_history.h"
+#include "voxel/vdb_read.h"
 #include "voxel/world.h"
 
 #include <openvdb/openvdb.h>
@@ -43,27 +44,13 @@ uint64_t brickCount(const openvdb::MaskTree& tree);
 // the figures every refusal over the budget gives.
 std::string overBudget(double bricks, double bytes, size_t budget);
 
-// Registers OpenVDB's grid types, once per process (before any file is read or written).
-void initializeOpenVdb();
-
-// Opens desc.gridFile and reads the named grid (or the first). Checks the voxel
-// transform and the memory budget before reading voxels. Throws grotto::Error.
-// A damaged or hostile file is refused within bounded memory and CPU time: it is
-// read by a child process under limits first.
+// Opens desc.gridFile and reads the named grid (or the first): readGridUnguarded,
+// but a damaged or hostile file is refused within bounded memory and CPU time,
+// because a reader process under limits reads it first. Throws grotto::Error.
 openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc);
-
-// loadGrid's reading without the child's limits (what the child runs; fuzzers call
-// it directly so that a crash shows). onEstimate gets the size the grid's metadata
-// states, once it is known to be within the budget; openAs, when given, is the
-// path opened instead of desc.gridFile (errors still name desc.gridFile).
-openvdb::GridBase::Ptr readGridUnguarded(const WorldDesc& desc, const std::function<void(size_t)>& onEstimate = {},
-                                         const std::filesystem::path& openAs = {});
 
 // Applies the solid rule; fills impl.solid, impl.materials, impl.uniformMaterial.
 void buildSolid(const openvdb::GridBase::Ptr& grid, World::Impl& impl);
-
-// Voxel size and corner origin from a uniform, axis-aligned transform (else Error).
-void readTransform(const openvdb::GridBase& grid, const std::string& file, World::Impl& impl);
 
 // Writes one grid to a .vdb atomically, every write checked (common/atomic_file.h).
 // Throws grotto::Error naming `out`.

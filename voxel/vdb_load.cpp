@@ -1,138 +1,18 @@
-// Reading a .vdb: checked in a child process under limits, then read for real.
+// Reading a .vdb: checked by a reader process under limits, then read for real.
 #include "common/error.h"
 #include "common/file_kind.h"
 #include "common/limited_child.h"
 #include "voxel/solid.h"
+#include "voxel/vdb_reader_program.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
-#include <cmath>
 #include <cstring>
-#include <mutex>
 
 namespace grotto::voxel {
-namespace {
-
-// The reader's memory for a grid whose size is unknown, and its CPU time: one
-// second plus one per this much file (a 9 MiB world reads in 0.25 s here).
-constexpr size_t kReaderMemoryBytes = size_t(512) << 20;
-constexpr uintmax_t kReaderBytesPerCpuSecond = uintmax_t(8) << 20;
-
-std::string gridNames(openvdb::io::File& file) {
-    std::string s;
-    for (auto it = file.beginName(); it != file.endName(); ++it)
-        s += (s.empty() ? "" : ", ") + it.gridName();
-    return s;
-}
-
-// A grid's in-memory size, estimated from the metadata OpenVDB writes with it.
-size_t estimatedBytes(const openvdb::GridBase& meta) {
-    if (auto m = meta.getMetadata<openvdb::Int64Metadata>("file_mem_bytes"))
-        return size_t(m->value());
-    return 0;
-}
-
-std::string num(double d) {
-    char buf[32];
-    snprintf(buf, sizeof buf, "%g", d);
-    return buf;
-}
-
-std::string mib(size_t bytes) {
-    char buf[32];
-    snprintf(buf, sizeof buf, "%.1f MiB", double(bytes) / (1 << 20));
-    return buf;
-}
-
-}  // namespace
-
-void initializeOpenVdb() {
-    static std::once_flag once;
-    std::call_once(once, [] { openvdb::initialize(); });
-}
-
-void readTransform(const openvdb::GridBase& grid, const std::string& file, World::Impl& impl) {
-    const openvdb::math::Transform& xf = grid.transform();
-    const openvdb::Vec3d vs = xf.voxelSize();
-    const std::string where = file + ": grid '" + grid.getName() + "' transform";
-    bool axisAligned = xf.isLinear();
-    if (axisAligned) {
-        const openvdb::Mat4d m = xf.baseMap()->getAffineMap()->getMat4();
-        for (int r = 0; r < 3; ++r)
-            for (int c = 0; c < 3; ++c)
-                if (r != c ? std::abs(m(r, c)) > 1e-9 * vs.x() : m(r, c) <= 0.0) axisAligned = false;
-    }
-    if (!axisAligned)
-        throw Error(where, "is not an axis-aligned scale and translation (" + xf.mapType() + ")",
-                    "resample the grid to a uniform, unrotated voxel transform");
-    const double tol = 1e-6 * vs.x();
-    if (std::abs(vs.x() - vs.y()) > tol || std::abs(vs.x() - vs.z()) > tol)
-        throw Error(where, "has non-uniform voxel size (" + std::to_string(vs.x()) + ", " +
-                    std::to_string(vs.y()) + ", " + std::to_string(vs.z()) + ")",
-                    "Grotto needs cubic voxels; resample with a uniform voxel size");
-    if (!(vs.x() >= kMinVoxelSize && vs.x() <= kMaxVoxelSize))
-        throw Error(where, "has voxel size " + num(vs.x()) + ", outside the supported range",
-                    "supported: " + num(kMinVoxelSize) + " to " + num(kMaxVoxelSize) +
-                        " world units; rescale the grid's transform");
-    impl.voxelSize = vs.x();
-    // OpenVDB puts voxel centres at integer index coordinates; our voxel i spans [i, i+1).
-    openvdb::Vec3d corner = xf.indexToWorld(openvdb::Vec3d(-0.5));
-    for (int axis = 0; axis < 3; ++axis)
-        if (!(std::abs(corner[axis]) <= kMaxWorldOffset))
-            throw Error(where, "places voxel 0 at " + num(corner[axis]) + " on " + "xyz"[axis] +
-                                   ", outside the supported range",
-                        "supported: translations within +-" + num(kMaxWorldOffset) + " world units");
-    impl.origin = glm::dvec3(corner.x(), corner.y(), corner.z());
-}
-
-openvdb::GridBase::Ptr readGridUnguarded(const WorldDesc& desc, const std::function<void(size_t)>& onEstimate,
-                                         const std::filesystem::path& openAs) {
-    initializeOpenVdb();
-    const std::string path = desc.gridFile.string();
-    openvdb::io::File file(openAs.empty() ? path : openAs.string());
-    try {
-        file.open(false);  // no delayed loading: a truncated file fails here or in readGrid
-    } catch (const std::bad_alloc&) {
-        throw;  // the reader's memory limit: reported as such
-    } catch (const std::exception& e) {
-        throw Error(path, std::string("is not a readable OpenVDB file: ") + e.what(),
-                    "expected a .vdb written by OpenVDB");
-    }
-    std::string name = desc.gridName;
-    if (name.empty()) {
-        if (file.beginName() == file.endName())
-            throw Error(path, "contains no grids", "write at least one grid into the file");
-        name = file.beginName().gridName();
-    } else if (!file.hasGrid(name)) {
-        throw Error(path, "has no grid named '" + name + "'",
-                    "grids in the file: " + gridNames(file));
-    }
-    openvdb::GridBase::Ptr grid;
-    try {
-        openvdb::GridBase::Ptr meta = file.readGridMetadata(name);
-        World::Impl probe;  // refuse a bad transform before reading any voxels
-        readTransform(*meta, path, probe);
-        const size_t estimate = estimatedBytes(*meta);
-        if (estimate > desc.memoryBudgetBytes)
-            throw Error(path, "grid '" + name + "' needs an estimated " + mib(estimate) +
-                        ", more than the memory budget of " + mib(desc.memoryBudgetBytes),
-                        "raise 'memory_budget_mib' in the world file or use a smaller grid");
-        if (onEstimate) onEstimate(estimate);
-        grid = file.readGrid(name);
-    } catch (const Error&) {
-        throw;
-    } catch (const std::bad_alloc&) {
-        throw;  // the reader's memory limit: reported as such
-    } catch (const std::exception& e) {
-        throw Error(path, "grid '" + name + "' cannot be read: " + e.what(),
-                    "the file may be truncated or damaged");
-    }
-    file.close();
-    return grid;
-}
 
 openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc) {
     const std::string path = desc.gridFile.string();
@@ -140,26 +20,22 @@ openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc) {
                                         ? "named by '" + desc.source.string() + "' field 'grid.file'; give an OpenVDB .vdb file"
                                         : "give the path of an OpenVDB .vdb file");
     // OpenVDB allocates whatever sizes a stream claims before anything can check
-    // them, so the file is first read by a child process under limits: a damaged
-    // or hostile file ends there, in a clear error, at a bounded cost. A grid
-    // whose metadata states its size (OpenVDB writes it) may use that, within
-    // the world's budget, plus room for the reader's own buffers.
+    // them, so the file is first read by a reader process under limits
+    // (voxel/vdb_reader.cpp): a damaged or hostile file ends there, in a clear
+    // error, at a bounded cost.
     // Both reads go through one open descriptor, so a file replaced between
     // them cannot reach the second read unchecked.
     const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) throw Error(path, std::string("cannot be opened: ") + std::strerror(errno));
     struct stat st {};
     fstat(fd, &st);
-    const std::filesystem::path pinned = "/proc/self/fd/" + std::to_string(fd);
     ChildLimits limits;
     limits.memoryBytes = kReaderMemoryBytes;
     limits.cpuSeconds = 1 + int(std::min<uintmax_t>(uintmax_t(st.st_size) / kReaderBytesPerCpuSecond, 3600));
     try {
-        runInLimitedChild(path, limits, [&] {
-            readGridUnguarded(desc, [](size_t estimate) { allowChildMemory(estimate + estimate / 2 + kReaderMemoryBytes); },
-                              pinned);
-        });
-        openvdb::GridBase::Ptr grid = readGridUnguarded(desc, {}, pinned);
+        runInLimitedChild(path, limits, vdbReaderProgram(),
+                          {path, desc.gridName, std::to_string(desc.memoryBudgetBytes)}, fd);
+        openvdb::GridBase::Ptr grid = readGridUnguarded(desc, {}, "/proc/self/fd/" + std::to_string(fd));
         close(fd);
         return grid;
     } catch (...) {

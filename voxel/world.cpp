@@ -66,7 +66,9 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     auto impl = std::make_shared<World::Impl>();
     impl->desc = std::move(desc);
     const std::string file = impl->desc.gridFile.empty() ? "<memory>" : impl->desc.gridFile.string();
-    readTransform(*grid, file, *impl);
+    const GridPlacement placement = readTransform(*grid, file);
+    impl->voxelSize = placement.voxelSize;
+    impl->origin = placement.origin;
     impl->sourceGridBytes = grid->memUsage();
     impl->gridName = grid->getName();
     impl->sourceType = grid->type();
