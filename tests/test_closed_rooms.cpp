@@ -4,7 +4,9 @@
 // them) in rooms of many sizes with furniture, walls one or two voxels thick and
 // the sun anywhere. A third of the cameras stand on voxel corners and look along
 // axes or diagonals, as a user places them, so whole rows of pixels see surface
-// points exactly on voxel boundaries.
+// points exactly on voxel boundaries; a third look straight into the edge where
+// two walls (or a wall and the floor or ceiling) meet, so their centre pixel sees
+// a point exactly on it.
 #include "engine/renderer.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
@@ -52,7 +54,7 @@ TEST_F(ClosedRooms, ShowNoSkyAndNoSunFromInside) {
         const glm::ivec3 size(integer(5, 40), integer(4, 20), integer(5, 40));
         room.lo = glm::ivec3(integer(-40, 20), integer(-40, 20), integer(-40, 20));  // across chunk borders
         room.hi = room.lo + size - 1;
-        room.wall = 1 + r % 2;
+        room.wall = 1 + r / 2 % 2;
         for (int k = integer(3, 12); k > 0; --k) {  // on the floor, or anywhere
             glm::ivec3 a(integer(room.lo.x, room.hi.x), room.lo.y, integer(room.lo.z, room.hi.z));
             if (k % 3 == 1) a.y = integer(room.lo.y, room.hi.y);
@@ -73,9 +75,19 @@ TEST_F(ClosedRooms, ShowNoSkyAndNoSunFromInside) {
         Renderer renderer(ctx(), *scene, lighting, noAo, 64, 48);
         for (int c = 0; c < 60; ++c) {
             glm::dvec3 p, dir;
-            const bool placed = c % 3 == 0;
+            const bool placed = c % 3 != 2;
             do {
-                if (placed) {  // on a voxel corner, along an axis or a diagonal
+                if (c % 3 == 1) {  // as far from two walls, looking into the edge where they meet
+                    const int a = integer(0, 2), b = (a + integer(1, 2)) % 3, other = 3 - a - b;
+                    const int k = integer(1, std::min(size[a], size[b]) / 2);
+                    dir = glm::dvec3(0.0);
+                    for (int axis : {a, b}) {
+                        const bool low = integer(0, 1) == 0;
+                        p[axis] = low ? room.lo[axis] + k : room.hi[axis] + 1 - k;
+                        dir[axis] = low ? -1.0 : 1.0;
+                    }
+                    p[other] = integer(room.lo[other] + 1, room.hi[other]);
+                } else if (placed) {  // on a voxel corner, along an axis or a diagonal
                     p = glm::dvec3(integer(room.lo.x + 1, room.hi.x), integer(room.lo.y + 1, room.hi.y),
                                    integer(room.lo.z + 1, room.hi.z));
                     dir = glm::dvec3(integer(-1, 1), integer(-1, 1) * (c % 2), integer(-1, 1));
