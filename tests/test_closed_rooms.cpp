@@ -97,7 +97,8 @@ TEST_F(ClosedRooms, ShowNoSkyAndNoSunFromInside) {
                     dir = glm::dvec3(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
                 }
             } while (!room.clear(p) || glm::length(dir) == 0.0 || (dir.x == 0.0 && dir.z == 0.0));
-            const uint32_t w = uint32_t(integer(24, 80)) | (placed ? 1u : 0u), h = uint32_t(integer(16, 60)) | (placed ? 1u : 0u);
+            const uint32_t odd = placed ? 1u : 0u;  // so the centre pixel looks straight along dir
+            const uint32_t w = uint32_t(integer(24, 80)) | odd, h = uint32_t(integer(16, 60)) | odd;
             renderer.resize(w, h);
             renderer.resetHistory();  // every camera a cut: culling has no frame before
             const glm::dvec3 eye = world.origin() + p;  // world.origin(): voxel corner (0, 0, 0)

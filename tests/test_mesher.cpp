@@ -230,7 +230,8 @@ Junctions tJunctions(const std::vector<glm::ivec3>& origins, const std::vector<L
                 }
                 std::set<std::tuple<uint64_t, uint64_t, uint32_t>> shared;  // edges, one way, with their face
                 for (const WorldQuad& q : levels[lb][cb])
-                    for (int e = 0; e < 4; ++e) shared.insert({key(q.corners[size_t(e)]), key(q.corners[size_t(e + 1) % 4]), q.face});
+                    for (int e = 0; e < 4; ++e)
+                        shared.insert({key(q.corners[size_t(e)]), key(q.corners[size_t(e + 1) % 4]), q.face});
                 for (const WorldQuad& q : levels[lb][cb])
                     for (int e = 0; e < 4; ++e) {
                         const glm::ivec3 a = q.corners[size_t(e)], b = q.corners[size_t(e + 1) % 4];
@@ -261,9 +262,8 @@ TEST(Mesher, QuadsMeetCornerToCornerWithinAndAcrossChunksAtEveryLevel) {
             quads += c.quads.size();
             for (size_t k = 0; k < levels.size(); ++k) {
                 levels[k].emplace_back();
-                const std::vector<MeshQuad>* qs = k == 0 ? &c.quads : k <= c.coarser.size() ? &c.coarser[k - 1].quads : nullptr;
-                if (!qs) continue;
-                for (const MeshQuad& q : *qs)
+                if (k > c.coarser.size()) continue;
+                for (const MeshQuad& q : k == 0 ? c.quads : c.coarser[k - 1].quads)
                     levels[k].back().push_back({{origin + q.corner(0), origin + q.corner(1), origin + q.corner(2),
                                                  origin + q.corner(3)}, q.face()});
             }

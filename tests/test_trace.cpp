@@ -74,11 +74,7 @@ public:
                                withTraceBindings({vk::storageBuffer(in.buffer), vk::storageBuffer(answers.buffer)},
                                                  constants, occupancy),
                                VkExtent2D{uint32_t(kWidth), uint32_t((n + kWidth - 1) / kWidth)}, 8, push);
-                VkMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
-                                  .srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT,
-                                  .dstAccessMask = VK_ACCESS_HOST_READ_BIT};
-                vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &b,
-                                     0, nullptr, 0, nullptr);
+                computeToHost(cmd);
             });
             pending = nullptr;
             const auto* a = static_cast<const uint32_t*>(answers.mapped());

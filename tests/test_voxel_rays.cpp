@@ -62,19 +62,16 @@ public:
                                                      glm::vec3(0.0f, 1.0f, 0.0f), 1, 1.0);
         vk::Buffer constants = vk::createBuffer(ctx_, sizeof t, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
         std::memcpy(constants.mapped(), &t, sizeof t);
-        vk::Buffer in = vk::createBuffer(ctx_, rays.size() * sizeof(QueryRay), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
-        vk::Buffer out = vk::createBuffer(ctx_, rays.size() * 2 * sizeof(glm::vec4), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
+        const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+        vk::Buffer in = vk::createBuffer(ctx_, rays.size() * sizeof(QueryRay), usage, true);
+        vk::Buffer out = vk::createBuffer(ctx_, rays.size() * 2 * sizeof(glm::vec4), usage, true);
         std::memcpy(in.mapped(), rays.data(), rays.size() * sizeof(QueryRay));
         const uint32_t count = uint32_t(rays.size());
         ctx_.submitAndWait([&](VkCommandBuffer cmd) {
             pass_.dispatch(cmd, withTraceBindings({vk::storageBuffer(in.buffer), vk::storageBuffer(out.buffer)},
                                                   constants, occupancy),
                            VkExtent2D{count, 1}, 64, &count);
-            VkMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
-                              .srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT,
-                              .dstAccessMask = VK_ACCESS_HOST_READ_BIT};
-            vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &b, 0,
-                                 nullptr, 0, nullptr);
+            computeToHost(cmd);
         });
         std::vector<Hit> hits(rays.size());
         const auto* h = static_cast<const glm::vec4*>(out.mapped());
@@ -278,15 +275,14 @@ TEST_F(VoxelRays, RaysThroughEdgesAndCornersOfSolidVoxelsAndThinWallsAreBlocked)
                 rays.push_back(r);
                 within.push_back(0.01f);
             }
-    std::sort(solid.begin(), solid.end(), [](const glm::ivec3& a, const glm::ivec3& b) {
+    auto less = [](const glm::ivec3& a, const glm::ivec3& b) {
         return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-    });
+    };
+    std::sort(solid.begin(), solid.end(), less);
     glm::ivec3 lo(INT32_MAX), hi(INT32_MIN);
     for (const glm::ivec3& s : solid) lo = glm::min(lo, s), hi = glm::max(hi, s);
     const voxel::World world = test::makeVoxelWorld(lo, hi, [&](int x, int y, int z) {
-        return std::binary_search(solid.begin(), solid.end(), glm::ivec3(x, y, z), [](const glm::ivec3& a, const glm::ivec3& b) {
-            return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-        });
+        return std::binary_search(solid.begin(), solid.end(), glm::ivec3(x, y, z), less);
     });
     const GpuOccupancy occupancy(ctx(), world);
     TraceQuery query(ctx());

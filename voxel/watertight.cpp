@@ -41,42 +41,37 @@ int twiceArea(const std::vector<glm::ivec2>& p) {
     return s;
 }
 
-// Cuts a convex counter-clockwise polygon (with points along its sides) into convex
-// quads and triangles whose corners are its points, none lying inside another's
-// side; `emit` gets each piece's corner indices (a triangle repeats its last).
 template <typename T>
 std::vector<T> without(std::vector<T> v, size_t first, size_t count) {  // minus `count` entries from first, cyclic
     for (size_t k = 0; k < count; ++k) v.erase(v.begin() + long(first < v.size() ? first : 0));
     return v;
 }
 
+// Cuts a convex counter-clockwise polygon (with points along its sides) into convex
+// quads and triangles whose corners are its points, none lying inside another's
+// side; `emit` gets each piece's corner indices (a triangle repeats its last).
 template <typename Emit>
 void cutConvex(std::vector<glm::ivec2> p, std::vector<int> id, Emit emit) {
     auto at = [&](size_t i) { return p[i % p.size()]; };
-    while (p.size() > 4) {
-        bool cut = false;
+    // Cuts off the piece of p[i], the `count` points after it and the next, if what
+    // is left still has area.
+    auto cutAt = [&](size_t i, size_t count) {
         const size_t n = p.size();
-        // A quad of four consecutive points, convex at every corner, that leaves a polygon with area.
-        for (size_t i = 0; i < n && !cut; ++i) {
-            const glm::ivec2 a = at(i), b = at(i + 1), c = at(i + 2), d = at(i + 3);
-            if (turn(a, b, c) <= 0 || turn(b, c, d) <= 0 || turn(c, d, a) <= 0 || turn(d, a, b) <= 0) continue;
-            std::vector<glm::ivec2> rest = without(p, (i + 1) % n, 2);
-            if (twiceArea(rest) <= 0) continue;
-            emit(id[i], id[(i + 1) % n], id[(i + 2) % n], id[(i + 3) % n]);
-            id = without(id, (i + 1) % n, 2);
-            p = std::move(rest);
-            cut = true;
-        }
-        // Else a triangle of three consecutive points.
-        for (size_t i = 0; i < n && !cut; ++i) {
-            if (turn(at(i), at(i + 1), at(i + 2)) <= 0) continue;
-            std::vector<glm::ivec2> rest = without(p, (i + 1) % n, 1);
-            if (twiceArea(rest) <= 0) continue;
-            emit(id[i], id[(i + 1) % n], id[(i + 2) % n], id[(i + 2) % n]);
-            id = without(id, (i + 1) % n, 1);
-            p = std::move(rest);
-            cut = true;
-        }
+        std::vector<glm::ivec2> rest = without(p, (i + 1) % n, count);
+        if (twiceArea(rest) <= 0) return false;
+        emit(id[i], id[(i + 1) % n], id[(i + 2) % n], id[(i + count + 1) % n]);
+        id = without(id, (i + 1) % n, count);
+        p = std::move(rest);
+        return true;
+    };
+    while (p.size() > 4) {
+        const size_t n = p.size();
+        bool cut = false;
+        for (size_t i = 0; i < n && !cut; ++i)  // a quad of four points in a row, convex at every corner
+            cut = turn(at(i), at(i + 1), at(i + 2)) > 0 && turn(at(i + 1), at(i + 2), at(i + 3)) > 0 &&
+                  turn(at(i + 2), at(i + 3), at(i)) > 0 && turn(at(i + 3), at(i), at(i + 1)) > 0 && cutAt(i, 2);
+        for (size_t i = 0; i < n && !cut; ++i)  // else a triangle of three
+            cut = turn(at(i), at(i + 1), at(i + 2)) > 0 && cutAt(i, 1);
         if (!cut) return;  // cannot happen for a convex polygon with area
     }
     if (p.size() == 3) {
