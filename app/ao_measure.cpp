@@ -69,12 +69,13 @@ AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& w
         withoutAo->render(camera, uint32_t(frames - 1));
     }
     const FrameImages plain = withoutAo->readback(camera, false);
+    std::vector<float> shown = displayColor(img);
     AoMeasurement m{aoError(img.ao, reference.ao, reference.surface), costDifference(aoMs), median(frameMs),
-                    imageChange(img.color, plain.color, reference.surface)};
+                    imageChange(shown, displayColor(plain), reference.surface)};
     m.msGbuffer = median(gbufferMs);
     m.quadsDrawn = last.quadsDrawn;
     m.culling = last.culling;
-    if (color) *color = std::move(img.color);
+    if (color) *color = std::move(shown);
     return m;
 }
 

@@ -32,7 +32,8 @@ struct AoMeasurement {
 // surface (sky only, an empty world): every error would be a perfect score over no pixels.
 void requireSurface(const ReferenceView& reference, const voxel::World& world, const std::string& camera);
 
-// Mean |sRGB(a) - sRGB(b)| over the RGB of RGBA pixels where `surface` is set (0 for none).
+// Mean |sRGB(a) - sRGB(b)| over the RGB of display-linear RGBA pixels (displayColor)
+// where `surface` is set (0 for none).
 double imageChange(const std::vector<float>& withAo, const std::vector<float>& withoutAo,
                    const std::vector<uint8_t>& surface);
 
@@ -40,7 +41,8 @@ double imageChange(const std::vector<float>& withAo, const std::vector<float>& w
 // temporal pass accumulates), the G-buffer drawn as `culling` says; times are
 // medians over the frames after `warmup`, the AO chain's and the frame's left at 0
 // when `timed` is false (no frames without AO are rendered then). `color`, when
-// given, receives the last frame's linear RGBA.
+// given, receives the last frame's displayed RGBA (tone-mapped, before sRGB
+// encoding: displayColor).
 AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
                         const AoOptions& ao, const CullingOptions& culling, const ReferenceView& reference,
                         int frames, int warmup, bool timed = true, std::vector<float>* color = nullptr);

@@ -25,7 +25,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -69,7 +68,7 @@ void addBenchCommand(CLI::App& app) {
         const voxel::WorldStats stats = world.stats();
         std::optional<EditBenchFigures> edits;
         if (args->edits) edits = benchEdits(world);
-        const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         const AoOptions ao = resolveAo(world, args->ao);
 
         vk::Context ctx;
@@ -154,12 +153,7 @@ void addBenchCommand(CLI::App& app) {
             j["edits"] = editFiguresJson(*edits);
         }
         if (!args->json.empty())
-            writeAtomically(args->json, [&](const std::filesystem::path& tmp) {
-                std::ofstream out(tmp);
-                out << j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
-                out.close();
-                if (!out) throw Error(args->json, "write failed", "is the disk full?");
-            });
+            writeAtomically(args->json, j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
     });
 }
 

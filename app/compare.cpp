@@ -37,7 +37,7 @@ void addCompareCommand(CLI::App& app) {
     cmd->callback([args] {
         const Size size = parseSize(args->size);
         const voxel::World world = voxel::World::load(args->world);
-        const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         const AoOptions ao = resolveAo(world, args->ao);
         if (!ao.enabled) throw Error("--ao", "off has no AO to compare", "pick gtao, ssao or hbao");
         // The reference's R is the radius the method is given, before GTAO's multiplier.

@@ -1,5 +1,5 @@
 // grotto flythrough WORLD --path NAME [--size WxH] [--fps N] [--frames A-B | --chunk K/N]
-//                   [--warmup K] [--format png|exr] [-o DIR] [--video FILE.mp4]
+//                   [--warmup K] [--format png|exr] [-o DIR] [--video FILE.mp4] [--quiet]
 // Renders a camera path to DIR/frame.NNNN.png (or .exr with AOVs; --name and
 // --start-number choose the names) and DIR/stats.json, and with --video pipes
 // the frames to ffmpeg as well (or instead, without -o). Frame i (1-based)
@@ -8,13 +8,14 @@
 // run: the K frames before the first frame written are rendered but not written,
 // to rebuild the temporal history. The history is a running average, so a split
 // frame converges to the whole run's rather than matching it bit for bit
-// (docs/paths.md states the measured difference). Frames already on disk are
-// skipped, so an interrupted run resumes: it re-renders from K frames before the
-// first missing one (history again) and writes only missing frames.
+// (docs/paths.md states the measured difference). Frames already on disk whole
+// and recorded in stats.json are skipped, so an interrupted run resumes: it
+// re-renders from K frames before the first missing one (history again) and
+// writes only missing frames.
 // DIR/flythrough.json records the settings so a resume never mixes sequences,
-// and DIR/stats.json keeps every run's frame times, merged by frame number
-// (app/flythrough_dir.h). Frames are read back and written while the next ones
-// render (app/frame_writer.h).
+// and DIR/stats.json keeps every run's frame times, merged by frame number as
+// frames are written (app/flythrough_dir.h). Frames are read back and written
+// while the next ones render (app/frame_writer.h).
 #include "app/commands.h"
 #include "app/flythrough_dir.h"
 #include "app/frame_names.h"
@@ -57,6 +58,7 @@ struct Args {
                 aovs, exrType = "float", video;
     int fps = 24, startNumber = 1, pngLevel = kFlythroughPngLevel, videoQuality = kDefaultVideoQuality;
     std::optional<int> warmup;  // default: four times the temporal history
+    bool quiet = false;
     AoFlags ao;
     CLI::App* cmd = nullptr;
     bool given(const std::string& flag) const { return cmd->count(flag) > 0; }
@@ -130,15 +132,14 @@ void run(const Args& a) {
     const FrameNames names(a.name, a.startNumber, a.format);
     const FrameEncoding encoding{.pngLevel = a.pngLevel, .exrAovs = a.format == "exr" ? exrAovs(a) : std::vector<std::string>{},
                                  .exrHalf = a.exrType == "half"};
-    std::string ffmpeg;
+    std::optional<VideoTools> videoTools;
     if (!a.video.empty()) {
-        ffmpeg = findFfmpeg();
-        requireVideoSize(size.width, size.height);
-        requireOutputPath(a.video);
+        videoTools = findVideoTools();
+        requireVideoOutput(a.video, size.width, size.height);
     }
     voxel::World world = voxel::World::load(a.world);
     const voxel::CameraPathDesc desc = findCameraPath(world, a.path);
-    const CameraPath path(desc, world.camera(""));
+    const CameraPath path(desc, world.camera("", size.aspect()));
     const int count = pathFrameCount(path, a.fps, a.path);
     const FrameRange range = !a.chunk.empty()   ? parseChunk(a.chunk, count)
                              : a.frames.empty() ? FrameRange{1, count}
@@ -152,8 +153,8 @@ void run(const Args& a) {
     vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
     requireRenderFits(ctx, size.width, size.height, ao, "--size");
 
-    // Frames to write: those of the range not in DIR yet (complete frames are
-    // written atomically, so existing ones are whole). The video takes them all.
+    // Frames to write: those of the range not in DIR whole and recorded yet. The
+    // video takes them all.
     const fs::path dir = a.output;
     std::vector<int> missing;
     if (!a.output.empty()) {
@@ -168,15 +169,17 @@ void run(const Args& a) {
             requireSameRun(dir, runManifest(a, desc, ao, detail, names, encoding), names);
             removeAbandonedFiles(dir, names);
         }
-        earlierFrames(dir / "stats.json");  // a damaged stats file is refused now, not after rendering
-        for (int i = range.first; i <= range.last; ++i)
-            if (!fs::exists(dir / names.name(i))) missing.push_back(i);
+        missing = framesToWrite(dir, names, range.first, range.last, size.width, size.height);
         if (missing.empty() && a.video.empty()) {
             std::printf("all %d frames already in %s\n", range.count(), dir.c_str());
             return;
         }
     }
     const bool video = !a.video.empty();
+    if (video) {  // what killed runs left of this video
+        const fs::path target = a.video, videoDir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+        removeAbandonedTemporaries(videoDir, [&](const std::string& name) { return name == target.filename().string(); });
+    }
     // History: start K frames before the first frame to write. A split run's
     // history starts afresh where the whole run's is full; the difference
     // shrinks by (n-1)/n a frame (n = the history length, 16), so measured at
@@ -185,7 +188,8 @@ void run(const Args& a) {
     const int warmup = a.warmup.value_or(4 * int(ao.gtao.temporalHistory));
     const int first = video ? range.first : missing.front(), end = video ? range.last : missing.back();
     const int start = std::max(1, first - warmup);
-    std::vector<json> rendered;  // this run's frame entries
+    std::optional<StatsRecorder> stats;  // this run's frame entries
+    if (!a.output.empty()) stats.emplace(dir);
     // The world as the path's edits have made it by the first frame rendered;
     // later edits are applied as their frames come. Objects are drawn at each frame's poses.
     const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
@@ -196,12 +200,13 @@ void run(const Args& a) {
     edits.applyUpTo(double(start - 1) / a.fps, *scene);
     {
         std::optional<VideoPipe> pipe;
-        if (video) pipe.emplace(ffmpeg, a.video, size.width, size.height, a.fps, a.videoQuality, range.first);
+        if (video) pipe.emplace(*videoTools, a.video, size.width, size.height, a.fps, a.videoQuality, range.first);
         const bool exr = a.format == "exr";
         FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(size, ao, encoding, exr)));
         Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height, objects.get());
         renderer.setCulling(cullingOptions(detail));
-        Progress progress(end - start + 1, stdout);
+        std::optional<Progress> progress;
+        if (!a.quiet) progress.emplace(end - start + 1, stdout);
         for (int i = start; i <= end; ++i) {
             const double time = double(i - 1) / a.fps;
             const Camera camera = path.camera(time, size.width, size.height);
@@ -211,33 +216,35 @@ void run(const Args& a) {
             const bool write = std::binary_search(missing.begin(), missing.end(), i);
             const bool toVideo = video && i >= range.first;
             FrameCopy* copy = (write || toVideo) ? &writer.slot() : nullptr;
-            const FrameStats stats = renderer.render(camera, uint32_t(i), copy);
+            const FrameStats frameStats = renderer.render(camera, uint32_t(i), copy);
+            json passMs = json::object();
+            for (const auto& [name, ms] : frameStats.passMs) passMs[name] = ms;
+            json entry = {{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", frameStats.wallMs}, {"pass_ms", passMs}};
             if (copy)
-                writer.submit(*copy, [&, i, camera, write, toVideo, file = write ? dir / names.name(i) : fs::path()](
-                                         const FrameImages& frame) {
+                writer.submit(*copy, [&, i, camera, write, toVideo, file = write ? dir / names.name(i) : fs::path(),
+                                      entry](const FrameImages& frame) {
                     std::vector<uint8_t> rgb = exr && !toVideo ? std::vector<uint8_t>() : srgb8Pixels(frame);
                     if (write && exr) writeFrame(file, frame, camera, encoding);
                     else if (write) writeSrgb8(file, frame.width, frame.height, rgb, &camera, encoding.pngLevel);
+                    if (write) stats->add(entry);  // recorded once it is on disk
                     if (toVideo) pipe->frame(i, std::move(rgb));
                 });
-            json passMs = json::object();
-            for (const auto& [name, ms] : stats.passMs) passMs[name] = ms;
-            rendered.push_back({{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", stats.wallMs},
-                                {"pass_ms", passMs}});
+            if (stats && !write) stats->add(entry);
+            if (stats) stats->mergeIfDue();
             char what[96];
             std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i,
-                          write ? "written" : toVideo ? "to video" : "warm-up", stats.wallMs);
-            progress.step(what);
+                          write ? "written" : toVideo ? "to video" : "warm-up", frameStats.wallMs);
+            if (progress) progress->step(what);
         }
         writer.finish();
         if (pipe) pipe->finish();
-        progress.finish();
+        if (progress) progress->finish();
     }
     scene.reset();
     objects.reset();
     requireNoValidationMessages(ctx);
-    if (!a.output.empty()) {
-        mergeStats(dir, rendered);
+    if (stats) {
+        stats->merge();
         std::printf("wrote %zu frames to %s (%d rendered, %d already there)\n", missing.size(), dir.c_str(),
                     end - start + 1, range.count() - int(missing.size()));
     }
@@ -277,10 +284,14 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->add_option("--aovs", args->aovs,
                     "EXR AOV layers, comma-separated: Z, N, albedo, AO, AO_raw, AO_spatial, AO_temporal, AO_history, "
                     "edges, shadow; or none (default: all)");
-    cmd->add_option("--video", args->video, "Also (or, without -o, only) encode the frames to this .mp4 with ffmpeg");
-    cmd->add_option("--video-quality", args->videoQuality, "x264 constant rate factor, 0 (best) to 51 (smallest)")
+    cmd->add_option("--video", args->video,
+                    std::string("Also (or, without -o, only) encode the frames to this video with ffmpeg: ") +
+                        kVideoExtensions + " (H.264, or VP9 for .webm)");
+    cmd->add_option("--video-quality", args->videoQuality,
+                    "Constant rate factor, 0 (best) to 51 (smallest): x264's, or VP9's for .webm")
         ->capture_default_str()
         ->check(wholeRange(0, 51));
+    cmd->add_flag("--quiet", args->quiet, "No progress lines, only the results");
     addAoFlags(cmd, args->ao);
     cmd->callback([args] { run(*args); });
 }

@@ -4,9 +4,11 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "common/file_lock.h"
+#include "common/json_text.h"
+#include "engine/image_output.h"
 
-#include <fstream>
-#include <sstream>
+#include <cmath>
+#include <optional>
 #include <vector>
 
 namespace grotto::app {
@@ -46,30 +48,79 @@ json pathManifest(const voxel::CameraPathDesc& p) {
 
 void writeJson(const fs::path& file, const json& j) {
     const std::string text = j.dump(2, ' ', false, json::error_handler_t::replace);
-    writeAtomically(file, [&](const fs::path& tmp) {
-        std::ofstream out(tmp);
-        out << text << "\n";
-        out.close();
-        if (!out) throw Error(file.string(), "write failed", "is the disk full?");
-    });
+    writeAtomically(file, text + "\n");
 }
 
-void requireSameRun(const fs::path& dir, const json& manifest, const FrameNames& names) {
-    const fs::path file = dir / "flythrough.json";
-    if (fs::exists(file)) {
-        std::ifstream in(file);
-        std::stringstream previous;
-        previous << in.rdbuf();
-        if (previous.str() != manifest.dump(2, ' ', false, json::error_handler_t::replace) + "\n")
-            throw Error(file.string(), "holds frames of a flythrough with other settings",
-                        "render into another directory, or delete this one to start over");
-        return;
+namespace {
+
+// A frame's entry in stats.json is well under 1 KiB: room for the longest path.
+constexpr size_t kMaxStatsBytes = size_t(1) << 30;
+
+// A JSON file the run keeps in its directory, null when it does not parse.
+// Anything but a regular file is refused (a FIFO would block the run), and so
+// is one nested past reason (common/json_text.h).
+json readDirectoryJson(const fs::path& file, const std::string& hint) {
+    json j = json::parse(readJsonText(file, hint, kMaxStatsBytes), nullptr, false);
+    return j.is_discarded() ? json() : j;
+}
+
+// The first setting in which two manifests differ, e.g. `size was "64x32", this run's is "32x16"`.
+std::string firstDifference(const json& was, const json& is, const std::string& at = "") {
+    auto shown = [](const json& j) {
+        std::string text = j.dump();
+        return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+    };
+    if (was.is_object() && is.is_object()) {
+        json keys = was;
+        keys.update(is);
+        for (const auto& [key, value] : keys.items()) {
+            const std::string name = at.empty() ? key : at + "." + key;
+            if (!was.contains(key)) return name + " was not set, this run's is " + shown(is[key]);
+            if (!is.contains(key)) return name + " was " + shown(was[key]) + ", this run has none";
+            if (was[key] != is[key]) return firstDifference(was[key], is[key], name);
+        }
+    }
+    if (was.is_array() && is.is_array() && was.size() == is.size())
+        for (size_t k = 0; k < was.size(); ++k)
+            if (was[k] != is[k]) return firstDifference(was[k], is[k], at + "[" + std::to_string(k) + "]");
+    return (at.empty() ? "the manifest" : at) + " was " + shown(was) + ", this run's is " + shown(is);
+}
+
+// Whether `dir` holds a frame by `names`, or by the names `previous` (a manifest) recorded.
+bool holdsFrames(const fs::path& dir, const FrameNames& names, const json& previous) {
+    std::optional<FrameNames> old;
+    try {
+        if (previous.is_object())
+            old.emplace(previous.value("name", std::string(kDefaultFramePattern)), previous.value("start_number", 1),
+                        previous.value("format", std::string("png")));
+    } catch (const std::exception&) {  // a damaged manifest: its frames are found by the default names
     }
     for (const auto& entry : fs::directory_iterator(dir)) {
         const std::string name = entry.path().filename().string();
-        if (name.rfind("frame.", 0) == 0 || names.matches(name))
-            throw Error(dir.string(), "already holds frames but no flythrough.json saying how they were made",
-                        "render into another directory");
+        if (name.rfind("frame.", 0) == 0 || names.matches(name) || (old && old->matches(name))) return true;
+    }
+    return false;
+}
+
+}  // namespace
+
+void requireSameRun(const fs::path& dir, const json& manifest, const FrameNames& names) {
+    const fs::path file = dir / "flythrough.json";
+    const std::string hint = "render into another directory, or delete this one to start over";
+    if (fs::exists(file)) {
+        const json previous = readDirectoryJson(file, hint);
+        if (previous == manifest) return;
+        if (holdsFrames(dir, names, previous))
+            throw Error(file.string(), "holds frames made with other settings: " +
+                                           (previous.is_object() ? firstDifference(previous, manifest) : "it does not parse"),
+                        hint);
+        // No frames: a run refused or killed before its first one left the
+        // manifest (and maybe stats of frames since deleted). Start afresh.
+        std::error_code ec;
+        fs::remove(dir / "stats.json", ec);
+    } else if (holdsFrames(dir, names, json())) {
+        throw Error(dir.string(), "already holds frames but no flythrough.json saying how they were made",
+                    "render into another directory");
     }
     writeJson(file, manifest);
 }
@@ -82,23 +133,38 @@ void removeAbandonedFiles(const fs::path& dir, const FrameNames& names) {
 
 std::map<int, json> earlierFrames(const fs::path& file) {
     std::map<int, json> frames;
-    if (!fs::exists(file)) return frames;
-    std::ifstream in(file);
-    const json doc = json::parse(in, nullptr, false);
     const std::string hint = "delete it to start the stats afresh";
-    if (doc.is_discarded() || !doc.is_object() || !doc.contains("frames") || !doc["frames"].is_array())
+    if (!fs::exists(file)) return frames;
+    const json doc = readDirectoryJson(file, hint);
+    if (!doc.is_object() || !doc.contains("frames") || !doc["frames"].is_array())
         throw Error(file.string(), "is not a flythrough stats file (no \"frames\" array)", hint);
+    // Times are finite and not negative: medians of them stay numbers.
+    auto isTime = [](const json& ms) { return ms.is_number() && std::isfinite(ms.get<double>()) && ms.get<double>() >= 0.0; };
     for (size_t k = 0; k < doc["frames"].size(); ++k) {
         const json& f = doc["frames"][k];
         bool ok = f.is_object() && f.contains("frame") && f["frame"].is_number_integer() && f.contains("wall_ms") &&
-                  f["wall_ms"].is_number() && f.contains("pass_ms") && f["pass_ms"].is_object() &&
-                  f.contains("written") && f["written"].is_boolean();
+                  isTime(f["wall_ms"]) && f.contains("pass_ms") && f["pass_ms"].is_object() && f.contains("written") &&
+                  f["written"].is_boolean();
         if (ok)
-            for (const auto& [name, ms] : f["pass_ms"].items()) ok = ok && ms.is_number();
+            for (const auto& [name, ms] : f["pass_ms"].items()) ok = ok && isTime(ms);
         if (!ok)
             throw Error(file.string(), "frames[" + std::to_string(k) + "] is not a frame entry",
-                        "expected {\"frame\", \"written\", \"wall_ms\", \"pass_ms\"}; " + hint);
+                        "expected {\"frame\", \"written\", \"wall_ms\", \"pass_ms\"}, times in milliseconds (finite, "
+                        "not negative); " + hint);
         frames[f["frame"].get<int>()] = f;
+    }
+    return frames;
+}
+
+std::vector<int> framesToWrite(const fs::path& dir, const FrameNames& names, int first, int last, uint32_t width,
+                               uint32_t height) {
+    const std::map<int, json> recorded = earlierFrames(dir / "stats.json");
+    std::vector<int> frames;
+    for (int i = first; i <= last; ++i) {
+        const auto entry = recorded.find(i);
+        const bool done = entry != recorded.end() && entry->second["written"].get<bool>() &&
+                          imageDecodes(dir / names.name(i), width, height);
+        if (!done) frames.push_back(i);
     }
     return frames;
 }
@@ -132,6 +198,25 @@ void mergeStats(const fs::path& dir, const std::vector<json>& entries) {
     std::map<int, json> frames = earlierFrames(dir / "stats.json");
     for (const json& entry : entries) mergeFrame(frames, entry);
     writeJson(dir / "stats.json", statsJson(frames));
+}
+
+void StatsRecorder::add(json entry) {
+    std::lock_guard lock(mutex_);
+    added_.push_back(std::move(entry));
+}
+
+void StatsRecorder::mergeIfDue() {
+    if (std::chrono::steady_clock::now() - last_ >= kInterval) merge();
+}
+
+void StatsRecorder::merge() {
+    std::vector<json> entries;
+    {
+        std::lock_guard lock(mutex_);
+        entries.swap(added_);
+    }
+    last_ = std::chrono::steady_clock::now();
+    if (!entries.empty()) mergeStats(dir_, entries);
 }
 
 }  // namespace grotto::app

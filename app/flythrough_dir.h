@@ -9,9 +9,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <chrono>
 #include <filesystem>
 #include <map>
+#include <mutex>
 #include <string>
+#include <vector>
 
 namespace grotto::app {
 
@@ -23,8 +26,10 @@ nlohmann::json pathManifest(const voxel::CameraPathDesc& path);
 
 // Frames already in `dir` are kept only when they came from the same settings,
 // recorded in dir/flythrough.json; otherwise (or when frames `names` matches are
-// there with no manifest) throws grotto::Error (input). Writes the manifest when
-// there is none. Call with the lock held.
+// there with no manifest) throws grotto::Error (input) naming the first setting
+// that differs. Writes the manifest when there is none, or when the directory
+// holds no frames (a run refused or killed before its first frame left it; the
+// stats go with it). Call with the lock held.
 void requireSameRun(const std::filesystem::path& dir, const nlohmann::json& manifest, const FrameNames& names);
 
 // Removes what killed runs left: temporaries of frames, stats and manifest.
@@ -35,6 +40,13 @@ void removeAbandonedFiles(const std::filesystem::path& dir, const FrameNames& na
 // before rendering, so a damaged file is refused before anything is written.
 std::map<int, nlohmann::json> earlierFrames(const std::filesystem::path& file);
 
+// The frames from `first` to `last` a run writes: all but those in `dir` whole
+// (decoding as width x height images) and marked written in its stats, so a
+// frame a failed write damaged, or one whose run was killed before it recorded
+// the frame, is written again. Throws as earlierFrames.
+std::vector<int> framesToWrite(const std::filesystem::path& dir, const FrameNames& names, int first, int last,
+                               uint32_t width, uint32_t height);
+
 // This run's entry replaces an earlier one of the same frame, except that a
 // warm-up render keeps the entry of the run that wrote the frame.
 void mergeFrame(std::map<int, nlohmann::json>& frames, const nlohmann::json& entry);
@@ -42,6 +54,24 @@ void mergeFrame(std::map<int, nlohmann::json>& frames, const nlohmann::json& ent
 // Merges `entries` into DIR/stats.json as it is now (other chunks may have
 // written it since this run read it), with the lock held; written atomically.
 void mergeStats(const std::filesystem::path& dir, const std::vector<nlohmann::json>& entries);
+
+// A run's frame entries, merged into DIR/stats.json while it renders (every
+// kInterval at most) and at its end, so a run that is killed loses the entries
+// of its last seconds only: the next run writes those frames again.
+class StatsRecorder {
+public:
+    static constexpr std::chrono::seconds kInterval{5};
+    explicit StatsRecorder(std::filesystem::path dir) : dir_(std::move(dir)) {}
+    void add(nlohmann::json entry);  // any thread: a written frame's entry once the frame is on disk
+    void mergeIfDue();               // merges what was added when kInterval has passed since the last merge
+    void merge();
+
+private:
+    std::filesystem::path dir_;
+    std::mutex mutex_;
+    std::vector<nlohmann::json> added_;
+    std::chrono::steady_clock::time_point last_ = std::chrono::steady_clock::now();
+};
 
 // A JSON file written atomically.
 void writeJson(const std::filesystem::path& file, const nlohmann::json& j);

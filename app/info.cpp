@@ -4,16 +4,46 @@
 #include "common/printable.h"
 #include "engine/scene.h"
 #include "voxel/live_mesh.h"
+#include "voxel/object_worlds.h"
 #include "voxel/world.h"
 
 #include <algorithm>
 #include <cstdio>
 
 namespace grotto::app {
+namespace {
+
+// "generator box 1x10x6, material 4", "generator caves (seed 1, size 64)" or "grid FILE (name N, rule R)".
+std::string objectSource(const voxel::ObjectDesc& o) {
+    char line[160];
+    if (o.generator == "box")
+        std::snprintf(line, sizeof line, "generator box %dx%dx%d, material %d", o.boxSize.x, o.boxSize.y, o.boxSize.z, o.material);
+    else if (!o.generator.empty())
+        std::snprintf(line, sizeof line, "generator %s (seed %u, size %d)", o.generator.c_str(), o.generatorOptions.seed,
+                      o.generatorOptions.size);
+    else
+        return "grid " + o.gridFile.string() + " (" + (o.gridName.empty() ? "" : "name " + o.gridName + ", ") + "rule " +
+               voxel::solidRuleName(o.rule) + ")";
+    return line;
+}
+
+// "moves: 2 keys over 0 to 1.4 s" or "still at (x y z)".
+std::string objectMotion(const voxel::ObjectDesc& o) {
+    char line[160];
+    if (o.moves())
+        std::snprintf(line, sizeof line, "moves: %zu keys from %g to %g s", o.keys.size(), o.keys.front().time,
+                      o.keys.back().time);
+    else
+        std::snprintf(line, sizeof line, "still at (%g %g %g)", o.keys.front().position.x, o.keys.front().position.y,
+                      o.keys.front().position.z);
+    return line;
+}
+
+}  // namespace
 
 void addInfoCommand(CLI::App& app) {
     auto world = std::make_shared<std::string>();
-    CLI::App* cmd = app.add_subcommand("info", "Print a world's voxels, bricks, quads, memory, bounds, cameras, paths and materials");
+    CLI::App* cmd = app.add_subcommand("info", "Print a world's voxels, bricks, quads, memory, bounds, cameras, paths, objects and materials");
     cmd->add_option("world", *world, "World .json or .vdb")->required();
     cmd->callback([world] {
         const voxel::World w = voxel::World::load(*world);
@@ -57,6 +87,19 @@ void addInfoCommand(CLI::App& app) {
             const size_t cuts = size_t(std::count_if(p.keys.begin(), p.keys.end(), [](const voxel::PathKey& k) { return k.cut; }));
             std::printf("path           %s: %zu keys over %g s, %zu shot%s\n", printable(name).c_str(), p.keys.size(),
                         p.keys.empty() ? 0.0 : p.keys.back().time, cuts + 1, cuts ? "s" : "");
+        }
+        // Each object as loaded (or generated): where its voxels come from, how many, and how it moves.
+        const std::vector<voxel::World> objects = voxel::loadObjectWorlds(d);
+        if (objects.empty()) std::printf("objects        none\n");
+        for (size_t i = 0; i < objects.size(); ++i) {
+            const voxel::ObjectDesc& o = d.objects[i];
+            const voxel::IndexBox ob = objects[i].bounds();
+            const glm::dvec3 olo = objects[i].origin() + glm::dvec3(ob.min) * objects[i].voxelSize();
+            const glm::dvec3 ohi = objects[i].origin() + glm::dvec3(ob.max + 1) * objects[i].voxelSize();
+            std::printf("object         %s: %s, %llu voxels, own bounds (%g %g %g)..(%g %g %g), %s\n",
+                        printable(o.name).c_str(), printable(objectSource(o)).c_str(),
+                        (unsigned long long)objects[i].stats().solidVoxels, olo.x, olo.y, olo.z, ohi.x, ohi.y, ohi.z,
+                        objectMotion(o).c_str());
         }
         for (size_t i = 0; i < d.materials.size(); ++i) {
             const voxel::Material& m = d.materials[i];

@@ -1,8 +1,10 @@
 #include "app/options.h"
 
 #include "common/error.h"
+#include "engine/path_edits.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -10,11 +12,20 @@
 namespace grotto::app {
 
 Size parseSize(const std::string& text, const std::string& option) {
-    unsigned w = 0, h = 0;
-    char extra = 0;
-    if (std::sscanf(text.c_str(), "%ux%u%c", &w, &h, &extra) != 2 || w < 1 || h < 1 || w > 16384 || h > 16384)
+    // Digits only, read without wrapping: sscanf's %u would take 4294967297 as 1 and -1 as 4294967295.
+    auto side = [](const char* first, const char* last, uint32_t& v) {
+        uint64_t n = 0;
+        const auto [end, error] = std::from_chars(first, last, n);
+        const bool whole = first != last && end == last && error == std::errc();
+        v = whole && n >= 1 && n <= 16384 ? uint32_t(n) : 0;
+        return v != 0;
+    };
+    const size_t x = text.find('x');
+    Size s;
+    if (x == std::string::npos || !side(text.data(), text.data() + x, s.width) ||
+        !side(text.data() + x + 1, text.data() + text.size(), s.height))
         throw Error(option, "'" + text + "' is not a valid size", "expected WxH with both in 1..16384, e.g. 1280x720");
-    return {w, h};
+    return s;
 }
 
 FrameRange parseFrameRange(const std::string& text, int count, const std::string& option) {
@@ -151,7 +162,9 @@ nlohmann::json aoSettingsJson(const AoOptions& ao) {
     return j;
 }
 
-voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name) {
+namespace {
+
+voxel::CameraPathDesc lookUpCameraPath(const voxel::World& world, const std::string& name) {
     const auto& paths = world.desc().paths;
     if (auto it = paths.find(name); it != paths.end()) return it->second;
     std::string known;
@@ -166,6 +179,14 @@ voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::strin
         throw Error(name, "no such path file in the current directory or beside " + world.desc().source.string(), hint);
     }
     throw Error(world.desc().source.string(), "has no path named '" + name + "'", hint);
+}
+
+}  // namespace
+
+voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name) {
+    voxel::CameraPathDesc path = lookUpCameraPath(world, name);
+    checkPathEdits(path, world);
+    return path;
 }
 
 CLI::Validator finiteRange(double min, double max) {
@@ -201,7 +222,7 @@ double median(std::vector<double> v) {
     if (v.empty()) return 0.0;
     std::sort(v.begin(), v.end());
     const size_t m = v.size() / 2;
-    return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
+    return v.size() % 2 ? v[m] : 0.5 * v[m - 1] + 0.5 * v[m];  // halves first: the sum of two large values overflows
 }
 
 void requireNoValidationMessages(const vk::Context& ctx) {

@@ -18,6 +18,7 @@ namespace grotto::app {
 
 struct Size {
     uint32_t width = 0, height = 0;
+    double aspect() const { return double(width) / double(height); }
 };
 
 // "WxH" with both in 1..16384; throws grotto::Error (input) naming the option.
@@ -45,8 +46,9 @@ inline constexpr int64_t kMaxPathFrames = 1'000'000;
 // path's duration when there would be more than kMaxPathFrames.
 int pathFrameCount(const CameraPath& path, int fps, const std::string& name);
 
-// A path named in the world file, or a path .json given directly; throws
-// grotto::Error (input) listing the world's paths when there is no such one.
+// A path named in the world file, or a path .json given directly, with its edits
+// checked against the world (checkPathEdits); throws grotto::Error (input)
+// listing the world's paths when there is no such one.
 voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name);
 
 // The AO flags every rendering subcommand takes, with the level-of-detail ones;

@@ -59,7 +59,7 @@ void addReferenceCommand(CLI::App& app) {
             throw Error(out.string(), "the reference needs an .exr output", "it holds the float channels AO and AO_stderr");
         requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
-        const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         // R is the radius GTAO is given (before its radius multiplier), so both measure the same thing.
         const double radius = double(resolveAo(world, args->ao).gtao.radius);
 

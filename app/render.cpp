@@ -77,7 +77,7 @@ void addRenderCommand(CLI::App& app) {
             throw Error(out.string(), "--show needs a .png output", "EXR holds every AOV with --aov");
         requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
-        const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+        const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         AoOptions ao = resolveAo(world, args->ao);
         const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao);
         const bool aovs = args->aov || !args->show.empty();
@@ -91,9 +91,11 @@ void addRenderCommand(CLI::App& app) {
             renderer.setCulling(cullingOptions(resolveDetail(world, args->ao)));
             if (objects) renderer.setObjectPoses(objects->poses(args->time));  // held for every frame
             for (uint32_t i = 0; i < frames; ++i) renderer.render(camera, i);
-            FrameImages frame = renderer.readback(camera, aovs);
-            if (!args->show.empty()) showAov(frame, args->show);
-            writeFrame(out, frame, camera, args->aov);
+            const FrameImages frame = renderer.readback(camera, aovs);
+            if (!args->show.empty())
+                writeSrgb8(out, frame.width, frame.height, encodeSrgb8(aovDisplay(frame, args->show)), &camera);
+            else
+                writeFrame(out, frame, camera, args->aov);
         }
         scene.reset();
         objects.reset();

@@ -3,11 +3,13 @@
 // Renders a camera path and measures the temporal metrics (docs/metrics.md) at AO
 // resolution: flicker of the raw, spatial and temporal AO and of the reference,
 // error against the reference per frame, the ghosting curves (error over pixels
-// disoccluded within the last k frames, and at each age) and the cost per pass.
+// disoccluded within the last k frames, and at each age) and the cost per pass;
+// and of the final image: the flicker of its display colour and thumbnails of
+// some frames' colour (app/stability_baseline.h).
 // The reference is traced on pairs of consecutive frames, one pair every K
 // frames (K = 2: every frame). With --baseline, the flicker and error figures
-// are checked against an earlier run's (app/stability_baseline.h): exit code 3
-// when one regressed. A run that measured no surface pixels (sky only, an empty
+// and the colour of the thumbnailed frames are checked against an earlier run's
+// (app/stability_baseline.h): exit code 3 when one regressed. A run that measured no surface pixels (sky only, an empty
 // world, no pixel matching between frames) is refused, as is, up front, an AO
 // image under 8x8. A path with an "edits" track has them applied at their times;
 // the pixels near each edit are measured against references traced on the world
@@ -23,7 +25,9 @@
 #include "voxel/object_worlds.h"
 #include "engine/ao_metrics.h"
 #include "engine/camera_path.h"
+#include "engine/color_thumbnail.h"
 #include "engine/edit_metrics.h"
+#include "engine/image_output.h"
 #include "engine/live_scene.h"
 #include "engine/path_edits.h"
 #include "engine/render_memory.h"
@@ -37,7 +41,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <map>
 #include <optional>
 
@@ -192,7 +195,8 @@ void addStabilityCommand(CLI::App& app) {
         ->capture_default_str()->check(CLI::Range(2, 100000));
     cmd->add_option("--json", args->output, "Write the metrics to this JSON file")->required();
     cmd->add_option("--baseline", args->baseline,
-                    "An earlier run's --json: exit 3 if a flicker or error figure exceeds it by more than the tolerance");
+                    "An earlier run's --json: exit 3 if a flicker or error figure exceeds it, or the colour of its "
+                    "frames changed, by more than the tolerance");
     CLI::Option* baseline = cmd->get_option("--baseline");
     cmd->add_option("--tolerance", args->tolerance.relative, "Relative tolerance against the baseline")
         ->capture_default_str()->check(finiteRange(0.0, 10.0))->needs(baseline);
@@ -206,7 +210,7 @@ void addStabilityCommand(CLI::App& app) {
         requireOutputPath(out);
         voxel::World world = voxel::World::load(args->world);
         const voxel::CameraPathDesc pathDesc = findCameraPath(world, args->path);
-        const CameraPath path(pathDesc, world.camera(""));
+        const CameraPath path(pathDesc, world.camera("", size.aspect()));
         // Within the path: past its last key the camera stands still, which would flatter every metric.
         const int pathFrames = pathFrameCount(path, args->fps, args->path);
         const FrameRange range = args->frames.empty() ? FrameRange{1, pathFrames} : parseFrameRange(args->frames, pathFrames);
@@ -252,7 +256,8 @@ void addStabilityCommand(CLI::App& app) {
         std::vector<EditEvent> events;
         std::map<std::string, std::vector<double>> passMs;
         std::vector<double> wallMs, chainMs, temporalMs;
-        Mean flickerRaw, flickerSpatial, flickerTemporal, flickerReference;
+        Mean flickerRaw, flickerSpatial, flickerTemporal, flickerReference, flickerColor;
+        FrameThumbnails thumbnails;  // the display colour of some frames, for a later run to be compared with
         size_t matchedPixels = 0, referencePixels = 0;  // what the flicker and error figures were measured over
         std::map<int, std::pair<Mean, Mean>> ghosting;  // age -> temporal, spatial MAE
         json errors = json::array();
@@ -296,7 +301,10 @@ void addStabilityCommand(CLI::App& app) {
                     flickerRaw.add(flicker(now.raw, before.raw, match));
                     flickerSpatial.add(flicker(now.spatial, before.spatial, match));
                     flickerTemporal.add(flicker(now.temporal, before.temporal, match));
+                    flickerColor.add(colorFlicker(now, before, match));
                 }
+                if (keepsThumbnail(i, first, range.last))
+                    thumbnails.emplace_back(i, colorThumbnail(srgb8Pixels(frame), frame.width, frame.height));
                 // The sequence's first frame counts as disoccluded everywhere.
                 age = i > first ? disocclusionAge(match, age, now.world.size()) : std::vector<uint16_t>(now.world.size(), 0);
                 std::vector<float> reference;
@@ -399,6 +407,7 @@ void addStabilityCommand(CLI::App& app) {
         result["reference"].update({{"frames", errors.size()}, {"rays", rays}});
         result.update({{"flicker", {{"raw", flickerRaw.value()}, {"spatial", flickerSpatial.value()},
                                     {"temporal", flickerTemporal.value()}, {"reference", flickerReference.value()}}},
+                       {"color", {{"flicker", flickerColor.value()}, {"thumbnails", thumbnailsJson(thumbnails)}}},
                        {"error_mean", steady}, {"error_mean_from_frame", steadyFrom}, {"error", errors},
                        {"ghosting", ghostCurve}, {"cost_ms", cost}});
         if (!pathDesc.edits.empty()) {
@@ -420,14 +429,11 @@ void addStabilityCommand(CLI::App& app) {
             result["baseline"] = {{"file", args->baseline}, {"relative", args->tolerance.relative},
                                   {"absolute", args->tolerance.absolute}, {"checks", listed}};
         }
-        writeAtomically(out, [&](const std::filesystem::path& tmp) {
-            std::ofstream f(tmp);
-            f << result.dump(2) << "\n";
-            if (!f) throw Error(out.string(), "could not be written", "check free space");
-        });
+        writeAtomically(out, result.dump(2) + "\n");
         std::printf("flicker raw %.4f spatial %.4f temporal %.4f (%.2fx spatial) reference %.4f\n",
                     flickerRaw.value(), flickerSpatial.value(), flickerTemporal.value(),
                     flickerTemporal.value() / std::max(flickerSpatial.value(), 1e-12), flickerReference.value());
+        std::printf("display colour flicker %.4f (sRGB, over the same pixels)\n", flickerColor.value());
         std::printf("error vs reference (%zu frames from frame %d): spatial rmse %.4f psnr %.2f dB, temporal rmse %.4f psnr %.2f dB\n",
                     steadyFrames, steadyFrom, meanError("spatial", "rmse"), meanError("spatial", "psnr"),
                     meanError("temporal", "rmse"), meanError("temporal", "psnr"));

@@ -15,7 +15,6 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <fstream>
 #include <map>
 #include <string>
 #include <tuple>
@@ -56,12 +55,9 @@ bool onPath(const std::string& tool) {
 template <class R>
 void writeRows(const std::filesystem::path& file, const std::string& header, const std::vector<R>& rows,
                std::string (*line)(const R&)) {
-    writeAtomically(file, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp);
+    writeAtomically(file, [&](std::ostream& out) {
         out << header;
         for (const R& r : rows) out << line(r);
-        out.close();
-        if (!out) throw Error(file.string(), "write failed", "is the disk full?");
     });
 }
 
@@ -92,7 +88,7 @@ struct LodRow {
     std::string world, camera;
     double bias = 0.0;
     AoMeasurement m;
-    double colourPsnr = 0.0;    // of the final linear colour against bias 0's (+inf: identical)
+    double colourPsnr = 0.0;    // of the displayed colour (tone-mapped, before sRGB encoding) against bias 0's (+inf: identical)
     double aoPsnrChange = 0.0;  // AO PSNR against the reference, minus bias 0's
 };
 
@@ -158,28 +154,29 @@ void writePlot(const std::filesystem::path& file, const std::vector<Row>& rows, 
         if (it == presets.end()) it = presets.insert(presets.end(), {r.quality, 0.0, 0.0});
         std::get<1>(*it) += r.m.ao.ms / worlds, std::get<2>(*it) += r.m.error.rmse / worlds;
     }
-    writeAtomically(file, [&](const std::filesystem::path& tmp) {
-        std::string script = "set terminal pngcairo size 900,600\nset output '" + tmp.string() + "'\n"
-                             "set xlabel 'AO chain ms (wall time over the frame without AO; median, mean over worlds)'\n"
-                             "set ylabel 'RMSE against the reference (mean over worlds)'\n"
-                             "set title 'AO error against cost'\nset grid\nset key top right\n";
-        std::string plot = "plot", data;
-        int index = 0;
-        for (const auto& [method, presets] : mean) {
-            data += "$m" + std::to_string(index) + " << EOD\n";
-            for (const auto& [label, ms, rmse] : presets)
-                data += std::to_string(ms) + " " + std::to_string(rmse) + " " + label + "\n";
-            data += "EOD\n";
-            plot += std::string(index ? "," : "") + " $m" + std::to_string(index) + " using 1:2 with linespoints pt 7 title '" +
-                    method + "', $m" + std::to_string(index) + " using 1:2:3 with labels offset 1,0.6 font ',8' notitle";
-            ++index;
-        }
-        FILE* gp = popen("gnuplot", "w");
-        if (!gp) throw Error::internal("gnuplot", "could not be started");
-        const std::string all = script + data + plot + "\n";
-        std::fwrite(all.data(), 1, all.size(), gp);
-        if (pclose(gp) != 0) throw Error::internal("gnuplot", "failed drawing " + file.string(), "its message is above");
-    });
+    // gnuplot writes the image itself: committed once it has succeeded.
+    PendingFile image(file);
+    std::string script = "set terminal pngcairo size 900,600\nset output '" + image.tmp().string() + "'\n"
+                         "set xlabel 'AO chain ms (wall time over the frame without AO; median, mean over worlds)'\n"
+                         "set ylabel 'RMSE against the reference (mean over worlds)'\n"
+                         "set title 'AO error against cost'\nset grid\nset key top right\n";
+    std::string plot = "plot", data;
+    int index = 0;
+    for (const auto& [method, presets] : mean) {
+        data += "$m" + std::to_string(index) + " << EOD\n";
+        for (const auto& [label, ms, rmse] : presets)
+            data += std::to_string(ms) + " " + std::to_string(rmse) + " " + label + "\n";
+        data += "EOD\n";
+        plot += std::string(index ? "," : "") + " $m" + std::to_string(index) + " using 1:2 with linespoints pt 7 title '" +
+                method + "', $m" + std::to_string(index) + " using 1:2:3 with labels offset 1,0.6 font ',8' notitle";
+        ++index;
+    }
+    FILE* gp = popen("gnuplot", "w");
+    if (!gp) throw Error::internal("gnuplot", "could not be started");
+    const std::string all = script + data + plot + "\n";
+    std::fwrite(all.data(), 1, all.size(), gp);
+    if (pclose(gp) != 0) throw Error::internal("gnuplot", "failed drawing " + file.string(), "its message is above");
+    image.commit();
 }
 
 // The world's AO setting at bias 0 and at each of `biases`, each against the exact
@@ -259,14 +256,14 @@ void addTradeoffCommand(CLI::App& app) {
         }
         std::vector<voxel::World> worlds;
         for (const std::string& w : args->worlds) worlds.push_back(voxel::World::load(w));
-        for (const voxel::World& w : worlds) w.camera(args->camera);  // a missing camera fails now
+        for (const voxel::World& w : worlds) w.camera(args->camera, size.aspect());  // a missing camera fails now
 
         vk::Context ctx;
         std::vector<Row> rows;
         std::vector<LodRow> lodRows;
         for (const voxel::World& world : worlds) {
             const std::string name = world.desc().source.stem().string();
-            const Camera camera = makeCamera(world.camera(args->camera), size.width, size.height);
+            const Camera camera = worldCamera(world, args->camera, size.width, size.height);
             // R is GTAO's radius before its multiplier, as for `grotto reference`.
             const double radius = double(resolveAo(world, {}).gtao.radius);
             requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing

@@ -56,7 +56,7 @@ void addTuneCommand(CLI::App& app) {
         std::vector<Target> targets;
         for (const voxel::World& world : worlds) {
             Target t{world.desc().source.stem().string(), &world,
-                     makeCamera(world.camera(args->camera), size.width, size.height), {}, {}};
+                     worldCamera(world, args->camera, size.width, size.height), {}, {}};
             requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing
             t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).gtao.radius), uint32_t(args->spp), &ctx);
             requireSurface(t.reference, world, args->camera);

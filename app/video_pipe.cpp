@@ -3,15 +3,19 @@
 #include "common/error.h"
 
 #include <fcntl.h>
+#include <poll.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <sstream>
+#include <thread>
 
 extern char** environ;
 
@@ -19,29 +23,130 @@ namespace grotto::app {
 
 namespace fs = std::filesystem;
 
-std::string findFfmpeg(const std::string& option) {
+namespace {
+
+// A program's absolute path, found on PATH; empty when it is not there.
+std::string onPath(const std::string& program) {
     const char* path = std::getenv("PATH");
     std::stringstream dirs(path ? path : "/usr/bin:/bin");
     for (std::string dir; std::getline(dirs, dir, ':');) {
-        const fs::path candidate = fs::path(dir.empty() ? "." : dir) / "ffmpeg";
+        const fs::path candidate = fs::path(dir.empty() ? "." : dir) / program;
         std::error_code ec;
         if (fs::is_regular_file(candidate, ec) && access(candidate.c_str(), X_OK) == 0)
             return fs::absolute(candidate).string();
     }
-    throw Error(option, "needs ffmpeg, which is not on PATH",
-                "install it with apt-get install ffmpeg, or run scripts/setup.sh as root");
+    return {};
 }
 
-void requireVideoSize(uint32_t width, uint32_t height, const std::string& option) {
-    if (width % 2 == 0 && height % 2 == 0) return;
-    throw Error(option, "needs an even width and height (yuv420p), not " + std::to_string(width) + "x" + std::to_string(height),
-                "choose --size with even numbers, e.g. " + std::to_string(width + width % 2) + "x" +
-                    std::to_string(height + height % 2));
+// How long ffmpeg may take to accept a write, or to finish once its input ends.
+int videoTimeoutSeconds() {
+    constexpr int kDefault = 300, kMost = 86400;
+    const char* text = std::getenv("GROTTO_VIDEO_TIMEOUT");
+    if (!text || !*text) return kDefault;
+    char* end = nullptr;
+    errno = 0;
+    const long seconds = std::strtol(text, &end, 10);
+    if (errno != 0 || *end != '\0' || seconds < 1 || seconds > kMost)
+        throw Error("GROTTO_VIDEO_TIMEOUT", "'" + std::string(text) + "' is not a number of seconds",
+                    "accepted: a whole number from 1 to " + std::to_string(kMost));
+    return int(seconds);
 }
 
-VideoPipe::VideoPipe(const std::string& ffmpeg, const fs::path& target, uint32_t width, uint32_t height, int fps,
-                     int crf, int first)
-    : target_(target), file_(target), frameBytes_(size_t(width) * height * 3), next_(first) {
+// The container ffmpeg writes for an extension, and whether it holds VP9 rather than H.264.
+struct Container {
+    const char* extension;
+    const char* muxer;
+    bool vp9;
+};
+constexpr Container kContainers[] = {{".mp4", "mp4", false}, {".mov", "mov", false}, {".mkv", "matroska", false},
+                                     {".webm", "webm", true}};
+
+const Container* containerFor(const fs::path& target) {
+    std::string ext = target.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    for (const Container& c : kContainers)
+        if (ext == c.extension) return &c;
+    return nullptr;
+}
+
+// Starts `args` with stdin, stdout and stderr on these descriptors (-1: /dev/null)
+// and SIGPIPE at its default; throws grotto::Error (internal) naming `target`.
+pid_t spawn(const std::vector<std::string>& args, int in, int out, int err, const fs::path& target) {
+    std::vector<char*> argv;
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    const int fds[3] = {in, out, err};
+    for (int k = 0; k < 3; ++k) {
+        if (fds[k] >= 0) posix_spawn_file_actions_adddup2(&actions, fds[k], k);
+        else posix_spawn_file_actions_addopen(&actions, k, "/dev/null", k == 0 ? O_RDONLY : O_WRONLY, 0);
+    }
+    posix_spawnattr_t attr;
+    posix_spawnattr_init(&attr);
+    sigset_t none, pipeSignal;
+    sigemptyset(&none);
+    sigemptyset(&pipeSignal);
+    sigaddset(&pipeSignal, SIGPIPE);
+    posix_spawnattr_setsigmask(&attr, &none);
+    posix_spawnattr_setsigdefault(&attr, &pipeSignal);  // the usual SIGPIPE, whatever grotto does with it
+    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+    pid_t pid = -1;
+    const int spawned = posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), environ);
+    posix_spawn_file_actions_destroy(&actions);
+    posix_spawnattr_destroy(&attr);
+    if (spawned != 0) throw Error::internal(target.string(), "cannot start " + args[0] + ": " + std::strerror(spawned));
+    return pid;
+}
+
+// Waits up to `seconds` for `pid` to exit, and kills it when it has not by then.
+// Its exit status; -1 when a signal ended it, kTimedOut when it ran out of time.
+constexpr int kTimedOut = -2;
+int waitFor(pid_t pid, int seconds) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(seconds);
+    int status = 0;
+    for (;;) {
+        const pid_t done = waitpid(pid, &status, WNOHANG);
+        if (done == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+        if (done < 0 && errno != EINTR) return -1;
+        if (std::chrono::steady_clock::now() >= deadline) {
+            kill(pid, SIGKILL);
+            while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+            }
+            return kTimedOut;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+}
+
+}  // namespace
+
+VideoTools findVideoTools(const std::string& option) {
+    VideoTools tools{onPath("ffmpeg"), onPath("ffprobe"), videoTimeoutSeconds()};
+    if (tools.ffmpeg.empty() || tools.ffprobe.empty())
+        throw Error(option, std::string("needs ") + (tools.ffmpeg.empty() ? "ffmpeg" : "ffprobe") + ", which is not on PATH",
+                    "install it with apt-get install ffmpeg, or run scripts/setup.sh as root");
+    return tools;
+}
+
+void requireVideoOutput(const fs::path& target, uint32_t width, uint32_t height, const std::string& option) {
+    if (!containerFor(target))
+        throw Error(option, "cannot write a video as '" + target.extension().string() + "'",
+                    std::string("accepted extensions: ") + kVideoExtensions);
+    if (width % 2 != 0 || height % 2 != 0)
+        throw Error(option,
+                    "needs an even width and height (yuv420p), not " + std::to_string(width) + "x" + std::to_string(height),
+                    "choose --size with even numbers, e.g. " + std::to_string(width + width % 2) + "x" +
+                        std::to_string(height + height % 2));
+    requireOutputPath(target);
+}
+
+VideoPipe::VideoPipe(const VideoTools& tools, const fs::path& target, uint32_t width, uint32_t height, int fps, int crf,
+                     int first)
+    : target_(target), tools_(tools), file_(target),
+      frameBytes_(size_t(width) * height * 3), timeoutSeconds_(tools.timeoutSeconds), first_(first), next_(first) {
+    const Container* container = containerFor(target);
+    if (!container) throw Error::internal(target.string(), "not a video extension");
     // A write to a pipe whose reader has gone raises SIGPIPE, which would end
     // grotto without a word: ignored while the pipe is open, write() reports EPIPE.
     struct sigaction ignore {};
@@ -57,65 +162,48 @@ VideoPipe::VideoPipe(const std::string& ffmpeg, const fs::path& target, uint32_t
         throw Error::internal(target.string(), std::string("cannot start ffmpeg: ") + std::strerror(errno));
     }
     const std::string size = std::to_string(width) + "x" + std::to_string(height);
-    const std::vector<std::string> args = {
-        ffmpeg, "-hide_banner", "-loglevel", "error", "-nostdin", "-f", "rawvideo", "-pixel_format", "rgb24",
-        "-video_size", size, "-framerate", std::to_string(fps), "-i", "pipe:0", "-an", "-c:v", "libx264",
-        "-crf", std::to_string(crf), "-vf", "scale=out_color_matrix=bt709:out_range=tv,format=yuv420p",
-        "-colorspace", "bt709", "-color_primaries", "bt709", "-color_trc", "bt709", "-color_range", "tv",
-        "-movflags", "+faststart", "-f", "mp4", "-y", file_.tmp().string()};
-    std::vector<char*> argv;
-    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
-    argv.push_back(nullptr);
-
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_adddup2(&actions, fds[0], 0);
-    posix_spawn_file_actions_addopen(&actions, 1, "/dev/null", O_WRONLY, 0);
-    posix_spawn_file_actions_adddup2(&actions, fileno(log_), 2);
-    posix_spawnattr_t attr;
-    posix_spawnattr_init(&attr);
-    sigset_t none, pipeSignal;
-    sigemptyset(&none);
-    sigemptyset(&pipeSignal);
-    sigaddset(&pipeSignal, SIGPIPE);
-    posix_spawnattr_setsigmask(&attr, &none);
-    posix_spawnattr_setsigdefault(&attr, &pipeSignal);  // ffmpeg gets the usual SIGPIPE
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-    const int spawned = posix_spawn(&child_, ffmpeg.c_str(), &actions, &attr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    posix_spawnattr_destroy(&attr);
-    close(fds[0]);
-    if (spawned != 0) {
+    std::vector<std::string> args = {tools.ffmpeg, "-hide_banner", "-loglevel", "error", "-nostdin", "-f", "rawvideo",
+                                     "-pixel_format", "rgb24", "-video_size", size, "-framerate", std::to_string(fps),
+                                     "-i", "pipe:0", "-an"};
+    const std::vector<std::string> codec =
+        container->vp9 ? std::vector<std::string>{"-c:v", "libvpx-vp9", "-crf", std::to_string(crf), "-b:v", "0",
+                                                  "-row-mt", "1", "-deadline", "good", "-cpu-used", "4"}
+                       : std::vector<std::string>{"-c:v", "libx264", "-crf", std::to_string(crf)};
+    args.insert(args.end(), codec.begin(), codec.end());
+    for (const char* a : {"-vf", "scale=out_color_matrix=bt709:out_range=tv,format=yuv420p", "-colorspace", "bt709",
+                          "-color_primaries", "bt709", "-color_trc", "bt709", "-color_range", "tv"})
+        args.push_back(a);
+    if (std::string(container->muxer) == "mp4" || std::string(container->muxer) == "mov")
+        args.insert(args.end(), {"-movflags", "+faststart"});
+    args.insert(args.end(), {"-f", container->muxer, "-y", file_.tmp().string()});
+    try {
+        child_ = spawn(args, fds[0], -1, fileno(log_), target);
+    } catch (...) {
+        close(fds[0]);
         close(fds[1]);
         std::fclose(log_);
         sigaction(SIGPIPE, &oldPipe_, nullptr);
-        throw Error::internal(target.string(), "cannot start " + ffmpeg + ": " + std::strerror(spawned));
+        throw;
     }
+    close(fds[0]);
     input_ = fds[1];
+    fcntl(input_, F_SETFL, fcntl(input_, F_GETFL) | O_NONBLOCK);  // writes wait in poll, for a bounded time
 }
 
 VideoPipe::~VideoPipe() {
     if (input_ >= 0) close(input_);
     if (child_ > 0) {
-        kill(child_, SIGTERM);
-        wait();
+        kill(child_, SIGKILL);
+        waitFor(child_, timeoutSeconds_);
     }
     if (log_) std::fclose(log_);
     sigaction(SIGPIPE, &oldPipe_, nullptr);
 }
 
-int VideoPipe::wait() {
-    int status = 0;
-    while (waitpid(child_, &status, 0) < 0 && errno == EINTR) {
-    }
-    child_ = -1;
-    return status_ = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
 void VideoPipe::failed(const std::string& what) {
     if (input_ >= 0) close(input_), input_ = -1;
-    const int status = child_ > 0 ? wait() : status_;
-    // The end of ffmpeg's messages, on one line.
+    if (child_ > 0) status_ = waitFor(child_, timeoutSeconds_), child_ = -1;
+    // The end of ffmpeg's (and ffprobe's) messages, on one line.
     std::string tail;
     std::fflush(log_);
     std::rewind(log_);
@@ -123,7 +211,7 @@ void VideoPipe::failed(const std::string& what) {
     if (tail.size() > 600) tail = "..." + tail.substr(tail.size() - 600);
     std::replace(tail.begin(), tail.end(), '\n', ' ');
     while (!tail.empty() && tail.back() == ' ') tail.pop_back();
-    throw Error::internal(target_.string(), what + (status > 0 ? " (ffmpeg exit status " + std::to_string(status) + ")" : "") +
+    throw Error::internal(target_.string(), what + (status_ > 0 ? " (ffmpeg exit status " + std::to_string(status_) + ")" : "") +
                                                 (tail.empty() ? "" : ": " + tail));
 }
 
@@ -132,9 +220,18 @@ void VideoPipe::write(const std::vector<uint8_t>& rgb) {
     size_t done = 0;
     while (done < rgb.size()) {
         const ssize_t n = ::write(input_, rgb.data() + done, rgb.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n < 0) failed(errno == EPIPE ? "ffmpeg stopped reading frames" : std::string("cannot pipe a frame to ffmpeg: ") + std::strerror(errno));
-        done += size_t(n);
+        if (n > 0) {
+            done += size_t(n);
+        } else if (n < 0 && errno == EAGAIN) {
+            pollfd ready{input_, POLLOUT, 0};
+            if (poll(&ready, 1, timeoutSeconds_ * 1000) == 0) {
+                kill(child_, SIGKILL);
+                failed("ffmpeg took no frame data for " + std::to_string(timeoutSeconds_) + " s (GROTTO_VIDEO_TIMEOUT)");
+            }
+        } else if (n < 0 && errno != EINTR) {
+            failed(errno == EPIPE ? "ffmpeg stopped reading frames"
+                                  : std::string("cannot pipe a frame to ffmpeg: ") + std::strerror(errno));
+        }
     }
 }
 
@@ -146,12 +243,33 @@ void VideoPipe::frame(int index, std::vector<uint8_t> rgb) {
         write(it->second);
 }
 
+int VideoPipe::probeFrames() {
+    std::FILE* out = std::tmpfile();
+    if (!out) return -1;
+    const pid_t pid = spawn({tools_.ffprobe, "-v", "error", "-select_streams", "v:0", "-count_packets", "-show_entries",
+                             "stream=nb_read_packets", "-of", "csv=p=0", file_.tmp().string()},
+                            -1, fileno(out), fileno(log_), target_);
+    int frames = -1;
+    if (waitFor(pid, timeoutSeconds_) != 0 || (std::rewind(out), std::fscanf(out, "%d", &frames)) != 1) frames = -1;
+    std::fclose(out);
+    return frames;
+}
+
 void VideoPipe::finish() {
     std::lock_guard lock(mutex_);
     if (!waiting_.empty()) failed("frame " + std::to_string(next_) + " never came");
     close(input_);
     input_ = -1;
-    if (wait() != 0) failed("ffmpeg failed");
+    status_ = waitFor(child_, timeoutSeconds_);
+    child_ = -1;
+    if (status_ == kTimedOut)
+        failed("ffmpeg did not finish within " + std::to_string(timeoutSeconds_) + " s (GROTTO_VIDEO_TIMEOUT)");
+    if (status_ != 0) failed("ffmpeg failed");
+    // ffmpeg has exited 0 leaving a video without its index on a full disk: trust what reads back.
+    const int frames = probeFrames(), expected = next_ - first_;
+    if (frames != expected)
+        failed(frames < 0 ? "the video ffmpeg wrote does not read back"
+                          : "the video ffmpeg wrote holds " + std::to_string(frames) + " frames, not " + std::to_string(expected));
     file_.commit();
 }
 

@@ -1,9 +1,12 @@
 #pragma once
 // A video of a flythrough's frames: their 8-bit sRGB pixels (the PNG's) piped
-// as raw RGB to Debian's ffmpeg, encoded with libx264 at a constant rate factor
-// into yuv420p (BT.709), written under a temporary name beside the target and
-// renamed into place only when ffmpeg exits 0, so nothing half-written is ever
-// left under the target's name.
+// as raw RGB to Debian's ffmpeg, encoded at a constant rate factor into yuv420p
+// (BT.709) in the container the file's extension names, written under a
+// temporary name beside the target and renamed into place only when ffmpeg
+// exits 0 and ffprobe finds every frame in what it wrote, so nothing
+// half-written is ever left under the target's name. ffmpeg gets a bounded time
+// (GROTTO_VIDEO_TIMEOUT seconds, 300 by default) to take each part of a frame and
+// to finish, so one that stops reading cannot hold the run forever.
 #include "common/atomic_file.h"
 
 #include <sys/types.h>
@@ -19,20 +22,33 @@
 
 namespace grotto::app {
 
-// ffmpeg's absolute path, found on PATH; throws grotto::Error (input) naming
-// `option` and how to install it when it is not there.
-std::string findFfmpeg(const std::string& option = "--video");
+// The programs a video needs: ffmpeg encodes it, ffprobe checks what it wrote;
+// and how long either may take to read a frame or to finish.
+struct VideoTools {
+    std::string ffmpeg, ffprobe;
+    int timeoutSeconds;
+};
+
+// Both found on PATH, the time from GROTTO_VIDEO_TIMEOUT; throws grotto::Error
+// (input) naming `option` and how to install them when either is not there,
+// naming GROTTO_VIDEO_TIMEOUT when it is not a number of seconds.
+VideoTools findVideoTools(const std::string& option = "--video");
+
+// The extensions a video can be written as: .mp4, .mov and .mkv (H.264), .webm (VP9).
+inline constexpr const char* kVideoExtensions = ".mp4, .mov, .mkv, .webm";
 
 // Throws grotto::Error (input) naming `option` unless a video of this size can
-// be made: yuv420p halves the chroma both ways, so both must be even.
-void requireVideoSize(uint32_t width, uint32_t height, const std::string& option = "--video");
+// be written as `target`: an extension of kVideoExtensions, an even width and
+// height (yuv420p halves the chroma both ways) and a path requireOutputPath takes.
+void requireVideoOutput(const std::filesystem::path& target, uint32_t width, uint32_t height,
+                        const std::string& option = "--video");
 
 class VideoPipe {
 public:
     // Starts ffmpeg writing the video of frames `first` on, at `fps` frames a
     // second, constant rate factor `crf` (0 best to 51 worst).
-    VideoPipe(const std::string& ffmpeg, const std::filesystem::path& target, uint32_t width, uint32_t height,
-              int fps, int crf, int first);
+    VideoPipe(const VideoTools& tools, const std::filesystem::path& target, uint32_t width, uint32_t height, int fps,
+              int crf, int first);
     ~VideoPipe();  // without finish(): stops ffmpeg and removes the temporary file
     VideoPipe(const VideoPipe&) = delete;
     VideoPipe& operator=(const VideoPipe&) = delete;
@@ -42,23 +58,26 @@ public:
     // Throws grotto::Error (internal) with the end of ffmpeg's messages when it
     // has stopped reading.
     void frame(int index, std::vector<uint8_t> rgb);
-    // Ends the input, waits for ffmpeg and renames the video into place; throws
-    // like frame() when ffmpeg failed or frames are missing.
+    // Ends the input, waits for ffmpeg, checks the video holds every frame and
+    // renames it into place; throws like frame() when ffmpeg failed, frames are
+    // missing or the video does not read back.
     void finish();
 
 private:
     void write(const std::vector<uint8_t>& rgb);  // with the mutex held
     [[noreturn]] void failed(const std::string& what);
-    int wait();  // ffmpeg's exit status (-1: killed by a signal), kept in status_
+    int probeFrames();  // frames ffprobe counts in the temporary file, -1 when it cannot read it
 
     std::filesystem::path target_;
+    VideoTools tools_;
     PendingFile file_;
     size_t frameBytes_;
+    int timeoutSeconds_;
     pid_t child_ = -1;
     int status_ = 0;
     int input_ = -1;            // the pipe to ffmpeg's stdin
     std::FILE* log_ = nullptr;  // ffmpeg's stderr, an unnamed temporary file
-    int next_;                  // the next frame to pipe
+    int first_, next_;          // the first frame, the next frame to pipe
     std::map<int, std::vector<uint8_t>> waiting_;
     std::mutex mutex_;
     struct sigaction oldPipe_ {};

@@ -26,7 +26,7 @@ void addViewCommand(CLI::App& app) {
     cmd->add_flag("--no-vsync", args->noVsync, "Present as fast as frames come, not at the display's rate");
     cmd->add_option("--script", args->script, "Timed key, mouse and panel actions (JSON; docs/viewer.md)");
     cmd->add_option("--frames", args->frames, "Exit after this many frames")->check(wholeRange(1, 1000000));
-    cmd->add_option("--screenshot", args->screenshot, "At exit, write the frame as `render` does (.png, or .exr with AOVs)");
+    cmd->add_option("--screenshot", args->screenshot, "At exit, write what the view shows (.png; .exr: the scene-linear colour and every AOV)");
     cmd->add_option("--capture-window", args->capture, "At the last of --frames, write the window as shown, panel included (.png)");
     cmd->add_flag("--hide-panel", args->o.hidePanel, "Start with the panel hidden (Tab toggles it)");
     cmd->add_option("--render-scale", args->o.renderScale,

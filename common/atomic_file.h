@@ -1,9 +1,13 @@
 #pragma once
 // Outputs are written under a temporary name beside the target and renamed into
-// place, so a crash or a full disk never leaves a truncated file that looks valid.
+// place only once every byte is known to be on disk: every write is checked and
+// the file synced before the rename, so a crash, a full disk or a quota never
+// leaves a truncated file under the target's name.
 #include <filesystem>
 #include <functional>
+#include <ostream>
 #include <string>
+#include <string_view>
 
 namespace grotto {
 
@@ -12,16 +16,24 @@ namespace grotto {
 // FIFO, a directory): an output replaces only a file or nothing.
 void requireOutputPath(const std::filesystem::path& file);
 
-// Calls write(tmp) with a temporary path that keeps the target's extension, then
-// renames it to target. On any exception the temporary file is removed. The
-// temporary file is locked while it exists, so a later run can tell one left by
-// a killed run from one another run is writing (removeAbandonedTemporaries).
-void writeAtomically(const std::filesystem::path& target,
-                     const std::function<void(const std::filesystem::path& tmp)>& write);
+// Throws grotto::Error (internal, exit code 1: an environment failure worth
+// retrying) naming `target`, for a write, sync or rename that failed with `err`
+// (errno); a full disk (ENOSPC, EDQUOT, EFBIG) says so.
+[[noreturn]] void throwWriteFailed(const std::filesystem::path& target, int err);
 
-// The same for a file written over a longer span (a video from an encoder that
-// runs beside the render): tmp() is the temporary path, commit() renames it into
-// place, and destruction without commit() removes it.
+// Writes `bytes` as `target`, atomically; a failed write throws as throwWriteFailed
+// and the temporary file is removed.
+void writeAtomically(const std::filesystem::path& target, std::string_view bytes);
+
+// The same for a file streamed by write(out) rather than held whole: a failed
+// write makes `out` bad, and is thrown once write returns.
+void writeAtomically(const std::filesystem::path& target, const std::function<void(std::ostream& out)>& write);
+
+// A file written over a longer span, or by another program (a video from an
+// encoder that runs beside the render): tmp() is the temporary path, commit()
+// syncs it and renames it into place, and destruction without commit() removes
+// it. The temporary file is locked while it exists, so a later run can tell one
+// left by a killed run from one another run is writing (removeAbandonedTemporaries).
 class PendingFile {
 public:
     explicit PendingFile(const std::filesystem::path& target);  // checks the target as requireOutputPath
@@ -29,15 +41,16 @@ public:
     PendingFile(const PendingFile&) = delete;
     PendingFile& operator=(const PendingFile&) = delete;
     const std::filesystem::path& tmp() const { return tmp_; }
-    void commit();  // flushes the temporary file to disk and renames it to the target
+    int fd() const { return fd_; }  // the temporary file, open for writing
+    void commit();  // throws as throwWriteFailed when the file cannot be synced or renamed
 
 private:
     std::filesystem::path target_, tmp_;
-    int lock_ = -1;
+    int fd_ = -1;
     bool committed_ = false;
 };
 
-// Removes the temporary files in `dir` that writeAtomically left behind when its
+// Removes the temporary files in `dir` that PendingFile left behind when its
 // process died, for targets whose file name `ours` accepts; files that a live
 // writer still holds are kept. Returns how many were removed.
 int removeAbandonedTemporaries(const std::filesystem::path& dir,

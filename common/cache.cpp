@@ -82,8 +82,7 @@ void storeCached(const std::string& kind, const std::string& key, const CachedAr
     std::error_code ec;
     fs::create_directories(path.parent_path(), ec);
     if (ec) throw Error(path.parent_path().string(), "cache directory cannot be created: " + ec.message());
-    writeAtomically(path, [&](const fs::path& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
+    writeAtomically(path, [&](std::ostream& out) {
         const uint64_t keyLength = key.size(), count = arrays.size();
         out.write(kMagic, 8);
         out.write(reinterpret_cast<const char*>(&keyLength), 8);
@@ -94,7 +93,6 @@ void storeCached(const std::string& kind, const std::string& key, const CachedAr
             out.write(reinterpret_cast<const char*>(&n), 8);
             out.write(reinterpret_cast<const char*>(a.data()), std::streamsize(n * sizeof(float)));
         }
-        if (!out.flush()) throw Error(path.string(), "cache entry cannot be written");
     });
 }
 

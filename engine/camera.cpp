@@ -1,18 +1,11 @@
 #include "engine/camera.h"
 
+#include "voxel/world.h"
+
 #include <cmath>
 #include <limits>
 
 namespace grotto {
-
-glm::dmat3 lookAtBasis(glm::dvec3 position, glm::dvec3 target) {
-    const glm::dvec3 back = glm::normalize(position - target);
-    // Straight up or down: any horizontal right vector will do.
-    glm::dvec3 up(0.0, 1.0, 0.0);
-    if (std::abs(glm::dot(back, up)) > 0.999999) up = glm::dvec3(0.0, 0.0, -1.0);
-    const glm::dvec3 right = glm::normalize(glm::cross(up, back));
-    return glm::dmat3(right, glm::cross(back, right), back);
-}
 
 Camera makeCamera(const voxel::CameraDesc& d, uint32_t width, uint32_t height) {
     Camera c;
@@ -24,6 +17,10 @@ Camera makeCamera(const voxel::CameraDesc& d, uint32_t width, uint32_t height) {
     c.width = width;
     c.height = height;
     return c;
+}
+
+Camera worldCamera(const voxel::World& world, const std::string& name, uint32_t width, uint32_t height) {
+    return makeCamera(world.camera(name, double(width) / double(height)), width, height);
 }
 
 glm::dmat4 Camera::viewFromWorld() const {

@@ -1,11 +1,17 @@
 #pragma once
 // A pinhole camera in double precision. Rendering uses camera-relative matrices
 // (the camera at the origin); depth is reverse-Z, infinite far plane by default.
+#include "voxel/camera_frame.h"
 #include "voxel/world_desc.h"
 
 #include <glm/glm.hpp>
 
+#include <string>
+
 namespace grotto {
+namespace voxel {
+class World;
+}
 
 struct Camera {
     glm::dvec3 position{0.0};
@@ -30,9 +36,10 @@ struct Camera {
 };
 
 Camera makeCamera(const voxel::CameraDesc& desc, uint32_t width, uint32_t height);
+// The world's camera `name` (its default one when empty: voxel::World::camera) for
+// an image of width x height.
+Camera worldCamera(const voxel::World& world, const std::string& name, uint32_t width, uint32_t height);
 
-// Columns right, up, back of a roll-free camera at `position` looking at `target`
-// (Y up; straight up or down falls back to a horizontal right vector).
-glm::dmat3 lookAtBasis(glm::dvec3 position, glm::dvec3 target);
+using voxel::lookAtBasis;  // voxel/camera_frame.h: the orientation a CameraDesc gives
 
 }  // namespace grotto

@@ -25,6 +25,7 @@ struct Engine::Impl {
     voxel::CameraDesc camera;
     voxel::Lighting lighting;
     voxel::Detail detail;  // levels of detail and occlusion culling, from the world file
+    voxel::AoDesc aoDesc;  // as set, for saveWorld
     AoOptions ao;
     uint32_t width = 0, height = 0, frame = 0;
     std::optional<Camera> last;  // the camera of the last frame rendered
@@ -82,9 +83,10 @@ void Engine::setWorld(voxel::World world) {
         m.objects->moving = true;  // a game may move any object (setObjectPose): motion vectors for all
         m.poses = m.objects->poses(0.0);
     }
-    m.camera = world.camera("");
+    m.camera = world.camera("", double(m.width) / double(m.height));
     m.lighting = world.desc().lighting;
     m.detail = world.desc().detail;
+    m.aoDesc = world.desc().ao;
     m.ao = std::move(ao);
     m.scene.emplace(*m.ctx, std::move(world));
     m.last.reset();
@@ -93,6 +95,15 @@ void Engine::setWorld(voxel::World world) {
 const voxel::World& Engine::world() const {
     impl_->requireWorld("world");
     return impl_->scene->world();
+}
+
+void Engine::saveWorld(const std::filesystem::path& file) const {
+    const Impl& m = *impl_;
+    m.requireWorld("saveWorld");
+    voxel::WorldDesc settings = m.scene->world().desc();
+    settings.lighting = m.lighting;
+    settings.ao = m.aoDesc;
+    m.scene->world().save(file, settings);
 }
 
 voxel::EditResult Engine::edit(const voxel::Edit& edit) {
@@ -142,6 +153,7 @@ void Engine::setAo(const voxel::AoDesc& desc) {
     Impl& m = *impl_;
     m.requireWorld("setAo");  // the default radius is in voxels of the world
     m.ao = aoOptionsFor(desc, m.scene->world().voxelSize(), "AO settings");
+    m.aoDesc = desc;
     if (m.renderer) m.renderer->setAo(m.ao);
 }
 
@@ -162,6 +174,7 @@ RenderedFrame Engine::render() {
     if (!m.renderer)
         m.renderer =
             std::make_unique<Renderer>(*m.ctx, m.scene->gpu(), m.lighting, m.ao, m.width, m.height, m.objects.get());
+    m.renderer->setDisplayImage(true);  // what the game shows
     m.renderer->setCulling(cullingOptions(m.detail));
     if (m.objects) m.renderer->setObjectPoses(m.poses);
     const Camera camera = makeCamera(m.camera, m.width, m.height);
@@ -170,8 +183,8 @@ RenderedFrame Engine::render() {
     auto image = [](const vk::Image& i) {
         return RenderedImage{.image = i.image, .format = i.format, .extent = i.extent, .layout = VK_IMAGE_LAYOUT_GENERAL};
     };
-    return {.color = image(m.renderer->colorImage()), .ao = image(m.renderer->aoImage()),
-            .quadsDrawn = stats.quadsDrawn, .wallMs = stats.wallMs};
+    return {.color = image(m.renderer->colorImage()), .display = image(m.renderer->displayImage()),
+            .ao = image(m.renderer->aoImage()), .quadsDrawn = stats.quadsDrawn, .wallMs = stats.wallMs};
 }
 
 Pixels Engine::readPixels() {

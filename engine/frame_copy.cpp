@@ -57,6 +57,7 @@ FrameImages FrameCopy::decode() const {
     FrameImages f;
     f.width = l.width;
     f.height = l.height;
+    f.toneMap = l.toneMap;
     const size_t n = size_t(f.width) * f.height;
     f.color = part(Color);
     if (!aovs_) return f;

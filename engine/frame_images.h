@@ -1,6 +1,8 @@
 #pragma once
 // A frame read back to host memory: what image files, metrics and the reference
 // consume, without depending on the renderer that made it.
+#include "shaders/shared/tone_map.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -11,7 +13,8 @@ namespace grotto {
 // pixel (x / 2, y / 2).
 struct FrameImages {
     uint32_t width = 0, height = 0;
-    std::vector<float> color;      // linear RGBA
+    std::vector<float> color;      // scene-linear RGBA: radiance x exposure, no tone map (values above 1 are normal)
+    uint32_t toneMap = GROTTO_TONE_MAP_FILMIC;  // the curve that makes `color` display values (shared/tone_map.h)
     std::vector<float> depth;      // view-axis distance in world units; +inf for sky
     std::vector<float> normal;     // world-space xyz; 0 for sky
     std::vector<float> albedo;     // linear rgb; 0 for sky

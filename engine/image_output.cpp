@@ -2,13 +2,16 @@
 
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "shaders/shared/tone_map.h"
 
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <limits>
 #include <string>
@@ -37,11 +40,13 @@ uint8_t srgb8ByFormula(float v) {
 // The formula is monotone, so 255 thresholds decide it: thresholds[k] is the least
 // float it takes to k + 1 or more, found by bisection on the bit patterns (which
 // order non-negative floats as their values). bucketStart[b] is the formula's value
-// at the least float whose top bits are b, from where a step or two up the
-// thresholds finds the answer: the same bytes as the formula, without a pow.
+// at the least float whose top bits are b. A bucket (2^16 floats) is narrower than
+// the formula's steps anywhere in [0, 1], so it holds at most one threshold and
+// one comparison finds the answer, without a branch: the same bytes as the
+// formula, four times as fast as walking up the thresholds.
 struct Srgb8Table {
     static constexpr int kShift = 16;
-    std::array<float, 255> thresholds;
+    std::array<float, 256> thresholds;  // [255]: above 1, so 255 never steps further
     std::vector<uint8_t> bucketStart;
     Srgb8Table() {
         const uint32_t one = std::bit_cast<uint32_t>(1.0f);
@@ -53,31 +58,37 @@ struct Srgb8Table {
             }
             thresholds[k] = std::bit_cast<float>(hi);
         }
+        thresholds[255] = 2.0f;
         bucketStart.resize((one >> kShift) + 1);
         for (uint32_t b = 0; b < bucketStart.size(); ++b) bucketStart[b] = srgb8ByFormula(std::bit_cast<float>(b << kShift));
     }
 };
 
+const Srgb8Table& srgb8Table() {
+    static const Srgb8Table table;
+    return table;
+}
+
+uint8_t srgb8(const Srgb8Table& table, float v) {
+    v = v > 0.0f ? std::min(v, 1.0f) : 0.0f;  // NaN too goes to 0
+    const int k = table.bucketStart[std::bit_cast<uint32_t>(v) >> Srgb8Table::kShift];
+    return uint8_t(k + (v >= table.thresholds[k]));
+}
+
 }  // namespace
 
-uint8_t toSrgb8(float v) {
-    if (!(v > 0.0f)) return 0;  // NaN too
-    if (v >= 1.0f) return 255;
-    static const Srgb8Table table;
-    int k = table.bucketStart[std::bit_cast<uint32_t>(v) >> Srgb8Table::kShift];
-    while (k < 255 && v >= table.thresholds[k]) ++k;
-    return uint8_t(k);
-}
+uint8_t toSrgb8(float v) { return srgb8(srgb8Table(), v); }
 
 float srgbToLinear(float s) { return s <= 0.04045f ? s / 12.92f : std::pow((s + 0.055f) / 1.055f, 2.4f); }
 
-void showAov(FrameImages& f, const std::string& which) {
+std::vector<float> aovDisplay(const FrameImages& f, const std::string& which) {
     auto valueOr = [](const std::vector<float>& v, size_t i, float none) { return v.empty() ? none : v[i]; };
     const size_t n = size_t(f.width) * f.height;
     float zMin = std::numeric_limits<float>::max(), zMax = 0.0f;
     for (float z : f.depth)
         if (std::isfinite(z)) zMin = std::min(zMin, z), zMax = std::max(zMax, z);
     const float logRange = std::max(std::log(std::max(zMax, 1e-30f) / std::max(zMin, 1e-30f)), 1e-6f);
+    std::vector<float> out(4 * n, 1.0f);
     for (size_t i = 0; i < n; ++i) {
         glm::vec3 v(0.0f);
         const bool sky = !std::isfinite(f.depth[i]);
@@ -91,8 +102,15 @@ void showAov(FrameImages& f, const std::string& which) {
         else if (which == "temporal") v = glm::vec3(valueOr(f.aoTemporal, i, 1.0f));
         else if (which == "history") v = glm::vec3(valueOr(f.aoHistory, i, 1.0f) / 64.0f);  // the longest history is 64
         else throw Error("--show", "unknown AOV '" + which + "'", "accepted: " + std::string(kShownAovs));
-        for (int c = 0; c < 3; ++c) f.color[4 * i + c] = srgbToLinear(std::clamp(v[c], 0.0f, 1.0f));
+        for (int c = 0; c < 3; ++c) out[4 * i + c] = srgbToLinear(std::clamp(v[c], 0.0f, 1.0f));
     }
+    return out;
+}
+
+std::vector<float> displayColor(const FrameImages& f) {
+    std::vector<float> out(f.color.size());
+    for (size_t k = 0; k < out.size(); ++k) out[k] = k % 4 == 3 ? f.color[k] : gpu::toneMap(f.color[k], f.toneMap);
+    return out;
 }
 
 namespace {
@@ -106,37 +124,56 @@ void addCamera(OIIO::ImageSpec& spec, const Camera& camera) {
     spec.attribute("Software", "grotto");
 }
 
-void write(const std::filesystem::path& target, const std::filesystem::path& tmp, const OIIO::ImageSpec& spec,
-           const void* pixels, OIIO::TypeDesc type) {
-    auto out = OIIO::ImageOutput::create(tmp.string());
-    if (!out || !out->open(tmp.string(), spec) || !out->write_image(type, pixels) || !out->close())
-        throw Error(target.string(), "cannot be written: " + (out ? out->geterror() : OIIO::geterror()));
+// Encodes in memory and writes the bytes through writeAtomically, which checks
+// every write: OpenImageIO's PNG writer ignores a failed fwrite, so a full disk
+// would otherwise leave a truncated file that it reports as written.
+void writeImage(const std::filesystem::path& target, const OIIO::ImageSpec& spec, const void* pixels, OIIO::TypeDesc type) {
+    std::vector<unsigned char> bytes;
+    OIIO::Filesystem::IOVecOutput memory(bytes);
+    auto out = OIIO::ImageOutput::create(target.string());
+    if (!out || !out->set_ioproxy(&memory) || !out->open(target.string(), spec) || !out->write_image(type, pixels) ||
+        !out->close())
+        throw Error::internal(target.string(), "cannot be encoded: " + (out ? out->geterror() : OIIO::geterror()));
+    writeAtomically(target, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
 }
 
 }  // namespace
 
 std::vector<uint8_t> srgb8Pixels(const FrameImages& f) {
-    const size_t n = size_t(f.width) * f.height;
-    std::vector<uint8_t> px(3 * n);
-    for (size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) px[3 * i + c] = toSrgb8(f.color[4 * i + c]);
+    const size_t w = f.width;
+    std::vector<uint8_t> px(3 * w * f.height);
+    // A row at a time: the tone map vectorises on its own, the table walk does not.
+    std::vector<float> shown(4 * w);
+    const Srgb8Table& table = srgb8Table();
+    for (size_t y = 0; y < f.height; ++y) {
+        const float* row = &f.color[4 * w * y];
+        for (size_t k = 0; k < 4 * w; ++k) shown[k] = gpu::toneMap(row[k], f.toneMap);
+        for (size_t x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) px[3 * (w * y + x) + c] = srgb8(table, shown[4 * x + c]);
+    }
+    return px;
+}
+
+std::vector<uint8_t> encodeSrgb8(std::span<const float> rgba) {
+    std::vector<uint8_t> px(rgba.size() / 4 * 3);
+    const Srgb8Table& table = srgb8Table();
+    for (size_t i = 0; i < rgba.size() / 4; ++i)
+        for (int c = 0; c < 3; ++c) px[3 * i + c] = srgb8(table, rgba[4 * i + c]);
     return px;
 }
 
 void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb,
                 const Camera* camera, int pngLevel) {
     if (rgb.size() != size_t(width) * height * 3) throw Error::internal(path.string(), "pixels of the wrong size");
-    writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
-        spec.attribute("oiio:ColorSpace", "sRGB");
-        spec.attribute("png:compressionLevel", std::clamp(pngLevel, 0, 9));
-        // Every row predicted from the one above (PNG_FILTER_UP): as small as
-        // libpng's default of trying all five filters on each row, in about half the time.
-        spec.attribute("png:filter", 0x20);
-        if (camera) addCamera(spec, *camera);
-        else spec.attribute("Software", "grotto");
-        write(path, tmp, spec, rgb.data(), OIIO::TypeDesc::UINT8);
-    });
+    OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
+    spec.attribute("oiio:ColorSpace", "sRGB");
+    spec.attribute("png:compressionLevel", std::clamp(pngLevel, 0, 9));
+    // Every row predicted from the one above (PNG_FILTER_UP): as small as
+    // libpng's default of trying all five filters on each row, in about half the time.
+    spec.attribute("png:filter", 0x20);
+    if (camera) addCamera(spec, *camera);
+    else spec.attribute("Software", "grotto");
+    writeImage(path, spec, rgb.data(), OIIO::TypeDesc::UINT8);
 }
 
 void writeFrame(const std::filesystem::path& path, const FrameImages& f, const Camera& camera, bool aovs) {
@@ -193,7 +230,11 @@ void writeExr(const std::filesystem::path& path, const FrameImages& f, const Cam
             spec.channelformats[size_t(spec.z_channel)] = OIIO::TypeDesc::FLOAT;
         }
     }
+    // Scene-linear Rec. 709 / sRGB primaries with a D65 white (OpenEXR's chromaticities:
+    // red, green, blue and white xy), as the composite lights them.
     spec.attribute("oiio:ColorSpace", "Linear");
+    static constexpr float kRec709[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
+    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709);
     spec.attribute("compression", "zip");
     addCamera(spec, camera);
     const size_t n = size_t(f.width) * f.height;
@@ -204,7 +245,7 @@ void writeExr(const std::filesystem::path& path, const FrameImages& f, const Cam
         for (const Layer& layer : layers)
             for (int c = 0; c < int(layer.channels.size()); ++c) *p++ = layer.value(i, c);
     }
-    writeAtomically(path, [&](const std::filesystem::path& tmp) { write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT); });
+    writeImage(path, spec, px.data(), OIIO::TypeDesc::FLOAT);
 }
 
 }  // namespace
@@ -224,17 +265,43 @@ void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t h
     const size_t n = size_t(width) * height, count = channels.size();
     for (const Channel& c : channels)
         if (c.values->size() != n) throw Error::internal(path.string(), "channel " + c.name + " has the wrong size");
-    writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        OIIO::ImageSpec spec(int(width), int(height), int(count), OIIO::TypeDesc::FLOAT);
-        spec.channelnames.clear();
-        for (const Channel& c : channels) spec.channelnames.push_back(c.name);
-        spec.attribute("compression", "zip");
-        addCamera(spec, camera);
-        std::vector<float> px(count * n);
-        for (size_t i = 0; i < n; ++i)
-            for (size_t c = 0; c < count; ++c) px[count * i + c] = (*channels[c].values)[i];
-        write(path, tmp, spec, px.data(), OIIO::TypeDesc::FLOAT);
-    });
+    OIIO::ImageSpec spec(int(width), int(height), int(count), OIIO::TypeDesc::FLOAT);
+    spec.channelnames.clear();
+    for (const Channel& c : channels) spec.channelnames.push_back(c.name);
+    spec.attribute("compression", "zip");
+    addCamera(spec, camera);
+    std::vector<float> px(count * n);
+    for (size_t i = 0; i < n; ++i)
+        for (size_t c = 0; c < count; ++c) px[count * i + c] = (*channels[c].values)[i];
+    writeImage(path, spec, px.data(), OIIO::TypeDesc::FLOAT);
+}
+
+namespace {
+
+// Whether a PNG ends with its IEND chunk, as a whole one does and a truncated one
+// does not: libpng prints its errors on stderr, so those are not handed to it.
+bool endsWithPngEnd(const std::filesystem::path& path) {
+    static constexpr char kEnd[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', char(0xAE), 0x42, 0x60, char(0x82)};
+    std::ifstream in(path, std::ios::binary);
+    char tail[12] = {};
+    return in.seekg(-12, std::ios::end) && in.read(tail, 12) && std::equal(tail, tail + 12, kEnd);
+}
+
+}  // namespace
+
+bool imageDecodes(const std::filesystem::path& path, uint32_t width, uint32_t height) {
+    if (imageFormatFor(path) == ImageFormat::Png && !endsWithPngEnd(path)) return false;
+    auto in = OIIO::ImageInput::open(path.string());
+    if (!in) {
+        OIIO::geterror();  // taken, so OpenImageIO does not print it
+        return false;
+    }
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.width != int(width) || spec.height != int(height) || spec.depth != 1) return false;
+    std::vector<unsigned char> pixels(spec.image_bytes(true));
+    const bool whole = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeUnknown, pixels.data()) && in->close();
+    in->geterror();
+    return whole;
 }
 
 }  // namespace grotto

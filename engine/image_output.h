@@ -1,7 +1,8 @@
 #pragma once
-// Writes a read-back frame with OpenImageIO, atomically. PNG: 8-bit sRGB colour
-// (a chosen zlib level, rows filtered with PNG's "up" predictor). EXR: float (or
-// half) RGBA, with AOVs also Z, N.x N.y N.z and albedo.R albedo.G albedo.B, AO
+// Writes a read-back frame with OpenImageIO, atomically. PNG: the tone-mapped
+// colour as 8-bit sRGB, display-referred (a chosen zlib level, rows filtered with
+// PNG's "up" predictor). EXR: the scene-linear colour (exposure applied, no tone
+// map; tagged "Linear" with Rec. 709 chromaticities) as float (or half) RGBA, with AOVs also Z, N.x N.y N.z and albedo.R albedo.G albedo.B, AO
 // (final), AO_raw, AO_spatial, AO_temporal and AO_history (half res, stored by
 // nearest), edges and shadow, or a chosen few of those layers (FrameEncoding).
 // Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
@@ -49,13 +50,23 @@ struct Channel {
 void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const Channel> channels,
                    const Camera& camera);
 
+// Whether an image file is width x height and decodes whole, every pixel of
+// every channel: how a resumed flythrough tells a finished frame from a damaged one.
+bool imageDecodes(const std::filesystem::path& path, uint32_t width, uint32_t height);
+
 // Linear [0, 1] -> 8-bit sRGB (clamped; NaN -> 0).
 uint8_t toSrgb8(float linear);
 // An sRGB-encoded value in [0, 1] -> linear.
 float srgbToLinear(float srgb);
 
-// The colour as 8-bit sRGB, 3 bytes a pixel: the pixels a PNG of the frame holds.
+// The colour as a display shows it: the frame's tone map (shaders/shared/tone_map.h)
+// of its scene-linear colour, RGBA in [0, 1], alpha as it was.
+std::vector<float> displayColor(const FrameImages& frame);
+// The colour as 8-bit sRGB, 3 bytes a pixel: the pixels a PNG of the frame holds,
+// toSrgb8 of displayColor.
 std::vector<uint8_t> srgb8Pixels(const FrameImages& frame);
+// Display-linear RGBA in [0, 1] (displayColor, aovDisplay) as 8-bit sRGB, 3 bytes a pixel.
+std::vector<uint8_t> encodeSrgb8(std::span<const float> rgba);
 
 // An 8-bit sRGB PNG of `rgb` (3 bytes a pixel, row 0 on top), written atomically,
 // with the camera attributes when given one; zlib level 0 to 9.
@@ -64,10 +75,11 @@ void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t heig
 
 // The AOVs showAov draws.
 inline constexpr const char* kShownAovs = "ao, normal, depth, edges, shadow, raw, spatial, temporal, history";
-// Replaces the colour with one AOV for eyeballing (kShownAovs; raw, spatial,
-// temporal: the AO chain's stages; history: its length over 64 frames), so
-// that a PNG's 8-bit values are the AOV's values (normals as n * 0.5 + 0.5, depth
-// log-scaled from near white to far black, sky black). Needs a readback with AOVs.
-void showAov(FrameImages& frame, const std::string& which);
+// One AOV drawn for eyeballing (kShownAovs; raw, spatial, temporal: the AO
+// chain's stages; history: its length over 64 frames), as display-linear RGBA
+// like displayColor's, so that 8-bit sRGB values are the AOV's values (normals as
+// n * 0.5 + 0.5, depth log-scaled from near white to far black, sky black). Needs
+// a readback with AOVs.
+std::vector<float> aovDisplay(const FrameImages& frame, const std::string& which);
 
 }  // namespace grotto

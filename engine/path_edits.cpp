@@ -5,13 +5,27 @@
 
 namespace grotto {
 
+namespace {
+
+// An error of the world's about an edit, as one about the path's field.
+Error inPath(const voxel::CameraPathDesc& path, const voxel::TimedEdit& e, const Error& error) {
+    return Error(path.source.string(), "field '" + e.field + "': " + error.problem(), error.hint(), error.kind());
+}
+
+}  // namespace
+
+void checkPathEdits(const voxel::CameraPathDesc& path, const voxel::World& world) {
+    for (const voxel::TimedEdit& e : path.edits) {
+        try {
+            world.check(e.edit);
+        } catch (const Error& error) {
+            throw inPath(path, e, error);
+        }
+    }
+}
+
 PathEdits::PathEdits(const voxel::CameraPathDesc& path, const voxel::World& world) : path_(path) {
-    const size_t palette = world.desc().materials.size();
-    for (const voxel::TimedEdit& e : path.edits)
-        if (e.edit.op != voxel::Edit::Op::Carve && (e.edit.material < 1 || size_t(e.edit.material) > palette))
-            throw Error(path.source.string(), "field '" + e.field + ".material': " + std::to_string(e.edit.material) +
-                                                  " is not in the world's palette",
-                        "material ids 1 to " + std::to_string(palette) + " ('materials' in the world file)");
+    checkPathEdits(path, world);
 }
 
 voxel::WorldBox PathEdits::applyUpTo(double time, LiveScene& scene, Renderer* renderer) {
@@ -21,7 +35,7 @@ voxel::WorldBox PathEdits::applyUpTo(double time, LiveScene& scene, Renderer* re
         try {
             changed = changed.merged(scene.apply(e.edit).box);
         } catch (const Error& error) {
-            throw Error(path_.source.string(), "field '" + e.field + "': " + error.problem(), error.hint(), error.kind());
+            throw inPath(path_, e, error);
         }
     }
     if (renderer && !changed.empty()) renderer->invalidateHistory(changed);

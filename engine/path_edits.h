@@ -11,10 +11,15 @@ namespace grotto {
 
 class Renderer;
 
+// Refuses (grotto::Error naming the path's file and the edit's field) any edit
+// of the path that the world would refuse when its time came: out of range, not
+// in the palette, past the memory budget. Commands call it as soon as they have
+// the path and the world, before anything is rendered or written.
+void checkPathEdits(const voxel::CameraPathDesc& path, const voxel::World& world);
+
 class PathEdits {
 public:
-    // Refuses (grotto::Error naming the path's file and field) an edit whose
-    // material is not in the world's palette, before any frame is rendered.
+    // Checks every edit first (checkPathEdits).
     PathEdits(const voxel::CameraPathDesc& path, const voxel::World& world);
 
     // Applies the edits due by `time` not applied yet, in order; returns the union

@@ -10,6 +10,7 @@
 #include "engine/vk/readback.h"
 #include "shaders/shared/frame.h"
 #include "shaders/shared/quad.h"
+#include "shaders/shared/tone_map.h"
 
 #include <algorithm>
 #include <chrono>
@@ -40,12 +41,15 @@ gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l,
     u.rayStepX = glm::vec4(glm::vec3(right), 0.0f);
     u.rayStepY = glm::vec4(glm::vec3(down), 0.0f);
     u.aoStrength = glm::vec4(ao.enabled ? ao.gtao.strength : 0.0f, 0.0f, 0.0f, 0.0f);
-    u.exposure = glm::vec4(l.exposure, l.toneMap == voxel::ToneMap::Filmic ? 0.0f : 1.0f, 0.0f, 0.0f);
+    u.exposure = glm::vec4(l.exposure, 0.0f, 0.0f, 0.0f);
     u.size = {camera.width, camera.height};
     return u;
 }
 
 VkExtent2D halfOf(VkExtent2D e) { return {(e.width + 1) / 2, (e.height + 1) / 2}; }
+
+// The world's tone map setting as the shared curve (shaders/shared/tone_map.h).
+uint32_t toneMapCurve(voxel::ToneMap t) { return t == voxel::ToneMap::Filmic ? GROTTO_TONE_MAP_FILMIC : GROTTO_TONE_MAP_CLAMP; }
 
 }  // namespace
 
@@ -121,6 +125,7 @@ void Renderer::createPasses() {
             ctx, motion() ? GBufferMode::Motion : objects_ ? GBufferMode::Objects : GBufferMode::World);
     if (!hizPass_) hizPass_ = std::make_unique<HizPass>(ctx);
     if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled, shadows());
+    if (displayOn_ && !displayPass_) displayPass_ = std::make_unique<DisplayPass>(ctx);
     if (shadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows());
     if (!ao_.enabled) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
@@ -182,14 +187,39 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
         for (const vk::Image& h : aoTargets_.history) general(h);
         general(aoTargets_.full);
     });
+    if (displayOn_) createDisplayTarget();
     historyIndex_ = 0;
     shadowCamera_.reset();
+}
+
+void Renderer::createDisplayTarget() {
+    // Sampled too: a game may composite it (include/grotto/grotto.h); a transfer
+    // source for the window's blit.
+    display_ = vk::createImage(ctx_, color_.extent, VK_FORMAT_R16G16B16A16_SFLOAT,
+                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
+        vk::transition(cmd, display_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
+                       0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+    });
+}
+
+void Renderer::setDisplayImage(bool on) {
+    if (on == displayOn_) return;
+    displayOn_ = on;
+    if (on) {
+        createPasses();
+        createDisplayTarget();
+    } else {
+        vkDeviceWaitIdle(ctx_.device);
+        vk::destroy(ctx_, display_);
+        displayPass_.reset();
+    }
 }
 
 // Every frame waits for its fence before render() returns, so no GPU work uses
 // the targets here.
 void Renderer::releaseTargets() {
-    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &shadow_, &shadowHistory_[0], &shadowHistory_[1], &aoTargets_.raw,
+    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &display_, &shadow_, &shadowHistory_[0], &shadowHistory_[1], &aoTargets_.raw,
                          &aoTargets_.spatial[0], &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
                          &aoTargets_.full})
         vk::destroy(ctx_, *i);
@@ -210,6 +240,7 @@ void Renderer::release() {
     temporalPass_.reset();
     upsamplePass_.reset();
     compositePass_.reset();
+    displayPass_.reset();
     shadowPass_.reset();
     releaseTargets();
     vk::destroy(ctx_, objectUniforms_);
@@ -285,7 +316,7 @@ void Renderer::setAo(const AoOptions& ao) {
 
 size_t Renderer::targetBytes() const {
     size_t n = 0;
-    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &shadow_, &shadowHistory_[0], &shadowHistory_[1], &aoTargets_.raw, &aoTargets_.spatial[0],
+    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &display_, &shadow_, &shadowHistory_[0], &shadowHistory_[1], &aoTargets_.raw, &aoTargets_.spatial[0],
                                &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
                                &aoTargets_.full})
         n += i->memory.size;
@@ -428,6 +459,12 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy
     compositePass_->record(cmd, gbuffer_, ao_.enabled ? aoHalfOutput() : aoTargets_.raw, color_, frame_,
                            scene_.palette, gtaoConstants_, objectUniforms_, shadow_);
     timestamps_.end(cmd);
+    if (displayOn_) {
+        computeToCompute(cmd);
+        timestamps_.begin(cmd, "display");
+        displayPass_->record(cmd, color_, display_, toneMapCurve(lighting_.toneMap));
+        timestamps_.end(cmd);
+    }
     if (copy) recordCopy(cmd, *copy, camera);
 
     submitAndWait(cmd);
@@ -478,8 +515,8 @@ void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
 
 void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {
     copy.begin({.width = color_.extent.width, .height = color_.extent.height, .half = aoTargets_.half,
-                .scale = ao_.fullResolution ? 1u : 2u, .ao = ao_.enabled, .camera = camera, .poses = poses_,
-                .albedo = scene_.albedo});
+                .scale = ao_.fullResolution ? 1u : 2u, .ao = ao_.enabled, .toneMap = toneMapCurve(lighting_.toneMap),
+                .camera = camera, .poses = poses_, .albedo = scene_.albedo});
     const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, general = VK_IMAGE_LAYOUT_GENERAL;
     auto copyPart = [&](FrameCopy::Part part, const vk::Image& image, VkImageLayout layout, uint32_t bytesPerPixel) {
         const VkDeviceSize bytes = VkDeviceSize(image.extent.width) * image.extent.height * bytesPerPixel;

@@ -9,6 +9,7 @@
 #include "engine/passes/composite_pass.h"
 #include "engine/passes/denoise_pass.h"
 #include "engine/passes/depth_prefilter_pass.h"
+#include "engine/passes/display_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/passes/gtao_pass.h"
 #include "engine/passes/hiz_pass.h"
@@ -84,9 +85,14 @@ public:
     FrameImages readback(const Camera& camera, bool aovs);
 
     // The last frame's images, for an embedding game (include/grotto/grotto.h says
-    // how to synchronise with them): linear colour at full size, and the AO the
+    // how to synchronise with them): scene-linear colour at full size, and the AO the
     // composite read (visibility in red) at AO resolution. Both in GENERAL.
     const vk::Image& colorImage() const { return color_; }
+    // With it on, every frame also tone-maps its colour into displayImage()
+    // (RGBA16F, display-linear, GENERAL): what a window or a game shows. Off by
+    // default: image files tone-map on the CPU and need no such pass.
+    void setDisplayImage(bool on);
+    const vk::Image& displayImage() const { return display_; }
     const vk::Image& aoImage() const { return ao_.enabled ? aoHalfOutput() : aoTargets_.raw; }
 
     size_t targetBytes() const;
@@ -95,6 +101,7 @@ public:
 private:
     void createPasses();  // those ao_ needs and that do not exist yet
     void createTargets(uint32_t width, uint32_t height);
+    void createDisplayTarget();  // display_, in GENERAL, at the colour's size
     void releaseTargets();
     void release();  // frees whatever exists; null handles are skipped
     void recordAo(VkCommandBuffer cmd);
@@ -117,6 +124,8 @@ private:
     GBufferTargets gbuffer_;
     AoTargets aoTargets_;
     vk::Image color_;
+    vk::Image display_;  // with setDisplayImage(true) only
+    bool displayOn_ = false;
     vk::Image shadow_;  // full res with shadows, else a 1x1 placeholder
     // A soft sun's history, ping-ponged as the AO's, with the camera and frame index
     // of its last frame (none: the next frame starts afresh).
@@ -149,6 +158,7 @@ private:
     std::unique_ptr<TemporalPass> temporalPass_;
     std::unique_ptr<UpsamplePass> upsamplePass_;
     std::unique_ptr<CompositePass> compositePass_;
+    std::unique_ptr<DisplayPass> displayPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
     vk::Timestamps timestamps_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;

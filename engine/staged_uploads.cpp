@@ -33,14 +33,27 @@ void StagedUploads::write(const vk::Buffer& dst, VkDeviceSize offset, const void
         staging_ = bigger;
     }
     std::memcpy(static_cast<char*>(staging_.mapped()) + used_, data, bytes);
-    writes_.push_back({dst.buffer, used_, offset, bytes});
+    writes_.insert_or_assign({dst.buffer, offset}, Write{used_, bytes});
     used_ += bytes;
 }
 
 void StagedUploads::discard(const vk::Buffer& dst, VkDeviceSize offset, VkDeviceSize bytes) {
-    std::erase_if(writes_, [&](const Write& w) {
-        return w.dst == dst.buffer && w.offset < offset + bytes && offset < w.offset + w.size;
-    });
+    auto first = writes_.lower_bound({dst.buffer, offset});
+    // Only the write just before may start earlier and reach into the range.
+    if (first != writes_.begin()) {
+        const auto before = std::prev(first);
+        if (before->first.dst == dst.buffer && before->first.offset + before->second.size > offset) first = before;
+    }
+    auto last = first;
+    while (last != writes_.end() && last->first.dst == dst.buffer && last->first.offset < offset + bytes) ++last;
+    writes_.erase(first, last);
+}
+
+std::pair<StagedUploads::Writes::iterator, StagedUploads::Writes::iterator> StagedUploads::writesInto(VkBuffer dst) {
+    const auto first = writes_.lower_bound({dst, 0});
+    auto last = first;
+    while (last != writes_.end() && last->first.dst == dst) ++last;
+    return {first, last};
 }
 
 void StagedUploads::reallocate(vk::Buffer& buffer, VkDeviceSize size, VkBufferUsageFlags usage, bool keepContents) {
@@ -51,15 +64,18 @@ void StagedUploads::reallocate(vk::Buffer& buffer, VkDeviceSize size, VkBufferUs
     // once, and the copy into it comes from its own source instead.
     const auto into = std::find_if(moves_.begin(), moves_.end(), [&](const Move& m) { return m.to == old; });
     const bool unused = into != moves_.end();
+    const auto [first, last] = writesInto(old);
     if (keepContents) {
-        for (Write& w : writes_)
-            if (w.dst == old) w.dst = fresh.buffer;
+        Writes moved;
+        for (auto it = first; it != last; ++it) moved.emplace_hint(moved.end(), Target{fresh.buffer, it->first.offset}, it->second);
+        writes_.erase(first, last);
+        writes_.merge(moved);
         if (unused)
             *into = {into->from, fresh.buffer, std::min(into->size, size), size};
         else if (old)
             moves_.push_back({old, fresh.buffer, std::min(buffer.size, size), size});
     } else {
-        std::erase_if(writes_, [&](const Write& w) { return w.dst == old; });
+        writes_.erase(first, last);
         if (unused) moves_.erase(into);
     }
     if (unused)
@@ -89,15 +105,12 @@ void StagedUploads::record(VkCommandBuffer cmd, VkPipelineStageFlags dstStage, V
     }
     if (!moves_.empty() && !writes_.empty())  // the writes land on top of the moved contents
         transferBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
-    std::sort(writes_.begin(), writes_.end(), [](const Write& a, const Write& b) {
-        return a.dst != b.dst ? std::less<VkBuffer>()(a.dst, b.dst) : a.offset < b.offset;
-    });
-    std::vector<VkBufferCopy> regions;
-    for (size_t i = 0; i < writes_.size(); ++i) {
-        const Write& w = writes_[i];
-        regions.push_back({.srcOffset = w.src, .dstOffset = w.offset, .size = w.size});
-        if (i + 1 < writes_.size() && writes_[i + 1].dst == w.dst) continue;
-        vkCmdCopyBuffer(cmd, staging_.buffer, w.dst, uint32_t(regions.size()), regions.data());
+    std::vector<VkBufferCopy> regions;  // one copy command per destination, its writes in offset order
+    for (auto it = writes_.begin(); it != writes_.end(); ++it) {
+        regions.push_back({.srcOffset = it->second.src, .dstOffset = it->first.offset, .size = it->second.size});
+        const auto next = std::next(it);
+        if (next != writes_.end() && next->first.dst == it->first.dst) continue;
+        vkCmdCopyBuffer(cmd, staging_.buffer, it->first.dst, uint32_t(regions.size()), regions.data());
         regions.clear();
     }
     transferBarrier(cmd, dstStage, dstAccess);

@@ -7,6 +7,8 @@
 // can be freed at the next.
 #include "engine/vk/resources.h"
 
+#include <functional>
+#include <map>
 #include <vector>
 
 namespace grotto {
@@ -39,15 +41,31 @@ public:
     VkDeviceSize stagingBytes() const { return staging_.size; }
 
 private:
-    struct Write { VkBuffer dst; VkDeviceSize src, offset, size; };
+    // Pending writes by destination and offset. They never overlap, so those a
+    // range meets are found in order rather than by a scan: an edit across a
+    // large region queues millions.
+    struct Target {
+        VkBuffer dst;
+        VkDeviceSize offset;
+    };
+    struct TargetOrder {
+        bool operator()(const Target& a, const Target& b) const {
+            return a.dst != b.dst ? std::less<VkBuffer>()(a.dst, b.dst) : a.offset < b.offset;
+        }
+    };
+    struct Write { VkDeviceSize src, size; };  // staging bytes [src, src + size)
+    using Writes = std::map<Target, Write, TargetOrder>;
     struct Move { VkBuffer from, to; VkDeviceSize size, toSize; };  // copy `size` bytes, zero the rest
+
+    // The pending writes into `dst`, in offset order.
+    std::pair<Writes::iterator, Writes::iterator> writesInto(VkBuffer dst);
 
     void retire(vk::Buffer& buffer);
 
     vk::Context& ctx_;
     vk::Buffer staging_;
     VkDeviceSize used_ = 0;              // staging bytes holding pending writes
-    std::vector<Write> writes_;
+    Writes writes_;
     std::vector<Move> moves_;            // whole-buffer copies into reallocated buffers
     std::vector<vk::Buffer> retired_;    // replaced since the last record(): the next frame may read them
     std::vector<vk::Buffer> finishing_;  // replaced before it: free once that frame is done (the next record)

@@ -1,5 +1,6 @@
 #include "engine/temporal_metrics.h"
 
+#include "engine/image_output.h"
 #include "shaders/shared/objects.h"
 
 #include <algorithm>
@@ -19,12 +20,17 @@ AoFrame aoFrame(const FrameImages& f, const Camera& camera, uint32_t scale) {
     a.surface.assign(n, 0);
     a.object.assign(n, 0);
     a.raw.resize(n), a.spatial.resize(n), a.temporal.resize(n);
+    const std::vector<uint8_t> rgb = f.color.empty() ? std::vector<uint8_t>() : srgb8Pixels(f);
+    if (!rgb.empty())
+        for (std::vector<float>& channel : a.display) channel.resize(n);
     for (uint32_t y = 0; y < a.height; ++y)
         for (uint32_t x = 0; x < a.width; ++x) {
             const size_t i = size_t(y) * a.width + x, full = size_t(scale * y) * f.width + scale * x;
             a.raw[i] = f.aoRaw[full];
             a.spatial[i] = f.aoSpatial[full];
             a.temporal[i] = f.aoTemporal[full];
+            if (!rgb.empty())
+                for (int c = 0; c < 3; ++c) a.display[c][i] = float(rgb[3 * full + c]) / 255.0f;
             const double depth = f.depth[full];
             if (!std::isfinite(depth)) continue;
             a.world[i] = camera.pointAt(scale * x + 0.5, scale * y + 0.5, depth);
@@ -104,6 +110,13 @@ double flicker(const std::vector<float>& now, const std::vector<float>& before, 
         sum += std::abs(double(now[i]) - previous), ++n;
     }
     return n ? sum / double(n) : 0.0;
+}
+
+double colorFlicker(const AoFrame& now, const AoFrame& before, const Reprojection& r) {
+    if (now.display[0].empty() || before.display[0].empty()) return 0.0;  // no colour read back
+    double sum = 0.0;
+    for (int c = 0; c < 3; ++c) sum += flicker(now.display[c], before.display[c], r);
+    return sum / 3.0;
 }
 
 std::vector<uint16_t> disocclusionAge(const Reprojection& r, const std::vector<uint16_t>& previous, size_t pixels) {

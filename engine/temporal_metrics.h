@@ -7,6 +7,8 @@
 //            interpolated bilinearly from the taps on p's plane, so a steady image
 //            under a moving camera reads (nearly) no flicker;
 //   age:     frames since a pixel was last disoccluded (no such q), for ghosting.
+// The display colour's flicker is the same figure on the colour a PNG of the
+// frame shows (tone-mapped, sRGB-encoded, in [0, 1]) at the same pixels.
 // A point on an object is carried along with it: q must show the same point of the
 // same object at the object's previous pose.
 #include "engine/camera.h"
@@ -28,6 +30,9 @@ struct AoFrame {
     std::vector<uint8_t> surface;       // 0 for sky
     std::vector<uint8_t> object;        // the object it shows (1, 2, ...), 0 for the world
     std::vector<float> raw, spatial, temporal;
+    // The display colour there: the 8-bit sRGB of a PNG of the frame (srgb8Pixels),
+    // in [0, 1], one vector per channel; empty for a frame read back without colour.
+    std::array<std::vector<float>, 3> display;
 };
 
 // Needs a readback with AOVs.
@@ -48,6 +53,10 @@ Reprojection reproject(const AoFrame& now, const AoFrame& before, const Camera& 
 
 // Mean |now(p) - before(q)| over reprojected pixels; 0 when there are none.
 double flicker(const std::vector<float>& now, const std::vector<float>& before, const Reprojection& r);
+
+// flicker() of the display colour, averaged over its three channels: the mean
+// absolute change of a channel over the reprojected pixels; 0 without colour.
+double colorFlicker(const AoFrame& now, const AoFrame& before, const Reprojection& r);
 
 // Frames since each pixel was disoccluded: 0 where unmatched, else the matched
 // pixel's age + 1 (capped). `previous`: the last frame's ages.

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Sun Lambert x shadow + ambient x AO on surfaces, a gradient sky where nothing was
-// drawn, both through the exposure and the tone map.
+// drawn, both times the exposure: scene-linear colour, no tone map.
 // With AO, one invocation per AO pixel shades its block of full-res pixels and
 // upsamples the AO for them on the way (upsample.glsl): a separate upsample pass
 // would store full-res AO only to load it again here.
@@ -46,17 +46,9 @@ vec3 sky(ivec2 pixel) {
     return up >= 0.0 ? mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, sqrt(up)) : frame.skyHorizon.rgb * 0.8;
 }
 
-// A filmic curve (Narkowicz's fit of the ACES reference transform): a soft toe
-// keeps ambient-lit shade from crushing to black, the shoulder rolls bright sunlit
-// faces off toward white instead of clipping them.
-vec3 filmic(vec3 x) {
-    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
-
-vec3 display(vec3 radiance) {
-    vec3 exposed = radiance * frame.exposure.x;
-    return frame.exposure.y == 0.0 ? filmic(exposed) : clamp(exposed, 0.0, 1.0);
-}
+// Scene-linear: the exposure applied, no tone map (that is made where a display
+// image is: display.comp, the image writers; shared/tone_map.h).
+vec3 exposed(vec3 radiance) { return radiance * frame.exposure.x; }
 
 vec3 shade(uint surface, float ao, float sunReach) {
     uint face = surfaceFace(surface);
@@ -78,7 +70,7 @@ void compositePixel(AoBlock block, ivec2 h, ivec2 offset) {
     if (any(greaterThanEqual(uvec2(q), frame.size))) return;
     uint surface = texelFetch(surfaceTex, q, 0).r;
     vec3 color = surface == 0u ? sky(q) : shade(surface, upsampledAo(block, h, offset, surfaceKey(surface)), sunlit(q));
-    imageStore(outColor, q, vec4(display(color), 1.0));
+    imageStore(outColor, q, vec4(exposed(color), 1.0));
 }
 
 void main() {
@@ -86,7 +78,7 @@ void main() {
     if (!withAo) {
         if (any(greaterThanEqual(uvec2(h), frame.size))) return;
         uint surface = texelFetch(surfaceTex, h, 0).r;
-        imageStore(outColor, h, vec4(display(surface == 0u ? sky(h) : shade(surface, 1.0, sunlit(h))), 1.0));
+        imageStore(outColor, h, vec4(exposed(surface == 0u ? sky(h) : shade(surface, 1.0, sunlit(h))), 1.0));
         return;
     }
     if (any(greaterThanEqual(uvec2(h), gtao.halfSize))) return;

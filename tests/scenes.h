@@ -15,12 +15,4 @@ voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bo
 // A camera at `position` looking at `target` with a vertical field of view in degrees.
 voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov = 60.0);
 
-// What the composite displays for a linear radiance: times the exposure, then the
-// tone map (docs/lighting.md: Narkowicz's filmic fit, or a clamp).
-inline float displayValue(float radiance, const voxel::Lighting& l) {
-    const float x = radiance * l.exposure;
-    const float y = l.toneMap == voxel::ToneMap::Filmic ? (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f) : x;
-    return y < 0.0f ? 0.0f : y > 1.0f ? 1.0f : y;
-}
-
 }  // namespace grotto::test

@@ -131,7 +131,7 @@ TEST_F(AgainstReference, GtaoOnAnOpenFloorIsWithinAHundredthOfTheReference) {
 // (docs/tradeoff.md has the full-size figures).
 TEST_F(AgainstReference, GtaoHighOnRoomsKeepsItsPsnr) {
     const voxel::World rooms = voxel::World::load(test::worldsDir() / "rooms.json");
-    const Camera camera = makeCamera(rooms.camera(""), 160, 90);
+    const Camera camera = worldCamera(rooms, "", 160, 90);
     const ReferenceView ref = referenceView(rooms, camera, 4.0 * rooms.voxelSize(), 256, &ctx());
     const AoError e = aoError(render(rooms, camera, options(AoMethod::Gtao, "high", 4.0 * rooms.voxelSize())).ao,
                               ref.ao, ref.surface);

@@ -1,10 +1,14 @@
 // Projection and depth linearisation at the numerical extremes we support: near 1e-4 to 10,
-// infinite and finite (1e7) far planes, a camera 1e6 units from the origin.
+// infinite and finite (1e7) far planes, a camera 1e6 units from the origin; and the
+// default camera of a world without cameras, which frames its bounds tightly.
 #include "engine/camera.h"
+#include "voxel/world.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace grotto {
 namespace {
@@ -77,6 +81,43 @@ TEST(Camera, LooksStraightDownWithoutNaN) {
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) EXPECT_TRUE(std::isfinite(c.basis[i][j]));
     EXPECT_NEAR(c.rayDirection(1, 1).y, -1.0, 1e-12);
+}
+
+// A bare grid's default camera fills the image with the grid's bounds, whatever
+// their shape and the image's: every corner of the bounds projects inside the
+// margin, and the projection spans kFramedFill of the width or the height, centred.
+TEST(Camera, DefaultCameraFramesTheBoundsTightlyAtAnyAspect) {
+    struct Shape {
+        const char* name;
+        glm::ivec3 size;
+    };
+    for (const Shape& shape : {Shape{"floor", {32, 1, 32}}, Shape{"tower", {4, 40, 4}}, Shape{"cube", {10, 10, 10}},
+                               Shape{"wall", {60, 8, 2}}}) {
+        const std::vector<uint8_t> solid(size_t(shape.size.x) * shape.size.y * shape.size.z, 1);
+        const voxel::World world = voxel::World::fromDense(shape.size, solid.data(), 0.5, {1e5, -20.0, 3.0});
+        const glm::dvec3 lo = world.origin(), hi = lo + glm::dvec3(shape.size) * world.voxelSize();
+        for (auto [w, h] : {std::pair{320u, 180u}, {180u, 320u}, {100u, 100u}, {400u, 100u}, {90u, 300u}}) {
+            SCOPED_TRACE(std::string(shape.name) + " " + std::to_string(w) + "x" + std::to_string(h));
+            const Camera c = worldCamera(world, "", w, h);
+            const double tx = std::tan(0.5 * c.fovY) * c.aspect(), ty = std::tan(0.5 * c.fovY);
+            glm::dvec2 least(1e9), most(-1e9);  // the projected corners, in [-1, 1] across the image
+            for (int k = 0; k < 8; ++k) {
+                const glm::dvec3 corner((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+                const glm::dvec3 view = glm::transpose(c.basis) * (corner - c.position);
+                ASSERT_LT(view.z, -c.nearPlane) << "corner " << k << " is behind the near plane";
+                const glm::dvec2 ndc(view.x / -view.z / tx, view.y / -view.z / ty);
+                least = glm::min(least, ndc), most = glm::max(most, ndc);
+            }
+            // Not cut: inside the margin on every side.
+            EXPECT_GE(std::min(least.x, least.y), -voxel::kFramedFill - 1e-9);
+            EXPECT_LE(std::max(most.x, most.y), voxel::kFramedFill + 1e-9);
+            // Filling: the axis that binds spans the whole of kFramedFill; both are centred.
+            const glm::dvec2 span = 0.5 * (most - least);
+            EXPECT_NEAR(std::max(span.x, span.y), voxel::kFramedFill, 1e-9);
+            EXPECT_NEAR(most.x + least.x, 0.0, 1e-9);
+            EXPECT_NEAR(most.y + least.y, 0.0, 1e-9);
+        }
+    }
 }
 
 }  // namespace

@@ -268,6 +268,22 @@ TEST_F(PathFiles, GoodPathsLoadInlineAndFromFiles) {
     EXPECT_EQ(k.fovDegrees, 50.0);
 }
 
+// A quaternion is normalised by its largest component first: the length of
+// [0, 1e200, 0, 1e200] overflows, of [0, 1e-200, 0, 1e-200] underflows, and
+// neither may be taken for no rotation (nor refused as zero).
+TEST_F(PathFiles, QuaternionsOfAnyScaleNormalise) {
+    for (const char* scale : {"1e200", "1e-200", "1.7e308"}) {
+        const std::string q = std::string("[0, ") + scale + ", 0, " + scale + "]";
+        const voxel::CameraPathDesc p = voxel::loadCameraPath(write("q.json", R"({"keys": [{"time": 0, "position": [0, 0, 0], "quaternion": )" + q +
+                                                                     R"(}, {"time": 1, "position": [1, 0, 0], "target": [2, 0, 0]}]})"));
+        const glm::dquat r = *p.keys[0].rotation;
+        EXPECT_NEAR(r.w, std::sqrt(0.5), 1e-15) << scale;
+        EXPECT_NEAR(r.y, std::sqrt(0.5), 1e-15) << scale;
+        EXPECT_EQ(r.x, 0.0);
+        EXPECT_EQ(r.z, 0.0);
+    }
+}
+
 TEST_F(PathFiles, BadPathsNameFileAndField) {
     expectError(write("none.json", R"({"keys": []})"), {"none.json", "keys", "at least two"});
     expectError(write("one.json", R"({"keys": [{"time": 0, "position": [0, 0, 0], "target": [1, 0, 0]}]})"),
@@ -394,7 +410,7 @@ TEST(ShippedPaths, CameraStaysOutOfSolid) {
         for (const auto& [name, desc] : paths) {
             SCOPED_TRACE(worldName + " " + name);
             EXPECT_GE(desc.keys.size(), 2u);
-            const CameraPath path(desc, world.camera(""));
+            const CameraPath path(desc, world.camera("", 16.0 / 9.0));
             const double margin = 0.3 * world.voxelSize();
             glm::dvec3 last = path.pose(0.0).position;
             for (double t = 0.0; t <= path.duration() + 1e-9; t += 1.0 / 30.0) {

@@ -1,7 +1,7 @@
 // One consistent command line: --version and bare usage, --size defaults stated
-// everywhere, one --frames syntax, info listing what --camera and --path accept,
-// costs never negative, stability's progress and --quiet, and the reference's
-// standard-error verdict with --require-stderr.
+// everywhere, one --frames syntax, info listing what --camera and --path accept
+// and the objects, costs never negative, stability's and flythrough's progress and
+// --quiet, and the reference's standard-error verdict with --require-stderr.
 #include "tests/cli_fixture.h"
 
 #include <gtest/gtest.h>
@@ -35,6 +35,22 @@ TEST(CliUsage, VersionAndBareUsage) {
     EXPECT_NE(bare.out.find("stability"), std::string::npos) << bare.out;
     EXPECT_EQ(std::count(bare.err.begin(), bare.err.end(), '\n'), 1) << bare.err;
     EXPECT_NE(bare.err.find("subcommand"), std::string::npos) << bare.err;
+}
+
+// A mistyped subcommand is named, with the one it was likely meant to be.
+TEST(CliUsage, MistypedSubcommandIsNamed) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"rendr", "unknown subcommand 'rendr' (did you mean 'render'? see --help)"},
+        {"Flythrogh", "unknown subcommand 'Flythrogh' (did you mean 'flythrough'? see --help)"},
+        {"stabilty", "did you mean 'stability'?"},
+        {"paint", "unknown subcommand 'paint' (see --help for the subcommands)"},
+    };
+    for (const auto& [word, expected] : cases) {
+        const test::RunResult r = runGrotto(std::string(word) + " world.json");
+        EXPECT_EQ(r.exitCode, 2) << word;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_NE(r.err.find(expected), std::string::npos) << r.err;
+    }
 }
 
 // Every command that renders states its --size default in --help.
@@ -150,6 +166,38 @@ TEST_F(CliErrors, StabilityProgressQuietAndCostsNeverNegative) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out.find("ETA"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("flicker raw"), std::string::npos) << r.out;
+}
+
+// flythrough takes --quiet as stability does: no progress lines, only the results.
+TEST_F(CliErrors, FlythroughQuietPrintsOnlyTheResults) {
+    const fs::path world = writeText("fly.json", std::string(R"({"grid": {"file": "good.vdb"}, "paths": {"p": )") + kPath + "}}");
+    const std::string run = "flythrough " + world.string() + " --path p --fps 2 --size 16x8 -o ";
+    test::RunResult r = runGrotto(run + (dir_ / "loud").string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("frame 0001 written"), std::string::npos) << r.out;
+    r = runGrotto(run + (dir_ / "quiet").string() + " --quiet");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.find("frame 000"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.rfind("wrote 3 frames", 0), 0u) << r.out;
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    EXPECT_TRUE(fs::exists(dir_ / "quiet" / "frame.0003.png"));
+}
+
+// info lists each object: where its voxels come from, how many and where, and how it moves.
+TEST_F(CliErrors, InfoListsObjects) {
+    const fs::path world = writeText("objects.json", R"({"grid": {"file": "good.vdb"}, "objects": [
+        {"name": "door", "generator": {"kind": "box", "size": [1, 10, 6], "material": 4}, "pivot": [0, -0.5, -0.5],
+         "keys": [{"time": 0, "position": [15, -0.5, 9]}, {"time": 1.5, "position": [15, -0.5, 9], "angle_degrees": -100, "axis": [0, 1, 0]}]},
+        {"name": "slab", "grid": {"file": "good.vdb", "name": "solid"}, "keys": [{"time": 0, "position": [2, 3, 4]}]}]})");
+    const test::RunResult r = runGrotto("info " + world.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("object         door: generator box 1x10x6, material 4, 60 voxels, own bounds (-0.5 -0.5 -0.5)..(0.5 9.5 5.5), "
+                         "moves: 2 keys from 0 to 1.5 s"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("object         slab: grid " + good_.string() + " (name solid, rule auto), 256 voxels, own bounds "
+                         "(-0.5 -0.5 -0.5)..(15.5 0.5 15.5), still at (2 3 4)"), std::string::npos) << r.out;
+    const test::RunResult bare = runGrotto("info " + good_.string());
+    ASSERT_EQ(bare.exitCode, 0) << bare.err;
+    EXPECT_NE(bare.out.find("objects        none"), std::string::npos) << bare.out;
 }
 
 TEST_F(CliErrors, BenchCostsNeverNegative) {

@@ -138,6 +138,10 @@ TEST_F(CliErrors, UnwritableOutput) {
 
 TEST_F(CliErrors, NonsenseSettings) {
     expectRefused("render " + good_.string() + " --size 0x16 -o " + out().string(), "--size", out());
+    // Sides read as 64-bit would wrap to 1 in 32 bits; a sign is not a digit.
+    for (const char* size : {"4294967297x1", "1x4294967297", "18446744073709551617x8", "8x-1", "8x+8", " 8x8", "8x8x8"})
+        expectRefused("render " + good_.string() + " --size \"" + size + "\" -o " + out().string(),
+                      "--size: '" + std::string(size) + "' is not a valid size", out());
     expectRefused("render " + good_.string() + " --size 8x8 -o " + (dir_ / "out.tga").string(), ".tga",
                   dir_ / "out.tga");
     expectRefused("mkworld nonsense -o " + (dir_ / "n.vdb").string(), "nonsense", dir_ / "n.vdb");
@@ -248,6 +252,9 @@ TEST_F(CliErrors, NonsenseAoSettings) {
     expectRefused(render(far), "ao.max_distance", out());
     const auto sun = writeText("sun.json", R"({"grid": {"file": "good.vdb"}, "lighting": {"sun": {"angle": 45}}})");
     expectRefused(render(sun), "lighting.sun.angle", out());
+    // A count is a whole number: 2.7 slices is refused, not truncated to 2.
+    const auto slices = writeText("slices.json", R"({"grid": {"file": "good.vdb"}, "ao": {"slices": 2.7}})");
+    expectRefused(render(slices), "field 'ao.slices': value 2.7 is not a whole number", out());
 }
 
 TEST_F(CliErrors, ShowWritesOneAovAsPng) {

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <random>
 #include <sstream>
@@ -308,6 +309,69 @@ TEST_F(CliErrors, StabilityBaselineCatchesARegressionAndRefusesAnotherRun) {
     std::ofstream(dir_ / "garbage.json") << "{";
     expectRefused(run + (dir_ / "g.json").string() + " --baseline " + (dir_ / "garbage.json").string(), "garbage.json",
                   dir_ / "g.json");
+    // Figures no run could have measured are refused (exit 2, naming the file and
+    // the field), never compared: a negative flicker would fail any run.
+    auto refusedWith = [&](const std::string& name, const std::function<void(json&)>& damage, const std::string& field) {
+        json bad = json::parse(std::ifstream(baseline));
+        damage(bad);
+        const fs::path file = dir_ / (name + ".json");
+        std::ofstream(file) << bad.dump();
+        const test::RunResult r =
+            expectRefused(run + (dir_ / "x.json").string() + " --baseline " + file.string(), file.string() + ": " + field, dir_ / "x.json");
+        EXPECT_EQ(r.exitCode, 2) << name;
+    };
+    refusedWith("negative", [](json& j) { j["flicker"]["temporal"] = -0.01; }, "flicker/temporal");
+    refusedWith("null", [](json& j) { j["error_mean"]["spatial"]["rmse"] = nullptr; }, "error_mean/spatial/rmse");
+    refusedWith("text", [](json& j) { j["color"]["flicker"] = "0.1"; }, "color/flicker");
+    refusedWith("old", [](json& j) { j.erase("color"); }, "color/flicker");
+    refusedWith("cells", [](json& j) { j["color"]["thumbnails"]["cells"] = {16, 99}; }, "color.thumbnails.cells");
+    refusedWith("hex", [](json& j) { j["color"]["thumbnails"]["frames"][0]["rgb"] = "00ff"; }, "color.thumbnails.frames[0].rgb");
+}
+
+// The final image regresses too: a change to shading, shadows or the tone map
+// leaves every AO figure as it was but changes the display colour of the frames,
+// which the baseline's thumbnails catch (exit 3, naming color/error_vs_baseline).
+TEST_F(CliErrors, StabilityBaselineCatchesAChangedImage) {
+    const fs::path path = writeText("orbit.json", R"({"keys": [{"time": 0, "position": [30, 12, 30], "target": [8, 0, 8]},
+        {"time": 1, "position": [-10, 14, 28], "target": [8, 0, 8]}]})");
+    // A floor with a wall on it: something to cast a shadow and shade.
+    writeSolid(dir_ / "wall.vdb", 16, 6, [](int x, int y, int) { return y == 0 || (x >= 7 && x <= 8); });
+    auto world = [&](const std::string& dir, const std::string& lighting) {
+        fs::create_directories(dir_ / dir);
+        std::ofstream(dir_ / dir / "w.json") << R"({"grid": {"file": ")" << (dir_ / "wall.vdb").string()
+                                             << R"("}, "lighting": {)" << lighting << "}}";
+        return (dir_ / dir / "w.json").string();
+    };
+    const std::string flags = " --path " + path.string() + " --fps 8 --size 64x36 --frames 8 --spp 8 --json ";
+    const fs::path baseline = dir_ / "baseline.json";
+    test::RunResult r = runGrotto("stability " + world("blessed", R"("exposure": 0.6)") + flags + baseline.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const json blessed = json::parse(std::ifstream(baseline));
+    EXPECT_GT(blessed["color"]["flicker"].get<double>(), 0.0) << "the camera moves: the image changes under it";
+    EXPECT_LT(blessed["color"]["flicker"].get<double>(), 0.2);
+    EXPECT_EQ(blessed["color"]["thumbnails"]["cells"], json({16, 9}));
+    ASSERT_EQ(blessed["color"]["thumbnails"]["frames"].size(), 2u) << "frames 1 and 8";
+    EXPECT_EQ(blessed["color"]["thumbnails"]["frames"][1]["frame"], 8);
+    // The same world from elsewhere passes, with no colour error at all.
+    r = runGrotto("stability " + world("same", R"("exposure": 0.6)") + flags + (dir_ / "same.json").string() +
+                  " --baseline " + baseline.string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const json same = json::parse(std::ifstream(dir_ / "same.json"));
+    bool checked = false;
+    for (const json& c : same["baseline"]["checks"])
+        if (c["metric"] == "color/error_vs_baseline") {
+            checked = true;
+            EXPECT_EQ(c["is"].get<double>(), 0.0);
+        }
+    EXPECT_TRUE(checked) << same["baseline"].dump();
+    for (const auto& [name, lighting] : std::vector<std::pair<std::string, std::string>>{
+             {"shading", R"("exposure": 0.63)"}, {"shadows", R"("sun": {"shadows": false})"}, {"tonemap", R"("tone_map": "linear")"}}) {
+        r = runGrotto("stability " + world(name, lighting) + flags + (dir_ / (name + ".json")).string() + " --baseline " +
+                      baseline.string());
+        EXPECT_EQ(r.exitCode, 3) << name << "\n" << r.out << r.err;
+        EXPECT_NE(r.err.find("color/error_vs_baseline"), std::string::npos) << name << ": " << r.err;
+        EXPECT_EQ(r.err.find("flicker/temporal"), std::string::npos) << name << ": the AO did not change: " << r.err;
+    }
 }
 
 }  // namespace

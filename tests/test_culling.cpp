@@ -55,7 +55,7 @@ TEST_P(Culling, NeverHidesWhatTheFrameShowsOnAnyFrameOfTheShippedPaths) {
     ASSERT_FALSE(world.desc().paths.empty());
     uint64_t hidden = 0, frames = 0;
     for (const auto& [name, desc] : world.desc().paths) {
-        const CameraPath path(desc, world.camera(""));
+        const CameraPath path(desc, world.camera("", double(w) / h));
         const int count = int(path.frameCount(24));  // every frame at 24 fps, as flythrough renders them
         for (int i = 0; i < count; ++i) {
             const double t = i / 24.0;
@@ -89,7 +89,7 @@ TEST_F(LevelsOfDetail, CoarseChunksOpenNoHolesAndNeverLieBehindTheVoxels) {
     exact.setCulling({.lodBias = 0.0, .occlusion = false});
     std::array<uint32_t, 4> levels{};
     for (const char* name : {"overview", "walk"}) {
-        const Camera camera = makeCamera(world.camera(name), w, h);
+        const Camera camera = worldCamera(world, name, w, h);
         const FrameStats stats = coarse.render(camera, 0);
         exact.render(camera, 0);
         for (int level = 0; level <= 3; ++level) levels[level] += stats.culling.chunksAtLevel[level];

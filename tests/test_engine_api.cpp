@@ -1,6 +1,7 @@
 // The game-facing engine (<grotto/grotto.h>), headless with the validation layer on.
 #include "engine/camera.h"
 #include "engine/reference_view.h"
+#include "tests/display_checks.h"
 #include "tests/test_util.h"
 
 #include <grotto/grotto.h>
@@ -48,6 +49,34 @@ TEST(EngineApi, AnEditShowsInTheNextFrameAsAWorldLoadedEdited) {
     EXPECT_EQ(fresh.validationMessages(), 0);
 }
 
+// A saved world reloads as the same world: a fresh engine loading the saved file
+// renders what the engine that saved it renders (edits, objects, lighting and AO
+// settings as set, the world's cameras).
+TEST(EngineApi, ASavedWorldRendersAsTheEngineThatSavedIt) {
+    const test::ScratchDir dir;
+    Engine live({.width = 48, .height = 27, .validation = true});
+    live.loadWorld(test::worldsDir() / "yard.json");
+    live.edit(kDig);
+    voxel::Lighting evening = live.world().desc().lighting;
+    evening.sunDirection = glm::normalize(glm::vec3(-0.8f, 0.3f, 0.2f));
+    evening.sunColor = {1.0f, 0.6f, 0.3f};
+    evening.exposure = 0.9f;
+    live.setLighting(evening);
+    live.setAo({.method = "gtao", .quality = "medium", .radius = 2.0});
+    live.setTime(0.7);
+    live.saveWorld(dir / "yard-dug.json");
+
+    Engine fresh({.width = 48, .height = 27, .validation = true});
+    fresh.loadWorld(dir / "yard-dug.json");
+    ASSERT_EQ(fresh.objectCount(), live.objectCount());
+    fresh.setTime(0.7);
+    const Pixels saved = renderOnce(fresh), shown = renderOnce(live);
+    EXPECT_EQ(saved.rgba, shown.rgba);
+    EXPECT_EQ(saved.ao, shown.ao);
+    EXPECT_EQ(live.validationMessages(), 0);
+    EXPECT_EQ(fresh.validationMessages(), 0);
+}
+
 // Size, lighting and AO change between frames without a new engine or a reload.
 TEST(EngineApi, SettingsChangeInPlace) {
     Engine engine({.width = 64, .height = 48, .validation = true});
@@ -72,6 +101,32 @@ TEST(EngineApi, SettingsChangeInPlace) {
     const RenderedFrame frame = engine.render();
     EXPECT_EQ(frame.ao.extent.width, 17u) << "AO at half resolution, rounded up";
     EXPECT_EQ(frame.color.extent.width, 33u);
+    EXPECT_EQ(engine.validationMessages(), 0);
+}
+
+// The colour a game gets is scene-linear (above 1 under a bright sun), its
+// display image the same frame through the tone map, and saveFrame writes the
+// first as an EXR and the second as a PNG.
+TEST(EngineApi, ColourIsSceneLinearAndDisplayItsToneMap) {
+    const test::ScratchDir dir;
+    Engine engine({.width = 40, .height = 24, .validation = true});
+    engine.loadWorld(test::worldsDir() / "rooms.json");
+    engine.setCamera(kView);
+    voxel::Lighting bright = engine.world().desc().lighting;
+    bright.sunIntensity = 4.0f;
+    bright.exposure = 1.0f;
+    engine.setLighting(bright);
+    const RenderedFrame frame = engine.render();
+    EXPECT_EQ(frame.color.format, VK_FORMAT_R32G32B32A32_SFLOAT);
+    EXPECT_EQ(frame.display.format, VK_FORMAT_R16G16B16A16_SFLOAT);
+    EXPECT_EQ(frame.display.extent.width, 40u);
+    EXPECT_EQ(frame.display.extent.height, 24u);
+    const Pixels p = engine.readPixels();
+    engine.saveFrame(dir / "f.exr");
+    engine.saveFrame(dir / "f.png");
+    const test::ExrAgainstPng r = test::compareExrWithPng(dir / "f.exr", dir / "f.png");
+    test::expectSceneLinear(r, "saveFrame");
+    EXPECT_EQ(r.brightest, *std::max_element(p.rgba.begin(), p.rgba.end())) << "readPixels holds the EXR's colour";
     EXPECT_EQ(engine.validationMessages(), 0);
 }
 

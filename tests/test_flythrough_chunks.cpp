@@ -8,12 +8,17 @@
 
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <fstream>
 #include <future>
 #include <map>
+#include <thread>
 
 namespace grotto {
 namespace {
@@ -32,6 +37,26 @@ protected:
         return "flythrough " + world_.string() + " --path p --size 16x8 --fps 8 --frames " + frames + " -o " + seq().string();
     }
     fs::path seq() const { return dir_ / "seq"; }
+    nlohmann::json stats() const {
+        std::ifstream in(seq() / "stats.json");
+        return nlohmann::json::parse(in);
+    }
+    void writeStats(const nlohmann::json& stats) const { std::ofstream(seq() / "stats.json") << stats.dump(); }
+
+    // Starts `args` and kills it (SIGKILL) once `file` appears; false when the
+    // run ended first or `file` never came.
+    static bool killWhenThere(const std::string& args, const fs::path& file) {
+        const pid_t pid = test::startGrotto(args);
+        bool killed = false;
+        for (int k = 0; k < 60000 && !killed; ++k) {
+            if (fs::exists(file)) killed = kill(pid, SIGKILL) == 0;
+            else if (waitpid(pid, nullptr, WNOHANG) == pid) return false;
+            else std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
+        int status = 0;
+        waitpid(pid, &status, 0);
+        return killed && WIFSIGNALED(status);
+    }
 
     fs::path world_;
 };
@@ -111,6 +136,84 @@ TEST_F(FlythroughChunks, ConcurrentChunksMatchASingleRun) {
     }
     EXPECT_LE(worst, 2) << "the worst frame's largest difference, in 8-bit levels";
     std::printf("[ measured ] 3 concurrent chunks against one run: largest difference %d/255\n", worst);
+}
+
+// kill -9 and the same command again: the frames the killed run wrote end up
+// marked written in stats.json (docs/farm.md's completion check), every frame is
+// there, and nothing the killed run was writing is left behind.
+TEST_F(FlythroughChunks, AKilledRunRerunEndsWithEveryFrameRecorded) {
+    const std::string run = "flythrough " + world_.string() + " --path p --size 16x8 --fps 200 -o " + seq().string();
+    ASSERT_TRUE(killWhenThere(run, seq() / "frame.0010.png")) << "the run was not killed mid-way";
+    ASSERT_FALSE(fs::exists(seq() / "frame.0201.png")) << "the run ended before it was killed";
+    const test::RunResult r = runGrotto(run);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json recorded = stats();
+    int written = 0;
+    for (const nlohmann::json& f : recorded["frames"]) written += f["written"].get<bool>();
+    EXPECT_EQ(written, 201);
+    char name[32];
+    for (int i = 1; i <= 201; ++i) {
+        std::snprintf(name, sizeof name, "frame.%04d.png", i);
+        EXPECT_TRUE(fs::exists(seq() / name)) << name;
+    }
+    for (const auto& e : fs::directory_iterator(seq()))
+        EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << "left behind: " << e.path();
+}
+
+// A run killed before its first frame leaves flythrough.json alone in the
+// directory: a run with other settings takes the directory, and the stats start afresh.
+TEST_F(FlythroughChunks, ADirectoryWithoutFramesTakesOtherSettings) {
+    const std::string run = "flythrough " + world_.string() + " --path p --fps 8 --frames 1-2 -o " + seq().string();
+    ASSERT_TRUE(killWhenThere(run + " --size 16x8", seq() / "flythrough.json"));
+    ASSERT_FALSE(fs::exists(seq() / "frame.0001.png")) << "killed too late: a frame is there";
+    test::RunResult r = runGrotto(run + " --size 32x16");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(test::readPixels8(seq() / "frame.0001.png").size(), 32u * 16u * 3u);
+
+    // Frames deleted by hand, their stats kept: the same.
+    fs::remove(seq() / "frame.0001.png");
+    fs::remove(seq() / "frame.0002.png");
+    r = runGrotto("flythrough " + world_.string() + " --path p --fps 8 --frames 2-2 --size 16x8 -o " + seq().string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    // Frame 1 is warm-up now: the entry of the run whose frame is gone is not kept.
+    const nlohmann::json recorded = stats();
+    ASSERT_EQ(recorded["frames"].size(), 2u);
+    EXPECT_FALSE(recorded["frames"][0]["written"].get<bool>()) << recorded.dump();
+    EXPECT_TRUE(recorded["frames"][1]["written"].get<bool>()) << recorded.dump();
+}
+
+// A directory of other settings is refused naming the setting, what it was and what it would be.
+TEST_F(FlythroughChunks, TheRefusalOfOtherSettingsNamesTheSetting) {
+    ASSERT_EQ(runGrotto(flythrough("1-2")).exitCode, 0);
+    const std::string other = "flythrough " + world_.string() + " --path p --size 32x16 --fps 8 --frames 3 -o " + seq().string();
+    expectRefused(other, R"(size was "16x8", this run's is "32x16")", seq() / "frame.0003.png");
+    expectRefused(flythrough("3") + " --radius 2", "ao.radius was", seq() / "frame.0003.png");
+}
+
+// Times in stats.json: huge ones still merge into numbers; ones that are not
+// times (negative, beyond a double) are refused before anything is rendered.
+TEST_F(FlythroughChunks, StatsTimesMergeIntoNumbersOrAreRefused) {
+    ASSERT_EQ(runGrotto(flythrough("1-3")).exitCode, 0);
+    nlohmann::json doctored = stats();
+    for (nlohmann::json& f : doctored["frames"]) {
+        f["wall_ms"] = 1e308;
+        for (auto& [pass, ms] : f["pass_ms"].items()) ms = 1e308;
+    }
+    writeStats(doctored);
+    const test::RunResult r = runGrotto(flythrough("4"));
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const nlohmann::json median = stats()["median"];
+    ASSERT_TRUE(median["wall_ms"].is_number()) << median.dump();
+    EXPECT_EQ(median["wall_ms"].get<double>(), 1e308);
+    for (auto& [pass, ms] : median["pass_ms"].items()) EXPECT_TRUE(ms.is_number()) << pass;
+
+    doctored["frames"][1]["wall_ms"] = -1.0;
+    writeStats(doctored);
+    expectRefused(flythrough("5"), "frames[1] is not a frame entry", seq() / "frame.0005.png");
+    std::string text = doctored.dump();
+    text.replace(text.find("-1.0"), 4, "1e999");
+    std::ofstream(seq() / "stats.json") << text;
+    expectRefused(flythrough("5"), "stats.json", seq() / "frame.0005.png");
 }
 
 }  // namespace

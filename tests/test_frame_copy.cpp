@@ -55,7 +55,7 @@ FrameImages compareFrames(vk::Context& ctx, const std::string& worldFile, bool a
     const AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), "test");
     Renderer renderer(ctx, *scene, lighting, ao, 96, 54, objects.get());
     FrameCopy slots[2] = {FrameCopy(ctx, aovs), FrameCopy(ctx, aovs)};
-    voxel::CameraDesc c = world.camera("");
+    voxel::CameraDesc c = world.camera("", 96.0 / 54.0);
     FrameImages last;
     for (uint32_t i = 1; i <= 4; ++i) {
         c.position.x += 0.25;

@@ -26,7 +26,7 @@ struct Rendering {
     explicit Rendering(vk::Context& ctx) : scene(uploadScene(ctx, world)) {
         const AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), "test");
         renderer = std::make_unique<Renderer>(ctx, *scene, world.desc().lighting, ao, 48, 27);
-        camera = makeCamera(world.camera(""), 48, 27);
+        camera = worldCamera(world, "", 48, 27);
     }
 };
 

@@ -111,7 +111,7 @@ TEST_F(GpuTest, TinyImagesRenderFiniteValues) {
     const voxel::World world = terrain({0, 0, 0}, 1.0);
     auto scene = uploadScene(ctx(), world.mesh(), world.desc());
     for (auto [w, h] : {std::pair{1u, 1u}, {2u, 2u}, {3u, 1u}}) {
-        const Camera camera = makeCamera(world.camera(""), w, h);
+        const Camera camera = worldCamera(world, "", w, h);
         Renderer renderer(ctx(), *scene, world.desc().lighting, aoOptionsFor(world.desc().ao, 1.0, "test"), w, h);
         renderer.render(camera);
         const FrameImages img = renderer.readback(camera, true);

@@ -2,6 +2,7 @@
 // clear errors for bad input.
 #include "common/error.h"
 #include "voxel/generators.h"
+#include "voxel/solid.h"
 
 #include <gtest/gtest.h>
 #include <openvdb/io/File.h>
@@ -226,6 +227,34 @@ TEST(Generators, BadMeshFilesThrow) {
     expectError("mesh", o, "missing.obj");
     o.meshFile.clear();
     expectError("mesh", o, "--mesh");
+}
+
+// The sizes an object's generator is refused by, before generating, bound what
+// it makes (bricks with tiles as the bricks they cover, and leaves), and not
+// loosely: an estimate ten times too high would refuse what fits.
+TEST(Generators, GeneratedSizeBoundsWhatIsMade) {
+    TempDir dir;
+    struct Case {
+        const char* kind;
+        int size;
+    };
+    for (const Case c : {Case{"rooms", 64}, Case{"rooms", 256}, Case{"caves", 64}, Case{"caves", 256}, Case{"thin", 64},
+                         Case{"thin", 256}, Case{"city", 256}, Case{"city", 1024}, Case{"sphere", 64}, Case{"sphere", 256},
+                         Case{"mesh", 64}}) {
+        SCOPED_TRACE(std::string(c.kind) + " " + std::to_string(c.size));
+        GeneratorOptions o = sized(c.size);
+        if (std::string(c.kind) == "mesh") o.meshFile = dir.write("cube.obj", kCubeObj);
+        const GeneratedSize bound = generatedSize(c.kind, o);
+        const openvdb::GridBase::Ptr grid = generateWorld(c.kind, o);
+        WorldDesc desc;
+        desc.materials = defaultMaterials();
+        const World world = makeWorld(grid, desc);
+        const double bricks = double(world.stats().bricks);
+        EXPECT_LE(bricks, bound.bricks);
+        EXPECT_LE(double(world.impl().solid->tree().leafCount()), bound.leaves);
+        EXPECT_LE(double(grid->baseTree().leafCount()), bound.leaves);
+        if (c.size >= 256) EXPECT_LE(bound.bricks, 8.0 * bricks);
+    }
 }
 
 TEST(Generators, BadOptionsThrow) {

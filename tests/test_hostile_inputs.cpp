@@ -30,7 +30,13 @@ protected:
     // `grotto info` loads and meshes the world: the whole way a file is read.
     void expectRefusedWithinCaps(const fs::path& file, const std::string& mention) {
         SCOPED_TRACE(file.filename().string());
-        const test::RunResult r = expectRefused("info " + file.string(), mention, dir_ / "no-output", "", kCaps);
+        expectCommandRefusedWithinCaps("info " + file.string(), mention);
+    }
+    // Any command; `output` is what it must not have written.
+    void expectCommandRefusedWithinCaps(const std::string& args, const std::string& mention,
+                                        const fs::path& output = {}) {
+        SCOPED_TRACE(args);
+        const test::RunResult r = expectRefused(args, mention, output.empty() ? dir_ / "no-output" : output, "", kCaps);
         if (!test::kAddressSanitizer) EXPECT_LE(r.peakMiB, goodWorldMiB() + kReadingMiB);
     }
 
@@ -185,6 +191,82 @@ TEST_F(HostileInputs, OutputsOnlyReplaceRegularFiles) {
     EXPECT_EQ(fs::status(dir_ / "pipe.json").type(), fs::file_type::fifo);
     fs::create_directory(dir_ / "folder.png");
     expectRefused(render + (dir_ / "folder.png").string(), "is a directory", dir_ / "no-output");
+}
+
+// Ten megabytes of '[' (a parser makes a node of each: gigabytes) as each kind of
+// JSON file grotto reads, and a file larger than any JSON input should be.
+TEST_F(HostileInputs, JsonBombs) {
+    const std::string bomb = writeBytes("bomb.json", std::string(10 << 20, '[')).string();
+    const std::string world = writeFlyWorld().string(), frames = (dir_ / "frames").string();
+    expectCommandRefusedWithinCaps("info " + bomb, "bomb.json: nests arrays and objects more than 64 deep");
+    expectCommandRefusedWithinCaps("flythrough " + world + " --path " + bomb + " --size 32x16 -o " + frames, "bomb.json: nests",
+                                   frames);
+    expectCommandRefusedWithinCaps("view " + good_.string() + " --size 32x16 --script " + bomb, "bomb.json: nests");
+    expectCommandRefusedWithinCaps("stability " + world + " --path p --size 32x16 --baseline " + bomb + " --json " +
+                                       (dir_ / "s.json").string(),
+                                   "bomb.json: nests", dir_ / "s.json");
+    // The files a flythrough keeps in its directory: its manifest, and the stats
+    // of a run made there first.
+    const fs::path kept = dir_ / "kept";
+    fs::create_directory(kept);
+    fs::copy_file(bomb, kept / "flythrough.json");
+    expectCommandRefusedWithinCaps("flythrough " + world + " --path p --size 32x16 -o " + kept.string(), "flythrough.json: nests",
+                                   kept / "frame.0001.png");
+    const test::RunResult first = runGrotto("flythrough " + world + " --path p --size 32x16 --frames 2 -o " + frames);
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    fs::copy_file(bomb, fs::path(frames) / "stats.json", fs::copy_options::overwrite_existing);
+    expectCommandRefusedWithinCaps("flythrough " + world + " --path p --size 32x16 -o " + frames, "stats.json: nests",
+                                   fs::path(frames) / "frame.0003.png");
+    // Brackets in strings are text, not nesting: a deep-looking name is only a name.
+    const std::string brackets = std::string(100, '[');
+    expectCommandRefusedWithinCaps("info " + writeText("quoted.json", R"({"grid": {"file": ")" + brackets + R"("}})").string(),
+                                   brackets + ": no such file");
+    const std::string wide = R"({"grid": {"file": "good.vdb"}, "x": ")" + std::string(17 << 20, 'a') + R"("})";
+    expectCommandRefusedWithinCaps("info " + writeBytes("wide.json", wide).string(), "wide.json: is larger than 16 MiB");
+}
+
+// Objects and edits whose memory passes the budget are refused from their sizes,
+// before any voxel is made (and before anything is written), not after minutes.
+TEST_F(HostileInputs, ObjectsAndEditsPastTheMemoryBudget) {
+    auto world = [&](const std::string& name, const std::string& extra) {
+        return writeText(name, R"({"grid": {"file": "good.vdb"}, )" + extra + "}").string();
+    };
+    const std::string key = R"("keys": [{"time": 0, "position": [0, 0, 0]}])";
+    // At the documented limit of a box, and a box past a small budget.
+    const std::string box4096 = world("box4096.json", R"("objects": [{"generator": {"kind": "box", "size": [4096, 4096, 4096]}, )" + key + "}]");
+    expectCommandRefusedWithinCaps(render(box4096), "box4096.json: field 'objects[0].generator.size': object 'object1' could make", out());
+    const std::string box1024 = world("box1024.json", R"("memory_budget_mib": 64, "objects": [{"generator": {"kind": "box", "size": [1024, 1024, 1024]}, )" + key + "}]");
+    expectCommandRefusedWithinCaps(render(box1024), "more than the memory budget of 64.0 MiB", out());
+    const std::string caves = world("caves.json", R"("memory_budget_mib": 1024, "objects": [{"generator": {"kind": "caves", "size": 4096}, )" + key + "}]");
+    expectCommandRefusedWithinCaps(render(caves), "caves.json: field 'objects[0].generator.size'", out());
+    // A path's edit: refused when the path is read, before the output directory is made.
+    const std::string frames = (dir_ / "frames").string();
+    const std::string fill = world("fill.json", R"("memory_budget_mib": 64, "paths": {"p": {"keys": [
+        {"time": 0, "position": [8, 10, 30], "target": [8, 0, 8]}, {"time": 1, "position": [26, 6, 12], "target": [8, 0, 6]}],
+        "edits": [{"time": 0.9, "op": "fill", "voxels": {"min": [0, 0, 0], "max": [1023, 1023, 1023]}, "material": 2}]}})");
+    expectCommandRefusedWithinCaps("flythrough " + fill + " --path p --size 32x16 --fps 4 -o " + frames,
+                                   "fill.json: field 'paths.p.edits[0]': could make the world", frames);
+    const fs::path far = writeText("far.json", R"({"keys": [
+        {"time": 0, "position": [8, 10, 30], "target": [8, 0, 8]}, {"time": 1, "position": [26, 6, 12], "target": [8, 0, 6]}],
+        "edits": [{"time": 0.9, "op": "carve", "sphere": {"centre": [0, 3e9, 0], "radius": 2}}]})");
+    expectCommandRefusedWithinCaps("flythrough " + good_.string() + " --path " + far.string() + " --size 32x16 --fps 4 -o " + frames,
+                                   "far.json: field 'edits[0]': reaches outside the supported index range on y", frames);
+}
+
+// What a flythrough reads in its output directory: a FIFO there once blocked the
+// run forever, and a directory named stats.json ended it as an internal failure.
+TEST_F(HostileInputs, FlythroughDirectoryFilesThatAreNotRegularFiles) {
+    const std::string run = "flythrough " + writeFlyWorld().string() + " --path p --size 16x8 --fps 8 --frames 2 -o ";
+    for (const char* name : {"flythrough.json", "stats.json"}) {
+        const fs::path seq = dir_ / (std::string("fifo-") + name);
+        fs::create_directory(seq);
+        ASSERT_EQ(mkfifo((seq / name).c_str(), 0644), 0);
+        expectRefused(run + seq.string(), name + std::string(": is a FIFO, not a regular file"), seq / "frame.0001.png",
+                      "", {.hangSeconds = 60});
+    }
+    const fs::path seq = dir_ / "folder";
+    fs::create_directories(seq / "stats.json");
+    expectRefused(run + seq.string(), "stats.json: is a directory, not a regular file", seq / "frame.0001.png");
 }
 
 TEST_F(HostileInputs, TextFromFilesIsPrintedEscaped) {

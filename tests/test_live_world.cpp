@@ -346,6 +346,14 @@ TEST(LiveWorld, BadEditsThrowAndChangeNothing) {
     };
     const World before = w;
     for (const Edit& e : bad) {
+        // check() refuses what apply() would, with the same message, changing nothing.
+        std::string checked;
+        try {
+            w.check(e);
+            ADD_FAILURE() << describe(e) << " passed the check";
+        } catch (const Error& err) {
+            checked = err.what();
+        }
         try {
             w.apply(e);
             ADD_FAILURE() << describe(e) << " was accepted";
@@ -353,6 +361,7 @@ TEST(LiveWorld, BadEditsThrowAndChangeNothing) {
             EXPECT_EQ(err.kind(), Error::Kind::Input) << err.what();
             EXPECT_NE(std::string(err.what()).find(describe(e)), std::string::npos) << err.what();
             EXPECT_FALSE(err.hint().empty()) << err.what();
+            EXPECT_EQ(checked, err.what());
         }
     }
     EXPECT_TRUE(w.editLog().empty());
@@ -399,6 +408,91 @@ TEST(LiveWorld, PaintingAUniformWorldAddsMaterialsAndUndoRemovesThem) {
     EXPECT_EQ(w.material({24, 8, 24}), 1);
     w.undo();
     expectSameVoxels(w, before, around, "after undoing the paint");
+}
+
+// Whole bricks an edit covers become tiles: the memory of a fill follows its
+// faces, not its volume, and its undo keeps one record per brick.
+TEST(LiveWorld, LargeFillsAreTilesAndUndoExactly) {
+    World w = slabWorld();
+    const World before = w;
+    const uint64_t leavesBefore = w.impl().solid->tree().leafCount();
+    const IndexBox box{{0, 64, 0}, {511, 575, 511}};  // 512^3 voxels, on brick boundaries
+    const EditResult r = w.apply(Edit::fillBox(box, 2));  // a second material: the material grid too
+    EXPECT_EQ(r.changed, uint64_t(512) * 512 * 512);
+    EXPECT_EQ(r.voxels.min, box.min);
+    EXPECT_EQ(r.voxels.max, box.max);
+    for (glm::ivec3 v : {box.min, box.max, glm::ivec3(200, 300, 400)}) EXPECT_EQ(w.material(v), 2);
+    EXPECT_EQ(w.material(box.min - 1), 0);
+    EXPECT_EQ(w.stats().bricks, before.stats().bricks + 64 * 64 * 64);
+    EXPECT_EQ(w.stats().solidVoxels, before.stats().solidVoxels + r.changed);
+    // As voxels, each of its 262144 bricks would be a leaf of both grids (over 500 MiB).
+    EXPECT_EQ(w.impl().solid->tree().leafCount(), leavesBefore);
+    EXPECT_LT(w.stats().hostBytes, size_t(32) << 20);
+    EXPECT_EQ(w.undoDepth(), 1u);
+    EXPECT_EQ(w.undo().changed, r.changed);
+    expectSameVoxels(w, before, {glm::ivec3(-1), glm::ivec3(16)}, "after undoing the fill");
+    EXPECT_EQ(w.stats().bricks, before.stats().bricks);
+    EXPECT_EQ(w.material(glm::ivec3(200, 300, 400)), 0);
+}
+
+// The chunks inside a large fill (solid with all their neighbours) and those
+// beside it (empty) are told from their bricks to have no faces: the mesh is the
+// fill's surface, every face of it once.
+TEST(LiveWorld, MeshOfALargeFillIsItsSurface) {
+    World w = slabWorld();  // the slab lies inside the fill
+    const IndexBox box{{-37, -5, -3}, {218, 250, 252}};  // 256^3, off brick and chunk boundaries
+    w.apply(Edit::fillBox(box, 2));
+    const Mesh mesh = w.mesh();
+    uint64_t area = 0;
+    for (const gpu::PackedQuad& q : mesh.quads) area += uint64_t(gpu::quadWidth(q.bits)) * gpu::quadHeight(q.bits);
+    EXPECT_EQ(area, 6ull * 256 * 256);
+    for (const MeshChunk& c : mesh.chunks) {  // only chunks on the surface hold quads
+        const glm::ivec3 lo = c.origin, hi = c.origin + 31;
+        const bool inside = glm::all(glm::greaterThan(lo, box.min)) && glm::all(glm::lessThan(hi, box.max));
+        EXPECT_FALSE(inside) << c.origin.x << " " << c.origin.y << " " << c.origin.z;
+    }
+}
+
+// Off brick boundaries, over solid voxels and tiles, and spheres: each changes
+// exactly what a plain model of the voxels says, and undo brings back the world.
+TEST(LiveWorld, FillsAndCarvesAcrossTilesMatchTheModel) {
+    World w = thinWorldWithTiles();
+    const World before = w;
+    const IndexBox region{{-20, -4, -20}, {60, 50, 60}};
+    Model model(w, region);
+    const Edit edits[] = {
+        Edit::fillBox({{-13, 3, -9}, {41, 37, 50}}, 2),
+        Edit::carveSphere(centreOf(w, {14, 20, 20}), 13.0),
+        Edit::paintBox({{-20, -4, -20}, {12, 12, 12}}, 5),
+        Edit::fillSphere(centreOf(w, {30, 30, 30}), 11.0, 1),
+        Edit::carveBox({{-16, 8, -16}, {31, 31, 31}}),
+    };
+    for (const Edit& e : edits) {
+        expectSameResult(w.apply(e), model.apply(e), describe(e));
+        uint64_t wrong = 0;
+        Model::forEach(region, [&](glm::ivec3 v) { wrong += w.material(v) != model.at(v); });
+        EXPECT_EQ(wrong, 0u) << describe(e);
+    }
+    while (w.undoDepth() > 0) w.undo();
+    expectSameVoxels(w, before, region, "after undoing them all");
+}
+
+// A sphere's inside becomes tiles: only the bricks its surface crosses are leaves.
+TEST(LiveWorld, LargeSphereIsTilesInsideLeavesOnItsSurface) {
+    World w = slabWorld();
+    const double r = 200.0;  // voxels; the world's voxels are half a unit
+    const glm::dvec3 c = centreOf(w, {0, 400, 0});
+    const EditResult e = w.apply(Edit::fillSphere(c, r * w.voxelSize(), 3));
+    uint64_t inside = 0;  // voxel centres within the radius, counted by hand
+    for (int x = -201; x <= 201; ++x)
+        for (int y = -201; y <= 201; ++y)
+            for (int z = -201; z <= 201; ++z) inside += double(x) * x + double(y) * y + double(z) * z <= r * r;
+    EXPECT_EQ(e.changed, inside);
+    const double pi = 3.14159265358979, d = 8.0 * std::sqrt(3.0);
+    const double surfaceBricks = 4.0 / 3.0 * pi * (std::pow(r + d, 3) - std::pow(r - d, 3)) / 512.0;
+    const uint64_t leaves = w.impl().solid->tree().leafCount();
+    EXPECT_LT(double(leaves), surfaceBricks);
+    EXPECT_GT(double(w.stats().bricks), 4.0 / 3.0 * pi * std::pow(r - d, 3) / 512.0);  // the tiles inside count as bricks
 }
 
 TEST(LiveWorld, ChunksTouchingIncludeNeighboursAcrossBorders) {

@@ -78,7 +78,8 @@ TEST(ObjectDesc, ParsesGridsGeneratorsAndRotations) {
         "pivot": [0, -0.5, -0.5], "keys": [{"time": 0, "position": [1, 2, 3]},
         {"time": 2, "position": [1, 2, 3], "angle_degrees": 90, "axis": [0, 2, 0]}]},
         {"grid": {"file": "rooms.vdb", "rule": "int32"}, "keys": [{"time": 0, "position": [0, 0, 0],
-        "quaternion": [0, 0, 0, 2]}]}])");
+        "quaternion": [0, 0, 0, 2]}, {"time": 1, "position": [0, 0, 0], "quaternion": [1e200, 0, 0, 1e200]},
+        {"time": 2, "position": [0, 0, 0], "quaternion": [0, -1e-200, 0, 1e-200]}]}])");
     const voxel::WorldDesc w = voxel::loadWorldDesc(f.path);
     ASSERT_EQ(w.objects.size(), 2u);
     EXPECT_EQ(w.objects[0].name, "door");
@@ -88,6 +89,12 @@ TEST(ObjectDesc, ParsesGridsGeneratorsAndRotations) {
     EXPECT_EQ(w.objects[1].name, "object2");
     EXPECT_EQ(w.objects[1].gridFile, f.path.parent_path() / "rooms.vdb");
     EXPECT_EQ(w.objects[1].keys[0].rotation, glm::dquat(1, 0, 0, 0));  // normalised
+    // Components whose squares overflow or underflow: normalised all the same
+    // (90 degrees about x, then -90 about y), not taken for no rotation.
+    const glm::dvec3 y = w.objects[1].keys[1].rotation * glm::dvec3(0, 1, 0);
+    EXPECT_NEAR(glm::length(y - glm::dvec3(0, 0, 1)), 0.0, 1e-12);
+    const glm::dvec3 x = w.objects[1].keys[2].rotation * glm::dvec3(1, 0, 0);
+    EXPECT_NEAR(glm::length(x - glm::dvec3(0, 0, 1)), 0.0, 1e-12);
 }
 
 TEST(ObjectDesc, ErrorsNameFileAndField) {
@@ -103,7 +110,20 @@ TEST(ObjectDesc, ErrorsNameFileAndField) {
          "field 'objects[0].keys[1].time': must exceed"},
         {"[{" + box + R"("keys": [{"time": 0}]}])", "field 'objects[0].keys[0].position': missing"},
         {"[{" + box + R"("keys": [{"time": 0, "position": [0, 0, 0], "quaternion": [0, 0, 0, 0]}]}])",
-         "field 'objects[0].keys[0].quaternion': has zero length"},
+         "field 'objects[0].keys[0].quaternion': must not be zero"},
+        // A misspelt key is news, not the key it was meant to be missing.
+        {"[{" + box + R"("keys": [{"time": 0, "position": [0, 0, 0], "angle_degree": 9, "axis": [0, 1, 0]}]}])",
+         "field 'objects[0].keys[0].angle_degree': unknown field, did you mean 'angle_degrees'?"},
+        {"[{" + box + R"("keys": [{"time": 0, "postion": [0, 0, 0]}]}])",
+         "field 'objects[0].keys[0].postion': unknown field, did you mean 'position'?"},
+        {"[{" + box + key + R"(, "pivott": [0, 0, 0]}])", "field 'objects[0].pivott': unknown field, did you mean 'pivot'?"},
+        // The object's own field, not the world's grid block.
+        {R"([{"generator": {"kind": "box", "size": [2, 2, 2], "material": 9}, )" + key + "}]",
+         "field 'objects[0].generator.material': id 9 has no entry in 'materials'"},
+        {R"([{"grid": {"file": "rooms.vdb", "material": 12}, )" + key + "}]",
+         "field 'objects[0].grid.material': id 12 has no entry in 'materials'"},
+        {R"([{"generator": {"kind": "caves", "seed": 1.5}, )" + key + "}]",
+         "field 'objects[0].generator.seed': value 1.5 is not a whole number"},
         {"[{" + box + R"("keys": [{"time": 0, "position": [0, 0, 0], "angle_degrees": 9}]}])",
          "field 'objects[0].keys[0].axis': missing"},
         {"[{" + box + key + R"(, "spin": 1}])", "field 'objects[0].spin': unknown field"},

@@ -59,7 +59,7 @@ SoftSunError softSunError(vk::Context& ctx, float angle, uint32_t frames, double
     ao.gtao = gtaoPreset("low", 2.0);
     ao.gtao.temporalHistory = frames;
     Renderer renderer(ctx, *scene, lighting, ao, 160, 90);
-    const voxel::CameraDesc end = world.camera("table");
+    const voxel::CameraDesc end = world.camera("table", 16.0 / 9.0);
     const glm::dvec3 right = glm::normalize(glm::cross(end.target - end.position, glm::dvec3(0, 1, 0)));
     Camera camera;
     for (uint32_t k = 0; k < frames; ++k) {
@@ -126,7 +126,7 @@ TEST_F(SoftSun, FirstFramesAfterACutAnEditOrANewSunAreOneRayFromTheDisc) {
     noAo.gtao = gtaoPreset("low", 2.0);
     noAo.enabled = false;
     Renderer renderer(ctx(), *scene, lighting, noAo, 160, 90);
-    const Camera camera = makeCamera(world.camera("table"), 160, 90);
+    const Camera camera = worldCamera(world, "table", 160, 90);
     uint32_t frame = 0;
     auto between = [&] {  // pixels strictly between 0 and 1 in the next frame
         renderer.render(camera, frame++);

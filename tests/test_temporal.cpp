@@ -100,7 +100,7 @@ TEST_F(Temporal, StillCameraReprojectsEveryPixelOntoItself) {
         AoOptions ao = options();
         ao.gtao.denoisePasses = denoise;
         Run run = start(world, ao, 160, 90);
-        const Camera camera = makeCamera(world.camera("table"), 160, 90);
+        const Camera camera = worldCamera(world, "table", 160, 90);
         run.renderer->render(camera, 7);
         const Half first = half(run.renderer->readback(camera, true));
         run.renderer->render(camera, 8);
@@ -215,7 +215,7 @@ TEST_F(Temporal, TurningCameraReprojectsThroughDepthAndBothCameras) {
 TEST_F(Temporal, CutsAndNewSequencesStartAfresh) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
     Run run = start(world, options(), 96, 54);
-    const Camera camera = makeCamera(world.camera("table"), 96, 54);
+    const Camera camera = worldCamera(world, "table", 96, 54);
     for (uint32_t i = 0; i < 3; ++i) run.renderer->render(camera, i);
     auto histories = [&] {
         const Half f = half(run.renderer->readback(camera, true));
@@ -247,7 +247,7 @@ double meanAo(const FrameImages& f) {
 
 TEST_F(Temporal, StillCameraDoesNotDriftOverTenThousandFramesNorAtTheCounterWrap) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
-    const Camera camera = makeCamera(world.camera("table"), 32, 18);
+    const Camera camera = worldCamera(world, "table", 32, 18);
     Run run = start(world, options(), 32, 18);
     double at1000 = 0.0;
     for (uint32_t i = 0; i <= 10000; ++i) {

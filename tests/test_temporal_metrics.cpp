@@ -3,12 +3,14 @@
 // the world position. A still camera reprojects every pixel onto itself, a pan by
 // one AO pixel onto its neighbour, a uniform shift of the AO reads as that much
 // flicker, and pixels whose surface the last frame did not show are disoccluded.
+#include "engine/image_output.h"
 #include "engine/temporal_metrics.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <optional>
 
 namespace grotto {
 namespace {
@@ -31,10 +33,14 @@ using AoOf = std::function<float(const glm::dvec3& world)>;
 
 // The read-back frame of the wall, every AO output equal to ao(world position);
 // full-res columns in [occluderFrom, occluderTo) show a face 5 units nearer instead.
-AoFrame wallFrame(const Camera& c, const AoOf& ao, uint32_t occluderFrom = 0, uint32_t occluderTo = 0) {
+// `color`: every pixel's colour as the renderer reads it back (none: no colour).
+AoFrame wallFrame(const Camera& c, const AoOf& ao, uint32_t occluderFrom = 0, uint32_t occluderTo = 0,
+                  std::optional<glm::vec3> color = std::nullopt) {
     FrameImages f;
     f.width = c.width, f.height = c.height;
     const size_t n = size_t(f.width) * f.height;
+    if (color)
+        for (size_t i = 0; i < n; ++i) f.color.insert(f.color.end(), {color->r, color->g, color->b, 1.0f});
     f.depth.assign(n, float(kDistance));
     f.normal.assign(3 * n, 0.0f);
     f.aoRaw.resize(n), f.aoSpatial.resize(n), f.aoTemporal.resize(n);
@@ -67,6 +73,29 @@ TEST(TemporalMetrics, UniformShiftReadsAsThatMuchFlicker) {
     const AoFrame b = wallFrame(c, [](const glm::dvec3& p) { return ramp(p) - 0.125f; });
     const Reprojection r = reproject(b, a, c, 0.5);
     EXPECT_NEAR(flicker(b.temporal, a.temporal, r), 0.125, 1e-6);
+}
+
+// The display colour's flicker is the AO's on the colour a PNG shows: a still
+// wall whose colour changes reads as the mean change of its 8-bit sRGB channels.
+TEST(TemporalMetrics, ColorFlickerIsTheDisplayColoursChange) {
+    const Camera c = wallCamera(0.0);
+    const glm::vec3 dim(0.1f, 0.2f, 0.3f), bright(0.15f, 0.2f, 0.5f);
+    const AoFrame a = wallFrame(c, ramp, 0, 0, dim), b = wallFrame(c, ramp, 0, 0, bright);
+    const Reprojection r = reproject(b, a, c, 0.5);
+    // What a PNG of each holds, one pixel.
+    auto shown = [](glm::vec3 linear) {
+        FrameImages one;
+        one.width = one.height = 1;
+        one.color = {linear.r, linear.g, linear.b, 1.0f};
+        return srgb8Pixels(one);
+    };
+    const std::vector<uint8_t> from = shown(dim), to = shown(bright);
+    double expected = 0.0;
+    for (int k = 0; k < 3; ++k) expected += std::abs(int(to[k]) - int(from[k])) / 255.0 / 3.0;
+    ASSERT_GT(expected, 0.05);
+    EXPECT_NEAR(colorFlicker(b, a, r), expected, 1e-6);
+    EXPECT_NEAR(colorFlicker(a, wallFrame(c, ramp, 0, 0, dim), r), 0.0, 1e-9) << "the same colour: none";
+    EXPECT_EQ(colorFlicker(b, wallFrame(c, ramp), r), 0.0) << "a frame read back without colour";
 }
 
 TEST(TemporalMetrics, OneAoPixelPanReprojectsOntoTheNeighbourAndTheEdgeFallsOff) {

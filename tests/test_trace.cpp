@@ -406,7 +406,7 @@ class Shadows : public GpuTest, public ::testing::WithParamInterface<ShippedView
 TEST_P(Shadows, AgreeWithExactCpuRaysExceptWithinAHairOfEdges) {
     const ShippedView v = GetParam();
     const voxel::World world = voxel::World::load(test::worldsDir() / (std::string(v.world) + ".json"));
-    const Camera camera = makeCamera(world.camera(v.camera), 320, 180);
+    const Camera camera = worldCamera(world, v.camera, 320, 180);
     const FrameImages f = shadowFrame(ctx(), world, camera);
     const std::string what = std::string(v.world) + "/" + v.camera;
     const ShadowCheck c = checkShadows(world, f, camera, what.c_str());

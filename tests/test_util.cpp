@@ -1,14 +1,21 @@
 #include "tests/test_util.h"
 
+#include <fcntl.h>
+#include <sys/mount.h>
 #include <sys/resource.h>
+#include <sys/statvfs.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace grotto::test {
 namespace fs = std::filesystem;
@@ -42,6 +49,10 @@ RunResult runGrotto(const std::string& args, const std::string& env, const RunLi
         };
         if (limits.memoryMiB > 0 && !kAddressSanitizer) cap(RLIMIT_AS, rlim_t(limits.memoryMiB) << 20);
         if (limits.cpuSeconds > 0) cap(RLIMIT_CPU, rlim_t(limits.cpuSeconds));
+        if (limits.fileBytes > 0) {
+            signal(SIGXFSZ, SIG_IGN);  // kept across exec: a write beyond the limit fails instead of killing
+            cap(RLIMIT_FSIZE, rlim_t(limits.fileBytes));
+        }
         execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
         _exit(127);
     }
@@ -60,6 +71,44 @@ RunResult runGrotto(const std::string& args, const std::string& env, const RunLi
     r.err = slurp(err);
     return r;
 }
+
+int startGrotto(const std::string& args, const std::string& env) {
+    const std::string cmd = "exec " + (env.empty() ? "" : "env " + env + " ") + std::string(GROTTO_EXE) + " " + args +
+                            " >/dev/null 2>&1";
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) {
+        execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+        _exit(127);
+    }
+    return pid;
+}
+
+SmallDisk::SmallDisk(size_t bytes) {
+    const std::string options = "size=" + std::to_string(bytes);
+    if (mount("tmpfs", dir_.path.c_str(), "tmpfs", 0, options.c_str()) != 0)
+        reason_ = std::string("cannot mount a tmpfs to fill up (") + std::strerror(errno) + "): run as root to test a full disk";
+}
+
+SmallDisk::~SmallDisk() {
+    if (mounted()) umount2(dir_.path.c_str(), MNT_DETACH);
+}
+
+void SmallDisk::fillLeaving(size_t bytes) {
+    struct statvfs fs {};
+    statvfs(dir_.path.c_str(), &fs);
+    const size_t free = size_t(fs.f_bavail) * fs.f_frsize;
+    const int fd = open((dir_.path / ".filler").c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+    const std::vector<char> zeros(4096, 0);
+    for (size_t left = free > bytes ? free - bytes : 0; left > 0;) {
+        const ssize_t n = write(fd, zeros.data(), std::min(left, zeros.size()));
+        if (n <= 0) break;
+        left -= size_t(n);
+    }
+    close(fd);
+}
+
+void SmallDisk::makeRoom() { fs::remove(dir_.path / ".filler"); }
 
 fs::path worldsDir() { return fs::path(GROTTO_SOURCE_DIR) / "worlds"; }
 

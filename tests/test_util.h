@@ -34,11 +34,39 @@ struct RunLimits {
     int memoryMiB = 0;   // address space (RLIMIT_AS); not under AddressSanitizer
     int cpuSeconds = 0;  // RLIMIT_CPU
     int hangSeconds = 0;
+    // The largest file it may write (RLIMIT_FSIZE, SIGXFSZ ignored): a write
+    // beyond it fails with EFBIG, as a write onto a full disk fails.
+    long fileBytes = 0;
 };
 
 // Runs the grotto executable with the given arguments (shell-quoted here),
 // with `env` ("NAME=value ...") added to its environment.
 RunResult runGrotto(const std::string& args, const std::string& env = "", const RunLimits& limits = {});
+
+// Starts the grotto executable in the background with its output discarded, for
+// a test that kills it mid-run; returns its process id (the caller waits for it).
+int startGrotto(const std::string& args, const std::string& env = "");
+
+// A small filesystem of its own (a tmpfs mounted over a scratch directory) that
+// a test can fill up; where mounting is not allowed (not root), mounted() is
+// false and reason() says why.
+class SmallDisk {
+public:
+    explicit SmallDisk(size_t bytes);
+    ~SmallDisk();
+    SmallDisk(const SmallDisk&) = delete;
+    SmallDisk& operator=(const SmallDisk&) = delete;
+    bool mounted() const { return reason_.empty(); }
+    const std::string& reason() const { return reason_; }
+    std::filesystem::path operator/(const std::string& name) const { return dir_.path / name; }
+    const std::filesystem::path& path() const { return dir_.path; }
+    void fillLeaving(size_t bytes);  // a filler file takes all but about `bytes`
+    void makeRoom();                 // removes the filler
+
+private:
+    ScratchDir dir_;
+    std::string reason_;
+};
 
 // The source tree's worlds/ directory.
 std::filesystem::path worldsDir();

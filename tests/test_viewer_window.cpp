@@ -3,9 +3,12 @@
 // that camera; resizing, minimising and restoring mid-run stay valid; a bad script
 // is refused; recorded paths, played paths and digging. Skipped, saying why, only
 // where Xvfb is missing.
+#include "common/printable.h"
 #include "tests/cli_fixture.h"
+#include "tests/display_checks.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <chrono>
 #include <csignal>
@@ -168,20 +171,33 @@ TEST_F(CliErrors, ViewerRecordsAPathThatFlythroughPlaysThroughTheSameCameras) {
 TEST_F(CliErrors, ViewerDigsUndoesAndSavesTheWorld) {
     REQUIRE_XVFB();
     // A click at the window's centre digs a sphere out of the 16 x 16 floor; the
-    // undo puts it back. Each state is saved as a .vdb.
+    // undo puts it back. Each state is saved as a world file and its .vdb, with
+    // the settings the panel has then.
     const fs::path script = writeText("dig.json", R"({"actions": [
-        {"frame": 1, "set": {"edit.mode": "dig", "edit.radius": 3}}, {"frame": 2, "click": [32, 24]},
-        {"frame": 3, "save_world": "dug.vdb"}, {"frame": 4, "undo": true}, {"frame": 5, "save_world": "undone.vdb"}]})");
+        {"frame": 1, "set": {"edit.mode": "dig", "edit.radius": 3, "lighting.exposure": 0.8, "ao.quality": "low"}},
+        {"frame": 2, "click": [32, 24]},
+        {"frame": 3, "save_world": "dug.vdb"}, {"frame": 4, "undo": true}, {"frame": 5, "save_world": "undone.json"}]})");
     const test::RunResult v = runGrotto("view " + good_.string() + " --size 64x48 --script " + script.string() +
                                             " --frames 6", kUnderXvfb);
     ASSERT_EQ(v.exitCode, 0) << v.err;
+    EXPECT_NE(v.out.find("wrote " + (dir_ / "dug.json").string() + " and " + (dir_ / "dug.vdb").string()),
+              std::string::npos) << v.out;
+    for (const char* saved : {"dug.json", "undone.json"}) {
+        std::ifstream in(dir_ / saved);
+        const nlohmann::json world = nlohmann::json::parse(in, nullptr, false);
+        ASSERT_TRUE(world.is_object()) << saved;
+        EXPECT_EQ(world["grid"]["file"], std::string(saved).substr(0, std::string(saved).size() - 5) + ".vdb") << saved;
+        EXPECT_NEAR(world["lighting"]["exposure"].get<double>(), 0.8, 1e-6) << saved;
+        EXPECT_EQ(world["ao"]["quality"], "low") << saved;
+        EXPECT_EQ(world["default_camera"], "") << saved << ": framed from the bounds, as the bare .vdb was";
+    }
     auto activeVoxels = [&](const fs::path& file) {
         const test::RunResult r = runGrotto("info " + file.string());
         EXPECT_EQ(r.exitCode, 0) << r.err;
         const size_t at = r.out.find("active voxels");
         return at == std::string::npos ? -1L : std::stol(r.out.substr(at + 13));
     };
-    const long dug = activeVoxels(dir_ / "dug.vdb"), undone = activeVoxels(dir_ / "undone.vdb");
+    const long dug = activeVoxels(dir_ / "dug.json"), undone = activeVoxels(dir_ / "undone.vdb");
     EXPECT_EQ(undone, 256);
     // A sphere of radius 3 voxels removes the floor voxels within 3 of its centre: 25 to 29 of them.
     EXPECT_GE(256 - dug, 20);
@@ -218,6 +234,96 @@ TEST_F(CliErrors, ViewerPlaysAWorldPathAsFlythroughRendersIt) {
                                           kUnderXvfb);
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.err.find("set.play"), std::string::npos) << bad.err;
+}
+
+}  // namespace
+}  // namespace grotto
+
+namespace grotto {
+namespace {
+
+// A screenshot onto a full disk: exit code 1 and one line naming it, no
+// truncated image under its name (once, the viewer reported it written).
+TEST_F(CliErrors, ViewerScreenshotOnAFullDiskIsRefusedNotTruncated) {
+    test::SmallDisk disk(256 << 10);
+    if (!disk.mounted()) GTEST_SKIP() << disk.reason();
+    REQUIRE_XVFB();
+    disk.fillLeaving(0);
+    const fs::path shot = disk / "shot.png";
+    const test::RunResult v =
+        runGrotto("view " + good_.string() + " --size 64x48 --frames 3 --screenshot " + shot.string(), kUnderXvfb);
+    EXPECT_EQ(v.exitCode, 1) << v.err;
+    EXPECT_EQ(std::count(v.err.begin(), v.err.end(), '\n'), 1) << v.err;
+    EXPECT_NE(v.err.find(shot.string() + ": cannot be written: No space left on device"), std::string::npos) << v.err;
+    EXPECT_FALSE(fs::exists(shot));
+}
+
+// Every pixel grey: R = G = B, as an AO view draws it.
+bool grey(const std::vector<uint8_t>& rgb) {
+    for (size_t i = 0; i + 2 < rgb.size(); i += 3)
+        if (rgb[i] != rgb[i + 1] || rgb[i] != rgb[i + 2]) return false;
+    return !rgb.empty();
+}
+
+TEST_F(CliErrors, ViewerScreenshotsWriteWhatTheViewShows) {
+    REQUIRE_XVFB();
+    // The AO view: the script's screenshot, --screenshot at exit and the window
+    // captured at the last frame all show that frame's AO, not its colour.
+    const fs::path script = writeText("ao.json", R"({"actions": [
+        {"frame": 1, "set": {"view": "ao"}}, {"frame": 4, "screenshot": "shot.png"}]})");
+    const fs::path shot = dir_ / "shot.png", atExit = dir_ / "exit.png", window = dir_ / "window.png";
+    const test::RunResult v = runGrotto("view " + (test::worldsDir() / "rooms.json").string() +
+                                            " --camera table --size 96x64 --hide-panel --script " + script.string() +
+                                            " --frames 5 --screenshot " + atExit.string() + " --capture-window " +
+                                            window.string(),
+                                        kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    EXPECT_NE(v.out.find("wrote " + window.string()), std::string::npos) << v.out;
+    const std::vector<uint8_t> a = test::readPixels8(shot), b = test::readPixels8(atExit), w = test::readPixels8(window);
+    EXPECT_TRUE(grey(a)) << "the screenshot is not the AO view";
+    EXPECT_EQ(a, b) << "--screenshot at exit shows the same frame as the script's last screenshot";
+    // The window blits the same values; the GPU's sRGB encoding may round the other way.
+    EXPECT_LE(test::worstDifference(a, w), 1);
+}
+
+TEST_F(CliErrors, ViewerShowsToneMappedColourAndWritesSceneLinearExr) {
+    REQUIRE_XVFB();
+    // The final view of a bright world: the window (the display pass) and a PNG
+    // screenshot (the CPU's tone map) agree, and an EXR of the same frame is its
+    // scene-linear colour.
+    const fs::path world = writeText("bright.json", test::brightWorld("filmic"));
+    const fs::path script = writeText("final.json", R"({"actions": [{"frame": 3, "screenshot": "shot.png"}]})");
+    const fs::path shot = dir_ / "shot.png", exr = dir_ / "shot.exr", window = dir_ / "window.png";
+    const test::RunResult v = runGrotto("view " + world.string() + " --camera c --size 96x64 --hide-panel --script " +
+                                            script.string() + " --frames 4 --screenshot " + exr.string() +
+                                            " --capture-window " + window.string(),
+                                        kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    test::expectSceneLinear(test::compareExrWithPng(exr, shot), "viewer screenshot");
+    // The display image is half floats: a value may round across an 8-bit step.
+    EXPECT_LE(test::worstDifference(test::readPixels8(shot), test::readPixels8(window)), 1);
+}
+
+TEST_F(CliErrors, ViewerPrintsTheNamesOfWhatItWritesEscaped) {
+    REQUIRE_XVFB();
+    // Names from a script with a terminal escape and a newline in them: written
+    // under those names, printed escaped, one line each.
+    const fs::path script = writeText("names.json", R"({"actions": [
+        {"frame": 1, "save_world": "a\u001b[2Jb\nc.vdb"}, {"frame": 2, "screenshot": "s\u001b]0;t\u0007.png"}]})");
+    const test::RunResult v =
+        runGrotto("view " + good_.string() + " --size 32x24 --script " + script.string() + " --frames 3", kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    const fs::path world = dir_ / "a\x1b[2Jb\nc.vdb", worldFile = dir_ / "a\x1b[2Jb\nc.json", shot = dir_ / "s\x1b]0;t\x07.png";
+    EXPECT_TRUE(fs::exists(world));
+    EXPECT_TRUE(fs::exists(worldFile));
+    EXPECT_TRUE(fs::exists(shot));
+    EXPECT_EQ(v.out.find('\x1b'), std::string::npos) << printable(v.out);
+    EXPECT_EQ(v.out.find('\x07'), std::string::npos) << printable(v.out);
+    EXPECT_EQ(std::count(v.out.begin(), v.out.end(), '\n'), 2) << printable(v.out);
+    EXPECT_NE(v.out.find("wrote " + printable(worldFile.string()) + " and " + printable(world.string()) + "\n"),
+              std::string::npos)
+        << printable(v.out);
+    EXPECT_NE(v.out.find("wrote " + printable(shot.string()) + " (32x24)\n"), std::string::npos) << printable(v.out);
 }
 
 }  // namespace

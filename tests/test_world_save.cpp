@@ -7,6 +7,8 @@
 #include "voxel/world.h"
 #include "voxel/world_from_grid.h"
 
+#include <glm/geometric.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 #include <openvdb/io/File.h>
 #include <openvdb/openvdb.h>
@@ -151,6 +153,29 @@ TEST(WorldSave, Int32WorldRoundTripsWithMetadata) {
     EXPECT_EQ(saved->metaValue<int64_t>("grotto_seed"), 42);
 }
 
+// A save onto a full disk throws an internal error naming the file and the
+// reason (it once read "KeyError: Map"), and leaves the old file whole.
+TEST(WorldSave, AFullDiskIsReportedAndLeavesTheOldFile) {
+    test::SmallDisk disk(1 << 20);
+    if (!disk.mounted()) GTEST_SKIP() << disk.reason();
+    const glm::ivec3 size(40, 40, 40);
+    const World small = World::fromDense({2, 2, 2}, std::vector<uint8_t>(8, 1).data(), 1.0, {});
+    small.save(disk / "world.vdb");
+    disk.fillLeaving(8192);
+    const World large = World::fromDense(size, randomIds(size, 8, 0.5, 3).data(), 1.0, {});
+    try {
+        large.save(disk / "world.vdb");
+        FAIL() << "saved onto a full disk";
+    } catch (const Error& e) {
+        EXPECT_EQ(e.kind(), Error::Kind::Internal) << e.what();
+        EXPECT_EQ(e.where(), (disk / "world.vdb").string());
+        EXPECT_NE(std::string(e.what()).find("No space left on device"), std::string::npos) << e.what();
+    }
+    expectSameWorld(World::load(disk / "world.vdb"), small, "the file a failed save was replacing");
+    for (const auto& entry : fs::directory_iterator(disk.path()))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+}
+
 TEST(WorldSave, MaskWorldsKeepTheirKindUnlessPainted) {
     openvdb::initialize();
     test::ScratchDir dir;
@@ -186,6 +211,177 @@ TEST(WorldSave, MaskWorldsKeepTheirKindUnlessPainted) {
         w.save(dir / "undone.vdb");
         EXPECT_EQ(readSavedGrid(dir / "undone.vdb")->type(), grid->type()) << kind;
     }
+}
+
+// Everything a world file says besides its grid, set away from every default.
+WorldDesc everySetting(const fs::path& dir) {
+    WorldDesc d;
+    d.materials = {{"basalt", {0.1f, 0.12f, 0.15f}, 0.9f}, {"ochre", {0.8f, 0.5f, 0.1f}, 1.0f}, {"chalk", {0.95f, 0.94f, 0.9f}, 0.35f}};
+    Lighting& l = d.lighting;
+    l.sunDirection = glm::normalize(glm::vec3(-0.3f, 0.6f, 0.7f));
+    l.sunColor = {0.9f, 0.7f, 0.5f};
+    l.sunIntensity = 2.5f;
+    l.sunShadows = false;
+    l.sunAngle = 3.5f;
+    l.ambientColor = {0.2f, 0.3f, 0.4f};
+    l.ambientIntensity = 0.15f;
+    l.skyZenith = {0.1f, 0.2f, 0.6f};
+    l.skyHorizon = {0.9f, 0.6f, 0.4f};
+    l.exposure = 1.7f;
+    l.toneMap = ToneMap::Linear;
+    d.ao = {.method = "voxel", .quality = "low", .radius = 2.5, .falloffRange = 0.4, .thinOccluder = 0.3,
+            .slices = 2, .temporalHistory = 8, .rays = 5};
+    d.detail = {.lodBias = 3.0, .occlusionCulling = false};
+    d.cameras["door"] = {.position = {1, 2, 3}, .target = {4, 1, -2}, .fovDegrees = 35, .nearPlane = 0.01, .farPlane = 500};
+    d.cameras["attic"] = {.position = {-5, 9, 0.5}, .target = {0, 0, 0}, .fovDegrees = 90, .nearPlane = 0.2};
+    d.defaultCamera = "door";
+    CameraPathDesc look;
+    look.keys = {{.time = 0, .position = {0, 5, 9}, .target = glm::dvec3(2, 0, 2)},
+                 {.time = 1.25, .position = {3, 5, 9}, .target = glm::dvec3(2, 1, 2), .fovDegrees = 40.0},
+                 {.time = 2, .position = {8, 3, 1}, .rotation = glm::normalize(glm::dquat(0.9, 0.1, 0.4, 0.0)), .cut = true}};
+    look.constantSpeed = true;
+    look.fovDegrees = 70;
+    look.nearPlane = 0.02;
+    look.farPlane = 900;
+    look.edits = {{.time = 0.5, .edit = Edit::carveSphere({2, 1, 2}, 1.5)},
+                  {.time = 0.5, .edit = Edit::fillBox({{0, 0, 0}, {3, 1, 2}}, 3)},
+                  {.time = 1.5, .edit = Edit::setVoxel({5, 1, 5}, 2)},
+                  {.time = 1.75, .edit = Edit::paintSphere({1, 0, 1}, 2.0, 1)}};
+    d.paths["look"] = look;
+    d.paths["plain"] = {.keys = {{.time = 0, .position = {9, 9, 9}, .target = glm::dvec3(0.0)},
+                                 {.time = 3, .position = {-9, 9, 9}, .target = glm::dvec3(0.0)}}};
+    const glm::dquat quarter = glm::angleAxis(glm::radians(90.0), glm::dvec3(0, 1, 0));
+    d.objects.push_back({.name = "crate", .material = 2, .generator = "box", .generatorOptions = {.voxelSize = 0.5},
+                         .boxSize = {2, 3, 4}, .pivot = {1, 0, 1},
+                         .keys = {{.time = 0, .position = {3, 1, 3}}, {.time = 2, .position = {5, 1, 3}, .rotation = quarter}}});
+    d.objects.push_back({.name = "statue", .gridFile = dir / "models" / "statue.vdb", .gridName = "shape",
+                         .rule = SolidRule::Fog, .threshold = 0.25, .material = 3, .keys = {{.time = 0, .position = {-2, 0, 4}}}});
+    d.objects.push_back({.name = "rubble", .generator = "caves", .generatorOptions = {.seed = 7, .size = 16, .voxelSize = 0.25},
+                         .keys = {{.time = 1, .position = {0, 0, -3}, .rotation = quarter}}});
+    d.memoryBudgetBytes = size_t(640) << 20;
+    return d;
+}
+
+void expectSameRotation(const glm::dquat& got, const glm::dquat& want, const std::string& what) {
+    EXPECT_NEAR(std::abs(glm::dot(got, want)), 1.0, 1e-12) << what;
+}
+
+void expectSameSettings(const WorldDesc& got, const WorldDesc& want) {
+    ASSERT_EQ(got.materials.size(), want.materials.size());
+    for (size_t i = 0; i < want.materials.size(); ++i) {
+        EXPECT_EQ(got.materials[i].name, want.materials[i].name);
+        EXPECT_EQ(got.materials[i].albedo, want.materials[i].albedo) << want.materials[i].name;
+        EXPECT_EQ(got.materials[i].ao, want.materials[i].ao) << want.materials[i].name;
+    }
+    const Lighting &a = got.lighting, &b = want.lighting;
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(a.sunDirection[k], b.sunDirection[k], 1e-6);  // normalised again on load
+    EXPECT_EQ(a.sunColor, b.sunColor);
+    EXPECT_EQ(a.sunIntensity, b.sunIntensity);
+    EXPECT_EQ(a.sunShadows, b.sunShadows);
+    EXPECT_EQ(a.sunAngle, b.sunAngle);
+    EXPECT_EQ(a.ambientColor, b.ambientColor);
+    EXPECT_EQ(a.ambientIntensity, b.ambientIntensity);
+    EXPECT_EQ(a.skyZenith, b.skyZenith);
+    EXPECT_EQ(a.skyHorizon, b.skyHorizon);
+    EXPECT_EQ(a.exposure, b.exposure);
+    EXPECT_EQ(a.toneMap, b.toneMap);
+    const AoDesc &x = got.ao, &y = want.ao;
+    EXPECT_EQ(x.method, y.method);
+    EXPECT_EQ(x.quality, y.quality);
+    EXPECT_TRUE(x.radius == y.radius && x.radiusMultiplier == y.radiusMultiplier && x.falloffRange == y.falloffRange &&
+                x.sampleDistributionPower == y.sampleDistributionPower && x.thinOccluder == y.thinOccluder &&
+                x.finalValuePower == y.finalValuePower && x.depthMipOffset == y.depthMipOffset &&
+                x.strength == y.strength && x.denoiseBlurBeta == y.denoiseBlurBeta && x.maxDistance == y.maxDistance);
+    EXPECT_TRUE(x.slices == y.slices && x.steps == y.steps && x.denoisePasses == y.denoisePasses &&
+                x.temporalHistory == y.temporalHistory && x.rays == y.rays);
+    EXPECT_EQ(got.detail.lodBias, want.detail.lodBias);
+    EXPECT_EQ(got.detail.occlusionCulling, want.detail.occlusionCulling);
+    ASSERT_EQ(got.cameras.size(), want.cameras.size());
+    for (const auto& [name, c] : want.cameras) {
+        ASSERT_TRUE(got.cameras.count(name)) << name;
+        const CameraDesc& g = got.cameras.at(name);
+        EXPECT_TRUE(g.position == c.position && g.target == c.target && g.fovDegrees == c.fovDegrees &&
+                    g.nearPlane == c.nearPlane && g.farPlane == c.farPlane) << name;
+    }
+    EXPECT_EQ(got.defaultCamera, want.defaultCamera);
+    ASSERT_EQ(got.paths.size(), want.paths.size());
+    for (const auto& [name, p] : want.paths) {
+        ASSERT_TRUE(got.paths.count(name)) << name;
+        const CameraPathDesc& g = got.paths.at(name);
+        EXPECT_TRUE(g.constantSpeed == p.constantSpeed && g.fovDegrees == p.fovDegrees && g.nearPlane == p.nearPlane &&
+                    g.farPlane == p.farPlane) << name;
+        ASSERT_EQ(g.keys.size(), p.keys.size()) << name;
+        for (size_t i = 0; i < p.keys.size(); ++i) {
+            const PathKey &k = g.keys[i], &w = p.keys[i];
+            EXPECT_TRUE(k.time == w.time && k.position == w.position && k.target == w.target &&
+                        k.fovDegrees == w.fovDegrees && k.cut == w.cut) << name << " key " << i;
+            ASSERT_EQ(k.rotation.has_value(), w.rotation.has_value()) << name << " key " << i;
+            if (w.rotation) expectSameRotation(*k.rotation, *w.rotation, name);
+        }
+        ASSERT_EQ(g.edits.size(), p.edits.size()) << name;
+        for (size_t i = 0; i < p.edits.size(); ++i) {
+            const Edit &e = g.edits[i].edit, &f = p.edits[i].edit;
+            EXPECT_EQ(g.edits[i].time, p.edits[i].time);
+            EXPECT_EQ(describe(e), describe(f));
+            EXPECT_TRUE(e.op == f.op && e.shape == f.shape && e.material == f.material) << describe(f);
+            if (f.shape == Edit::Shape::Sphere) EXPECT_TRUE(e.centre == f.centre && e.radius == f.radius) << describe(f);
+            else EXPECT_TRUE(e.box.min == f.box.min && e.box.max == f.box.max) << describe(f);
+        }
+    }
+    ASSERT_EQ(got.objects.size(), want.objects.size());
+    auto same = [](const fs::path& p, const fs::path& q) { return fs::absolute(p).lexically_normal() == fs::absolute(q).lexically_normal(); };
+    for (size_t i = 0; i < want.objects.size(); ++i) {
+        const ObjectDesc &o = got.objects[i], &w = want.objects[i];
+        EXPECT_EQ(o.name, w.name);
+        EXPECT_EQ(o.generator, w.generator) << w.name;
+        if (w.generator.empty()) {
+            EXPECT_TRUE(same(o.gridFile, w.gridFile)) << o.gridFile << " for " << w.gridFile;
+            EXPECT_TRUE(o.gridName == w.gridName && o.rule == w.rule && o.threshold == w.threshold) << w.name;
+        }
+        EXPECT_EQ(o.material, w.material) << w.name;
+        EXPECT_EQ(o.boxSize, w.boxSize) << w.name;
+        EXPECT_TRUE(o.generatorOptions.seed == w.generatorOptions.seed && o.generatorOptions.size == w.generatorOptions.size &&
+                    o.generatorOptions.voxelSize == w.generatorOptions.voxelSize) << w.name;
+        EXPECT_EQ(o.pivot, w.pivot) << w.name;
+        ASSERT_EQ(o.keys.size(), w.keys.size()) << w.name;
+        for (size_t k = 0; k < w.keys.size(); ++k) {
+            EXPECT_TRUE(o.keys[k].time == w.keys[k].time && o.keys[k].position == w.keys[k].position) << w.name;
+            expectSameRotation(o.keys[k].rotation, w.keys[k].rotation, w.name);
+        }
+    }
+    EXPECT_EQ(got.memoryBudgetBytes, want.memoryBudgetBytes);
+}
+
+// A saved world is the same world: its voxels as edited, and beside them a world
+// file with the palette, lighting, AO, detail, cameras, paths and objects.
+TEST(WorldSave, AWorldFileBesideTheGridKeepsEverySetting) {
+    openvdb::initialize();
+    test::ScratchDir dir;
+    const glm::ivec3 size(12, 6, 10);
+    const WorldDesc desc = everySetting(dir.path);
+    World w = World::fromDense(size, randomIds(size, 3, 0.5, 9).data(), 0.5, {1.0, -2.0, 3.5}, desc);
+    w.apply(Edit::carveSphere(w.origin() + glm::dvec3(3.0, 1.5, 2.5), 1.2));
+    fs::create_directories(dir / "saved");
+    w.save(dir / "saved" / "house.vdb");
+    ASSERT_TRUE(fs::exists(dir / "saved" / "house.json")) << "the world file beside the grid";
+    const World back = World::load(dir / "saved" / "house.json");
+    expectSameWorld(back, w, "saved world");
+    expectSameSettings(back.desc(), desc);
+    EXPECT_EQ(back.desc().gridFile, dir / "saved" / "house.vdb");
+    // The grid alone is still a bare .vdb: the same voxels, default settings.
+    expectSameWorld(World::load(dir / "saved" / "house.vdb"), w, "the grid alone");
+
+    // Settings of the caller's (the viewer's panel, the engine's lighting), named by the .json.
+    WorldDesc changed = desc;
+    changed.lighting.exposure = 0.25f;
+    changed.defaultCamera.clear();  // framed from the bounds, although there are cameras
+    w.save(dir / "changed.json", changed);
+    const World other = World::load(dir / "changed.json");
+    expectSameWorld(other, w, "saved by its .json");
+    expectSameSettings(other.desc(), changed);
+    // Saved again from where it was loaded: nothing drifts.
+    other.save(dir / "again.json");
+    expectSameSettings(World::load(dir / "again.json").desc(), changed);
 }
 
 TEST(WorldSave, AUniformMaterialOtherThanOneIsKept) {

@@ -10,22 +10,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// JSON [x, y, z, w], as glTF writes rotations; normalised here.
-glm::dquat quaternion(Reader& r, const std::string& key) {
-    const json& v = r.at(key);
-    if (!v.is_array() || v.size() != 4) r.fail(key, "expected an array of 4 numbers [x, y, z, w]");
-    double c[4];
-    for (int i = 0; i < 4; ++i) {
-        if (!v[i].is_number() || !std::isfinite(v[i].get<double>()))
-            r.fail(key, "expected an array of 4 finite numbers [x, y, z, w]");
-        c[i] = v[i].get<double>();
-    }
-    const glm::dquat q(c[3], c[0], c[1], c[2]);  // glm takes w first
-    const double n = glm::length(q);
-    if (!(n > 1e-9)) r.fail(key, "must not be zero", "a unit quaternion [x, y, z, w], e.g. [0, 0, 0, 1]");
-    return q / n;
-}
-
 PathKey parseKey(Reader r) {
     PathKey k;
     if (!r.has("time")) r.fail("time", "missing", "seconds from the start of the path");
@@ -40,7 +24,7 @@ PathKey parseKey(Reader r) {
         k.target = r.vec3("target", k.position);
         if (glm::length(*k.target - k.position) < 1e-9) r.fail("target", "equals position", "a camera must look somewhere");
     } else {
-        k.rotation = quaternion(r, "quaternion");
+        k.rotation = r.quaternion("quaternion");
     }
     if (r.has("fov")) k.fovDegrees = r.number("fov", 60.0, 1.0, 170.0);
     k.cut = r.boolean("cut", false);

@@ -16,8 +16,15 @@ struct VoxelBefore {
     int32_t material;
 };
 
+// A box within one brick whose voxels all had one state before an edit changed them all.
+struct BoxBefore {
+    IndexBox box;
+    int32_t material;
+};
+
 struct UndoRecord {
     std::vector<VoxelBefore> before;  // the changed voxels only, never a grid copy
+    std::vector<BoxBefore> boxes;     // ... or whole parts of bricks that changed together
     bool createdMaterials = false;    // the edit made the per-voxel material grid
 };
 
@@ -32,7 +39,9 @@ struct EditHistory {
     std::deque<UndoRecord> undo;   // the last log entries' records, oldest first
     size_t undoBytes = 0;
 
-    static size_t bytesOf(const UndoRecord& r) { return r.before.size() * sizeof(VoxelBefore); }
+    static size_t bytesOf(const UndoRecord& r) {
+        return r.before.size() * sizeof(VoxelBefore) + r.boxes.size() * sizeof(BoxBefore);
+    }
 };
 
 }  // namespace grotto::voxel

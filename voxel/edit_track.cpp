@@ -64,8 +64,7 @@ TimedEdit parseEdit(Reader r) {
         if (r.has("material")) r.fail("material", "given with 'carve'", "a carve empties voxels: leave 'material' out");
     } else {
         if (!r.has("material")) r.fail("material", "missing", "the material id the " + op + " gives, 1 to 255");
-        if (!r.at("material").is_number_integer()) r.fail("material", "expected a whole number", "a material id, 1 to 255");
-        t.edit.material = int(r.number("material", 1, 1, 255));
+        t.edit.material = int(r.integer("material", 1, 1, 255));
     }
     return t;
 }

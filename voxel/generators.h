@@ -14,4 +14,15 @@ namespace grotto::voxel {
 // Same seed and options -> the same grid, bit for bit.
 openvdb::GridBase::Ptr generateWorld(const std::string& kind, const GeneratorOptions& options);
 
+// What generating takes, bounded from the kind and size alone, before any of it
+// is made: the 8^3 bricks its solid voxels reach (active tiles counted as the
+// bricks they cover), how many of those its grid may hold as leaves (the rest
+// are tiles, nearly free), and what one leaf of its grid costs. Throws as
+// generateWorld does for an unknown kind or a size out of range.
+struct GeneratedSize {
+    double bricks = 0.0, leaves = 0.0;
+    uint64_t leafBytes = 0;
+};
+GeneratedSize generatedSize(const std::string& kind, const GeneratorOptions& options);
+
 }  // namespace grotto::voxel

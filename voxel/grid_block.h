@@ -24,7 +24,7 @@ void readGridBlock(Reader g, const std::filesystem::path& file, Desc& d) {
     d.gridName = g.string("name", "");
     d.rule = parseSolidRule(g, "rule");
     d.threshold = g.number("threshold", d.threshold, -1e30, 1e30);
-    d.material = int(g.number("material", d.material, 1, 255));
+    d.material = int(g.integer("material", d.material, 1, 255));
 }
 
 }  // namespace grotto::voxel

@@ -5,14 +5,17 @@
 // voxel/ that includes this links nlohmann_json itself.
 #include "common/error.h"
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
+#include <limits>
 #include <set>
 #include <string>
 
@@ -21,8 +24,9 @@ namespace grotto::voxel {
 // Objects keep their fields in file order ("the first camera" is the first written).
 using json = nlohmann::ordered_json;
 
-// Parses a whole JSON file; a missing, unreadable or malformed file throws
-// grotto::Error (input) naming it, with `hint` saying what the file should hold.
+// Parses a whole JSON file; a missing, unreadable, malformed, too large or too
+// deeply nested file (common/json_text.h) throws grotto::Error (input) naming it,
+// with `hint` saying what the file should hold.
 json readJsonFile(const std::filesystem::path& path, const std::string& hint);
 
 // Reads one JSON object strictly: every field is checked, unknown ones refused.
@@ -32,12 +36,8 @@ public:
         : file_(file), obj_(object), path_(std::move(path)) {
         if (!obj_.is_object()) fail("", "expected an object");
     }
-    ~Reader() noexcept(false) {
-        if (std::uncaught_exceptions()) return;
-        for (auto& [key, value] : obj_.items())
-            if (!seen_.count(key))
-                fail(key, "unknown field", "known fields: " + known());
-    }
+    // Refuses the fields never asked about, suggesting the known one meant.
+    ~Reader() noexcept(false);
 
     bool has(const std::string& key) {
         seen_.insert(key);
@@ -55,6 +55,14 @@ public:
             fail(key, "value " + v.dump() + " is out of range",
                  "accepted: " + format(lo) + " to " + format(hi));
         return d;
+    }
+    // A whole number within [lo, hi]: 2.7 is refused, not truncated (2.0 and 2e1 are whole).
+    int64_t integer(const std::string& key, int64_t fallback, int64_t lo, int64_t hi) {
+        if (!has(key)) return fallback;
+        const double d = number(key, double(fallback), double(lo), double(hi));
+        if (d != std::floor(d))
+            fail(key, "value " + obj_.at(key).dump() + " is not a whole number", "accepted: whole numbers " + format(double(lo)) + " to " + format(double(hi)));
+        return int64_t(d);
     }
     bool boolean(const std::string& key, bool fallback) {
         if (!has(key)) return fallback;
@@ -88,15 +96,15 @@ public:
         }
         return r;
     }
+    // [x, y, z, w] (glTF's order): any finite, non-zero quaternion, normalised.
+    glm::dquat quaternion(const std::string& key);
     const std::filesystem::path& file() const { return file_; }
     Reader child(const std::string& key) { return Reader(file_, obj_.at(key), field(key)); }
     const std::filesystem::path& fileName() const { return file_; }
 
-    [[noreturn]] void fail(const std::string& key, const std::string& what,
-                           const std::string& hint = {}) const {
-        std::string f = field(key);
-        throw Error(file_.string(), (f.empty() ? "" : "field '" + f + "': ") + what, hint);
-    }
+    // Throws grotto::Error naming the file and field. When `key` is absent and
+    // an unknown field is a near miss of it ("angle_degree"), that one is named.
+    [[noreturn]] void fail(const std::string& key, const std::string& what, const std::string& hint = {}) const;
     std::string field(const std::string& key) const {
         return path_.empty() ? key : key.empty() ? path_ : path_ + "." + key;
     }
@@ -108,11 +116,8 @@ public:
     }
 
 private:
-    std::string known() const {
-        std::string s;
-        for (auto& k : seen_) s += (s.empty() ? "" : ", ") + k;
-        return s;
-    }
+    [[noreturn]] void failUnknown(const std::string& key, const std::string& meant) const;
+
     const std::filesystem::path& file_;
     const json& obj_;
     std::string path_;

@@ -150,12 +150,34 @@ std::vector<gpu::PackedQuad> meshCells(LevelCells& cells, int scale, bool greedy
     return quads;
 }
 
+// A chunk with no solid voxel, or whose voxels and their neighbours are all
+// solid (inside a large fill: active tiles), has no faces. Told from its bricks
+// and those around it, without gathering its cells: an edit across a large
+// region touches many such chunks.
+bool hasNoFaces(const World::Impl& w, const openvdb::Coord& origin) {
+    openvdb::MaskGrid::ConstAccessor solid = w.solid->getConstAccessor();
+    bool anySolid = false, allSolid = true;
+    for (int bx = -8; bx <= N && (allSolid || !anySolid); bx += 8)
+        for (int by = -8; by <= N; by += 8)
+            for (int bz = -8; bz <= N; bz += 8) {
+                const openvdb::Coord b = origin.offsetBy(bx, by, bz);
+                const auto* leaf = solid.probeConstLeaf(b);
+                const bool full = leaf ? leaf->isValueMaskOn() : solid.isValueOn(b);
+                const bool empty = leaf ? leaf->isEmpty() : !full;
+                allSolid = allSolid && full;
+                const bool own = bx >= 0 && by >= 0 && bz >= 0 && bx < N && by < N && bz < N;
+                anySolid = anySolid || (own && !empty);
+            }
+    return !anySolid || allSolid;
+}
+
 // The one chunk mesher (rectangles only; LiveMesh welds them): World::meshChunk() is it.
 MeshChunkQuads meshOneChunk(const World::Impl& w, const openvdb::Coord& origin, const MeshOptions& options) {
-    LevelCells voxels(N);
-    gather(w, origin, voxels);
     MeshChunkQuads chunk;
     chunk.origin = {origin.x(), origin.y(), origin.z()};
+    if (hasNoFaces(w, origin)) return chunk;
+    LevelCells voxels(N);
+    gather(w, origin, voxels);
     chunk.rects = meshCells(voxels, 1, options.greedy);
     const int levels = std::clamp(options.coarseLevels, 0, kMaxCoarseLevels);
     LevelCells cells = std::move(voxels);

@@ -18,19 +18,7 @@ glm::dquat parseRotation(Reader& k) {
     const bool quaternion = k.has("quaternion"), angle = k.has("angle_degrees"), axis = k.has("axis");
     if (quaternion && (angle || axis))
         k.fail("quaternion", "given with 'angle_degrees'/'axis'", "give one rotation: a quaternion, or an angle and an axis");
-    if (quaternion) {
-        const json& q = k.at("quaternion");
-        if (!q.is_array() || q.size() != 4) k.fail("quaternion", "expected an array of 4 numbers [x, y, z, w]");
-        double v[4];
-        for (int i = 0; i < 4; ++i) {
-            if (!q[i].is_number() || !std::isfinite(q[i].get<double>()))
-                k.fail("quaternion", "expected an array of 4 finite numbers [x, y, z, w]");
-            v[i] = q[i].get<double>();
-        }
-        const glm::dquat r(v[3], v[0], v[1], v[2]);
-        if (glm::length(r) < 1e-9) k.fail("quaternion", "has zero length", "a rotation is a unit quaternion [x, y, z, w]");
-        return glm::normalize(r);
-    }
+    if (quaternion) return k.quaternion("quaternion");
     if (angle != axis) k.fail(angle ? "axis" : "angle_degrees", "missing", "'angle_degrees' and 'axis' come together");
     if (!angle) return glm::dquat(1.0, 0.0, 0.0, 0.0);
     const double degrees = k.number("angle_degrees", 0.0, -1e6, 1e6);
@@ -73,11 +61,11 @@ void parseGenerator(Reader g, ObjectDesc& d) {
         const glm::dvec3 s = g.vec3("size", glm::dvec3(0.0), 1.0, 4096.0);
         if (s != glm::floor(s)) g.fail("size", "expected whole numbers of voxels");
         d.boxSize = glm::ivec3(s);
-        d.material = int(g.number("material", d.material, 1, 255));
+        d.material = int(g.integer("material", d.material, 1, 255));
         return;
     }
-    d.generatorOptions.seed = uint32_t(g.number("seed", d.generatorOptions.seed, 0, 4294967295.0));
-    d.generatorOptions.size = int(g.number("size", 0, 0, 4096));
+    d.generatorOptions.seed = uint32_t(g.integer("seed", d.generatorOptions.seed, 0, 4294967295));
+    d.generatorOptions.size = int(g.integer("size", 0, 0, 4096));
     if (d.generator == "mesh") {
         if (!g.has("mesh")) g.fail("mesh", "missing", "the OBJ or PLY to voxelise, relative to the world file");
         const std::string m = g.string("mesh", "");
@@ -85,7 +73,7 @@ void parseGenerator(Reader g, ObjectDesc& d) {
     }
 }
 
-ObjectDesc parseObject(Reader& o, const fs::path& file, size_t index) {
+ObjectDesc parseObject(Reader& o, const fs::path& file, size_t index, size_t palette) {
     ObjectDesc d;
     d.name = o.string("name", "object" + std::to_string(index + 1));
     const bool grid = o.has("grid"), generator = o.has("generator");
@@ -96,6 +84,10 @@ ObjectDesc parseObject(Reader& o, const fs::path& file, size_t index) {
         readGridBlock(o.child("grid"), file, d);
     else
         parseGenerator(o.child("generator"), d);
+    if (size_t(d.material) > palette)
+        throw Error(file.string(), "field '" + o.field(grid ? "grid.material" : "generator.material") + "': id " +
+                                       std::to_string(d.material) + " has no entry in 'materials'",
+                    "the palette has " + std::to_string(palette) + " materials");
     d.pivot = o.vec3("pivot", d.pivot);
     d.keys = parseKeys(o);
     return d;
@@ -103,7 +95,7 @@ ObjectDesc parseObject(Reader& o, const fs::path& file, size_t index) {
 
 }  // namespace
 
-std::vector<ObjectDesc> parseObjects(Reader& r, const fs::path& file) {
+std::vector<ObjectDesc> parseObjects(Reader& r, const fs::path& file, size_t palette) {
     const json& list = r.at("objects");
     if (!list.is_array() || list.size() > kMaxObjects)
         r.fail("objects", "expected an array of at most " + std::to_string(kMaxObjects) + " objects");
@@ -113,7 +105,7 @@ std::vector<ObjectDesc> parseObjects(Reader& r, const fs::path& file) {
         ObjectDesc d;
         {
             Reader o(file, list[i], "objects[" + std::to_string(i) + "]");
-            d = parseObject(o, file, i);
+            d = parseObject(o, file, i, palette);
             if (!names.insert(d.name).second) o.fail("name", "'" + d.name + "' names an earlier object too");
         }  // unknown fields are refused here
         out.push_back(std::move(d));

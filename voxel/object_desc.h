@@ -48,8 +48,9 @@ struct ObjectDesc {
     bool moves() const;
 };
 
-// Reads the "objects" array of a world file from its reader. Throws grotto::Error
-// (input) naming the file and the field for anything missing, malformed or unknown.
-std::vector<ObjectDesc> parseObjects(Reader& world, const std::filesystem::path& file);
+// Reads the "objects" array of a world file from its reader; `palette` is the
+// number of the world's materials. Throws grotto::Error (input) naming the file
+// and the field for anything missing, malformed, unknown or outside the palette.
+std::vector<ObjectDesc> parseObjects(Reader& world, const std::filesystem::path& file, size_t palette);
 
 }  // namespace grotto::voxel

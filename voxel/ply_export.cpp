@@ -3,14 +3,11 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 
-#include <fstream>
 
 namespace grotto::voxel {
 
 void writePly(const Mesh& mesh, const std::filesystem::path& path) {
-    writeAtomically(path, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp, std::ios::binary);
-        if (!out) throw Error(path.string(), "cannot be opened for writing");
+    writeAtomically(path, [&](std::ostream& out) {
         const size_t n = mesh.quads.size();
         out << "ply\nformat binary_little_endian 1.0\ncomment grotto voxel quads and triangles, world units\n"
             << "element vertex " << 4 * n << "\nproperty float x\nproperty float y\nproperty float z\n"
@@ -32,8 +29,6 @@ void writePly(const Mesh& mesh, const std::filesystem::path& path) {
             out.write(reinterpret_cast<const char*>(idx), count * sizeof(uint32_t));
             out.write(reinterpret_cast<const char*>(&material), 1);
         }
-        out.flush();
-        if (!out) throw Error(path.string(), "write failed", "is the disk full?");
     });
 }
 

@@ -29,6 +29,20 @@ struct World::Impl {
 // World::bricks()'s list and its occupancy in the reference's brick table.
 constexpr uint64_t kBytesPerBrick = sizeof(Brick) + 64;
 
+// What a leaf node costs (a tile costs next to nothing), for estimates made
+// before the grid exists: mask and bool leaves hold bits; int32 and float
+// leaves hold 512 values besides, on the heap.
+constexpr uint64_t kMaskLeafBytes = sizeof(openvdb::BoolTree::LeafNodeType);
+constexpr uint64_t kValueLeafBytes = sizeof(openvdb::Int32Tree::LeafNodeType) + 512 * sizeof(int32_t);
+
+// Bricks a solid tree stands for: its leaves, and every active tile as the full
+// bricks World::bricks() splits it into. Leaves are counted, not walked.
+uint64_t brickCount(const openvdb::MaskTree& tree);
+
+// "N bricks of 8^3 voxels, an estimated X MiB, more than the memory budget of Y MiB":
+// the figures every refusal over the budget gives.
+std::string overBudget(double bricks, double bytes, size_t budget);
+
 // Registers OpenVDB's grid types, once per process (before any file is read or written).
 void initializeOpenVdb();
 
@@ -51,7 +65,7 @@ void buildSolid(const openvdb::GridBase::Ptr& grid, World::Impl& impl);
 // Voxel size and corner origin from a uniform, axis-aligned transform (else Error).
 void readTransform(const openvdb::GridBase& grid, const std::string& file, World::Impl& impl);
 
-// Writes one grid to a .vdb atomically, read back before it replaces `out`.
+// Writes one grid to a .vdb atomically, every write checked (common/atomic_file.h).
 // Throws grotto::Error naming `out`.
 void writeGridFile(const openvdb::GridBase::ConstPtr& grid, const std::filesystem::path& out);
 

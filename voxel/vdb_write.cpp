@@ -1,27 +1,29 @@
-// Writing a .vdb: atomically, and read back before it replaces the target.
+// Writing a .vdb atomically, every write checked.
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "voxel/solid.h"
 
-#include <openvdb/io/File.h>
+#include <openvdb/io/Archive.h>
 
 namespace grotto::voxel {
+namespace {
+
+// io::File writes the same archive through a stream it never checks, so a full
+// disk would leave a truncated grid; this one writes through writeAtomically's.
+class CheckedArchive : public openvdb::io::Archive {
+public:
+    void writeTo(std::ostream& out, const openvdb::GridCPtrVec& grids) const { write(out, grids, /*seekable=*/true); }
+};
+
+}  // namespace
 
 void writeGridFile(const openvdb::GridBase::ConstPtr& grid, const std::filesystem::path& out) {
     initializeOpenVdb();
-    writeAtomically(out, [&](const std::filesystem::path& tmp) {
+    writeAtomically(out, [&](std::ostream& stream) {
         try {
-            openvdb::io::File file(tmp.string());
-            file.write(openvdb::GridCPtrVec{grid});
-            file.close();
-            // OpenVDB does not check its stream: read the file back before it
-            // replaces the target, so a full disk cannot leave a truncated grid.
-            openvdb::io::File check(tmp.string());
-            check.open(false);
-            check.readGrid(grid->getName());
+            CheckedArchive().writeTo(stream, openvdb::GridCPtrVec{grid});
         } catch (const openvdb::Exception& e) {
-            throw Error(out.string(), std::string("could not write the grid: ") + e.what(),
-                        "check free disk space and permissions");
+            throw Error::internal(out.string(), std::string("could not write the grid: ") + e.what());
         }
     });
 }

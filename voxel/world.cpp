@@ -1,4 +1,6 @@
 #include "common/error.h"
+#include "voxel/object_worlds.h"
+#include "voxel/camera_frame.h"
 #include "voxel/solid.h"
 
 #include <glm/common.hpp>
@@ -12,10 +14,6 @@
 
 namespace grotto::voxel {
 
-namespace {
-
-// Bricks the solid tree stands for: its leaves, and every active tile as the full
-// bricks World::bricks() splits it into. Tiles only: leaves are counted, not walked.
 uint64_t brickCount(const openvdb::MaskTree& tree) {
     uint64_t bricks = tree.leafCount();
     auto it = tree.cbeginValueOn();
@@ -23,6 +21,8 @@ uint64_t brickCount(const openvdb::MaskTree& tree) {
     for (; it; ++it) bricks += it.getVoxelCount() / 512;
     return bricks;
 }
+
+namespace {
 
 // Above this many bricks a region's bricks come from walking the tree.
 constexpr double kProbedBricks = 4096;
@@ -88,18 +88,22 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     // expands into full bricks here: refused before any of them is made.
     const uint64_t bricks = brickCount(impl->solid->tree());
     const double bytes = double(bricks) * double(kBytesPerBrick);
-    if (bytes > double(impl->desc.memoryBudgetBytes)) {
-        char figures[128];
-        std::snprintf(figures, sizeof figures, "%llu bricks of 8^3 voxels, an estimated %.1f MiB, more than the memory budget of %.1f MiB",
-                      (unsigned long long)bricks, bytes / (1 << 20), double(impl->desc.memoryBudgetBytes) / (1 << 20));
-        throw Error(file, "grid '" + grid->getName() + "' is solid over " + figures,
+    if (bytes > double(impl->desc.memoryBudgetBytes))
+        throw Error(file, "grid '" + grid->getName() + "' is solid over " + overBudget(double(bricks), bytes, impl->desc.memoryBudgetBytes),
                     "raise 'memory_budget_mib' in the world file, or make the grid smaller or sparser");
-    }
     return World(std::move(impl));
+}
+
+std::string overBudget(double bricks, double bytes, size_t budget) {
+    char figures[160];
+    std::snprintf(figures, sizeof figures, "%.0f bricks of 8^3 voxels, an estimated %.1f MiB, more than the memory budget of %.1f MiB",
+                  bricks, bytes / (1 << 20), double(budget) / (1 << 20));
+    return figures;
 }
 
 World World::load(const std::filesystem::path& path) {
     WorldDesc desc = loadWorldDesc(path);
+    requireObjectsFit(desc);  // from their sizes: refused now, not after the world's grid is read
     openvdb::GridBase::Ptr grid = loadGrid(desc);
     World world = makeWorld(grid, std::move(desc));
     // Nothing solid would render sky and measure nothing: a file meant to be a
@@ -191,7 +195,7 @@ int World::material(glm::ivec3 v) const {
     return impl_->materials ? impl_->materials->tree().getValue(c) : impl_->uniformMaterial;
 }
 
-CameraDesc World::camera(const std::string& name) const {
+CameraDesc World::camera(const std::string& name, double aspect) const {
     const WorldDesc& d = impl_->desc;
     const std::string& pick = name.empty() ? d.defaultCamera : name;
     if (!pick.empty()) {
@@ -204,19 +208,10 @@ CameraDesc World::camera(const std::string& name) const {
         }
         return it->second;
     }
-    // Frame the bounds from above and to the side.
-    CameraDesc c;
     IndexBox b = bounds();
     if (b.empty()) b = {glm::ivec3(0), glm::ivec3(0)};
-    const glm::dvec3 lo = impl_->origin + glm::dvec3(b.min) * impl_->voxelSize;
-    const glm::dvec3 hi = impl_->origin + glm::dvec3(b.max + 1) * impl_->voxelSize;
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double radius = 0.5 * glm::length(hi - lo);
-    const double distance = radius / std::sin(glm::radians(c.fovDegrees) * 0.5);
-    c.target = centre;
-    c.position = centre + glm::normalize(glm::dvec3(0.8, 0.7, 1.0)) * distance;
-    c.nearPlane = std::clamp(distance * 1e-3, 1e-4, 10.0);
-    return c;
+    return frameBox(impl_->origin + glm::dvec3(b.min) * impl_->voxelSize,
+                    impl_->origin + glm::dvec3(b.max + 1) * impl_->voxelSize, aspect);
 }
 
 }  // namespace grotto::voxel

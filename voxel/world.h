@@ -95,16 +95,23 @@ public:
     // Material id of a voxel, 0 when empty.
     int material(glm::ivec3 voxel) const;
 
-    // A named camera, or the default one framed from the bounds when name is empty.
-    CameraDesc camera(const std::string& name) const;
+    // A named camera, or the default one when name is empty: the world's default
+    // camera, else one framing the bounds tightly in an image of `aspect`
+    // (width / height; voxel/camera_frame.h).
+    CameraDesc camera(const std::string& name, double aspect) const;
 
     // Edits (voxel/edit.h). Each returns what it changed; an edit that changes
     // nothing returns an empty result and is not recorded. Throws grotto::Error
     // (input) for an edit out of range (material, radius, index limits).
     EditResult apply(const Edit& edit);
+    // Throws what apply would refuse before changing anything (range, palette,
+    // the memory budget), without applying it: edits read from files are checked
+    // when they are read, not when their time comes.
+    void check(const Edit& edit) const;
     // Reverts the last recorded edit; an empty result when there is none. Undo
     // keeps the last 1024 edits and at most 64 MiB of the voxels' prior states
-    // (16 bytes per changed voxel); an edit larger than that cannot be undone,
+    // (16 bytes per changed voxel, 28 per changed part of a brick that held one
+    // state throughout); an edit larger than that cannot be undone,
     // nor can any before it.
     EditResult undo();
     size_t undoDepth() const;
@@ -112,9 +119,17 @@ public:
     // voxels differ from its file by (the reference cache keys on it).
     const std::vector<Edit>& editLog() const;
 
-    // Writes the grid (voxels, materials, transform and the source grid's metadata)
-    // as a .vdb, atomically; World::load of it gives the same voxels and materials.
-    void save(const std::filesystem::path& path) const;
+    // Writes the world as FILE.vdb, the grid (voxels, materials, transform and the
+    // source grid's metadata), and FILE.json, the world file naming it with the
+    // palette, lighting, AO, detail, cameras, paths and objects of `settings`
+    // (the world's own by default); `path` names either. Each file is written
+    // atomically. World::load of FILE.json is the same world; of FILE.vdb alone,
+    // the same voxels and materials.
+    struct SavedFiles {
+        std::filesystem::path world, grid;  // FILE.json, FILE.vdb
+    };
+    SavedFiles save(const std::filesystem::path& path) const;
+    SavedFiles save(const std::filesystem::path& path, const WorldDesc& settings) const;
 
     // Chunks (origins, GROTTO_CHUNK_SIZE aligned) whose mesh may differ after the
     // voxels in `changed` did: those holding the box grown by one voxel.

@@ -106,7 +106,7 @@ void parseAo(Reader r, AoDesc& ao) {
         if (r.has(key)) v = r.number(key, 0.0, lo, hi);
     };
     auto optInt = [&](const char* key, std::optional<int>& v, int lo, int hi) {
-        if (r.has(key)) v = int(r.number(key, 0.0, lo, hi));
+        if (r.has(key)) v = int(r.integer(key, 0, lo, hi));
     };
     opt("radius", ao.radius, 1e-15, 1e15);  // what the shaders' floats hold (engine/ao_settings.h)
     opt("radius_multiplier", ao.radiusMultiplier, 0.3, 3.0);
@@ -183,12 +183,11 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
         for (auto& [name, path] : paths.items())
             w.paths[name] = parsePathEntry(file, path, "paths." + name);
     }
-    if (r.has("objects")) w.objects = parseObjects(r, file);
+    if (r.has("objects")) w.objects = parseObjects(r, file, w.materials.size());
     w.defaultCamera = r.string("default_camera", firstCamera);
     if (!w.defaultCamera.empty() && !w.cameras.count(w.defaultCamera))
         r.fail("default_camera", "names no camera '" + w.defaultCamera + "'");
-    double budgetMiB = r.number("memory_budget_mib", double(w.memoryBudgetBytes >> 20), 1, 1 << 20);
-    w.memoryBudgetBytes = size_t(budgetMiB) << 20;
+    w.memoryBudgetBytes = size_t(r.integer("memory_budget_mib", int64_t(w.memoryBudgetBytes >> 20), 1, 1 << 20)) << 20;
     return w;
 }
 

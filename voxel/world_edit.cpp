@@ -1,6 +1,9 @@
 // Edits on the grid: fill, carve and paint over boxes and spheres, and their undo.
-// Every edit walks its region brick by brick, changes only voxels whose state
-// (material id, 0 = empty) differs, and remembers their prior states for undo.
+// Every edit walks its region brick by brick and changes only voxels whose state
+// (material id, 0 = empty) differs, remembering their prior states for undo. A
+// brick the edit covers whole that holds one state throughout (empty, or a tile)
+// changes as a whole: it becomes a tile, and its prior state is remembered once,
+// so a fill of a large region costs its bricks, not its voxels.
 #include "common/error.h"
 #include "shaders/shared/frame.h"
 #include "voxel/solid.h"
@@ -38,12 +41,36 @@ public:
         solid_.setValueOn(c);
         if (mat_) mat_->setValueOn(c, material);
     }
-    bool createdMaterials() const { return created_; }
-    // Does the brick at b (8-aligned) hold any solid voxel?
-    bool anySolid(const openvdb::Coord& b) {
-        if (const auto* leaf = solid_.probeConstLeaf(b)) return !leaf->isEmpty();
-        return solid_.isValueOn(b);  // an active tile covers the whole brick
+    // The one state every voxel of the brick at b (8-aligned) has, when it is
+    // empty or a tile; nothing when it is a leaf with voxels of its own.
+    std::optional<int> uniform(const openvdb::Coord& b) {
+        if (const auto* leaf = solid_.probeConstLeaf(b)) return leaf->isEmpty() ? std::optional<int>(0) : std::nullopt;
+        if (!solid_.isValueOn(b)) return 0;
+        if (!mat_) return w_.uniformMaterial;
+        if (mat_->probeConstLeaf(b)) return std::nullopt;
+        return mat_->getValue(b);
     }
+    // Every voxel of `box` (within one brick) to `material`: a whole brick
+    // becomes a tile, part of one changes voxel by voxel.
+    void setBox(const IndexBox& box, int material) {
+        const glm::ivec3 brick = box.min & ~7;
+        if (box.min != brick || box.max != brick + 7) {
+            for (int x = box.min.x; x <= box.max.x; ++x)
+                for (int y = box.min.y; y <= box.max.y; ++y)
+                    for (int z = box.min.z; z <= box.max.z; ++z) set({x, y, z}, material);
+            return;
+        }
+        if (material != 0 && !mat_ && material != w_.uniformMaterial) createMaterials();
+        const openvdb::Coord b(brick.x, brick.y, brick.z);
+        const bool replacesLeaf = solid_.probeConstLeaf(b) || (mat_ && mat_->probeConstLeaf(b));
+        solid_.addTile(1, b, material != 0, material != 0);
+        if (mat_) mat_->addTile(1, b, material, material != 0);
+        if (replacesLeaf) {  // the leaf is gone, but the accessors may still point at it
+            solid_.clear();
+            if (mat_) mat_->clear();
+        }
+    }
+    bool createdMaterials() const { return created_; }
 
 private:
     // The per-voxel material grid, made from the solid voxels (all of the
@@ -82,21 +109,27 @@ void dropEmptyLeaves(World::Impl& w, std::vector<glm::ivec3> bricks) {
     }
 }
 
-// What changed, gathered as voxels change.
+uint64_t volume(const IndexBox& b) {
+    return uint64_t(b.max.x - b.min.x + 1) * uint64_t(b.max.y - b.min.y + 1) * uint64_t(b.max.z - b.min.z + 1);
+}
+
+// What changed, gathered as voxels change: one voxel, or a box (within one
+// brick) whose voxels all went from one state to another.
 struct Changes {
     IndexBox voxels, nowSolid, nowEmpty;
     uint64_t count = 0;
     std::vector<glm::ivec3> emptiedBricks;
 
-    void add(glm::ivec3 v, int before, int after) {
-        const IndexBox one{v, v};
-        voxels = voxels.merged(one);
-        ++count;
+    void add(glm::ivec3 v, int before, int after) { add(IndexBox{v, v}, before, after); }
+    void add(const IndexBox& box, int before, int after) {
+        voxels = voxels.merged(box);
+        count += volume(box);
         if (after == 0) {
-            nowEmpty = nowEmpty.merged(one);
-            if (emptiedBricks.empty() || emptiedBricks.back() != (v & ~7)) emptiedBricks.push_back(v & ~7);
+            nowEmpty = nowEmpty.merged(box);
+            const glm::ivec3 brick = box.min & ~7;
+            if (emptiedBricks.empty() || emptiedBricks.back() != brick) emptiedBricks.push_back(brick);
         } else if (before == 0) {
-            nowSolid = nowSolid.merged(one);
+            nowSolid = nowSolid.merged(box);
         }
     }
 };
@@ -172,17 +205,57 @@ IndexBox intersection(const IndexBox& a, const IndexBox& b) {
     return {glm::max(a.min, b.min), glm::min(a.max, b.max)};
 }
 
-// A fill may create a brick per 8^3 voxels of its region: refused up front when
-// that would pass the world's memory budget, as a grid that large is on load.
-void requireFillFits(const Edit& e, const IndexBox& region, const World::Impl& w) {
-    double bricks = 1.0;
-    for (int a = 0; a < 3; ++a) bricks *= double((region.max[a] >> 3) - (region.min[a] >> 3) + 1);
-    const double bytes = bricks * double(kBytesPerBrick);
+// Bricks within `r` voxels of a point: at most the ball's volume in bricks.
+double ballBricks(double r) {
+    const double d = std::max(r, 0.0);
+    return 4.0 / 3.0 * 3.14159265358979 * d * d * d / 512.0;
+}
+
+// The bricks an edit touches, and of those the ones it covers only in part.
+// Every brick touching a sphere lies within a brick's diagonal of its surface
+// or inside it, so a sphere's counts follow from its radius.
+std::pair<double, double> bricksOf(const Edit& e, const IndexBox& region, const World::Impl& w) {
+    double touched = 1.0, whole = 1.0;
+    for (int a = 0; a < 3; ++a) {
+        touched *= double((region.max[a] >> 3) - (region.min[a] >> 3) + 1);
+        whole *= double(std::max(((region.max[a] + 1) >> 3) - ((region.min[a] + 7) >> 3), 0));
+    }
+    if (e.shape == Edit::Shape::Box) return {touched, touched - whole};
+    const double r = e.radius / w.voxelSize, diagonal = 8.0 * std::sqrt(3.0);
+    const double ball = ballBricks(r + diagonal);
+    return {std::min(touched, ball), std::min(touched, ball - ballBricks(r - diagonal))};
+}
+
+// An edit's memory, estimated before any voxel changes and refused when the world
+// after it could pass the budget, as a grid that large is on load: the world's
+// bricks and those a fill may add (kBytesPerBrick each, tiles included), a leaf
+// for each brick the edit covers in part (a whole brick becomes a tile; a carve
+// or a paint splits only tiles, as other bricks are leaves or empty already),
+// and the per-voxel material grid when the edit brings in a second material.
+void requireEditFits(const Edit& e, const IndexBox& region, const World::Impl& w) {
+    const auto [touched, partial] = bricksOf(e, region, w);
+    const openvdb::MaskTree& tree = w.solid->tree();
+    const double worldBricks = double(brickCount(tree)), worldLeaves = double(tree.leafCount());
+    const bool fill = e.op == Edit::Op::Fill;
+    const bool newMaterials = e.op != Edit::Op::Carve && !w.materials && e.material != w.uniformMaterial;
+    const double bricks = worldBricks + (fill ? touched : 0.0);
+    const double leaves = fill ? partial : std::min(partial, worldBricks - worldLeaves);
+    const double leafBytes = double(kMaskLeafBytes + (w.materials || newMaterials ? kValueLeafBytes : 0));
+    const double bytes = bricks * double(kBytesPerBrick) + leaves * leafBytes +
+                         (newMaterials ? worldLeaves * double(kValueLeafBytes) : 0.0);
     if (bytes > double(w.desc.memoryBudgetBytes))
-        throw Error("edit '" + describe(e) + "'", "could make " + num(bricks) + " bricks of 8^3 voxels, an estimated " +
-                                                      num(bytes / (1 << 20)) + " MiB, more than the memory budget of " +
-                                                      num(double(w.desc.memoryBudgetBytes) / (1 << 20)) + " MiB",
-                    "fill a smaller region, or raise 'memory_budget_mib' in the world file");
+        throw Error("edit '" + describe(e) + "'", "could make the world " + overBudget(bricks, bytes, w.desc.memoryBudgetBytes),
+                    "edit a smaller region, or raise 'memory_budget_mib' in the world file");
+}
+
+// The voxels an edit may change, once it is known to be in range and within the
+// budget: its region, clipped to the world's bounds for a carve or a paint
+// (they change solid voxels only). Throws grotto::Error (input).
+IndexBox checkedRegion(const Edit& e, const World::Impl& w) {
+    IndexBox region = regionOf(e, w);
+    if (e.op != Edit::Op::Fill) region = intersection(region, w.bounds);
+    if (!region.empty()) requireEditFits(e, region, w);
+    return region;
 }
 
 // Drops the oldest records past the caps; an edit too large to record ends the
@@ -204,17 +277,20 @@ void remember(EditHistory& h, const Edit& e, std::optional<UndoRecord> record) {
 
 }  // namespace
 
+void World::check(const Edit& e) const { checkedRegion(e, *impl_); }
+
 EditResult World::apply(const Edit& e) {
     Impl& w = *impl_;
-    IndexBox region = regionOf(e, w);
-    // Carve and paint change solid voxels only, and those lie within the bounds.
-    if (e.op != Edit::Op::Fill) region = intersection(region, w.bounds);
-    else requireFillFits(e, region, w);
+    const IndexBox region = checkedRegion(e, w);
     if (region.empty()) return {};
 
     const bool sphere = e.shape == Edit::Shape::Sphere;
     const double r2 = e.radius * e.radius;
     auto distance2 = [&](glm::dvec3 p) { return glm::dot(p - e.centre, p - e.centre); };
+    auto centreOf = [&](glm::ivec3 v) { return w.origin + (glm::dvec3(v) + 0.5) * w.voxelSize; };
+    auto stateAfter = [&](int before) {
+        return e.op == Edit::Op::Carve ? 0 : e.op == Edit::Op::Fill ? e.material : before != 0 ? e.material : 0;
+    };
     Changes changes;
     UndoRecord record;
     bool recording = true;
@@ -222,22 +298,33 @@ EditResult World::apply(const Edit& e) {
         VoxelStates states(w);
         auto editBrick = [&](glm::ivec3 b) {
             const IndexBox clip = intersection(region, {b, b + 7});
+            bool whole = true;  // does the edit cover all of the clip?
             if (sphere) {  // a brick wholly outside the sphere holds none of it
                 const glm::dvec3 lo = w.origin + glm::dvec3(clip.min) * w.voxelSize;
                 const glm::dvec3 hi = w.origin + glm::dvec3(clip.max + 1) * w.voxelSize;
                 if (distance2(glm::clamp(e.centre, lo, hi)) > r2) return;
+                const glm::dvec3 near = centreOf(clip.min), far = centreOf(clip.max);
+                whole = distance2(glm::mix(near, far, glm::greaterThan(glm::abs(far - e.centre), glm::abs(near - e.centre)))) <= r2;
+            }
+            if (const std::optional<int> before = whole ? states.uniform(coord(b)) : std::nullopt) {
+                const int after = stateAfter(*before);
+                if (after == *before) return;
+                states.setBox(clip, after);
+                changes.add(clip, *before, after);
+                if (recording) {
+                    record.boxes.push_back({clip, *before});
+                    recording = EditHistory::bytesOf(record) <= kMaxUndoBytes;
+                }
+                return;
             }
             for (int x = clip.min.x; x <= clip.max.x; ++x)
                 for (int y = clip.min.y; y <= clip.max.y; ++y)
                     for (int z = clip.min.z; z <= clip.max.z; ++z) {
                         const glm::ivec3 v(x, y, z);
-                        if (sphere && distance2(w.origin + (glm::dvec3(v) + 0.5) * w.voxelSize) > r2) continue;
+                        if (sphere && distance2(centreOf(v)) > r2) continue;
                         const openvdb::Coord c = coord(v);
                         const int before = states.get(c);
-                        const int after = e.op == Edit::Op::Carve  ? 0
-                                          : e.op == Edit::Op::Fill ? e.material
-                                          : before != 0            ? e.material
-                                                                   : 0;
+                        const int after = stateAfter(before);
                         if (before == after) continue;
                         states.set(c, after);
                         changes.add(v, before, after);
@@ -275,6 +362,11 @@ EditResult World::undo() {
     Changes changes;
     {
         VoxelStates states(w);
+        for (const BoxBefore& b : record.boxes) {
+            const int now = states.get(coord(b.box.min));  // the edit left the box one state
+            states.setBox(b.box, b.material);
+            changes.add(b.box, now, b.material);
+        }
         for (const VoxelBefore& v : record.before) {
             const openvdb::Coord c = coord(v.voxel);
             const int now = states.get(c);

@@ -1,10 +1,14 @@
-// World::save: the world's voxels back into a .vdb that World::load reads as the
-// same voxels and materials, with the source grid's name, transform and metadata.
+// World::save: the world's voxels back into a .vdb, with the source grid's name,
+// transform and metadata, and beside it the world file naming that .vdb with
+// every setting, camera, path and object: World::load of it is the same world.
+#include "common/atomic_file.h"
 #include "common/error.h"
 #include "voxel/solid.h"
+#include "voxel/world_json.h"
 
 #include <algorithm>
 #include <cctype>
+#include <fstream>
 
 namespace grotto::voxel {
 namespace {
@@ -30,10 +34,18 @@ openvdb::GridBase::Ptr voxelGrid(const World::Impl& w) {
 
 }  // namespace
 
-void World::save(const std::filesystem::path& path) const {
+World::SavedFiles World::save(const std::filesystem::path& path) const { return save(path, impl_->desc); }
+
+World::SavedFiles World::save(const std::filesystem::path& path, const WorldDesc& settings) const {
+    namespace fs = std::filesystem;
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext != ".vdb") throw Error(path.string(), "a world is saved as an OpenVDB file", "name it with .vdb");
+    if (ext != ".vdb" && ext != ".json")
+        throw Error(path.string(), "a world is saved as a world file and its grid, FILE.json and FILE.vdb",
+                    "name either of them (FILE.json or FILE.vdb): both are written");
+    const fs::path vdb = ext == ".vdb" ? path : fs::path(path).replace_extension(".vdb");
+    const fs::path file = ext == ".json" ? path : fs::path(path).replace_extension(".json");
+    requireOutputPath(file);  // before the grid is written, so a bad target writes nothing
     const Impl& w = *impl_;
     openvdb::GridBase::Ptr grid = voxelGrid(w);
     // OpenVDB writes the file_* statistics afresh; the source's would be stale.
@@ -43,7 +55,18 @@ void World::save(const std::filesystem::path& path) const {
     grid->setName(w.gridName);
     grid->setTransform(w.solid->transform().copy());
     grid->setGridClass(openvdb::GRID_UNKNOWN);  // no longer a level set or fog volume, if it was
-    writeGridFile(grid, path);
+    writeGridFile(grid, vdb);
+
+    // The world file names the grid as just written: its voxels are the solid ones.
+    WorldDesc saved = settings;
+    saved.gridFile = vdb;
+    saved.gridName = w.gridName;
+    saved.rule = grid->isType<openvdb::Int32Grid>() ? SolidRule::Int32 : SolidRule::Mask;
+    saved.threshold = WorldDesc{}.threshold;
+    saved.material = w.uniformMaterial;
+    const std::string text = worldFileJson(saved, file.parent_path()).dump(2, ' ', false, json::error_handler_t::replace);
+    writeAtomically(file, text + "\n");
+    return {file, vdb};
 }
 
 }  // namespace grotto::voxel

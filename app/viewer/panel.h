@@ -38,7 +38,7 @@ struct PanelState {
     double brushRadius = 1.0;                // voxels
     int material = 1;
     bool undo = false, saveWorld = false;    // set when their buttons were pressed
-    std::string saveWorldAs;                 // .vdb
+    std::string saveWorldAs;                 // .json (and its .vdb) or .vdb (and its .json)
     // Recording a camera path.
     size_t recordedKeys = 0;
     bool record = false, savePath = false;   // set when their buttons were pressed

@@ -4,7 +4,6 @@
 #include "common/error.h"
 #include "voxel/json_reader.h"
 
-#include <fstream>
 
 namespace grotto::viewer {
 
@@ -32,11 +31,7 @@ void PathRecorder::save(const std::filesystem::path& file) const {
         path["keys"].push_back(key);
     }
     requireOutputPath(file);
-    writeAtomically(file, [&](const std::filesystem::path& tmp) {
-        std::ofstream out(tmp);
-        out << path.dump(2) << "\n";
-        if (!out.flush()) throw Error(file.string(), "cannot be written");
-    });
+    writeAtomically(file, path.dump(2) + "\n");
 }
 
 }  // namespace grotto::viewer

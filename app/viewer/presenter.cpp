@@ -136,7 +136,7 @@ bool Presenter::present(const vk::Image& color, ImDrawData* ui, std::vector<uint
         vk::transition(cmd_, image, VK_IMAGE_ASPECT_COLOR_BIT, from, to, srcStage, srcAccess, dstStage, dstAccess);
     };
     const auto transfer = VK_PIPELINE_STAGE_TRANSFER_BIT;
-    // The renderer's colour, written by compute in an earlier submission.
+    // The frame's image, written by compute or a transfer in an earlier submission.
     const auto compute = VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     barrier(color.image, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, compute | transfer,
             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT, transfer, VK_ACCESS_TRANSFER_READ_BIT);

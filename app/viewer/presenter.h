@@ -1,6 +1,7 @@
 #pragma once
-// Puts frames in the window: the renderer's linear colour is blitted into the
-// swapchain's sRGB image (the blit encodes it, as the PNG writer does), Dear
+// Puts frames in the window: the renderer's display image (the colour through the
+// tone map) or an AOV view, display-linear, is blitted into the swapchain's sRGB
+// image (the blit encodes it, as the PNG writer does), Dear
 // ImGui's panel is drawn over it, and the image is presented. Handles the
 // swapchain going out of date (resize) and a minimised window (nothing to draw).
 #include "engine/vk/resources.h"
@@ -26,7 +27,7 @@ public:
 
     // The window's framebuffer changed size (0 x 0 while minimised).
     void resize(VkExtent2D framebuffer);
-    // Shows `color` (RGBA32F, GENERAL, written by compute or transfers in earlier submissions), scaled to the
+    // Shows `color` (display-linear float RGBA, GENERAL, written by compute or transfers in earlier submissions), scaled to the
     // window, with `ui` on top. With `capture`, the presented image is also read back
     // as 8-bit sRGB RGB. False when nothing was presented (minimised, out of date).
     bool present(const vk::Image& color, ImDrawData* ui, std::vector<uint8_t>* capture = nullptr);

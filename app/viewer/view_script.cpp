@@ -105,9 +105,7 @@ struct FrameOrder {
 std::optional<ScriptAction> readAction(Reader& r) {
     ScriptAction a;
     if (!r.has("frame")) r.fail("frame", "missing", "the frame the action happens at, counted from 0");
-    const double frame = r.number("frame", 0, 0, kMaxFrame);
-    if (frame != std::floor(frame)) r.fail("frame", "expected a whole number", "frames count from 0");
-    a.frame = uint32_t(frame);
+    a.frame = uint32_t(r.integer("frame", 0, 0, int64_t(kMaxFrame)));
     const char* verb = nullptr;
     for (const auto& [name, kind] : kVerbs)
         if (r.has(name)) {

@@ -36,7 +36,7 @@ struct ScriptAction {
     std::vector<std::pair<std::string, nlohmann::json>> settings;  // Set: name -> value, in file order,
                                                                    // unchecked (the viewer knows the names)
     std::string camera;            // Camera: a named camera of the world
-    std::filesystem::path path;    // SavePath, SaveWorld (.vdb), Screenshot: relative ones joined to the script's directory
+    std::filesystem::path path;    // SavePath, SaveWorld (.json or .vdb: both are written), Screenshot: relative ones joined to the script's directory
     MouseButton button = MouseButton::Left;  // Click
 };
 // The verb as scripts write it: "key", "save_path", ...

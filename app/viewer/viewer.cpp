@@ -10,6 +10,7 @@
 #include "app/viewer/window.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
+#include "common/printable.h"
 #include "engine/image_output.h"
 #include "engine/live_scene.h"
 #include "engine/renderer.h"
@@ -67,10 +68,11 @@ public:
         renderSize_ = scaled(fb);
         renderer_ = std::make_unique<Renderer>(ctx_, live_->gpu(), desc_.lighting, ao, renderSize_.width,
                                                renderSize_.height, objects_.get());
+        renderer_->setDisplayImage(true);  // the final view: the colour through the tone map
         desc_.detail = app::resolveDetail(world, o.ao);
         renderer_->setCulling(cullingOptions(desc_.detail));
         presenter_ = std::make_unique<Presenter>(ctx_, fb, o.vsync);
-        const voxel::CameraDesc start = world.camera(o.camera);
+        const voxel::CameraDesc start = world.camera(o.camera, aspect());
         const voxel::IndexBox b = world.bounds();
         const double extent = b.empty() ? 10.0 : glm::length(glm::dvec3(b.max - b.min + 1)) * world.voxelSize();
         fly_ = std::make_unique<FlyCamera>(start, extent / 8.0);  // crosses the world in about 8 s
@@ -78,7 +80,7 @@ public:
         for (const auto& [name, p] : desc_.paths) panel_.paths.push_back(name);
         panel_.quads = live_->gpu().quadCount;
         panel_.activeVoxels = world.stats().solidVoxels;
-        panel_.saveWorldAs = (o.world.parent_path() / (o.world.stem().string() + "-edited.vdb")).string();
+        panel_.saveWorldAs = (o.world.parent_path() / (o.world.stem().string() + "-edited.json")).string();
         panel_.savePathAs = (o.world.parent_path() / (o.world.stem().string() + "-recorded.json")).string();
         panel_.hidden = o.hidePanel;
         panel_.renderScale = o.renderScale;
@@ -115,7 +117,7 @@ public:
             const auto afterRender = Clock::now();
             if (panel_.view != "final" || pendingShot_) readback(camera);
             ImDrawData* ui = drawUi();
-            presenter_->present(panel_.view == "final" ? renderer_->colorImage() : shown_, ui,
+            presenter_->present(panel_.view == "final" ? renderer_->displayImage() : shown_, ui,
                                 wantWindowCapture() ? &windowPixels_ : nullptr);
             const auto end = Clock::now();
             lastFrameSeconds_ = std::chrono::duration<double>(end - start).count();
@@ -129,7 +131,10 @@ public:
         if (options_.screenshot) screenshot(*options_.screenshot);
         if (options_.captureWindow) {
             if (windowPixels_.empty()) throw Error("--capture-window", "no frame was shown to capture", "give --frames 1 or more");
-            writeSrgb8(*options_.captureWindow, presenter_->extent().width, presenter_->extent().height, windowPixels_);
+            const VkExtent2D e = presenter_->extent();
+            writeSrgb8(*options_.captureWindow, e.width, e.height, windowPixels_);
+            std::printf("wrote %s (%ux%u, the window as shown)\n", printable(options_.captureWindow->string()).c_str(),
+                        e.width, e.height);
         }
         if (options_.bench) printBench(frameMs, renderMs, presentMs);
         app::requireNoValidationMessages(ctx_);
@@ -196,8 +201,10 @@ private:
         return f.camera;
     }
 
+    double aspect() const { return double(renderSize_.width) / double(renderSize_.height); }
+
     void playPath(const std::string& name) {
-        player_.play(desc_.paths.at(name), live_->world().camera(""));
+        player_.play(desc_.paths.at(name), live_->world().camera("", aspect()));
         panel_.playing = name;
         cut();
     }
@@ -230,7 +237,7 @@ private:
     void savePath(const std::filesystem::path& file) {
         recorder_.save(file);
         panel_.message = "wrote " + file.string();
-        std::printf("wrote %s (%zu keys)\n", file.c_str(), recorder_.size());
+        std::printf("wrote %s (%zu keys)\n", printable(file.string()).c_str(), recorder_.size());
     }
 
     // A click at a window pixel: the panel's edit where the view ray first meets a
@@ -286,9 +293,10 @@ private:
 
     void saveWorld(const std::filesystem::path& file) {
         requireOutputPath(file);
-        live_->world().save(file);
-        panel_.message = "wrote " + file.string();
-        std::printf("wrote %s\n", file.c_str());
+        // With the settings as the panel has them.
+        const voxel::World::SavedFiles saved = live_->world().save(file, desc_);
+        panel_.message = "wrote " + saved.world.string() + " and " + saved.grid.string();
+        std::printf("wrote %s and %s\n", printable(saved.world.string()).c_str(), printable(saved.grid.string()).c_str());
     }
 
     // The window system applies size changes asynchronously: give it a moment.
@@ -345,7 +353,7 @@ private:
     }
 
     void jumpTo(const std::string& name) {
-        fly_->jumpTo(live_->world().camera(name));
+        fly_->jumpTo(live_->world().camera(name, aspect()));
         cut();
     }
 
@@ -458,20 +466,20 @@ private:
 
     // Reads the frame back for an AOV view or a screenshot.
     void readback(const Camera& camera) {
-        FrameImages f = renderer_->readback(camera, true);
+        const FrameImages f = renderer_->readback(camera, true);
+        const std::vector<float> shown = panel_.view == "final" ? std::vector<float>() : aovDisplay(f, panel_.view);
         if (pendingShot_) {
-            writeShot(*pendingShot_, f, camera);
+            writeShot(*pendingShot_, f, shown, camera);
             pendingShot_.reset();
         }
         if (panel_.view == "final") return;
-        showAov(f, panel_.view);
         if (shown_.extent.width != f.width || shown_.extent.height != f.height) {
             vk::destroy(ctx_, shown_);
             shown_ = vk::createImage(ctx_, {f.width, f.height}, VK_FORMAT_R32G32B32A32_SFLOAT,
                                      VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                          VK_IMAGE_USAGE_SAMPLED_BIT);  // sampled: an image gets a view
         }
-        vk::Buffer staging = vk::uploadBuffer(ctx_, f.color.data(), f.color.size() * sizeof(float),
+        vk::Buffer staging = vk::uploadBuffer(ctx_, shown.data(), shown.size() * sizeof(float),
                                               VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
         ctx_.submitAndWait([&](VkCommandBuffer cmd) {
             vk::transition(cmd, shown_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
@@ -487,16 +495,24 @@ private:
         vk::destroy(ctx_, staging);
     }
 
-    void writeShot(const std::filesystem::path& path, const FrameImages& f, const Camera& camera) {
-        const bool exr = imageFormatFor(path) == ImageFormat::Exr;
-        writeFrame(path, f, camera, exr);
+    // What the view shows: a PNG of the final view holds the tone-mapped colour as
+    // `render` writes it, of an AOV view that AOV as the window shows it (`shown`,
+    // aovDisplay). An EXR holds the scene-linear colour and every AOV, the shown one
+    // among them.
+    void writeShot(const std::filesystem::path& path, const FrameImages& f, const std::vector<float>& shown,
+                   const Camera& camera) {
+        if (imageFormatFor(path) == ImageFormat::Exr) writeFrame(path, f, camera, true);
+        else if (shown.empty()) writeFrame(path, f, camera, false);
+        else writeSrgb8(path, f.width, f.height, encodeSrgb8(shown), &camera);
         panel_.message = "wrote " + path.string();
-        std::printf("wrote %s (%ux%u)\n", path.c_str(), f.width, f.height);
+        std::printf("wrote %s (%ux%u)\n", printable(path.string()).c_str(), f.width, f.height);
     }
 
     // The last frame rendered, with the camera it was rendered from.
     void screenshot(const std::filesystem::path& path) {
-        writeShot(path, renderer_->readback(lastCamera_, imageFormatFor(path) == ImageFormat::Exr), lastCamera_);
+        const bool aov = panel_.view != "final";
+        const FrameImages f = renderer_->readback(lastCamera_, aov || imageFormatFor(path) == ImageFormat::Exr);
+        writeShot(path, f, aov ? aovDisplay(f, panel_.view) : std::vector<float>(), lastCamera_);
     }
 
     ImDrawData* drawUi() {

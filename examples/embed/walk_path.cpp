@@ -25,10 +25,10 @@ int main(int argc, char** argv) {
         const voxel::World world = voxel::World::load(argv[1]);
         const auto path = world.desc().paths.find(argv[2]);
         if (path == world.desc().paths.end()) throw Error(argv[1], std::string("has no path named ") + argv[2]);
-        const CameraPath walk(path->second, world.camera(""));
+        const uint32_t width = 320, height = 180;
+        const CameraPath walk(path->second, world.camera("", double(width) / height));
         const int frames = std::atoi(argv[3]);
         if (frames < 1) throw Error(argv[3], "is not a frame count", "give a whole number >= 1");
-        const uint32_t width = 320, height = 180;
         const double fps = 24.0;
 
         vk::Context ctx;  // lavapipe unless GROTTO_DEVICE names another; GROTTO_VALIDATION=1 checks every call

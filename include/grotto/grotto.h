@@ -25,7 +25,7 @@ namespace grotto {
 using VulkanDevice = vk::ExternalDevice;
 
 // An image Grotto rendered, owned by Grotto and valid until the next render(),
-// resize(), setAo() or the engine's end.
+// resize(), setAo(), setLighting() or the engine's end.
 struct RenderedImage {
     VkImage image = VK_NULL_HANDLE;
     VkFormat format = VK_FORMAT_UNDEFINED;
@@ -41,17 +41,20 @@ struct RenderedImage {
 // you need, from GENERAL); give them back in GENERAL (any access) before calling
 // render() again. Do not write to them.
 struct RenderedFrame {
-    RenderedImage color;  // linear RGBA, R32G32B32A32_SFLOAT, full size (no tone map)
-    RenderedImage ao;     // ambient visibility in the red channel (1 = open), R32G32B32A32_SFLOAT,
-                          // at AO resolution: ceil(w/2) x ceil(h/2) by default; 1x1 with AO off
+    RenderedImage color;    // scene-linear RGBA, R32G32B32A32_SFLOAT, full size: radiance x exposure, no tone
+                            // map (values above 1 are normal), Rec. 709 primaries
+    RenderedImage display;  // what to show: `color` through the world's tone map, display-linear in [0, 1],
+                            // R16G16B16A16_SFLOAT, full size; blit or write it to an sRGB image, which encodes it
+    RenderedImage ao;       // ambient visibility in the red channel (1 = open), R32G32B32A32_SFLOAT,
+                            // at AO resolution: ceil(w/2) x ceil(h/2) by default; 1x1 with AO off
     uint64_t quadsDrawn = 0;
-    double wallMs = 0.0;  // record + submit + wait
+    double wallMs = 0.0;    // record + submit + wait
 };
 
 // A frame read back to host memory, row 0 on top.
 struct Pixels {
     uint32_t width = 0, height = 0;
-    std::vector<float> rgba;  // linear
+    std::vector<float> rgba;  // scene-linear, as RenderedFrame::color
     std::vector<float> ao;    // visibility per pixel at full size (1 without AO)
 };
 
@@ -73,10 +76,15 @@ public:
 
     // The world: a world .json or .vdb, or one built in memory
     // (voxel::World::fromDense). Its lighting, AO settings and default camera
-    // become the engine's. Throws grotto::Error (input) on bad input.
+    // become the engine's (without cameras of its own: one framing its bounds in
+    // the engine's image size). Throws grotto::Error (input) on bad input.
     void loadWorld(const std::filesystem::path& file);
     void setWorld(voxel::World world);
     const voxel::World& world() const;
+    // Writes the world as edited with the engine's lighting and AO settings: FILE.json,
+    // the world file (palette, lighting, AO, detail, cameras, paths, objects), and
+    // FILE.vdb, its voxels; `file` names either. loadWorld(FILE.json) is the same world.
+    void saveWorld(const std::filesystem::path& file) const;
 
     // Edits change the world between any two frames; only the chunks they touch
     // are re-meshed and re-uploaded, and temporal AO history near them restarts.
@@ -101,8 +109,8 @@ public:
     RenderedFrame render();
     // The last rendered frame, read back.
     Pixels readPixels();
-    // Writes the last rendered frame as a PNG (tone-mapped sRGB) or an EXR (linear,
-    // with AOVs), atomically.
+    // Writes the last rendered frame as a PNG (tone-mapped, 8-bit sRGB: display-referred)
+    // or an EXR (scene-linear colour, as `color`, with AOVs), atomically.
     void saveFrame(const std::filesystem::path& file);
 
     std::string deviceName() const;

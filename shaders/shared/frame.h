@@ -19,7 +19,7 @@ struct FrameUniforms {
     vec4 rayStepX;       // xyz: its change per pixel to the right
     vec4 rayStepY;       // xyz: its change per pixel down
     vec4 aoStrength;     // x: 0 = AO off, 1 = full AO
-    vec4 exposure;       // x: radiance multiplier; y: tone map, 0 = filmic, 1 = linear (clamped)
+    vec4 exposure;       // x: radiance multiplier (the composite's colour is radiance x this); yzw unused
     uvec2 size;          // full-resolution width, height
     uvec2 pad;
 };

@@ -20,22 +20,56 @@ openvdb::GridBase::Ptr generateMesh(const GeneratorOptions& options);
 
 namespace {
 
+// Upper bounds on each kind's bricks and leaves at size S, from how it builds
+// (the comments at the top of each generator). B is the footprint's extent in
+// bricks, one more on each side for a box that straddles brick boundaries.
+double across(int S) { return S / 8.0 + 2.0; }
+double ball(double radius) { return 4.0 / 3.0 * 3.14159265358979 * std::pow(std::max(radius, 0.0), 3.0) / 512.0; }
+const double kDiagonal = 8.0 * std::sqrt(3.0);  // of a brick, in voxels
+
+GeneratedSize roomsSize(int S) {  // a floor slab, 7 walls 3 thick and S/2 high, small furniture
+    const double B = across(S), rows = std::max(12, S / 2) / 8.0 + 2.0;
+    const double bricks = B * B + 7 * 2 * B * rows + B + 256;
+    return {bricks, bricks, kValueLeafBytes};
+}
+GeneratedSize cavesSize(int S) {  // every column at most 96 voxels (12 bricks) high
+    const double B = across(S);
+    return {12 * B * B, 12 * B * B, kValueLeafBytes};
+}
+GeneratedSize thinSize(int S) {  // a floor slab, fences and poles along two sides, small fixed pieces
+    const double B = across(S);
+    return {B * B + 5 * B + 128, B * B + 5 * B + 128, kMaskLeafBytes};
+}
+GeneratedSize citySize(int S) {  // 17 brick rows from the slab to the tallest roof; walls on brick boundaries
+    const double B = across(S);
+    return {17 * B * B, 4 * B * B, kValueLeafBytes};  // leaves: the pavement and up to three roofs
+}
+GeneratedSize sphereSize(int S) {  // a ball of diameter S, its surface in a band of 3 voxels a side
+    const double r = S / 2.0;
+    return {ball(r + kDiagonal), ball(r + 3 + kDiagonal) - ball(r - 3 - kDiagonal), kValueLeafBytes};
+}
+GeneratedSize meshSize(int S) {  // whatever the mesh, within a cube of S
+    const double B = across(S);
+    return {B * B * B, B * B * B, kValueLeafBytes};
+}
+
 struct Kind {
     std::string name;
     int defaultSize;
     int maxSize;
     const char* gridName;  // the convention in generators.h
     openvdb::GridBase::Ptr (*generate)(const GeneratorOptions&);
+    GeneratedSize (*size)(int);
 };
 
 const std::vector<Kind>& kinds() {
     static const std::vector<Kind> table = {
-        {"rooms", 64, 4096, "material", generateRooms},
-        {"caves", 256, 4096, "material", generateCaves},
-        {"thin", 64, 4096, "solid", generateThin},
-        {"city", 1024, 4096, "material", generateCity},
-        {"sphere", 64, 4096, "surface", generateSphere},
-        {"mesh", 128, 1024, "surface", generateMesh},
+        {"rooms", 64, 4096, "material", generateRooms, roomsSize},
+        {"caves", 256, 4096, "material", generateCaves, cavesSize},
+        {"thin", 64, 4096, "solid", generateThin, thinSize},
+        {"city", 1024, 4096, "material", generateCity, citySize},
+        {"sphere", 64, 4096, "surface", generateSphere, sphereSize},
+        {"mesh", 128, 1024, "surface", generateMesh, meshSize},
     };
     return table;
 }
@@ -86,6 +120,11 @@ openvdb::GridBase::Ptr generateWorld(const std::string& kindName, const Generato
     grid->insertMeta("grotto_kind", openvdb::StringMetadata(kind.name));
     grid->insertMeta("grotto_seed", openvdb::Int64Metadata(static_cast<int64_t>(resolved.seed)));
     return grid;
+}
+
+GeneratedSize generatedSize(const std::string& kindName, const GeneratorOptions& options) {
+    const Kind& kind = findKind(kindName);
+    return kind.size(resolve(kind, options).size);
 }
 
 void makeWorldFile(const std::string& kind, const GeneratorOptions& options,

@@ -1,0 +1,172 @@
+// Writes each block as its reader (world_desc.cpp, object_desc.cpp,
+// camera_path_desc.cpp, edit_track.cpp) reads it; WorldSave's round trip
+// checks that they agree.
+#include "voxel/world_json.h"
+
+#include <algorithm>
+#include <charconv>
+
+namespace grotto::voxel {
+namespace fs = std::filesystem;
+namespace {
+
+// A float as the shortest decimal that reads back as it (0.62, not 0.6200000047683716).
+double decimal(float f) {
+    char text[32];
+    const char* end = std::to_chars(text, text + sizeof text, f).ptr;
+    double d = f;
+    std::from_chars(text, end, d);
+    return d;
+}
+
+json triple(glm::dvec3 v) { return json::array({v.x, v.y, v.z}); }
+json triple(glm::ivec3 v) { return json::array({v.x, v.y, v.z}); }
+json triple(glm::vec3 v) { return json::array({decimal(v.x), decimal(v.y), decimal(v.z)}); }
+json quaternion(const glm::dquat& q) { return json::array({q.x, q.y, q.z, q.w}); }  // [x, y, z, w]
+
+// `file` as a world file in `dir` names it: relative to `dir` where a relative path reaches it.
+std::string fileFrom(const fs::path& dir, const fs::path& file) {
+    std::error_code ec;
+    const fs::path absolute = fs::absolute(file, ec).lexically_normal();
+    const fs::path base = fs::absolute(dir.empty() ? fs::path(".") : dir, ec).lexically_normal();
+    const fs::path relative = absolute.lexically_relative(base);
+    return (relative.empty() ? absolute : relative).generic_string();
+}
+
+template <typename Desc>
+json gridBlock(const Desc& d, const fs::path& dir) {
+    json g = {{"file", fileFrom(dir, d.gridFile)}};
+    if (!d.gridName.empty()) g["name"] = d.gridName;
+    g["rule"] = solidRuleName(d.rule);
+    g["threshold"] = d.threshold;
+    g["material"] = d.material;
+    return g;
+}
+
+json cameraJson(const CameraDesc& c) {
+    return {{"position", triple(c.position)}, {"target", triple(c.target)}, {"fov", c.fovDegrees},
+            {"near", c.nearPlane}, {"far", c.farPlane}};
+}
+
+json lightingJson(const Lighting& l) {
+    return {{"sun", {{"direction", triple(l.sunDirection)}, {"color", triple(l.sunColor)}, {"intensity", decimal(l.sunIntensity)},
+                     {"shadows", l.sunShadows}, {"angle", decimal(l.sunAngle)}}},
+            {"ambient", {{"color", triple(l.ambientColor)}, {"intensity", decimal(l.ambientIntensity)}}},
+            {"sky", {{"zenith", triple(l.skyZenith)}, {"horizon", triple(l.skyHorizon)}}},
+            {"exposure", decimal(l.exposure)},
+            {"tone_map", l.toneMap == ToneMap::Filmic ? "filmic" : "linear"}};
+}
+
+json aoJson(const AoDesc& a) {
+    json j = {{"method", a.method}, {"quality", a.quality}};
+    auto set = [&](const char* key, const auto& value) {
+        if (value) j[key] = *value;
+    };
+    set("radius", a.radius);
+    set("radius_multiplier", a.radiusMultiplier);
+    set("falloff_range", a.falloffRange);
+    set("sample_distribution_power", a.sampleDistributionPower);
+    set("thin_occluder", a.thinOccluder);
+    set("final_value_power", a.finalValuePower);
+    set("depth_mip_offset", a.depthMipOffset);
+    set("strength", a.strength);
+    set("max_distance", a.maxDistance);
+    set("denoise_blur_beta", a.denoiseBlurBeta);
+    set("slices", a.slices);
+    set("steps", a.steps);
+    set("denoise", a.denoisePasses);
+    set("temporal_history", a.temporalHistory);
+    set("rays", a.rays);
+    return j;
+}
+
+json editJson(const TimedEdit& t) {
+    const Edit& e = t.edit;
+    json j = {{"time", t.time},
+              {"op", e.op == Edit::Op::Fill ? "fill" : e.op == Edit::Op::Carve ? "carve" : "paint"}};
+    if (e.shape == Edit::Shape::Sphere)
+        j["sphere"] = {{"centre", triple(e.centre)}, {"radius", e.radius}};
+    else if (e.box.min == e.box.max)
+        j["voxel"] = triple(e.box.min);
+    else
+        j["voxels"] = {{"min", triple(e.box.min)}, {"max", triple(e.box.max)}};
+    if (e.op != Edit::Op::Carve) j["material"] = e.material;
+    return j;
+}
+
+json pathJson(const CameraPathDesc& p) {
+    json j = json::object();
+    if (p.constantSpeed) j["constant_speed"] = true;
+    if (p.fovDegrees) j["fov"] = *p.fovDegrees;
+    if (p.nearPlane) j["near"] = *p.nearPlane;
+    if (p.farPlane) j["far"] = *p.farPlane;
+    j["keys"] = json::array();
+    for (const PathKey& k : p.keys) {
+        json key = {{"time", k.time}, {"position", triple(k.position)}};
+        if (k.target) key["target"] = triple(*k.target);
+        if (k.rotation) key["quaternion"] = quaternion(*k.rotation);
+        if (k.fovDegrees) key["fov"] = *k.fovDegrees;
+        if (k.cut) key["cut"] = true;
+        j["keys"].push_back(key);
+    }
+    if (!p.edits.empty()) {
+        j["edits"] = json::array();
+        for (const TimedEdit& t : p.edits) j["edits"].push_back(editJson(t));
+    }
+    return j;
+}
+
+json objectJson(const ObjectDesc& o, const fs::path& dir) {
+    json j = {{"name", o.name}};
+    if (o.generator.empty()) {
+        j["grid"] = gridBlock(o, dir);
+    } else {
+        const GeneratorOptions& g = o.generatorOptions;
+        json generator = {{"kind", o.generator}, {"voxel_size", g.voxelSize}};
+        if (o.generator == "box") {
+            generator["size"] = triple(o.boxSize);
+            generator["material"] = o.material;
+        } else {
+            generator["seed"] = g.seed;
+            generator["size"] = g.size;
+            if (o.generator == "mesh") generator["mesh"] = fileFrom(dir, g.meshFile);
+        }
+        j["generator"] = generator;
+    }
+    j["pivot"] = triple(o.pivot);
+    j["keys"] = json::array();
+    for (const ObjectKey& k : o.keys)
+        j["keys"].push_back({{"time", k.time}, {"position", triple(k.position)}, {"quaternion", quaternion(k.rotation)}});
+    return j;
+}
+
+}  // namespace
+
+json worldFileJson(const WorldDesc& d, const fs::path& dir) {
+    json j = {{"grid", gridBlock(d, dir)}};
+    if (!d.materials.empty()) {
+        j["materials"] = json::array();
+        for (const Material& m : d.materials)
+            j["materials"].push_back({{"name", m.name}, {"albedo", triple(m.albedo)}, {"ao", decimal(m.ao)}});
+    }
+    j["lighting"] = lightingJson(d.lighting);
+    j["ao"] = aoJson(d.ao);
+    j["detail"] = {{"lod_bias", d.detail.lodBias}, {"occlusion_culling", d.detail.occlusionCulling}};
+    if (!d.cameras.empty()) {
+        j["cameras"] = json::object();
+        for (const auto& [name, c] : d.cameras) j["cameras"][name] = cameraJson(c);
+    }
+    j["default_camera"] = d.defaultCamera;  // "" = framed from the bounds, even when there are cameras
+    if (!d.paths.empty()) {
+        j["paths"] = json::object();
+        for (const auto& [name, p] : d.paths) j["paths"][name] = pathJson(p);
+    }
+    if (!d.objects.empty()) {
+        j["objects"] = json::array();
+        for (const ObjectDesc& o : d.objects) j["objects"].push_back(objectJson(o, dir));
+    }
+    j["memory_budget_mib"] = std::max<size_t>(1, d.memoryBudgetBytes >> 20);
+    return j;
+}
+
+}  // namespace grotto::voxel
