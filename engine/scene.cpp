@@ -81,9 +81,13 @@ void requireFaceCounts(const voxel::MeshChunkQuads& q) {
 // face's axis as the mesher orders slices (each block keeps the mesher's order).
 constexpr int kClusterShift = 3;
 
-int blockOf(const gpu::PackedQuad& q) {
+// The block of the voxel behind the quad's lowest corner.
+int blockOf(const voxel::MeshQuad& q) {
+    glm::ivec3 lo = q.corner(0);
+    for (int i = 1; i < 4; ++i) lo = glm::min(lo, q.corner(i));
+    if (gpu::facePositive(q.face())) lo[int(gpu::faceAxis(q.face()))] -= 1;
     int b = 0;
-    for (uint32_t axis = 0; axis < 3; ++axis) b |= int(gpu::quadCoord(q.bits, axis) >> kClusterShift) << (2 * axis);
+    for (int axis = 0; axis < 3; ++axis) b |= (lo[axis] >> kClusterShift) << (2 * axis);
     return b;
 }
 
@@ -97,11 +101,8 @@ int blockRank(int block, uint32_t f) {
 
 // One level of a chunk written at `first` in the vertex buffer (`vertices` points
 // there): face ranges, clusters, and the level's bounds grown into lo/hi.
-GpuLevel placeLevel(glm::ivec3 index, const std::array<uint32_t, 6>& faceCount, std::span<const gpu::PackedQuad> quads,
-                    uint32_t first, uint32_t* vertices, glm::ivec3& lo, glm::ivec3& hi) {
-    static const voxel::Mesh geometry;  // corners() needs only the chunk and the quad
-    voxel::MeshChunk mc;
-    mc.origin = index;
+GpuLevel placeLevel(const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads, uint32_t first,
+                    uint32_t* vertices, glm::ivec3& lo, glm::ivec3& hi) {
     GpuLevel g;
     uint32_t q = 0;
     std::vector<uint32_t> order;
@@ -116,20 +117,20 @@ GpuLevel placeLevel(glm::ivec3 index, const std::array<uint32_t, 6>& faceCount, 
         });
         int block = -1;
         for (uint32_t k = 0; k < order.size(); ++k) {
-            const gpu::PackedQuad quad = quads[order[k]];
+            const voxel::MeshQuad& quad = quads[order[k]];
             if (blockOf(quad) != block) {
                 block = blockOf(quad);
                 g.clusters.push_back({.first = first + k, .count = 0, .lo = glm::vec3(GROTTO_CHUNK_SIZE), .hi = glm::vec3(0.0f)});
             }
             QuadCluster& cluster = g.clusters.back();
             ++cluster.count;
-            for (const glm::ivec3& v : geometry.corners(mc, quad)) {
-                const glm::ivec3 p = v - index;
+            for (int i = 0; i < 4; ++i) {
+                const glm::ivec3 p = quad.corner(i);
                 lo = glm::min(lo, p);
                 hi = glm::max(hi, p);
                 cluster.lo = glm::min(cluster.lo, glm::vec3(p));
                 cluster.hi = glm::max(cluster.hi, glm::vec3(p));
-                *vertices++ = gpu::packVertex(uint32_t(p.x), uint32_t(p.y), uint32_t(p.z), f, quad.material);
+                *vertices++ = quad.corners[size_t(i)];
             }
         }
         q += faceCount[f];
@@ -150,10 +151,10 @@ GpuChunk placeChunk(const voxel::MeshChunkQuads& c, const GpuScene& scene, uint3
     g.slotQuads = slotQuads;
     glm::ivec3 lo(GROTTO_CHUNK_SIZE), hi(0);
     uint32_t first = slotFirst;
-    g.levels.push_back(placeLevel(c.origin, c.faceCount, c.quads, first, vertices, lo, hi));
+    g.levels.push_back(placeLevel(c.faceCount, c.quads, first, vertices, lo, hi));
     first += uint32_t(c.quads.size());
     for (const voxel::MeshLevel& l : c.coarser) {
-        g.levels.push_back(placeLevel(c.origin, l.faceCount, l.quads, first, vertices + 4 * size_t(first - slotFirst), lo, hi));
+        g.levels.push_back(placeLevel(l.faceCount, l.quads, first, vertices + 4 * size_t(first - slotFirst), lo, hi));
         first += uint32_t(l.quads.size());
     }
     g.lo = glm::vec3(lo) * float(scene.voxelSize);
@@ -166,7 +167,7 @@ std::vector<voxel::MeshChunkQuads> meshChunks(const voxel::Mesh& mesh) {
     chunks.reserve(mesh.chunks.size());
     for (const voxel::MeshChunk& c : mesh.chunks)
         chunks.push_back({.origin = c.origin, .faceCount = c.faceCount,
-                          .quads = std::vector<gpu::PackedQuad>(mesh.quads.begin() + c.firstQuad,
+                          .quads = std::vector<voxel::MeshQuad>(mesh.quads.begin() + c.firstQuad,
                                                                 mesh.quads.begin() + c.firstQuad + c.quadCount())});
     return chunks;
 }

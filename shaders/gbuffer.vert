@@ -1,6 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Quad corners from a 4-byte vertex; chunk corner and voxel size from push constants.
+// The position depends on the corner's voxel index only (shared/frame.h: ChunkPush).
 #include "shared/frame.h"
 #include "shared/quad.h"
 
@@ -11,8 +12,8 @@ layout(location = 0) in uint inVertex;
 layout(location = 0) flat out uint outSurface;
 
 void main() {
-    vec3 p = vec3(vertexCoord(inVertex, 0u), vertexCoord(inVertex, 1u), vertexCoord(inVertex, 2u));
-    vec3 position = chunk.offsetAndVoxelSize.xyz + p * chunk.offsetAndVoxelSize.w;
+    ivec3 voxel = chunk.voxel.xyz + ivec3(vertexCoord(inVertex, 0u), vertexCoord(inVertex, 1u), vertexCoord(inVertex, 2u));
+    vec3 position = (vec3(voxel) - chunk.cameraAndVoxelSize.xyz) * chunk.cameraAndVoxelSize.w;
     gl_Position = frame.viewProj * vec4(position, 1.0);
     outSurface = packSurface(vertexFace(inVertex), vertexMaterial(inVertex));
 }

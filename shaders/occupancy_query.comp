@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // For tests: whether each of a list of voxels is solid in the GPU occupancy
-// (trace.glsl's traceSolid), so they can compare it with the CPU's World::solid.
+// (trace.glsl's voxelRayBlock), so they can compare it with the CPU's World::solid.
 // The cells lie in a 2D grid of `width` columns; thread (x, y) answers cell
 // y * width + x, the first `count` of them.
 
@@ -18,5 +18,5 @@ layout(set = 0, binding = 1, std430) writeonly buffer Solid { uint solid[]; };  
 void main() {
     uint i = gl_GlobalInvocationID.y * query.width + gl_GlobalInvocationID.x;
     if (gl_GlobalInvocationID.x >= query.width || i >= query.count) return;
-    solid[i] = traceSolid(cells[i].xyz) ? 1u : 0u;
+    solid[i] = voxelRayBlock(cells[i].xyz) < 0 ? 1u : 0u;
 }

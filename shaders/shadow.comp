@@ -1,9 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Sun shadows at full resolution: one exact ray per pixel from its surface point
-// toward the sun through the world's voxels (trace.glsl), until it leaves the
-// world's bounds. Writes 1 where the sun reaches the point, 0 where a voxel blocks
-// it or the face turns away from the sun; 1 for the sky.
+// toward the sun through the world's voxels (trace.glsl: the exact traversal the
+// CPU's World::raycast shares), until it leaves the world's bounds. Writes 1 where
+// the sun reaches the point, 0 where a voxel blocks it or the face turns away from
+// the sun; 1 for the sky.
 //
 // Built a second time as soft_shadow.comp (GROTTO_SOFT_SUN) for a sun of finite
 // size: each pixel's ray takes a direction drawn uniformly from the sun's disc (its
@@ -114,9 +115,8 @@ void main() {
 #endif
     float lit = 0.0;
     if (dot(normal, sun) > 0.0) {
-        TraceStart start = traceStart(position, world ? surfaceFace(surface) : 6u, normal);
-        float reach = traceBoundsExit(start, sun);
-        lit = reach > 0.0 && traceRay(start, sun, reach) >= 0.0 ? 0.0 : 1.0;
+        VoxelRayStart start = traceStart(position, world ? surfaceFace(surface) : 6u, normal);
+        lit = traceHit(start, sun, kVoxelRayNever, !world).t >= 0.0 ? 0.0 : 1.0;
     }
     float frames = 1.0;
 #ifdef GROTTO_SOFT_SUN

@@ -22,26 +22,39 @@ uint traceTile(ivec3 tile) {
     return 0u;
 }
 
-bool traceSolid(ivec3 cell) {
-    uint tile = traceTile(cell >> GROTTO_TILE_SHIFT);
-    if (tile == 0u) return false;
-    uint brick = brickSlots[(tile - 1u) * 512u + occupancyBrickEntry(cell.x >> 3, cell.y >> 3, cell.z >> 3)];
-    uint bit = occupancyBit(cell.x, cell.y, cell.z);
-    return ((masks[brick * 16u + (bit >> 5u)] >> (bit & 31u)) & 1u) != 0u;
+// The last tile's and brick's lookups, reused while a ray stays in them.
+ivec3 rayTileKey = ivec3(0x7fffffff), rayBrickKey = ivec3(0x7fffffff);
+uint rayTile = 0u, rayBrick = 0u;
+
+// What the exact traversal (shared/voxel_ray.h) asks of the occupancy: -1 for a
+// solid voxel, else the size (log2) of the empty block holding it: its 64^3 tile,
+// its 8^3 brick or the voxel alone.
+int voxelRayBlock(ivec3 voxel) {
+    ivec3 tileKey = voxel >> GROTTO_TILE_SHIFT;
+    if (tileKey != rayTileKey) {
+        rayTileKey = tileKey;
+        rayTile = traceTile(tileKey);
+        rayBrickKey = ivec3(0x7fffffff);
+    }
+    if (rayTile == 0u) return GROTTO_TILE_SHIFT;
+    ivec3 brickKey = voxel >> 3;
+    if (brickKey != rayBrickKey) {
+        rayBrickKey = brickKey;
+        rayBrick = brickSlots[(rayTile - 1u) * 512u + occupancyBrickEntry(brickKey.x, brickKey.y, brickKey.z)];
+    }
+    if (rayBrick == 0u) return 3;
+    uint bit = occupancyBit(voxel.x, voxel.y, voxel.z);
+    return ((masks[rayBrick * 16u + (bit >> 5u)] >> (bit & 31u)) & 1u) != 0u ? -1 : 0;
 }
 
-// A point on a surface, in voxel index space: the open voxel in front of the face
-// and the position within it (0..1 on each axis).
-struct TraceStart {
-    ivec3 cell;
-    vec3 fraction;
-};
+#include "shared/voxel_ray.h"
 
 // From a camera-relative view-space position. A world face (0..5: +X -X +Y -Y +Z -Z)
 // puts the point on its voxel plane, trace.normalOffset in front of it, as the
-// reference does; for any other face (an object's, turned) pass face 6 and its
-// world normal, and the point moves a hundredth of a voxel along it.
-TraceStart traceStart(vec3 viewPosition, uint face, vec3 worldNormal) {
+// reference does, in the open voxel in front of the face (voxelRayOpenStart); for
+// any other face (an object's, turned) pass face 6 and its world normal, and the
+// point moves a hundredth of a voxel along it.
+VoxelRayStart traceStart(vec3 viewPosition, uint face, vec3 worldNormal) {
     vec3 world = trace.viewToWorld[0].xyz * viewPosition.x + trace.viewToWorld[1].xyz * viewPosition.y +
                  trace.viewToWorld[2].xyz * viewPosition.z;
     vec3 p = world * trace.cameraFraction.w + trace.cameraFraction.xyz;  // voxels from the camera voxel's corner
@@ -55,73 +68,38 @@ TraceStart traceStart(vec3 viewPosition, uint face, vec3 worldNormal) {
         cell[axis] = positive ? plane : plane - 1;
         fraction[axis] = positive ? trace.normalOffset : 1.0 - trace.normalOffset;
     }
-    TraceStart s;
-    s.cell = trace.cameraCell.xyz + cell;
+    VoxelRayStart s;
+    s.voxel = trace.cameraCell.xyz + cell;
     s.fraction = clamp(fraction, vec3(0.0), vec3(1.0));
-    return s;
+    return face < 6u ? voxelRayOpenStart(s, int(face >> 1)) : s;
 }
 
-// How far along the unit direction d a ray from `start` enters a solid voxel,
-// or -1 when it enters none within tMax (voxels). The start voxel counts as open
-// (the reference's rule). Exact cell by cell inside non-empty bricks; an empty
-// brick or tile is crossed in one step.
-float traceRay(TraceStart start, vec3 d, float tMax) {
-    vec3 dir = mix(d, vec3(1e-30), equal(d, vec3(0.0)));  // no division by zero; moves toward +
-    vec3 invD = 1.0 / dir;
-    vec3 far = step(vec3(0.0), dir);  // the side of a box the ray leaves through
-    vec3 o = start.fraction;
-    float t = 0.0, entered = 0.0;
-    // The last tile's and brick's lookups, reused while the ray stays in them.
-    ivec3 cachedTile = ivec3(0x7fffffff), cachedBrick = ivec3(0x7fffffff);
-    uint tile = 0u, brick = 0u;
-    for (uint i = 0u; i < 16384u; ++i) {
-        ivec3 rel = ivec3(floor(o + d * t));
-        ivec3 cell = start.cell + rel;
-        ivec3 tileKey = cell >> GROTTO_TILE_SHIFT;
-        if (tileKey != cachedTile) {
-            cachedTile = tileKey;
-            tile = traceTile(tileKey);
-            cachedBrick = ivec3(0x7fffffff);
-        }
-        int size = 1;
-        ivec3 lo = cell;
-        if (tile == 0u) {
-            size = 1 << GROTTO_TILE_SHIFT;
-            lo = tileKey << GROTTO_TILE_SHIFT;
-        } else {
-            ivec3 brickKey = cell >> 3;
-            if (brickKey != cachedBrick) {
-                cachedBrick = brickKey;
-                brick = brickSlots[(tile - 1u) * 512u + occupancyBrickEntry(brickKey.x, brickKey.y, brickKey.z)];
-            }
-            if (brick == 0u) {
-                size = 8;
-                lo = brickKey << 3;
-            } else if (rel != ivec3(0)) {  // the start voxel is never tested
-                uint bit = occupancyBit(cell.x, cell.y, cell.z);
-                if (((masks[brick * 16u + (bit >> 5u)] >> (bit & 31u)) & 1u) != 0u) return entered;
-            }
-        }
-        vec3 exits = (vec3(lo - start.cell) + far * float(size) - o) * invD;
-        float exitT = min(min(exits.x, exits.y), exits.z);
-        if (exitT > tMax) return -1.0;
-        entered = exitT;
-        // A nudge past the face, larger than the rounding of o + d * t.
-        t = exitT + 1e-4 + exitT * 5e-7;
+// The solid voxel a ray from `start` along the unit direction d enters within tMax
+// voxels (t -1: none): the exact traversal (shared/voxel_ray.h), within the world's
+// bounds. From a world face the start voxel is tested (it is the open one in front
+// of the face); from an object's face it counts as open, as the reference's rule
+// has it.
+VoxelRayHit traceHit(VoxelRayStart start, vec3 d, float tMax, bool openStart) {
+    if (trace.boundsHi.w != 0) {
+        VoxelRayHit none;
+        none.t = -1.0;
+        none.voxel = start.voxel;
+        none.face = -1;
+        return none;
     }
-    return -1.0;
+    return voxelRay(start, d, tMax, trace.boundsLo.xyz, trace.boundsHi.xyz, openStart, 16384);
 }
 
 // traceRay for short rays (AO's few voxels): an incremental DDA, one compare and
 // one add per voxel, with no skipping of empty bricks, which short rays rarely cross.
-float traceShortRay(TraceStart start, vec3 d, float tMax) {
+float traceShortRay(VoxelRayStart start, vec3 d, float tMax) {
     vec3 dir = mix(d, vec3(1e-30), equal(d, vec3(0.0)));
     vec3 invAbs = 1.0 / abs(dir);
     bvec3 up = greaterThan(dir, vec3(0.0));
     ivec3 stepI = mix(ivec3(-1), ivec3(1), up);
     // Distance to the first face crossed on each axis, then from face to face.
     vec3 next = mix(start.fraction, 1.0 - start.fraction, up) * invAbs;
-    ivec3 cell = start.cell;
+    ivec3 cell = start.voxel;
     ivec3 cachedBrick = ivec3(0x7fffffff);
     uint brick = 0u;
     for (uint i = 0u; i < 4096u; ++i) {
@@ -141,16 +119,4 @@ float traceShortRay(TraceStart start, vec3 d, float tMax) {
         if (((masks[brick * 16u + (bit >> 5u)] >> (bit & 31u)) & 1u) != 0u) return entered;
     }
     return -1.0;
-}
-
-// How far a ray from `start` runs before it leaves the world's solid bounds (voxels);
-// 0 when the world is empty or the ray misses them.
-float traceBoundsExit(TraceStart start, vec3 d) {
-    if (trace.boundsHi.w != 0) return 0.0;
-    vec3 dir = mix(d, vec3(1e-30), equal(d, vec3(0.0)));
-    vec3 lo = vec3(trace.boundsLo.xyz - start.cell) - start.fraction;
-    vec3 hi = vec3(trace.boundsHi.xyz + 1 - start.cell) - start.fraction;
-    vec3 a = lo / dir, b = hi / dir;
-    vec3 tFar = max(a, b);
-    return max(min(min(tFar.x, tFar.y), tFar.z), 0.0);
 }

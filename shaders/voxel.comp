@@ -38,7 +38,7 @@ float voxelVisibility(ivec2 pixel, float z) {
         normal = vec3(0.0);
         normal[faceAxis(face)] = facePositive(face) ? 1.0 : -1.0;
     }
-    TraceStart start = traceStart(gtaoViewPosition(vec2(pixel), z), face, normal);
+    VoxelRayStart start = traceStart(gtaoViewPosition(vec2(pixel), z), face, normal);
     vec3 helper = abs(normal.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
     vec3 tangent = normalize(cross(helper, normal));
     vec3 bitangent = cross(normal, tangent);

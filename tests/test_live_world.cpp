@@ -8,6 +8,7 @@
 #include "voxel/reference_ao.h"
 #include "voxel/solid.h"
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -443,9 +444,12 @@ TEST(LiveWorld, MeshOfALargeFillIsItsSurface) {
     const IndexBox box{{-37, -5, -3}, {218, 250, 252}};  // 256^3, off brick and chunk boundaries
     w.apply(Edit::fillBox(box, 2));
     const Mesh mesh = w.mesh();
-    uint64_t area = 0;
-    for (const gpu::PackedQuad& q : mesh.quads) area += uint64_t(gpu::quadWidth(q.bits)) * gpu::quadHeight(q.bits);
-    EXPECT_EQ(area, 6ull * 256 * 256);
+    uint64_t twiceArea = 0;  // of each convex quad or triangle: half the cross product of its diagonals
+    for (const MeshQuad& q : mesh.quads) {
+        const glm::dvec3 d = glm::abs(glm::cross(glm::dvec3(q.corner(2) - q.corner(0)), glm::dvec3(q.corner(3) - q.corner(1))));
+        twiceArea += uint64_t(d.x + d.y + d.z);  // one axis is non-zero: the face's normal
+    }
+    EXPECT_EQ(twiceArea, 2 * 6ull * 256 * 256);
     for (const MeshChunk& c : mesh.chunks) {  // only chunks on the surface hold quads
         const glm::ivec3 lo = c.origin, hi = c.origin + 31;
         const bool inside = glm::all(glm::greaterThan(lo, box.min)) && glm::all(glm::lessThan(hi, box.max));

@@ -20,7 +20,6 @@ namespace {
 
 using test::GpuTest;
 
-constexpr double kNormalOffset = 1e-4;  // voxels, as the shadow pass offsets its rays
 constexpr int kCpuRays = 256;           // per point, spread evenly over the sun's disc
 
 // Unit directions spread evenly (a Fibonacci spiral) over the cone of half-angle
@@ -79,9 +78,9 @@ SoftSunError softSunError(vk::Context& ctx, float angle, uint32_t frames, double
     test::SunRays rays(world);
     SoftSunError e;
     for (size_t k = 0; k < pts.points.size(); ++k) {
-        const glm::dvec3 p = pts.points[k] + pts.normals[k] * (kNormalOffset * vs);
+        const glm::dvec3 &p = pts.points[k], &n = pts.normals[k];
         int open = 0;
-        for (const glm::dvec3& d : disc) open += glm::dot(pts.normals[k], d) > 0.0 && !rays.blocked(p, d);
+        for (const glm::dvec3& d : disc) open += glm::dot(n, d) > 0.0 && !rays.blocked(p, n, d);
         const double cpu = double(open) / double(disc.size()), diff = std::abs(f.shadow[pts.pixels[k]] - cpu);
         ++e.points;
         e.penumbra += cpu > 0.05 && cpu < 0.95;

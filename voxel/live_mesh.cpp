@@ -1,9 +1,25 @@
 // LiveMesh: World::mesh() split by chunk, re-meshed chunk by chunk after edits.
 #include "voxel/live_mesh.h"
 
+#include "voxel/watertight.h"
+
 #include <tbb/parallel_for.h>
 
+#include <set>
+
 namespace grotto::voxel {
+namespace {
+
+constexpr int N = int(GROTTO_CHUNK_SIZE);
+
+bool sameQuads(const MeshChunkQuads& a, const MeshChunkQuads& b) {
+    if (a.quads != b.quads || a.coarser.size() != b.coarser.size()) return false;
+    for (size_t i = 0; i < a.coarser.size(); ++i)
+        if (a.coarser[i].quads != b.coarser[i].quads) return false;
+    return true;
+}
+
+}  // namespace
 
 LiveMesh::LiveMesh(const World& world, const MeshOptions& options)
     : options_(options), voxelSize_(world.voxelSize()), origin_(world.origin()) {
@@ -11,7 +27,10 @@ LiveMesh::LiveMesh(const World& world, const MeshOptions& options)
     std::vector<MeshChunkQuads> meshed(origins.size());
     tbb::parallel_for(size_t(0), origins.size(), [&](size_t i) { meshed[i] = world.meshChunk(origins[i], options_); });
     for (MeshChunkQuads& q : meshed)
-        if (!q.quads.empty()) chunks_[q.origin] = std::move(q);
+        if (!q.rects.empty()) chunks_[q.origin] = std::move(q);
+    std::vector<glm::ivec3> all;
+    for (const auto& [origin, q] : chunks_) all.push_back(origin);
+    weld(all);
 }
 
 std::vector<glm::ivec3> LiveMesh::update(const World& world, const IndexBox& changed) {
@@ -19,10 +38,37 @@ std::vector<glm::ivec3> LiveMesh::update(const World& world, const IndexBox& cha
     std::vector<MeshChunkQuads> meshed(origins.size());
     tbb::parallel_for(size_t(0), origins.size(), [&](size_t i) { meshed[i] = world.meshChunk(origins[i], options_); });
     for (MeshChunkQuads& q : meshed) {
-        if (q.quads.empty()) chunks_.erase(q.origin);
+        if (q.rects.empty()) chunks_.erase(q.origin);
         else chunks_[q.origin] = std::move(q);
     }
+    // Their neighbours' quads meet theirs: welded again, and listed where they changed.
+    std::set<glm::ivec3, Less> around;
+    for (const glm::ivec3& o : origins)
+        for (int i = 0; i < 27; ++i) {
+            const glm::ivec3 n = o + N * glm::ivec3(i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1);
+            if (chunks_.count(n)) around.insert(n);
+        }
+    std::set<glm::ivec3, Less> changedSet(origins.begin(), origins.end());
+    std::vector<glm::ivec3> toWeld(around.begin(), around.end());
+    std::vector<MeshChunkQuads> before;
+    for (const glm::ivec3& n : toWeld)
+        if (!changedSet.count(n)) before.push_back(chunks_.at(n));
+    weld(toWeld);
+    for (const MeshChunkQuads& b : before)
+        if (!sameQuads(b, chunks_.at(b.origin))) origins.push_back(b.origin);
     return origins;
+}
+
+void LiveMesh::weld(const std::vector<glm::ivec3>& origins) {
+    tbb::parallel_for(size_t(0), origins.size(), [&](size_t i) {
+        MeshChunkQuads& chunk = chunks_.at(origins[i]);
+        std::array<const MeshChunkQuads*, 26> neighbours{};
+        for (int k = 0, j = 0; k < 27; ++k) {
+            if (k == 13) continue;  // the chunk itself
+            neighbours[size_t(j++)] = find(chunk.origin + N * glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1));
+        }
+        voxel::weld(chunk, neighbours);
+    });
 }
 
 const MeshChunkQuads* LiveMesh::find(glm::ivec3 origin) const {

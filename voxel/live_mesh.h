@@ -13,8 +13,9 @@ class LiveMesh {
 public:
     explicit LiveMesh(const World& world, const MeshOptions& options = {});
 
-    // Re-meshes the chunks an edit's changed voxels touch; returns their origins
-    // (a chunk left with no quads is among them, and is dropped).
+    // Re-meshes the chunks an edit's changed voxels touch and welds them and their
+    // neighbours again (voxel/watertight.h); returns the origins of those whose quads
+    // may have changed (a chunk left with no quads is among them, and is dropped).
     std::vector<glm::ivec3> update(const World& world, const IndexBox& changed);
 
     // Chunks with quads, keyed by origin in the order World::mesh() lists them.
@@ -35,6 +36,8 @@ public:
     Mesh flatten() const;
 
 private:
+    void weld(const std::vector<glm::ivec3>& origins);  // their quads, from every chunk's rectangles
+
     MeshOptions options_;
     double voxelSize_ = 1.0;
     glm::dvec3 origin_{0.0};

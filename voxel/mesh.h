@@ -1,6 +1,9 @@
 #pragma once
 // Face-culled, greedy-merged quads grouped in 32^3 chunks, each chunk's quads
-// sorted by face so a renderer can skip faces turned away from the camera.
+// sorted by face so a renderer can skip faces turned away from the camera. The
+// greedy rectangles are split where a corner of another one lies on their edge
+// (voxel/watertight.h), so the quads meet corner to corner and rasterise without
+// pinholes.
 #include "shaders/shared/quad.h"
 
 #include <glm/vec3.hpp>
@@ -21,10 +24,26 @@ struct MeshOptions {
 
 inline constexpr int kMaxCoarseLevels = 3;  // cells of 2, 4 and 8 voxels
 
-// One level's quads, in the chunk's quad format (positions and sizes in voxels).
+// A quad as drawn: a convex quadrilateral within one voxel face's plane, or a
+// triangle (its last corner repeats the third), as four gpu::packVertex corners
+// (chunk-relative, counter-clockwise about the face's normal).
+struct MeshQuad {
+    std::array<uint32_t, 4> corners{};
+    uint32_t face() const { return gpu::vertexFace(corners[0]); }
+    uint32_t material() const { return gpu::vertexMaterial(corners[0]); }
+    glm::ivec3 corner(int i) const {
+        return {int(gpu::vertexCoord(corners[size_t(i)], 0)), int(gpu::vertexCoord(corners[size_t(i)], 1)),
+                int(gpu::vertexCoord(corners[size_t(i)], 2))};
+    }
+    bool operator==(const MeshQuad&) const = default;
+};
+
+// One level's quads (positions in voxels), and the greedy rectangles they were
+// cut from (gpu::PackedQuad), which the neighbouring chunks' quads meet.
 struct MeshLevel {
     std::array<uint32_t, 6> faceCount{};
-    std::vector<gpu::PackedQuad> quads;  // in face order
+    std::vector<MeshQuad> quads;         // in face order
+    std::vector<gpu::PackedQuad> rects;  // in face order
 };
 
 struct MeshChunk {
@@ -42,18 +61,20 @@ struct MeshChunk {
 struct MeshChunkQuads {
     glm::ivec3 origin{0};
     std::array<uint32_t, 6> faceCount{};
-    std::vector<gpu::PackedQuad> quads;  // in face order
+    std::vector<MeshQuad> quads;         // in face order
+    std::vector<gpu::PackedQuad> rects;  // the greedy rectangles, in face order
     std::vector<MeshLevel> coarser;      // levels 1, 2, ... when MeshOptions::coarseLevels asked for them
 };
 
 struct Mesh {
-    std::vector<gpu::PackedQuad> quads;
+    std::vector<MeshQuad> quads;
     std::vector<MeshChunk> chunks;
     glm::dvec3 origin{0.0};  // world position of voxel corner (0, 0, 0)
     double voxelSize = 1.0;
 
-    // The 4 corners of quad q of chunk c, in voxel-corner index units (CCW about the normal).
-    std::array<glm::ivec3, 4> corners(const MeshChunk& c, const gpu::PackedQuad& q) const;
+    // The 4 corners of quad q of chunk c, in voxel-corner index units (CCW about the
+    // normal; a triangle's last two are the same).
+    std::array<glm::ivec3, 4> corners(const MeshChunk& c, const MeshQuad& q) const;
 };
 
 // Appends one chunk's quads to a mesh as its next chunk (nothing for a chunk

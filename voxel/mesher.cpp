@@ -1,8 +1,8 @@
-// Face culling and greedy merging per 32^3 chunk, chunks meshed in parallel.
+// Face culling and greedy merging per 32^3 chunk into rectangles, which LiveMesh
+// welds into quads that meet corner to corner (watertight.h).
 #include "common/error.h"
+#include "voxel/live_mesh.h"
 #include "voxel/solid.h"
-
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <set>
@@ -114,17 +114,15 @@ void mergeSlice(uint8_t (&face)[N][N], int n, bool greedy, Emit emit) {
         }
 }
 
-// Face culling and merging of one level's cells; quads in voxel units (a cell is
-// `scale` voxels), sorted by face.
-MeshLevel meshCells(LevelCells& cells, int scale, bool greedy) {
-    MeshLevel out;
-    std::vector<gpu::PackedQuad>& quads = out.quads;
+// Face culling and merging of one level's cells; rectangles in voxel units (a cell
+// is `scale` voxels), sorted by face.
+std::vector<gpu::PackedQuad> meshCells(LevelCells& cells, int scale, bool greedy) {
+    std::vector<gpu::PackedQuad> quads;
     const int n = cells.n;
     uint8_t face[N][N];
     for (uint32_t f = 0; f < 6; ++f) {
         const int a = int(gpu::faceAxis(f)), ua = int(gpu::faceUAxis(f)), va = int(gpu::faceVAxis(f));
         const int step = gpu::facePositive(f) ? 1 : -1;
-        const size_t before = quads.size();
         // Visible +axis faces are nearer the camera the higher their slice, -axis
         // faces the lower: emit them nearest first so depth tests reject more.
         for (int i = 0; i < n; ++i) {
@@ -148,9 +146,8 @@ MeshLevel meshCells(LevelCells& cells, int scale, bool greedy) {
                 quads.push_back({gpu::packQuadBits(p[0], p[1], p[2], qw * scale, qh * scale, f), m});
             });
         }
-        out.faceCount[f] = uint32_t(quads.size() - before);
     }
-    return out;
+    return quads;
 }
 
 // A chunk with no solid voxel, or whose voxels and their neighbours are all
@@ -174,36 +171,27 @@ bool hasNoFaces(const World::Impl& w, const openvdb::Coord& origin) {
     return !anySolid || allSolid;
 }
 
-// The one chunk mesher: World::mesh() and World::meshChunk() both use it.
+// The one chunk mesher (rectangles only; LiveMesh welds them): World::meshChunk() is it.
 MeshChunkQuads meshOneChunk(const World::Impl& w, const openvdb::Coord& origin, const MeshOptions& options) {
     MeshChunkQuads chunk;
     chunk.origin = {origin.x(), origin.y(), origin.z()};
     if (hasNoFaces(w, origin)) return chunk;
     LevelCells voxels(N);
     gather(w, origin, voxels);
-    MeshLevel exact = meshCells(voxels, 1, options.greedy);
-    chunk.faceCount = exact.faceCount;
-    chunk.quads = std::move(exact.quads);
+    chunk.rects = meshCells(voxels, 1, options.greedy);
     const int levels = std::clamp(options.coarseLevels, 0, kMaxCoarseLevels);
     LevelCells cells = std::move(voxels);
-    for (int level = 1; level <= levels && !chunk.quads.empty(); ++level) {
+    for (int level = 1; level <= levels && !chunk.rects.empty(); ++level) {
         cells = coarsen(cells);
-        chunk.coarser.push_back(meshCells(cells, 1 << level, options.greedy));
+        chunk.coarser.push_back({.rects = meshCells(cells, 1 << level, options.greedy)});
     }
     return chunk;
 }
 
 }  // namespace
 
-std::array<glm::ivec3, 4> Mesh::corners(const MeshChunk& c, const gpu::PackedQuad& q) const {
-    const uint32_t f = gpu::quadFace(q.bits);
-    glm::ivec3 base = c.origin;
-    for (uint32_t i = 0; i < 3; ++i) base[i] += int(gpu::quadCoord(q.bits, i));
-    if (gpu::facePositive(f)) base[gpu::faceAxis(f)] += 1;
-    glm::ivec3 du(0), dv(0);
-    du[gpu::faceUAxis(f)] = int(gpu::quadWidth(q.bits));
-    dv[gpu::faceVAxis(f)] = int(gpu::quadHeight(q.bits));
-    return {base, base + du, base + du + dv, base + dv};
+std::array<glm::ivec3, 4> Mesh::corners(const MeshChunk& c, const MeshQuad& q) const {
+    return {c.origin + q.corner(0), c.origin + q.corner(1), c.origin + q.corner(2), c.origin + q.corner(3)};
 }
 
 std::vector<glm::ivec3> World::chunkOrigins() const {
@@ -229,22 +217,7 @@ std::vector<glm::ivec3> World::chunkOrigins() const {
     return out;
 }
 
-Mesh World::mesh(const MeshOptions& options) const {
-    const Impl& w = *impl_;
-    const std::vector<glm::ivec3> list = chunkOrigins();
-    std::vector<MeshChunkQuads> chunks(list.size());
-    tbb::parallel_for(size_t(0), list.size(), [&](size_t i) {
-        chunks[i] = meshOneChunk(w, openvdb::Coord(list[i].x, list[i].y, list[i].z), options);
-    });
-    Mesh mesh;
-    mesh.origin = w.origin;
-    mesh.voxelSize = w.voxelSize;
-    size_t total = 0;
-    for (const MeshChunkQuads& c : chunks) total += c.quads.size();
-    mesh.quads.reserve(total);
-    for (const MeshChunkQuads& c : chunks) appendChunk(mesh, c);
-    return mesh;
-}
+Mesh World::mesh(const MeshOptions& options) const { return LiveMesh(*this, options).flatten(); }
 
 void appendChunk(Mesh& mesh, const MeshChunkQuads& c) {
     if (c.quads.empty()) return;

@@ -39,6 +39,13 @@ struct RayHit {
     int face;             // face entered through: 0..5 = +X -X +Y -Y +Z -Z
 };
 
+// Where an exact ray starts, as the GPU's traversal takes it (shaders/shared/voxel_ray.h):
+// a voxel and the position within it, 0..1 on each axis.
+struct RayStart {
+    glm::ivec3 voxel{0};
+    glm::vec3 fraction{0.0f};
+};
+
 struct WorldStats {
     uint64_t solidVoxels = 0;
     uint64_t bricks = 0;
@@ -71,9 +78,19 @@ public:
     std::vector<Brick> bricks(const IndexBox& region) const;
     Mesh mesh(const MeshOptions& options = {}) const;
 
-    // Solid-voxel test and exact voxel traversal (DDA) in world units.
+    // Solid-voxel test and exact voxel traversal (DDA) in world units. The traversal
+    // is the GPU's own code (shaders/shared/voxel_ray.h): a ray through an edge or a
+    // corner enters a voxel beside it, never slipping between two solid voxels.
     bool solid(glm::ivec3 voxel) const;
     std::optional<RayHit> raycast(glm::dvec3 origin, glm::dvec3 direction, double maxDistance) const;
+    // The same from a start given as the GPU gives it, along a unit direction (a ray
+    // that starts in a solid voxel hits it at 0, face -1); maxDistance in world units.
+    std::optional<RayHit> raycast(const RayStart& start, glm::vec3 direction, double maxDistance) const;
+    // Where a ray leaving a point on a voxel face starts, as the sun shadows have it:
+    // `start` is the point in the open voxel in front of the face (axis normalAxis);
+    // one placed a hair inside the solid voxel beside that one (at a concave edge)
+    // moves onto the open voxel's edge.
+    RayStart faceRayStart(const RayStart& start, int normalAxis) const;
 
     // Material id of a voxel, 0 when empty.
     int material(glm::ivec3 voxel) const;
@@ -120,7 +137,9 @@ public:
     // The voxel indices of the corners of the chunks that may hold quads (those
     // touched by a leaf or an active tile), in World::mesh()'s order.
     std::vector<glm::ivec3> chunkOrigins() const;
-    // The quads of one chunk, as World::mesh() would make them.
+    // The greedy rectangles of one chunk (and of its coarser levels), as World::mesh()
+    // makes them before it welds them with the neighbours' into quads (voxel/watertight.h):
+    // `quads` and the face counts are left empty.
     MeshChunkQuads meshChunk(glm::ivec3 chunkOrigin, const MeshOptions& options = {}) const;
 
     World(const World& other);

@@ -1,5 +1,7 @@
 #include "engine/passes/compute_pass.h"
 
+#include "engine/vk/readback.h"
+
 namespace grotto {
 
 ComputePass::ComputePass(vk::Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& bindings,
@@ -37,6 +39,10 @@ void computeToCompute(VkCommandBuffer cmd) {
                       .dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT};
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &b, 0,
                          nullptr, 0, nullptr);
+}
+
+void computeToHost(VkCommandBuffer cmd) {
+    vk::recordHostRead(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
 }
 
 }  // namespace grotto

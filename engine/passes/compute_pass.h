@@ -33,5 +33,7 @@ private:
 
 // A global barrier: compute writes so far are visible to later compute reads.
 void computeToCompute(VkCommandBuffer cmd);
+// Compute writes so far are visible to the host once the command buffer completes.
+void computeToHost(VkCommandBuffer cmd);
 
 }  // namespace grotto

@@ -179,6 +179,10 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
     const Camera& previousCamera = objects && objects->previousCamera ? *objects->previousCamera : camera;
     const glm::dmat4 viewProj = camera.viewProjRelativeDouble();
     const glm::dmat4 previousViewProj = previousCamera.viewProjRelativeDouble();
+    // The camera's voxel and its place in it, for chunks placed in whole voxels from it.
+    const glm::dvec3 cameraIndex = (camera.position - scene.worldOrigin) / scene.voxelSize;
+    const glm::dvec3 cameraVoxel = glm::floor(cameraIndex);
+    const glm::vec4 cameraAndVoxelSize(glm::vec3(cameraIndex - cameraVoxel), float(scene.voxelSize));
     uint64_t drawn = 0;
     uint32_t pushed = UINT32_MAX;  // the chunk whose placement the push constants hold
     for (const QuadDraw& d : draws) {
@@ -191,7 +195,9 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
                     glm::mat4(previousViewProj * chunkMatrix(c.origin - previousCamera.position, scene.voxelSize))};
                 vkCmdPushConstants(cmd, objectLayout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
             } else {
-                const gpu::ChunkPush push{glm::vec4(glm::vec3(c.origin - camera.position), float(scene.voxelSize))};
+                // Chunks beyond 2^30 voxels from the camera (never in view) are clamped there.
+                const glm::dvec3 voxel = glm::clamp(glm::dvec3(c.index) - cameraVoxel, -1073741824.0, 1073741824.0);
+                const gpu::ChunkPush push{glm::ivec4(glm::ivec3(voxel), 0), cameraAndVoxelSize};
                 vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_VERTEX_BIT, 0, sizeof push, &push);
             }
         }

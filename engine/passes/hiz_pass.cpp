@@ -33,11 +33,7 @@ void HizPass::record(VkCommandBuffer cmd, const vk::Image& depth) {
                    {vk::sampledImage(ctx_.pointSampler, depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
                     vk::storageBuffer(buffer_.buffer)},
                    {push.tiles.x, push.tiles.y}, 8, &push);
-    VkMemoryBarrier b{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
-                      .srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT,
-                      .dstAccessMask = VK_ACCESS_HOST_READ_BIT};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &b, 0, nullptr, 0,
-                         nullptr);
+    computeToHost(cmd);
 }
 
 DepthTiles HizPass::tiles() const {

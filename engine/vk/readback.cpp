@@ -18,12 +18,11 @@ VkDeviceSize recordImageCopy(VkCommandBuffer cmd, const Image& image, VkImageLay
     return VkDeviceSize(image.extent.width) * image.extent.height * bytesPerPixel;
 }
 
-void recordHostRead(VkCommandBuffer cmd) {
+void recordHostRead(VkCommandBuffer cmd, VkPipelineStageFlags stage, VkAccessFlags access) {
     VkMemoryBarrier toHost{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
-                           .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
+                           .srcAccessMask = access,
                            .dstAccessMask = VK_ACCESS_HOST_READ_BIT};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
-                         nullptr);
+    vkCmdPipelineBarrier(cmd, stage, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0, nullptr);
 }
 
 std::vector<uint8_t> readImage(Context& ctx, const Image& image, VkImageLayout layout, uint32_t bytesPerPixel) {

@@ -12,9 +12,11 @@ namespace grotto::vk {
 // `offset`, after every write recorded before it. Returns the bytes copied.
 VkDeviceSize recordImageCopy(VkCommandBuffer cmd, const Image& image, VkImageLayout layout, uint32_t bytesPerPixel,
                              const Buffer& buffer, VkDeviceSize offset);
-// Records the barrier that makes the copies before it visible to the host once
-// the command buffer has completed (a fence wait alone does not).
-void recordHostRead(VkCommandBuffer cmd);
+// Records the barrier that makes the copies (or, given their stage and access, other
+// writes) before it visible to the host once the command buffer has completed (a
+// fence wait alone does not).
+void recordHostRead(VkCommandBuffer cmd, VkPipelineStageFlags stage = VK_PIPELINE_STAGE_TRANSFER_BIT,
+                    VkAccessFlags access = VK_ACCESS_TRANSFER_WRITE_BIT);
 
 std::vector<uint8_t> readImage(Context& ctx, const Image& image, VkImageLayout layout, uint32_t bytesPerPixel);
 

@@ -25,11 +25,15 @@ struct FrameUniforms {
 };
 GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16);
 
-// G-buffer push constants: one chunk's corner, camera-relative, and the voxel size.
+// G-buffer push constants: one chunk's corner in whole voxels from the camera's
+// voxel, and the camera's place in that voxel. A vertex's position is computed from
+// its voxel index alone, so the chunks on either side of a border put their shared
+// corners at the very same bits and meet without cracks.
 struct ChunkPush {
-    vec4 offsetAndVoxelSize;
+    ivec4 voxel;                // xyz: the chunk's corner minus the camera's voxel
+    vec4 cameraAndVoxelSize;    // xyz: the camera within its voxel (0..1); w: the voxel size
 };
-GROTTO_STATIC_ASSERT(sizeof(ChunkPush) == 16);
+GROTTO_STATIC_ASSERT(sizeof(ChunkPush) == 32);
 
 #define GROTTO_MAX_MATERIALS 255
 

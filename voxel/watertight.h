@@ -1,0 +1,25 @@
+#pragma once
+// Greedy rectangles cut into quads that meet corner to corner. Where a corner of
+// one rectangle lies inside the edge of another (a T-junction), rasterising the two
+// leaves single-pixel cracks along the edge: the shared point, rounded to the
+// rasteriser's grid, no longer lies on the longer edge. Each rectangle becomes a
+// convex polygon with those points among its corners, cut into convex quads and
+// triangles, so every edge a quad has is an edge of the quad beside it too.
+//
+// Within a chunk the points come from the same level's rectangles. On the chunk's
+// boundary they come from every level of the chunk and of its neighbours, so two
+// chunks meet corner to corner whatever levels they are drawn at.
+#include "voxel/mesh.h"
+
+#include <span>
+
+namespace grotto::voxel {
+
+// Fills chunk.quads (and each coarser level's) from its rectangles, given those of
+// the chunks around it (any of the 26; chunks that are not there have none).
+void weld(MeshChunkQuads& chunk, std::span<const MeshChunkQuads* const> neighbours);
+
+// The corners of a rectangle, chunk-relative, counter-clockwise about its normal.
+std::array<glm::ivec3, 4> rectCorners(const gpu::PackedQuad& rect);
+
+}  // namespace grotto::voxel
