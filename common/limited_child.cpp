@@ -79,18 +79,43 @@ int aboveChildFds(int fd) {
     return high;
 }
 
+// Writes all of `bytes` to fd from its start; 0 or an errno. Safe after a fork.
+int writeAll(int fd, std::span<const unsigned char> bytes) {
+    for (size_t done = 0; done < bytes.size();) {
+        const ssize_t n = pwrite(fd, bytes.data() + done, bytes.size() - done, off_t(done));
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) return n < 0 ? errno : EIO;
+        done += size_t(n);
+    }
+    return 0;
+}
+
+// A file-size limit (ulimit -f) applies to memory files too. Below the program's
+// size, a child writes it with its own limit raised to the hard one (it calls
+// only what is safe after a fork; the parent's limit stays as its user set it).
+int writeProgram(int fd, std::span<const unsigned char> program) {
+    rlimit r{};
+    getrlimit(RLIMIT_FSIZE, &r);
+    if (r.rlim_cur == RLIM_INFINITY || r.rlim_cur >= program.size()) return writeAll(fd, program);
+    const pid_t pid = fork();
+    if (pid < 0) return errno;
+    if (pid == 0) {
+        r.rlim_cur = r.rlim_max;
+        setrlimit(RLIMIT_FSIZE, &r);
+        _exit(writeAll(fd, program));
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {}
+    return WIFEXITED(status) ? WEXITSTATUS(status) : EFBIG;  // killed: by SIGXFSZ, past the hard limit
+}
+
 // The program's bytes as a file that can be executed (sealed: nothing changes it).
 int programFile(const std::string& where, std::span<const unsigned char> program) {
     const int fd = aboveChildFds(memfd_create("grotto-reader", MFD_CLOEXEC | MFD_ALLOW_SEALING));
     if (fd < 0) throw Error::internal(where, std::string("cannot create the reader program: ") + std::strerror(errno));
-    for (size_t done = 0; done < program.size();) {
-        const ssize_t n = write(fd, program.data() + done, program.size() - done);
-        if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) {
-            close(fd);
-            throw Error::internal(where, "cannot write the reader program to memory");
-        }
-        done += size_t(n);
+    if (const int err = writeProgram(fd, program)) {
+        close(fd);
+        throw Error::internal(where, std::string("cannot write the reader program to memory: ") + std::strerror(err));
     }
     fcntl(fd, F_ADD_SEALS, F_SEAL_SHRINK | F_SEAL_GROW | F_SEAL_WRITE | F_SEAL_SEAL);
     return fd;

@@ -51,7 +51,12 @@ RunResult runGrotto(const std::string& args, const std::string& env, const RunLi
         if (limits.cpuSeconds > 0) cap(RLIMIT_CPU, rlim_t(limits.cpuSeconds));
         if (limits.fileBytes > 0) {
             signal(SIGXFSZ, SIG_IGN);  // kept across exec: a write beyond the limit fails instead of killing
-            cap(RLIMIT_FSIZE, rlim_t(limits.fileBytes));
+            // The soft limit only (ulimit -S -f): the library raises it, in a
+            // child of its own, to write its reader program into memory.
+            rlimit l{};
+            getrlimit(RLIMIT_FSIZE, &l);
+            l.rlim_cur = rlim_t(limits.fileBytes);
+            setrlimit(RLIMIT_FSIZE, &l);
         }
         execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
         _exit(127);

@@ -34,8 +34,8 @@ struct RunLimits {
     int memoryMiB = 0;   // address space (RLIMIT_AS); not under AddressSanitizer
     int cpuSeconds = 0;  // RLIMIT_CPU
     int hangSeconds = 0;
-    // The largest file it may write (RLIMIT_FSIZE, SIGXFSZ ignored): a write
-    // beyond it fails with EFBIG, as a write onto a full disk fails.
+    // The largest file it may write (RLIMIT_FSIZE's soft limit, SIGXFSZ ignored):
+    // a write beyond it fails with EFBIG, as a write onto a full disk fails.
     long fileBytes = 0;
 };
 
