@@ -34,14 +34,12 @@ struct VoxelRayHit {
     int face;     // the face it enters through (0..5: +X -X +Y -Y +Z -Z); -1: it starts in it
 };
 
-// Does the crossing at ta on axis a come before the one at tb on axis b?
-bool voxelRayBefore(float ta, int a, float tb, int b) { return ta < tb || (ta == tb && a > b); }
-
-// Where the ray leaves cell c (relative to the start voxel) along axis a.
-float voxelRayLeave(vec3 fraction, vec3 inv, ivec3 sgn, int a, int c) {
-    if (inv[a] == 0.0f) return kVoxelRayNever;
-    float distance = sgn[a] > 0 ? float(c + 1) - fraction[a] : fraction[a] - float(c);
-    return distance * inv[a];
+// Where the ray leaves, on each axis, the voxel whose far boundary on it is at
+// `far` (relative to the start voxel). `step`: the direction's sign over its size
+// per axis (0 where it runs parallel to the axis); `never`: kVoxelRayNever there, 0
+// elsewhere (adding 0 changes no bit, fused or not).
+vec3 voxelRayLeave(VoxelRayStart start, vec3 step, vec3 never, ivec3 far) {
+    return (vec3(far) - start.fraction) * step + never;
 }
 
 // The first solid voxel the ray from `start` along the unit direction d enters
@@ -53,58 +51,63 @@ VoxelRayHit voxelRay(VoxelRayStart start, vec3 d, float maxT, ivec3 lo, ivec3 hi
     hit.t = -1.0f;
     hit.voxel = start.voxel;
     hit.face = -1;
-    vec3 inv = vec3(0.0f);  // 1 / |d| per axis, 0 where the ray runs parallel to it
-    ivec3 sgn = ivec3(1);  // the direction's sign per axis
-    for (int a = 0; a < 3; ++a) {
-        if (abs(d[a]) > 1e-20f) inv[a] = 1.0f / abs(d[a]);
-        if (d[a] < 0.0f) sgn[a] = -1;
-    }
+    bvec3 parallel = lessThanEqual(abs(d), vec3(1e-20f));
+    bvec3 positive = greaterThanEqual(d, vec3(0.0f));
+    vec3 sgn = mix(vec3(-1.0f), vec3(1.0f), positive);
+    vec3 step = mix(sgn / max(abs(d), vec3(1e-20f)), vec3(0.0f), parallel);
+    vec3 never = mix(vec3(0.0f), vec3(kVoxelRayNever), parallel);
+    // Past `edge` on any axis (voxel times the direction's sign) the ray has left the
+    // bounds for good; a ray parallel to an axis it is outside the bounds on never enters.
+    ivec3 edge = mix(mix(-lo, hi, positive), ivec3(0x7fffffff), parallel);
+    for (int a = 0; a < 3; ++a)
+        if (parallel[a] && (start.voxel[a] < lo[a] || start.voxel[a] > hi[a])) return hit;
+    ivec3 isgn = mix(ivec3(-1), ivec3(1), positive);
     ivec3 r = ivec3(0);  // the voxel the ray is in, relative to the start voxel
     float tIn = 0.0f;    // where it entered that voxel
-    int face = -1;       // and through which face
+    int axis = -1;       // across which axis
     for (int i = 0; i < maxSteps; ++i) {
         ivec3 voxel = start.voxel + r;
-        bool gone = false;
-        for (int a = 0; a < 3; ++a) {
-            bool before = voxel[a] < lo[a], after = voxel[a] > hi[a];
-            gone = gone || (inv[a] == 0.0f ? before || after : sgn[a] > 0 ? after : before);
-        }
-        if (gone) return hit;
+        if (any(greaterThan(voxel * isgn, edge))) return hit;
         int k = voxelRayBlock(voxel);
         if (k < 0 && (i > 0 || !openStart)) {
             hit.t = tIn;
             hit.voxel = voxel;
-            hit.face = face;
+            if (axis >= 0) hit.face = 2 * axis + (positive[axis] ? 1 : 0);  // the face turned back toward the ray
             return hit;
         }
         if (k < 0) k = 0;
         int size = 1 << k;
         ivec3 blockLo = ((voxel >> k) << k) - start.voxel;
-        // The first of the crossings out of the block.
-        vec3 t;
-        for (int a = 0; a < 3; ++a)
-            t[a] = voxelRayLeave(start.fraction, inv, sgn, a, sgn[a] > 0 ? blockLo[a] + size - 1 : blockLo[a]);
-        int a = 0;
-        if (voxelRayBefore(t[1], 1, t[a], a)) a = 1;
-        if (voxelRayBefore(t[2], 2, t[a], a)) a = 2;
-        if (t[a] > maxT) return hit;
-        // Across a block of several voxels, each other axis reaches the first voxel
-        // whose own crossing does not come before that one.
-        if (size > 1)
-            for (int b = 0; b < 3; ++b) {
-                if (b == a || inv[b] == 0.0f) continue;
-                int last = sgn[b] > 0 ? blockLo[b] + size - 1 : blockLo[b];
-                int guess = int(floor(start.fraction[b] + d[b] * t[a]));
-                int c = sgn[b] > 0 ? clamp(guess, r[b], last) : clamp(guess, last, r[b]);
-                while (c != last && voxelRayBefore(voxelRayLeave(start.fraction, inv, sgn, b, c), b, t[a], a))
-                    c += sgn[b];
-                while (c != r[b] && !voxelRayBefore(voxelRayLeave(start.fraction, inv, sgn, b, c - sgn[b]), b, t[a], a))
-                    c -= sgn[b];
-                r[b] = c;
-            }
-        r[a] = sgn[a] > 0 ? blockLo[a] + size : blockLo[a] - 1;
-        tIn = t[a];
-        face = 2 * a + (sgn[a] > 0 ? 1 : 0);  // entered through the face turned back toward the ray
+        // The first of the crossings out of the block: where the ray leaves the block
+        // on each axis, ties to the later axis.
+        ivec3 last = blockLo + mix(ivec3(0), ivec3(size - 1), positive);  // its last voxel on the way
+        ivec3 ahead = mix(ivec3(0), ivec3(1), positive);  // a voxel's far boundary, from the voxel
+        vec3 t = voxelRayLeave(start, step, never, last + ahead);
+        int a = t.y <= t.x ? 1 : 0;
+        float ta = min(t.x, t.y);
+        if (t.z <= ta) {
+            a = 2;
+            ta = t.z;
+        }
+        if (ta > maxT) return hit;
+        // Meanwhile each other axis reaches the first voxel whose own crossing does not
+        // come before that one (the same voxel the crossings taken one by one reach):
+        // guessed from where the ray is then, a little behind (more than rounding can
+        // move it, for rays up to a million voxels), and moved on by one if its
+        // crossing does come before. Across a single voxel that is the voxel itself.
+        if (size > 1) {
+            vec3 p = start.fraction + d * ta;
+            vec3 behind = min(1e-5f * (1.0f + abs(p)), vec3(0.5f)) * sgn;
+            ivec3 guess = ivec3(floor(p - behind));
+            guess = clamp(guess, min(r, last), max(r, last));
+            vec3 leave = voxelRayLeave(start, step, never, guess + ahead);
+            ivec3 before = ivec3(lessThan(leave, vec3(ta))) |
+                           (ivec3(equal(leave, vec3(ta))) & ivec3(greaterThan(ivec3(0, 1, 2), ivec3(a))));
+            r = guess + isgn * (before & ivec3(notEqual(guess, last)));
+        }
+        r = mix(r, blockLo + mix(ivec3(-1), ivec3(size), positive), equal(ivec3(a), ivec3(0, 1, 2)));
+        tIn = ta;
+        axis = a;
     }
     return hit;
 }
