@@ -31,7 +31,7 @@ function(grotto_add_shaders target)
   add_custom_command(
     OUTPUT ${embedded}
     COMMAND ${CMAKE_COMMAND} -DOUTPUT=${embedded} "-DSPIRV=${outputs}" -P ${PROJECT_SOURCE_DIR}/cmake/EmbedShaders.cmake
-    DEPENDS ${outputs} ${PROJECT_SOURCE_DIR}/cmake/EmbedShaders.cmake
+    DEPENDS ${outputs} ${PROJECT_SOURCE_DIR}/cmake/EmbedShaders.cmake ${PROJECT_SOURCE_DIR}/cmake/HexArray.cmake
     COMMENT "embedding ${target}"
     VERBATIM)
   add_library(${target} STATIC ${embedded})
