@@ -4,12 +4,12 @@
 // after warm-up, and the error of the final AO. Shared by `grotto tradeoff`,
 // `grotto compare` and `grotto tune`.
 #include "app/cost_difference.h"
-#include "engine/ao_metrics.h"
+#include "engine/lab/ao_metrics.h"
 #include "engine/ao_settings.h"
 #include "engine/camera.h"
-#include "engine/chunk_culling.h"
-#include "engine/reference_view.h"
-#include "engine/scene.h"
+#include "engine/frame/chunk_culling.h"
+#include "engine/lab/reference_view.h"
+#include "engine/scene/scene.h"
 #include "voxel/world.h"
 
 namespace grotto::app {

@@ -14,9 +14,9 @@
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
-#include "engine/render_memory.h"
+#include "engine/frame/render_memory.h"
 #include "engine/renderer.h"
-#include "engine/scene_objects.h"
+#include "engine/scene/scene_objects.h"
 #include "voxel/object_worlds.h"
 #include "voxel/world.h"
 

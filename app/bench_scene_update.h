@@ -3,7 +3,7 @@
 // for one chunk (its vertices packed and staged), and the bytes it stages. Each
 // update is followed by a submission that records its copies, as a frame would,
 // outside the timing.
-#include "engine/scene.h"
+#include "engine/scene/scene.h"
 
 #include <nlohmann/json.hpp>
 

@@ -8,8 +8,8 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/error.h"
-#include "engine/reference_view.h"
-#include "engine/render_memory.h"
+#include "engine/lab/reference_view.h"
+#include "engine/frame/render_memory.h"
 
 #include <algorithm>
 #include <cstdio>

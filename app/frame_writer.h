@@ -9,7 +9,7 @@
 // encoding takes the cores it leaves.
 // The first error a job throws is rethrown on the main thread by the next call,
 // and jobs not yet started are then dropped.
-#include "engine/frame_copy.h"
+#include "engine/frame/frame_copy.h"
 
 #include <condition_variable>
 #include <deque>

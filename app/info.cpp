@@ -2,7 +2,7 @@
 // from the file are printed escaped (common/printable.h).
 #include "app/commands.h"
 #include "common/printable.h"
-#include "engine/scene.h"
+#include "engine/scene/scene.h"
 #include "voxel/live_mesh.h"
 #include "voxel/object_worlds.h"
 #include "voxel/world.h"

@@ -1,7 +1,7 @@
 #include "app/options.h"
 
 #include "common/error.h"
-#include "engine/path_edits.h"
+#include "engine/scene/path_edits.h"
 
 #include <algorithm>
 #include <charconv>

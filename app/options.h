@@ -2,7 +2,7 @@
 // Small pieces the subcommands share: image sizes and the checks that end a run.
 #include "engine/ao_settings.h"
 #include "engine/camera_path.h"
-#include "engine/chunk_culling.h"
+#include "engine/frame/chunk_culling.h"
 #include "engine/vk/context.h"
 #include "voxel/world.h"
 

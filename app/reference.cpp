@@ -8,7 +8,7 @@
 #include "common/error.h"
 #include "voxel/object_worlds.h"
 #include "engine/image_output.h"
-#include "engine/reference_view.h"
+#include "engine/lab/reference_view.h"
 #include "voxel/world.h"
 
 #include <algorithm>

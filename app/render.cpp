@@ -7,7 +7,7 @@
 #include "common/error.h"
 #include "voxel/object_worlds.h"
 #include "engine/image_output.h"
-#include "engine/render_memory.h"
+#include "engine/frame/render_memory.h"
 #include "engine/renderer.h"
 #include "voxel/world.h"
 

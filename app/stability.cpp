@@ -13,7 +13,7 @@
 // world, no pixel matching between frames) is refused, as is, up front, an AO
 // image under 8x8. A path with an "edits" track has them applied at their times;
 // the pixels near each edit are measured against references traced on the world
-// before and after it (engine/edit_metrics.h): error, stale share and recovery.
+// before and after it (engine/lab/edit_metrics.h): error, stale share and recovery.
 #include "app/ao_cost.h"
 #include "app/commands.h"
 #include "app/cost_difference.h"
@@ -23,17 +23,17 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "voxel/object_worlds.h"
-#include "engine/ao_metrics.h"
+#include "engine/lab/ao_metrics.h"
 #include "engine/camera_path.h"
-#include "engine/color_thumbnail.h"
-#include "engine/edit_metrics.h"
+#include "engine/lab/color_thumbnail.h"
+#include "engine/lab/edit_metrics.h"
 #include "engine/image_output.h"
-#include "engine/live_scene.h"
-#include "engine/path_edits.h"
-#include "engine/render_memory.h"
+#include "engine/scene/live_scene.h"
+#include "engine/scene/path_edits.h"
+#include "engine/frame/render_memory.h"
 #include "engine/renderer.h"
-#include "engine/surface_points.h"
-#include "engine/temporal_metrics.h"
+#include "engine/lab/surface_points.h"
+#include "engine/lab/temporal_metrics.h"
 #include "voxel/reference_ao.h"
 
 #include <nlohmann/json.hpp>

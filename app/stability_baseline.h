@@ -3,7 +3,7 @@
 // JSON, by the rule the regression tests use (tests/baselines/): a figure regresses
 // when it exceeds was * (1 + relative) + absolute. Lower is better for every
 // figure compared, so improvements pass (and are worth re-blessing).
-#include "engine/color_thumbnail.h"
+#include "engine/lab/color_thumbnail.h"
 
 #include <nlohmann/json.hpp>
 
@@ -15,7 +15,7 @@
 namespace grotto::app {
 
 // A run keeps the display colour of its first frame measured, of every
-// kThumbnailEvery-th after it and of its last as thumbnails (engine/color_thumbnail.h):
+// kThumbnailEvery-th after it and of its last as thumbnails (engine/lab/color_thumbnail.h):
 // what a later run's frames are compared with.
 inline constexpr int kThumbnailEvery = 8;
 inline bool keepsThumbnail(int frame, int first, int last) { return (frame - first) % kThumbnailEvery == 0 || frame == last; }

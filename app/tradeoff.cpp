@@ -9,8 +9,8 @@
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
-#include "engine/reference_view.h"
-#include "engine/render_memory.h"
+#include "engine/lab/reference_view.h"
+#include "engine/frame/render_memory.h"
 
 #include <algorithm>
 #include <cstdio>

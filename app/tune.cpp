@@ -7,7 +7,7 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/error.h"
-#include "engine/render_memory.h"
+#include "engine/frame/render_memory.h"
 
 #include <cstdio>
 #include <memory>

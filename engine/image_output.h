@@ -7,7 +7,7 @@
 // nearest), edges and shadow, or a chosen few of those layers (FrameEncoding).
 // Both carry the camera as the standard worldtocamera / worldtoscreen attributes.
 #include "engine/camera.h"
-#include "engine/frame_images.h"
+#include "engine/frame/frame_images.h"
 
 #include <filesystem>
 #include <span>

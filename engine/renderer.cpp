@@ -4,9 +4,9 @@
 #include "engine/renderer.h"
 
 #include "common/error.h"
-#include "engine/object_frame.h"
+#include "engine/frame/object_frame.h"
 #include "engine/passes/trace_inputs.h"
-#include "engine/render_memory.h"
+#include "engine/frame/render_memory.h"
 #include "engine/vk/readback.h"
 #include "shaders/shared/frame.h"
 #include "shaders/shared/quad.h"

@@ -1,8 +1,8 @@
 // The SSAO and HBAO baselines in GTAO's chain (open floors stay open, corners
 // darken, the timestamp names the estimator), and GTAO against the ray-traced
 // reference: exact on an open floor, and a PSNR floor on `rooms` as a regression guard.
-#include "engine/ao_metrics.h"
-#include "engine/reference_view.h"
+#include "engine/lab/ao_metrics.h"
+#include "engine/lab/reference_view.h"
 #include "engine/renderer.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"

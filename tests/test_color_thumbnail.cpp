@@ -1,6 +1,6 @@
-// Colour thumbnails (engine/color_thumbnail.h): cell grids for any image shape,
+// Colour thumbnails (engine/lab/color_thumbnail.h): cell grids for any image shape,
 // cell means of the 8-bit display colour, their RMSE, and hex round trips.
-#include "engine/color_thumbnail.h"
+#include "engine/lab/color_thumbnail.h"
 
 #include <gtest/gtest.h>
 

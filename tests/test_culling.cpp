@@ -7,10 +7,10 @@
 //    bias draws coarse chunks;
 //  - the level choice and the tile test on their own.
 #include "engine/camera_path.h"
-#include "engine/chunk_culling.h"
-#include "engine/reference_view.h"
+#include "engine/frame/chunk_culling.h"
+#include "engine/lab/reference_view.h"
 #include "engine/renderer.h"
-#include "engine/surface_points.h"
+#include "engine/lab/surface_points.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 #include "tests/test_util.h"

@@ -1,5 +1,5 @@
-// The figures stability reports after an edit (engine/edit_metrics.h), on hand-made frames.
-#include "engine/edit_metrics.h"
+// The figures stability reports after an edit (engine/lab/edit_metrics.h), on hand-made frames.
+#include "engine/lab/edit_metrics.h"
 
 #include <gtest/gtest.h>
 

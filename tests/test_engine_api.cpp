@@ -1,6 +1,6 @@
 // The game-facing engine (<grotto/grotto.h>), headless with the validation layer on.
 #include "engine/camera.h"
-#include "engine/reference_view.h"
+#include "engine/lab/reference_view.h"
 #include "tests/display_checks.h"
 #include "tests/test_util.h"
 

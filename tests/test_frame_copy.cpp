@@ -2,7 +2,7 @@
 // FrameCopy) and decoded afterwards must be exactly what a synchronous readback
 // of the same frame returns, for every AOV: the flythrough's double-buffered
 // read-back writes the same files as before.
-#include "engine/frame_copy.h"
+#include "engine/frame/frame_copy.h"
 #include "engine/renderer.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"

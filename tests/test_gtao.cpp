@@ -1,7 +1,7 @@
 // GTAO: the GPU pass against its CPU twin, flat floors that must stay open,
 // corners that must darken symmetrically, tiny sizes, no AO leaking across
 // silhouettes in the upsample, and thin-occluder compensation.
-#include "engine/gtao_twin.h"
+#include "engine/lab/gtao_twin.h"
 #include "engine/renderer.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"

@@ -6,8 +6,8 @@
 // one frame, also 1e6 units from the origin; and resize, lighting and AO changes
 // on a live renderer give what a fresh renderer gives.
 #include "common/error.h"
-#include "engine/history_boxes.h"
-#include "engine/quad_slots.h"
+#include "engine/frame/history_boxes.h"
+#include "engine/scene/quad_slots.h"
 #include "engine/renderer.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"

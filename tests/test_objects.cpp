@@ -2,9 +2,9 @@
 // translating and a spinning box (static and moving camera), and an object's AO
 // cast on the floor and received from it: the same as the same voxels baked into
 // the world, and, turned off the grid, as close to the reference as the world's.
-#include "engine/reference_view.h"
+#include "engine/lab/reference_view.h"
 #include "engine/renderer.h"
-#include "engine/scene_objects.h"
+#include "engine/scene/scene_objects.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 #include "shaders/shared/objects.h"

@@ -2,7 +2,7 @@
 // G-buffer too), a floor beside an infinite wall against the closed form, error
 // that falls with the square root of the rays, and the same bits on any thread count.
 #include "engine/renderer.h"
-#include "engine/surface_points.h"
+#include "engine/lab/surface_points.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 #include "voxel/brick_table.h"

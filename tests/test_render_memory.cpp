@@ -1,8 +1,8 @@
-// The memory estimate that refuses sizes up front (engine/render_memory.h) must
+// The memory estimate that refuses sizes up front (engine/frame/render_memory.h) must
 // match what the renderer then allocates, for every shape of the AO chain; and a
 // size the device cannot hold is refused as bad input before any allocation.
 #include "common/error.h"
-#include "engine/render_memory.h"
+#include "engine/frame/render_memory.h"
 #include "engine/renderer.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"

@@ -4,7 +4,7 @@
 // measured by exact CPU rays through the same disc, with the camera still and with
 // the camera moving (the history must follow each surface point, not the pixel).
 #include "engine/renderer.h"
-#include "engine/surface_points.h"
+#include "engine/lab/surface_points.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 #include "tests/sun_rays.h"

@@ -1,10 +1,10 @@
-// The temporal metrics (engine/temporal_metrics.h) on synthetic frames with
+// The temporal metrics (engine/lab/temporal_metrics.h) on synthetic frames with
 // analytic answers: a wall seen straight on, whose AO is a chosen function of
 // the world position. A still camera reprojects every pixel onto itself, a pan by
 // one AO pixel onto its neighbour, a uniform shift of the AO reads as that much
 // flicker, and pixels whose surface the last frame did not show are disoccluded.
 #include "engine/image_output.h"
-#include "engine/temporal_metrics.h"
+#include "engine/lab/temporal_metrics.h"
 
 #include <gtest/gtest.h>
 

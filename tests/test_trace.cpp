@@ -1,15 +1,15 @@
-// The world's solid voxels on the GPU (engine/occupancy.h, shaders/trace.glsl)
+// The world's solid voxels on the GPU (engine/scene/occupancy.h, shaders/trace.glsl)
 // against the CPU's: every voxel of a random world with negative indices, of a
 // sparse world whose tiles lie far apart, and of a live world after random edits
 // staged through it (new and distant tiles, grown buffers, freed and reused masks,
 // an undo) answers as World::solid does; and the sun-shadow pass agrees with exact
 // CPU rays (World::raycast) on the shipped worlds, 1e6 units from the origin and at
 // voxel indices near 2e6, except within a hair of a shadow edge.
-#include "engine/live_scene.h"
+#include "engine/scene/live_scene.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/trace_inputs.h"
 #include "engine/renderer.h"
-#include "engine/surface_points.h"
+#include "engine/lab/surface_points.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 #include "tests/sun_rays.h"

@@ -6,7 +6,7 @@
 // an edge or corner where solid voxels meet is blocked there, and a ray from a face
 // point placed a hair inside the wall beside it (a concave edge) starts in front of
 // the face, so it cannot pass through a wall one voxel thin.
-#include "engine/occupancy.h"
+#include "engine/scene/occupancy.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/trace_inputs.h"
 #include "tests/gpu_fixture.h"

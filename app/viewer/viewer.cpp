@@ -12,9 +12,9 @@
 #include "common/error.h"
 #include "common/printable.h"
 #include "engine/image_output.h"
-#include "engine/live_scene.h"
+#include "engine/scene/live_scene.h"
 #include "engine/renderer.h"
-#include "engine/scene_objects.h"
+#include "engine/scene/scene_objects.h"
 #include "voxel/object_worlds.h"
 #include "voxel/world.h"
 

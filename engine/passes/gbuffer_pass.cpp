@@ -1,6 +1,6 @@
 #include "engine/passes/gbuffer_pass.h"
 
-#include "engine/frustum.h"
+#include "engine/frame/frustum.h"
 #include "engine/vk/pipeline.h"
 #include "shaders/shared/frame.h"
 #include "shaders/shared/objects.h"

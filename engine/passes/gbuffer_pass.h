@@ -2,15 +2,15 @@
 // G-buffer pass. Reads: the scene's vertices, frame uniforms.
 // Writes: depth (D32, reverse-Z) and a 16-bit surface id that encodes the normal
 // (one of six axes) and the material (albedo from the palette). No history.
-// Draws the quad runs it is given (engine/chunk_culling.h decides them: levels of
+// Draws the quad runs it is given (engine/frame/chunk_culling.h decides them: levels of
 // detail, frustum, faces turned away, occlusion), clearing the targets first or
 // drawing over what an earlier call drew.
 // With objects: each object's chunks after the world's, through its pose (object
 // index in the surface id); where objects move, every chunk is drawn with this
 // frame's and the last frame's transforms and a motion target is written too.
 #include "engine/camera.h"
-#include "engine/chunk_culling.h"
-#include "engine/scene.h"
+#include "engine/frame/chunk_culling.h"
+#include "engine/scene/scene.h"
 #include "voxel/object_pose.h"
 
 #include <span>

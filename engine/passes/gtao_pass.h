@@ -7,7 +7,7 @@
 // (visibility, packed edges, depth, face). No history; the noise follows
 // GtaoConstants::frameIndex.
 #include "engine/ao_settings.h"
-#include "engine/occupancy.h"
+#include "engine/scene/occupancy.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"
 

@@ -1,7 +1,7 @@
 #pragma once
 // Depth tiles for occlusion culling. Reads: the G-buffer depth (shader read-only).
 // Writes: the farthest depth of each tile into a host-visible buffer the CPU reads
-// once the submission has finished (engine/chunk_culling.h tests boxes against it).
+// once the submission has finished (engine/frame/chunk_culling.h tests boxes against it).
 #include "engine/passes/compute_pass.h"
 #include "engine/vk/resources.h"
 

@@ -6,7 +6,7 @@
 // A soft sun (soft_shadow.comp) jitters each ray within the sun's disc per frame
 // and also reads the last frame's RGBA32F history and writes the next; the shadow
 // is the accumulated visibility.
-#include "engine/occupancy.h"
+#include "engine/scene/occupancy.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 

@@ -3,7 +3,7 @@
 // trace constants, then the occupancy's tiles, bricks and masks: shaders/trace.glsl),
 // and those constants for a frame.
 #include "engine/camera.h"
-#include "engine/occupancy.h"
+#include "engine/scene/occupancy.h"
 #include "engine/vk/pipeline.h"
 #include "shaders/shared/trace.h"
 

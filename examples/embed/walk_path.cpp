@@ -7,7 +7,7 @@
 #include "engine/camera_path.h"
 #include "engine/image_output.h"
 #include "engine/renderer.h"
-#include "engine/scene.h"
+#include "engine/scene/scene.h"
 #include "voxel/world.h"
 
 #include <cstdio>

@@ -2,7 +2,7 @@
 // AO), and the per-frame constants of the passes that trace them. Shared by C++
 // and GLSL.
 //
-// Three storage buffers (engine/occupancy.h builds and updates them):
+// Three storage buffers (engine/scene/occupancy.h builds and updates them):
 //   tiles:  an open-addressing hash table of the non-empty 64^3-voxel tiles, one
 //           uvec4 per entry (x, y, z of the tile as ints, tile slot + 1; 0 = empty),
 //           probed linearly from occupancyHash(tile) & hashMask;

@@ -1,0 +1,71 @@
+#include "engine/lab/gtao_twin.h"
+
+#include "shaders/shared/quad.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace grotto {
+namespace twin {
+using namespace glm;
+using namespace grotto::gpu;
+
+// The kernel's functions become members; its inputs are the G-buffer copies here.
+struct Kernel {
+    GtaoConstants gtao;
+    std::vector<float> depthBuffer;
+    std::vector<uint16_t> surface;
+    std::array<std::vector<float>, GROTTO_GTAO_DEPTH_MIPS> mips;
+    std::array<ivec2, GROTTO_GTAO_DEPTH_MIPS> mipSize;
+
+    float gtaoDepth(ivec2 texel, int mip) {
+        ivec2 t = clamp(texel >> mip, ivec2(0), mipSize[mip] - 1);
+        return mips[mip][size_t(t.y) * mipSize[mip].x + t.x];
+    }
+    uint gtaoSurface(ivec2 p) { return surface[size_t(p.y) * gtao.fullSize.x + p.x]; }
+
+#include "shaders/shared/gtao_kernel.h"
+
+    // The depth prefilter, as shaders/depth_prefilter.comp does it.
+    void buildMips() {
+        for (int k = 0; k < GROTTO_GTAO_DEPTH_MIPS; ++k) {
+            const int round = (1 << k) - 1;
+            mipSize[k] = ivec2((int(gtao.halfSize.x) + round) >> k, (int(gtao.halfSize.y) + round) >> k);
+            mips[k].resize(size_t(mipSize[k].x) * mipSize[k].y);
+            for (int y = 0; y < mipSize[k].y; ++y)
+                for (int x = 0; x < mipSize[k].x; ++x) {
+                    float v;
+                    if (k == 0) {
+                        const float d = depthBuffer[size_t(gtao.scale * y) * gtao.fullSize.x + gtao.scale * x];
+                        v = d > 0.0f ? std::min(gtao.depthB / (d + gtao.depthA), kGtaoSky) : kGtaoSky;
+                    } else {
+                        const ivec2 last = mipSize[k - 1] - 1;
+                        auto at = [&](int dx, int dy) {
+                            const ivec2 t = min(ivec2(2 * x + dx, 2 * y + dy), last);
+                            return mips[k - 1][size_t(t.y) * mipSize[k - 1].x + t.x];
+                        };
+                        v = gtaoMipFilter(at(0, 0), at(1, 0), at(0, 1), at(1, 1));
+                    }
+                    mips[k][size_t(y) * mipSize[k].x + x] = v;
+                }
+        }
+    }
+};
+
+}  // namespace twin
+
+struct GtaoTwin::Kernel : twin::Kernel {};
+
+GtaoTwin::GtaoTwin(const gpu::GtaoConstants& constants, std::vector<float> depthBuffer, std::vector<uint16_t> surface)
+    : kernel_(new Kernel) {
+    kernel_->gtao = constants;
+    kernel_->depthBuffer = std::move(depthBuffer);
+    kernel_->surface = std::move(surface);
+    kernel_->buildMips();
+}
+
+GtaoTwin::~GtaoTwin() { delete kernel_; }
+
+glm::vec2 GtaoTwin::pixel(glm::ivec2 p) const { return kernel_->gtaoPixel(p); }
+
+}  // namespace grotto

@@ -1,0 +1,42 @@
+#include "engine/scene/live_scene.h"
+
+namespace grotto {
+
+LiveScene::LiveScene(vk::Context& ctx, voxel::World world)
+    : world_(std::move(world)),
+      mesh_(world_, {.coarseLevels = voxel::kMaxCoarseLevels}),
+      gpu_(uploadScene(ctx, mesh_.list(), world_.voxelSize(), world_.origin(), world_.desc())) {
+    gpu_->occupancy = std::make_unique<GpuOccupancy>(ctx, world_);
+}
+
+voxel::EditResult LiveScene::apply(const voxel::Edit& edit) {
+    const voxel::EditResult result = world_.apply(edit);
+    changed(result);
+    return result;
+}
+
+voxel::EditResult LiveScene::undo() {
+    const voxel::EditResult result = world_.undo();
+    changed(result);
+    return result;
+}
+
+const voxel::BrickTable& LiveScene::bricks() {
+    if (!bricks_) bricks_.emplace(world_);
+    return *bricks_;
+}
+
+void LiveScene::changed(const voxel::EditResult& result) {
+    if (result.voxels.empty()) return;
+    std::vector<voxel::MeshChunkQuads> replaced;
+    std::vector<glm::ivec3> removed;
+    for (const glm::ivec3& origin : mesh_.update(world_, result.voxels)) {
+        if (const voxel::MeshChunkQuads* chunk = mesh_.find(origin)) replaced.push_back(*chunk);
+        else removed.push_back(origin);
+    }
+    gpu_->updateChunks(replaced, removed);
+    gpu_->occupancy->update(world_, result.voxels, gpu_->uploads);
+    if (bricks_) bricks_->update(world_, result.voxels);
+}
+
+}  // namespace grotto
