@@ -28,11 +28,8 @@
 #include "common/file_lock.h"
 #include "engine/camera_path.h"
 #include "engine/image_output.h"
-#include "engine/scene/live_scene.h"
-#include "engine/scene/path_edits.h"
 #include "engine/frame/render_memory.h"
-#include "engine/renderer.h"
-#include "voxel/object_worlds.h"
+#include "engine/session.h"
 #include "voxel/world.h"
 
 #include <nlohmann/json.hpp>
@@ -192,31 +189,25 @@ void run(const Args& a) {
     if (!a.output.empty()) stats.emplace(dir);
     // The world as the path's edits have made it by the first frame rendered;
     // later edits are applied as their frames come. Objects are drawn at each frame's poses.
-    const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
-    auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
-    std::optional<LiveScene> scene;
-    scene.emplace(ctx, std::move(world));
-    PathEdits edits(desc, scene->world());
-    edits.applyUpTo(double(start - 1) / a.fps, *scene);
+    const voxel::CameraDesc lens = world.camera("", size.aspect());
+    std::optional<RenderSession> session;
+    session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
+    session->playPath(desc, lens);
+    session->startPathAt(double(start - 1) / a.fps);
     {
         std::optional<VideoPipe> pipe;
         if (video) pipe.emplace(*videoTools, a.video, size.width, size.height, a.fps, a.videoQuality, range.first);
         const bool exr = a.format == "exr";
         FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(size, ao, encoding, exr)));
-        Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height, objects.get());
-        renderer.setCulling(cullingOptions(detail));
         std::optional<Progress> progress;
         if (!a.quiet) progress.emplace(end - start + 1, stdout);
         for (int i = start; i <= end; ++i) {
             const double time = double(i - 1) / a.fps;
-            const Camera camera = path.camera(time, size.width, size.height);
-            if (i > start && path.cutBetween(double(i - 2) / a.fps, time)) renderer.resetHistory();
-            edits.applyUpTo(time, *scene, &renderer);
-            if (objects) renderer.setObjectPoses(objects->poses(time));
+            const Camera camera = session->pathFrame(time, size.width, size.height).camera;
             const bool write = std::binary_search(missing.begin(), missing.end(), i);
             const bool toVideo = video && i >= range.first;
             FrameCopy* copy = (write || toVideo) ? &writer.slot() : nullptr;
-            const FrameStats frameStats = renderer.render(camera, uint32_t(i), copy);
+            const FrameStats frameStats = session->renderer().render(camera, uint32_t(i), copy);
             json passMs = json::object();
             for (const auto& [name, ms] : frameStats.passMs) passMs[name] = ms;
             json entry = {{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", frameStats.wallMs}, {"pass_ms", passMs}};
@@ -240,8 +231,7 @@ void run(const Args& a) {
         if (pipe) pipe->finish();
         if (progress) progress->finish();
     }
-    scene.reset();
-    objects.reset();
+    session.reset();
     requireNoValidationMessages(ctx);
     if (stats) {
         stats->merge();

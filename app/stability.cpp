@@ -22,16 +22,13 @@
 #include "app/stability_baseline.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
-#include "voxel/object_worlds.h"
 #include "engine/lab/ao_metrics.h"
 #include "engine/camera_path.h"
 #include "engine/lab/color_thumbnail.h"
 #include "engine/lab/edit_metrics.h"
 #include "engine/image_output.h"
-#include "engine/scene/live_scene.h"
-#include "engine/scene/path_edits.h"
 #include "engine/frame/render_memory.h"
-#include "engine/renderer.h"
+#include "engine/session.h"
 #include "engine/lab/surface_points.h"
 #include "engine/lab/temporal_metrics.h"
 #include "voxel/reference_ao.h"
@@ -245,14 +242,13 @@ void addStabilityCommand(CLI::App& app) {
         vk::Context ctx;
         requireRenderFits(ctx, size.width, size.height, ao, "--size");
         // The path's edits due before the first frame measured are the world it starts from.
-        const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
-        auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
-        // The path's edits due before the first frame measured are the world it starts from.
-        std::optional<LiveScene> scene;
-        scene.emplace(ctx, std::move(world));
-        PathEdits edits(pathDesc, scene->world());
-        LiveScene& live = *scene;
-        edits.applyUpTo(double(first - 1) / args->fps, live);
+        const voxel::CameraDesc lens = world.camera("", size.aspect());
+        const voxel::Detail detail = resolveDetail(world, args->ao);
+        std::optional<RenderSession> session;
+        session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
+        session->playPath(pathDesc, lens);
+        session->startPathAt(double(first - 1) / args->fps);
+        LiveScene& live = session->scene();
         std::vector<EditEvent> events;
         std::map<std::string, std::vector<double>> passMs;
         std::vector<double> wallMs, chainMs, temporalMs;
@@ -264,9 +260,8 @@ void addStabilityCommand(CLI::App& app) {
         uint64_t rays = 0;
         {
             const voxel::World& world = live.world();
-            Renderer renderer(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height, objects.get());
-            renderer.setCulling(cullingOptions(resolveDetail(world, args->ao)));
-            AoCostTimer costs(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height, objects.get());
+            Renderer& renderer = session->renderer();
+            AoCostTimer costs(ctx, live.gpu(), world.desc().lighting, ao, size.width, size.height, session->objects());
             AoFrame before;
             Camera beforeCamera;
             std::vector<voxel::ObjectPose> beforePoses;
@@ -276,19 +271,16 @@ void addStabilityCommand(CLI::App& app) {
             if (!args->quiet) progress.emplace(count, stdout);
             for (int i = first; i <= range.last; ++i) {
                 const double time = double(i - 1) / args->fps;
-                const Camera camera = path.camera(time, size.width, size.height);
-                if (i > first && path.cutBetween(double(i - 2) / args->fps, time)) renderer.resetHistory();
-                const std::vector<voxel::ObjectPose> poses = voxel::objectPoses(world.desc().objects, time);
-                if (objects) renderer.setObjectPoses(poses);
-                const std::vector<voxel::PosedWorld> posed = voxel::posedWorlds(objectWorlds, poses);
-                if (edits.pending(time)) {
-                    voxel::World before = live.world();  // a deep copy: the pre-edit reference traces it
-                    const voxel::WorldBox box = edits.applyUpTo(time, live, &renderer);
-                    if (!box.empty()) {
-                        voxel::BrickTable bricks(before);
-                        events.push_back({i, box, std::move(before), std::move(bricks), {}});
-                    }
+                std::optional<voxel::World> preEdit;  // a deep copy: the pre-edit reference traces it
+                if (session->pathEditsPending(time)) preEdit.emplace(live.world());
+                const RenderSession::PathFrame pathFrame = session->pathFrame(time, size.width, size.height);
+                const Camera& camera = pathFrame.camera;
+                if (!pathFrame.edited.empty()) {
+                    voxel::BrickTable bricks(*preEdit);
+                    events.push_back({i, pathFrame.edited, std::move(*preEdit), std::move(bricks), {}});
                 }
+                const std::vector<voxel::ObjectPose> poses = renderer.objectPoses();
+                const std::vector<voxel::PosedWorld> posed = session->posedObjects();
                 const FrameStats stats = costs.render(renderer, camera, uint32_t(i), i > first + 1);  // 2 frames of warm-up
                 for (const auto& [name, ms] : stats.passMs) passMs[name].push_back(ms);
                 wallMs.push_back(stats.wallMs);
@@ -349,8 +341,7 @@ void addStabilityCommand(CLI::App& app) {
             chainMs = costs.chainMs();
             temporalMs = costs.temporalMs();
         }
-        scene.reset();
-        objects.reset();
+        session.reset();
         requireNoValidationMessages(ctx);
         // Perfect scores over no pixels would pass any baseline: refuse them.
         if (matchedPixels == 0 || referencePixels == 0)

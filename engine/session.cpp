@@ -1,0 +1,76 @@
+#include "engine/session.h"
+
+#include "engine/camera_path.h"
+#include "voxel/object_worlds.h"
+
+namespace grotto {
+
+RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptions& ao, const voxel::Detail& detail,
+                             uint32_t width, uint32_t height)
+    : ctx_(ctx), objectWorlds_(voxel::loadObjectWorlds(world.desc())) {
+    if (!objectWorlds_.empty()) objects_ = uploadObjects(ctx, objectWorlds_, world.desc());
+    scene_ = std::make_unique<LiveScene>(ctx, std::move(world));
+    renderer_ = std::make_unique<Renderer>(ctx, scene_->gpu(), scene_->world().desc().lighting, ao, width, height,
+                                           objects_.get());
+    renderer_->setCulling(cullingOptions(detail));
+}
+
+// The renderer draws the scenes: it goes first, the scenes before the device.
+RenderSession::~RenderSession() {
+    renderer_.reset();
+    scene_.reset();
+    objects_.reset();
+}
+
+std::vector<voxel::ObjectPose> RenderSession::setTime(double seconds) {
+    if (!objects_) return {};
+    std::vector<voxel::ObjectPose> poses = objects_->poses(seconds);
+    renderer_->setObjectPoses(poses);
+    return poses;
+}
+
+std::vector<voxel::PosedWorld> RenderSession::posedObjects() const {
+    return voxel::posedWorlds(objectWorlds_, renderer_->objectPoses());
+}
+
+voxel::EditResult RenderSession::apply(const voxel::Edit& edit) {
+    const voxel::EditResult r = scene_->apply(edit);
+    if (!r.voxels.empty()) renderer_->invalidateHistory(r.box);
+    return r;
+}
+
+voxel::EditResult RenderSession::undo() {
+    const voxel::EditResult r = scene_->undo();
+    if (!r.voxels.empty()) renderer_->invalidateHistory(r.box);
+    return r;
+}
+
+void RenderSession::playPath(const voxel::CameraPathDesc& path, const voxel::CameraDesc& defaults) {
+    stopPath();
+    pathDesc_ = path;  // PathEdits keeps a reference to it
+    edits_ = std::make_unique<PathEdits>(pathDesc_, scene_->world());
+    path_ = std::make_unique<CameraPath>(pathDesc_, defaults);
+}
+
+void RenderSession::stopPath() {
+    path_.reset();
+    edits_.reset();
+    lastPathTime_.reset();
+}
+
+void RenderSession::startPathAt(double time) {
+    edits_->applyUpTo(time, *scene_);
+    lastPathTime_.reset();
+}
+
+RenderSession::PathFrame RenderSession::pathFrame(double time, uint32_t width, uint32_t height) {
+    PathFrame f{.camera = path_->camera(time, width, height), .time = time};
+    f.cut = lastPathTime_ && path_->cutBetween(*lastPathTime_, time);
+    if (f.cut) renderer_->resetHistory();
+    f.edited = edits_->applyUpTo(time, *scene_, renderer_.get());
+    setTime(time);
+    lastPathTime_ = time;
+    return f;
+}
+
+}  // namespace grotto
