@@ -7,12 +7,21 @@ namespace grotto {
 
 RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptions& ao, const voxel::Detail& detail,
                              uint32_t width, uint32_t height)
-    : ctx_(ctx), objectWorlds_(voxel::loadObjectWorlds(world.desc())) {
+    : ctx_(ctx), objectWorlds_(voxel::loadObjectWorlds(world.desc())), ao_(ao), culling_(cullingOptions(detail)),
+      width_(width), height_(height) {
     if (!objectWorlds_.empty()) objects_ = uploadObjects(ctx, objectWorlds_, world.desc());
     scene_ = std::make_unique<LiveScene>(ctx, std::move(world));
-    renderer_ = std::make_unique<Renderer>(ctx, scene_->gpu(), scene_->world().desc().lighting, ao, width, height,
-                                           objects_.get());
-    renderer_->setCulling(cullingOptions(detail));
+    setTime(0.0);
+}
+
+Renderer& RenderSession::renderer() {
+    if (!renderer_) {
+        renderer_ = std::make_unique<Renderer>(ctx_, scene_->gpu(), scene_->world().desc().lighting, ao_, width_,
+                                               height_, objects_.get());
+        renderer_->setCulling(culling_);
+        if (objects_) renderer_->setObjectPoses(poses_);
+    }
+    return *renderer_;
 }
 
 // The renderer draws the scenes: it goes first, the scenes before the device.
@@ -22,26 +31,21 @@ RenderSession::~RenderSession() {
     objects_.reset();
 }
 
-std::vector<voxel::ObjectPose> RenderSession::setTime(double seconds) {
-    if (!objects_) return {};
-    std::vector<voxel::ObjectPose> poses = objects_->poses(seconds);
-    renderer_->setObjectPoses(poses);
-    return poses;
-}
-
-std::vector<voxel::PosedWorld> RenderSession::posedObjects() const {
-    return voxel::posedWorlds(objectWorlds_, renderer_->objectPoses());
+void RenderSession::setTime(double seconds) {
+    if (!objects_) return;
+    poses_ = objects_->poses(seconds);
+    if (renderer_) renderer_->setObjectPoses(poses_);
 }
 
 voxel::EditResult RenderSession::apply(const voxel::Edit& edit) {
     const voxel::EditResult r = scene_->apply(edit);
-    if (!r.voxels.empty()) renderer_->invalidateHistory(r.box);
+    if (renderer_ && !r.voxels.empty()) renderer_->invalidateHistory(r.box);
     return r;
 }
 
 voxel::EditResult RenderSession::undo() {
     const voxel::EditResult r = scene_->undo();
-    if (!r.voxels.empty()) renderer_->invalidateHistory(r.box);
+    if (renderer_ && !r.voxels.empty()) renderer_->invalidateHistory(r.box);
     return r;
 }
 
@@ -66,8 +70,8 @@ void RenderSession::startPathAt(double time) {
 RenderSession::PathFrame RenderSession::pathFrame(double time, uint32_t width, uint32_t height) {
     PathFrame f{.camera = path_->camera(time, width, height), .time = time};
     f.cut = lastPathTime_ && path_->cutBetween(*lastPathTime_, time);
-    if (f.cut) renderer_->resetHistory();
-    f.edited = edits_->applyUpTo(time, *scene_, renderer_.get());
+    if (f.cut) renderer().resetHistory();
+    f.edited = edits_->applyUpTo(time, *scene_, &renderer());
     setTime(time);
     lastPathTime_ = time;
     return f;

@@ -30,14 +30,16 @@ public:
 
     LiveScene& scene() { return *scene_; }
     const voxel::World& world() const { return scene_->world(); }
-    Renderer& renderer() { return *renderer_; }
+    // Made on first use (a command that renders with renderers of its own never makes it).
+    Renderer& renderer();
     const SceneObjects* objects() const { return objects_.get(); }
     std::span<const voxel::World> objectWorlds() const { return objectWorlds_; }
     // The objects at their keys' poses `seconds` into the world's time, for the
-    // frames that follow; returns the poses (empty without objects).
-    std::vector<voxel::ObjectPose> setTime(double seconds);
-    // The objects' worlds at the renderer's current poses, for the reference to trace.
-    std::vector<voxel::PosedWorld> posedObjects() const;
+    // frames that follow (at time 0 until then).
+    void setTime(double seconds);
+    const std::vector<voxel::ObjectPose>& poses() const { return poses_; }
+    // The objects' worlds at those poses, for the reference to trace.
+    std::vector<voxel::PosedWorld> posedObjects() const { return voxel::posedWorlds(objectWorlds_, poses_); }
 
     // An edit of the live world (or its undo); the renderer restarts its history
     // where it changed. Throws grotto::Error (input) for an edit the world refuses.
@@ -74,6 +76,10 @@ private:
     std::unique_ptr<SceneObjects> objects_;
     std::unique_ptr<LiveScene> scene_;
     std::unique_ptr<Renderer> renderer_;
+    AoOptions ao_;
+    CullingOptions culling_;
+    uint32_t width_, height_;
+    std::vector<voxel::ObjectPose> poses_;
     voxel::CameraPathDesc pathDesc_;
     std::unique_ptr<CameraPath> path_;
     std::unique_ptr<PathEdits> edits_;
