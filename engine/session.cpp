@@ -6,18 +6,18 @@
 namespace grotto {
 
 RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptions& ao, const voxel::Detail& detail,
-                             uint32_t width, uint32_t height)
-    : ctx_(ctx), objectWorlds_(voxel::loadObjectWorlds(world.desc())), ao_(ao), culling_(cullingOptions(detail)),
-      width_(width), height_(height) {
+                             uint32_t width, uint32_t height, bool objectsMayMove)
+    : ctx_(ctx), objectWorlds_(voxel::loadObjectWorlds(world.desc())), lighting_(world.desc().lighting), ao_(ao),
+      culling_(cullingOptions(detail)), width_(width), height_(height) {
     if (!objectWorlds_.empty()) objects_ = uploadObjects(ctx, objectWorlds_, world.desc());
+    if (objects_ && objectsMayMove) objects_->moving = true;
     scene_ = std::make_unique<LiveScene>(ctx, std::move(world));
     setTime(0.0);
 }
 
 Renderer& RenderSession::renderer() {
     if (!renderer_) {
-        renderer_ = std::make_unique<Renderer>(ctx_, scene_->gpu(), scene_->world().desc().lighting, ao_, width_,
-                                               height_, objects_.get());
+        renderer_ = std::make_unique<Renderer>(ctx_, scene_->gpu(), lighting_, ao_, width_, height_, objects_.get());
         renderer_->setCulling(culling_);
         if (objects_) renderer_->setObjectPoses(poses_);
     }
@@ -31,10 +31,34 @@ RenderSession::~RenderSession() {
     objects_.reset();
 }
 
+void RenderSession::setLighting(const voxel::Lighting& lighting) {
+    lighting_ = lighting;
+    if (renderer_) renderer_->setLighting(lighting);
+}
+
+void RenderSession::setAo(const AoOptions& ao) {
+    ao_ = ao;
+    if (renderer_) renderer_->setAo(ao);
+}
+
+void RenderSession::setCulling(const CullingOptions& culling) {
+    culling_ = culling;
+    if (renderer_) renderer_->setCulling(culling);
+}
+
+void RenderSession::resize(uint32_t width, uint32_t height) {
+    width_ = width;
+    height_ = height;
+    if (renderer_) renderer_->resize(width, height);
+}
+
 void RenderSession::setTime(double seconds) {
-    if (!objects_) return;
-    poses_ = objects_->poses(seconds);
-    if (renderer_) renderer_->setObjectPoses(poses_);
+    if (objects_) setPoses(objects_->poses(seconds));
+}
+
+void RenderSession::setPoses(std::vector<voxel::ObjectPose> poses) {
+    poses_ = std::move(poses);
+    if (renderer_ && objects_) renderer_->setObjectPoses(poses_);
 }
 
 voxel::EditResult RenderSession::apply(const voxel::Edit& edit) {

@@ -21,9 +21,11 @@ class CameraPath;
 class RenderSession {
 public:
     // Loads the world's objects and uploads the world and them. `detail`: the
-    // levels of detail and occlusion culling the renderer draws with.
+    // levels of detail and occlusion culling the renderer draws with. With
+    // `objectsMayMove`, every object gets motion vectors, whatever its keys say
+    // (a game poses objects itself).
     RenderSession(vk::Context& ctx, voxel::World world, const AoOptions& ao, const voxel::Detail& detail,
-                  uint32_t width, uint32_t height);
+                  uint32_t width, uint32_t height, bool objectsMayMove = false);
     ~RenderSession();
     RenderSession(const RenderSession&) = delete;
     RenderSession& operator=(const RenderSession&) = delete;
@@ -34,9 +36,19 @@ public:
     Renderer& renderer();
     const SceneObjects* objects() const { return objects_.get(); }
     std::span<const voxel::World> objectWorlds() const { return objectWorlds_; }
+    // Settings and size for the frames that follow, applied to the renderer now
+    // or when it is made (Renderer's setters say what each restarts).
+    void setLighting(const voxel::Lighting& lighting);
+    void setAo(const AoOptions& ao);
+    void setCulling(const CullingOptions& culling);
+    void resize(uint32_t width, uint32_t height);
+    const voxel::Lighting& lighting() const { return lighting_; }
+    const AoOptions& ao() const { return ao_; }
+
     // The objects at their keys' poses `seconds` into the world's time, for the
-    // frames that follow (at time 0 until then).
+    // frames that follow (at time 0 until then), or at poses of the caller's.
     void setTime(double seconds);
+    void setPoses(std::vector<voxel::ObjectPose> poses);
     const std::vector<voxel::ObjectPose>& poses() const { return poses_; }
     // The objects' worlds at those poses, for the reference to trace.
     std::vector<voxel::PosedWorld> posedObjects() const { return voxel::posedWorlds(objectWorlds_, poses_); }
@@ -76,6 +88,7 @@ private:
     std::unique_ptr<SceneObjects> objects_;
     std::unique_ptr<LiveScene> scene_;
     std::unique_ptr<Renderer> renderer_;
+    voxel::Lighting lighting_;
     AoOptions ao_;
     CullingOptions culling_;
     uint32_t width_, height_;
