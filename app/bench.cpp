@@ -72,7 +72,7 @@ void addBenchCommand(CLI::App& app) {
         const AoOptions ao = resolveAo(world, args->ao);
 
         vk::Context ctx;
-        requireRenderFits(ctx, size.width, size.height, ao, "--size");
+        requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");
         auto scene = uploadScene(ctx, world);  // with levels of detail and the occupancy rays need
         // Objects move as in a flythrough at 24 frames a second, so their motion vectors are paid for.
         const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());

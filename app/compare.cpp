@@ -43,7 +43,8 @@ void addCompareCommand(CLI::App& app) {
         // The reference's R is the radius the method is given, before GTAO's multiplier.
         const double radius = double(ao.gtao.radius);
         vk::Context ctx;
-        requireRenderFits(ctx, size.width, size.height, ao, "--size");  // before minutes of tracing
+        // before minutes of tracing; it draws no objects
+        requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao, false), "--size");
         const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx);
         requireSurface(ref, world, args->camera);
         double maxError = 0.0;

@@ -82,7 +82,7 @@ void addRenderCommand(CLI::App& app) {
         const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao);
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
-        requireRenderFits(ctx, size.width, size.height, ao, "--size");
+        requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");
         auto scene = uploadScene(ctx, world);
         const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
         auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());

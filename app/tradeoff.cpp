@@ -266,7 +266,9 @@ void addTradeoffCommand(CLI::App& app) {
             const Camera camera = worldCamera(world, args->camera, size.width, size.height);
             // R is GTAO's radius before its multiplier, as for `grotto reference`.
             const double radius = double(resolveAo(world, {}).gtao.radius);
-            requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing
+            // before minutes of tracing; it draws no objects
+            requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, resolveAo(world, {}), false),
+                              "--size");
             const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx);
             requireSurface(ref, world, args->camera);
             double maxError = 0.0;

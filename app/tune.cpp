@@ -57,7 +57,9 @@ void addTuneCommand(CLI::App& app) {
         for (const voxel::World& world : worlds) {
             Target t{world.desc().source.stem().string(), &world,
                      worldCamera(world, args->camera, size.width, size.height), {}, {}};
-            requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing
+            // before minutes of tracing; it draws no objects
+            requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, resolveAo(world, {}), false),
+                              "--size");
             t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).gtao.radius), uint32_t(args->spp), &ctx);
             requireSurface(t.reference, world, args->camera);
             t.scene = uploadScene(ctx, world);
