@@ -116,10 +116,10 @@ json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptio
 }
 
 // Host memory one frame in flight holds: decoded images and encoded pixels.
-size_t bytesPerFrame(const Size& size, const AoOptions& ao, const FrameEncoding& encoding, bool exr) {
-    const size_t n = size_t(size.width) * size.height;
+size_t bytesPerFrame(const FrameShape& shape, const FrameEncoding& encoding, bool exr) {
+    const size_t n = size_t(shape.width) * shape.height;
     if (!exr) return 16 * n + 2 * 3 * n;  // colour, sRGB for the file and the video
-    const size_t images = encoding.exrAovs.empty() ? 16 * n : estimateRenderMemory(size.width, size.height, ao).hostBytes;
+    const size_t images = encoding.exrAovs.empty() ? 16 * n : readbackHostBytes(shape);
     return images + 4 * 18 * n + 3 * n;  // at most 18 channels of float pixels
 }
 
@@ -148,7 +148,8 @@ void run(const Args& a) {
     const AoOptions ao = resolveAo(world, a.ao);
     const voxel::Detail detail = resolveDetail(world, a.ao);
     vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
-    requireRenderFits(ctx, size.width, size.height, ao, "--size");
+    const FrameShape shape = worldFrameShape(world.desc(), size.width, size.height, ao);
+    requireRenderFits(ctx, shape, "--size");
 
     // Frames to write: those of the range not in DIR whole and recorded yet. The
     // video takes them all.
@@ -198,7 +199,7 @@ void run(const Args& a) {
         std::optional<VideoPipe> pipe;
         if (video) pipe.emplace(*videoTools, a.video, size.width, size.height, a.fps, a.videoQuality, range.first);
         const bool exr = a.format == "exr";
-        FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(size, ao, encoding, exr)));
+        FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(shape, encoding, exr)));
         std::optional<Progress> progress;
         if (!a.quiet) progress.emplace(end - start + 1, stdout);
         for (int i = start; i <= end; ++i) {

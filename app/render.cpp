@@ -81,7 +81,7 @@ void addRenderCommand(CLI::App& app) {
         const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao);
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
-        requireRenderFits(ctx, size.width, size.height, ao, "--size");
+        requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");
         const voxel::Detail detail = resolveDetail(world, args->ao);
         {
             RenderSession session(ctx, std::move(world), ao, detail, size.width, size.height);
