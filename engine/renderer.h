@@ -1,5 +1,6 @@
 #pragma once
-// Orders the passes of a frame and places every barrier between them.
+// Orders the passes of a frame; the barriers between them follow from what each
+// declares it reads and writes (engine/frame/pass_decl.h).
 #include "engine/ao_settings.h"
 #include "engine/camera.h"
 #include "engine/frame/frame_constants.h"
@@ -50,7 +51,7 @@ public:
              uint32_t width, uint32_t height, const SceneObjects* objects = nullptr);
     ~Renderer();
 
-    // Renders frame `frameIndex` (it advances the GTAO noise). The temporal pass
+    // Renders frame `frameIndex` (it advances the AO noise). The temporal pass
     // accumulates over consecutive frame indices (wrapping); any other index starts
     // the history afresh. With `copy`, the frame's own command buffer also copies
     // its images into it (the AOVs when copy->aovs()), for decoding later on any

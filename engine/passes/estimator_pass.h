@@ -1,5 +1,5 @@
 #pragma once
-// The AO estimator pass at half resolution: GTAO (gtao.comp), voxel-traced AO
+// The AO estimator pass at AO resolution: GTAO (gtao.comp), voxel-traced AO
 // (voxel.comp), the hybrid of both (hybrid.comp), or one of the baselines SSAO
 // (ssao.comp) and HBAO (hbao.comp), which read and write exactly what GTAO does
 // (shaders/ao_estimator.glsl); voxel and hybrid also bind the trace inputs. Reads: the depth MIP chain, the
