@@ -7,21 +7,17 @@
 
 #include "common/error.h"
 #include "engine/frame/object_frame.h"
-#include "engine/passes/trace_inputs.h"
 #include "engine/frame/render_memory.h"
+#include "engine/passes/trace_inputs.h"
 #include "engine/vk/readback.h"
-#include "shaders/shared/frame.h"
-#include "shaders/shared/quad.h"
-#include "shaders/shared/tone_map.h"
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <limits>
 #include <utility>
 
 namespace grotto {
+
 Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                    uint32_t width, uint32_t height, const SceneObjects* objects)
     : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), targets_(ctx), objects_(objects), timestamps_(ctx, 16) {
