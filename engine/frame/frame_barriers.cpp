@@ -35,10 +35,17 @@ constexpr VkAccessFlags kWrites =
 
 }  // namespace
 
+// A frame starts once the last has finished (the renderer waits on its fence), so
+// nothing recorded before needs a barrier; the targets a frame lays out afresh
+// drop their contents.
 void FrameTargets::beginFrame() {
     for (const TargetRow& row : targetRows())
-        if (row.initial == VK_IMAGE_LAYOUT_UNDEFINED)
-            for (uint32_t c = 0; c < row.copies; ++c) state({row.id, c}).dropped = true;
+        for (uint32_t c = 0; c < row.copies; ++c) {
+            ImageState& s = state({row.id, c});
+            s.writeStage = s.readStages = 0;
+            s.writeAccess = 0;
+            if (row.initial == VK_IMAGE_LAYOUT_UNDEFINED) s.dropped = true;
+        }
 }
 
 void FrameTargets::recordBarriers(VkCommandBuffer cmd, const std::vector<TargetUse>& uses) {
