@@ -220,7 +220,7 @@ void addStabilityCommand(CLI::App& app) {
         const int first = range.first, count = range.count();
         const AoOptions ao = resolveAo(world, args->ao);
         if (!ao.enabled) throw Error("--ao", "stability measures AO; it is off", "use --ao gtao");
-        const uint32_t scale = ao.fullResolution ? 1 : 2;
+        const uint32_t scale = ao.chain.fullResolution ? 1 : 2;
         // Below an 8x8 AO image the horizon search has next to no neighbours and the
         // reprojection next to no pixels: the figures would measure nothing.
         if ((size.width + scale - 1) / scale < kMinAoPixels || (size.height + scale - 1) / scale < kMinAoPixels)
@@ -233,10 +233,10 @@ void addStabilityCommand(CLI::App& app) {
         const json run = {{"world", args->world}, {"path", args->path}, {"size", {size.width, size.height}},
                           {"fps", args->fps}, {"frames", frames},
                           {"ao_resolution", scale == 2 ? "half" : "full"},
-                          {"quality", ao.quality}, {"temporal_history", ao.gtao.temporalHistory},
+                          {"quality", ao.quality}, {"temporal_history", ao.chain.temporalHistory},
                           {"ao", aoSettingsJson(ao)},
                           {"detail", detailJson(resolveDetail(world, args->ao))},
-                          {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}, {"radius", ao.gtao.radius}}}};
+                          {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}, {"radius", ao.estimator.radius}}}};
         std::error_code same;
         if (!args->baseline.empty() && std::filesystem::equivalent(args->baseline, out, same))
             throw Error("--json", out.string() + " is also the --baseline", "write this run's figures elsewhere");
@@ -316,14 +316,14 @@ void addStabilityCommand(CLI::App& app) {
                 for (EditEvent& e : events) {
                     if (i - e.frame >= kEditWindow) continue;
                     // Only the pixels near the edit: the pre- and post-edit references differ nowhere else.
-                    const std::vector<uint8_t> near = nearBox(now, e.box, ao.gtao.radius);
-                    const auto pre = referenceAt(e.beforeBricks, e.before, posed, points, near.size(), ao.gtao.radius, args->spp, rays, near);
-                    const auto post = referenceAt(live.bricks(), world, posed, points, near.size(), ao.gtao.radius, args->spp, rays, near);
+                    const std::vector<uint8_t> near = nearBox(now, e.box, ao.estimator.radius);
+                    const auto pre = referenceAt(e.beforeBricks, e.before, posed, points, near.size(), ao.estimator.radius, args->spp, rays, near);
+                    const auto post = referenceAt(live.bricks(), world, posed, points, near.size(), ao.estimator.radius, args->spp, rays, near);
                     e.frames.push_back(editFrame(i, i - e.frame, now.temporal, historyAt(frame, now), pre, post, near,
                                                  existedBefore(e.before, points, near)));
                 }
                 if (referenceFrame) {
-                    reference = referenceAt(live.bricks(), world, posed, points, now.world.size(), ao.gtao.radius,
+                    reference = referenceAt(live.bricks(), world, posed, points, now.world.size(), ao.estimator.radius,
                                             args->spp, rays);
                     errors.push_back({{"frame", i},
                                       {"spatial", errorJson(now.spatial, reference, now.surface)},
@@ -387,7 +387,7 @@ void addStabilityCommand(CLI::App& app) {
         // the path is shorter than that). A shorter history, or none, starts no
         // earlier than the default one would, so a spatial-only run of the same path
         // is averaged over the same frames.
-        int steadyFrom = first + int(std::max(ao.gtao.temporalHistory, kDefaultTemporalHistory));
+        int steadyFrom = first + int(std::max(ao.chain.temporalHistory, kDefaultTemporalHistory));
         if (errors.empty() || errors.back()["frame"].get<int>() < steadyFrom) steadyFrom = first;
         size_t steadyFrames = 0;
         for (const json& e : errors) steadyFrames += e["frame"].get<int>() >= steadyFrom;

@@ -185,7 +185,7 @@ std::vector<LodRow> measureLod(vk::Context& ctx, GpuScene& scene, const voxel::W
                                const LodRow& label, std::vector<double> biases, bool occlusion,
                                const ReferenceView& ref, int frames, int warmup) {
     const AoOptions ao = resolveAo(world, {});
-    frames = std::max(frames, ao.enabled && ao.gtao.temporalHistory > 0 ? kTemporalFrames : 0);
+    frames = std::max(frames, ao.enabled && ao.chain.temporalHistory > 0 ? kTemporalFrames : 0);
     biases.push_back(0.0);  // the exact rendering comes first: every other row is measured against it
     std::sort(biases.begin(), biases.end());
     biases.erase(std::unique(biases.begin(), biases.end()), biases.end());
@@ -265,7 +265,7 @@ void addTradeoffCommand(CLI::App& app) {
             const std::string name = world.desc().source.stem().string();
             const Camera camera = worldCamera(world, args->camera, size.width, size.height);
             // R is GTAO's radius before its multiplier, as for `grotto reference`.
-            const double radius = double(resolveAo(world, {}).gtao.radius);
+            const double radius = double(resolveAo(world, {}).estimator.radius);
             requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing
             const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx);
             requireSurface(ref, world, args->camera);
@@ -287,8 +287,8 @@ void addTradeoffCommand(CLI::App& app) {
             }
             for (const Setting& s : kSettings) {
                 AoFlags flags;
-                flags.method = s.method.substr(0, s.method.find('+'));  // "gtao+temporal" is gtao
-                flags.quality = s.quality;
+                flags.set.method = s.method.substr(0, s.method.find('+'));  // "gtao+temporal" is gtao
+                flags.set.quality = s.quality;
                 flags.set.temporalHistory = s.temporal;
                 const AoOptions ao = resolveAo(world, flags);
                 const int frames = std::max(args->warmup + args->frames, s.temporal ? kTemporalFrames : 0);

@@ -40,7 +40,7 @@ gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l,
     u.rayOrigin = glm::vec4(glm::vec3(corner), 0.0f);
     u.rayStepX = glm::vec4(glm::vec3(right), 0.0f);
     u.rayStepY = glm::vec4(glm::vec3(down), 0.0f);
-    u.aoStrength = glm::vec4(ao.enabled ? ao.gtao.strength : 0.0f, 0.0f, 0.0f, 0.0f);
+    u.aoStrength = glm::vec4(ao.enabled ? ao.chain.strength : 0.0f, 0.0f, 0.0f, 0.0f);
     u.exposure = glm::vec4(l.exposure, 0.0f, 0.0f, 0.0f);
     u.size = {camera.width, camera.height};
     return u;
@@ -98,7 +98,7 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
     : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), objects_(objects), timestamps_(ctx, 16) {
     if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
-        validateGtao(ao_.gtao, "AO settings");
+        validateAo(ao_, "AO settings");
         requireOccupancy(ao_);
         requireRenderFits(ctx, width, height, ao_, "image size");  // before any allocation can fail halfway
         frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
@@ -133,7 +133,7 @@ void Renderer::createPasses() {
     if (!denoisePass_) denoisePass_ = std::make_unique<DenoisePass>(ctx);
     if (!upsamplePass_) upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
     if (temporal() && !temporalPass_)
-        temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses, objects_ != nullptr, motion());
+        temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.chain.denoisePasses, objects_ != nullptr, motion());
 }
 
 void Renderer::createTargets(uint32_t width, uint32_t height) {
@@ -157,13 +157,13 @@ void Renderer::createTargets(uint32_t width, uint32_t height) {
     // bound a 1x1 image (and the constants) it ignores.
     const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | read;
     if (ao_.enabled) {
-        aoTargets_.half = ao_.fullResolution ? extent : halfOf(extent);
+        aoTargets_.half = ao_.chain.fullResolution ? extent : halfOf(extent);
         aoTargets_.depthAtlas =
             vk::createImage(ctx, depthMipLayout(aoTargets_.half).atlas, VK_FORMAT_R32_SFLOAT, storage);
         aoTargets_.raw = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
         // One denoise pass needs one target (with the temporal pass, only for the
         // AO_spatial AOV), more ping-pong between two.
-        for (uint32_t i = 0; i < std::min(ao_.gtao.denoisePasses, 2u); ++i)
+        for (uint32_t i = 0; i < std::min(ao_.chain.denoisePasses, 2u); ++i)
             aoTargets_.spatial[i] = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
         if (temporal())
             for (vk::Image& h : aoTargets_.history)
@@ -280,20 +280,20 @@ void Renderer::requireOccupancy(const AoOptions& ao) const {
 }
 
 void Renderer::setAo(const AoOptions& ao) {
-    validateGtao(ao.gtao, "AO settings");
+    validateAo(ao, "AO settings");
     requireOccupancy(ao);
     const uint32_t width = color_.extent.width, height = color_.extent.height;
     requireRenderFits(ctx_, width, height, ao, "AO settings");
     const AoOptions old = std::exchange(ao_, ao);
-    const bool wasTemporal = old.enabled && old.gtao.temporalHistory > 0;
+    const bool wasTemporal = old.enabled && old.chain.temporalHistory > 0;
     // What each pass and target is made from (its shader's specialisation, its size).
     const bool chain = old.enabled != ao_.enabled;
-    const bool estimator = old.method != ao_.method || old.ssaoSamples != ao_.ssaoSamples ||
-                           old.voxelRays != ao_.voxelRays ||
-                           old.gtao.sliceCount != ao_.gtao.sliceCount ||
-                           old.gtao.stepsPerSlice != ao_.gtao.stepsPerSlice ||
-                           old.gtao.sampleDistributionPower != ao_.gtao.sampleDistributionPower;
-    const bool denoise = old.gtao.denoisePasses != ao_.gtao.denoisePasses;
+    const bool estimator = old.method != ao_.method || old.estimator.ssaoSamples != ao_.estimator.ssaoSamples ||
+                           old.estimator.rays != ao_.estimator.rays ||
+                           old.estimator.slices != ao_.estimator.slices ||
+                           old.estimator.steps != ao_.estimator.steps ||
+                           old.estimator.sampleDistributionPower != ao_.estimator.sampleDistributionPower;
+    const bool denoise = old.chain.denoisePasses != ao_.chain.denoisePasses;
     if (chain) compositePass_.reset();
     if (chain || estimator) gtaoPass_.reset();
     if (chain || denoise || wasTemporal != temporal()) temporalPass_.reset();
@@ -306,8 +306,8 @@ void Renderer::setAo(const AoOptions& ao) {
         upsamplePass_.reset();
     }
     createPasses();
-    if (chain || old.fullResolution != ao_.fullResolution || wasTemporal != temporal() ||
-        std::min(old.gtao.denoisePasses, 2u) != std::min(ao_.gtao.denoisePasses, 2u)) {
+    if (chain || old.chain.fullResolution != ao_.chain.fullResolution || wasTemporal != temporal() ||
+        std::min(old.chain.denoisePasses, 2u) != std::min(ao_.chain.denoisePasses, 2u)) {
         releaseTargets();
         createTargets(width, height);
     }
@@ -325,7 +325,7 @@ size_t Renderer::targetBytes() const {
 }
 
 const vk::Image& Renderer::aoHalfOutput() const {
-    return temporal() ? aoTargets_.history[historyIndex_] : aoTargets_.denoised(ao_.gtao.denoisePasses);
+    return temporal() ? aoTargets_.history[historyIndex_] : aoTargets_.denoised(ao_.chain.denoisePasses);
 }
 
 void Renderer::recordAo(VkCommandBuffer cmd) {
@@ -337,7 +337,7 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     timestamps_.end(cmd);
     computeToCompute(cmd);
     // With the temporal pass, the final blur is part of it.
-    const uint32_t passes = ao_.gtao.denoisePasses;
+    const uint32_t passes = ao_.chain.denoisePasses;
     timestamps_.begin(cmd, "denoise");
     denoisePass_->record(cmd, aoTargets_, passes, temporal() && passes > 0 ? passes - 1 : passes, gtaoConstants_);
     timestamps_.end(cmd);
@@ -358,8 +358,8 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy
     const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
     std::memcpy(frame_.mapped(), &uniforms, sizeof uniforms);
     if (ao_.enabled) {
-        const uint32_t scale = ao_.fullResolution ? 1 : 2;
-        gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, scale);
+        const uint32_t scale = ao_.chain.fullResolution ? 1 : 2;
+        gpu::GtaoConstants constants = gtaoConstants(camera, gpuSettings(ao_), frameIndex, scale);
         if (objects_) normalTable(constants.viewNormals, glm::transpose(camera.basis), poses_);
         std::memcpy(gtaoConstants_.mapped(), &constants, sizeof constants);
         if (temporal()) {
@@ -485,9 +485,9 @@ void Renderer::submitAndWait(VkCommandBuffer cmd) {
 
 void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
     if (!scene_.occupancy) return;
-    const double radius = ao_.enabled ? ao_.gtao.radius : 1.0;
+    const double radius = ao_.enabled ? ao_.estimator.radius : 1.0;
     gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy, scene_.voxelSize, scene_.worldOrigin,
-                                           lighting_.sunDirection, ao_.voxelRays, radius);
+                                           lighting_.sunDirection, ao_.estimator.rays, radius);
     t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
     t.frameIndex = frameIndex;
     if (softShadows()) {
@@ -497,7 +497,7 @@ void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
         const gpu::TemporalConstants r = temporalConstants(camera, shadowCamera_ ? &*shadowCamera_ : nullptr);
         t.currentToPrevious = r.currentToPrevious;
         t.previousNdcToViewMul_Add = r.previousNdcToViewMul_Add;
-        t.shadowHistory = temporal() ? ao_.gtao.temporalHistory : kDefaultTemporalHistory;
+        t.shadowHistory = temporal() ? ao_.chain.temporalHistory : kDefaultTemporalHistory;
         t.shadowReset = (r.reset != 0u ? 1u : 0u) | (objects_ && objects_->moving ? 2u : 0u);
         shadowCamera_ = camera;
         shadowFrame_ = frameIndex;
@@ -515,7 +515,7 @@ void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
 
 void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {
     copy.begin({.width = color_.extent.width, .height = color_.extent.height, .half = aoTargets_.half,
-                .scale = ao_.fullResolution ? 1u : 2u, .ao = ao_.enabled, .toneMap = toneMapCurve(lighting_.toneMap),
+                .scale = ao_.chain.fullResolution ? 1u : 2u, .ao = ao_.enabled, .toneMap = toneMapCurve(lighting_.toneMap),
                 .camera = camera, .poses = poses_, .albedo = scene_.albedo});
     const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, general = VK_IMAGE_LAYOUT_GENERAL;
     auto copyPart = [&](FrameCopy::Part part, const vk::Image& image, VkImageLayout layout, uint32_t bytesPerPixel) {
@@ -541,14 +541,14 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
                            0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
         }
         computeToCompute(cmd);  // after the frame's own writes
-        if (temporal() && ao_.gtao.denoisePasses > 0)
-            denoisePass_->recordFinal(cmd, aoTargets_, ao_.gtao.denoisePasses, gtaoConstants_);
+        if (temporal() && ao_.chain.denoisePasses > 0)
+            denoisePass_->recordFinal(cmd, aoTargets_, ao_.chain.denoisePasses, gtaoConstants_);
         upsamplePass_->record(cmd, gbuffer_.depth, gbuffer_.surface, aoHalfOutput(), aoTargets_.full,
                               gtaoConstants_);
         computeToCompute(cmd);
         copyPart(FrameCopy::AoFull, aoTargets_.full, general, 4);
         copyPart(FrameCopy::Raw, aoTargets_.raw, general, 16);
-        copyPart(FrameCopy::Spatial, aoTargets_.denoised(ao_.gtao.denoisePasses), general, 16);
+        copyPart(FrameCopy::Spatial, aoTargets_.denoised(ao_.chain.denoisePasses), general, 16);
         if (temporal()) copyPart(FrameCopy::History, aoHalfOutput(), general, 16);
     }
     vk::recordHostRead(cmd);

@@ -24,9 +24,9 @@ TEST_F(GpuTest, RenderMemoryEstimateMatchesTheTargets) {
                           Case{17, 9, true, false, 4, 16}, Case{40, 20, false, false, 1, 16}, Case{1, 1, true, false, 1, 16}}) {
         AoOptions ao = aoOptionsFor(world.desc().ao, 1.0, "test");
         ao.enabled = c.enabled;
-        ao.fullResolution = c.fullResolution;
-        ao.gtao.denoisePasses = uint32_t(c.denoise);
-        ao.gtao.temporalHistory = uint32_t(c.temporal);
+        ao.chain.fullResolution = c.fullResolution;
+        ao.chain.denoisePasses = uint32_t(c.denoise);
+        ao.chain.temporalHistory = uint32_t(c.temporal);
         const RenderMemory estimate = estimateRenderMemory(c.width, c.height, ao);
         Renderer renderer(ctx(), *scene, world.desc().lighting, ao, c.width, c.height);
         const Camera view = makeCamera(test::lookAt({4, 6, 12}, {4, 0, 4}), c.width, c.height);

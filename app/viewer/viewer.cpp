@@ -6,6 +6,7 @@
 #include "app/viewer/path_player.h"
 #include "app/viewer/path_recorder.h"
 #include "app/viewer/presenter.h"
+#include "app/viewer/settings_patch.h"
 #include "app/viewer/view_script.h"
 #include "app/viewer/window.h"
 #include "common/atomic_file.h"
@@ -35,15 +36,6 @@ using Clock = std::chrono::steady_clock;
 constexpr double kScriptStep = 1.0 / 60.0;  // seconds a scripted frame advances: runs are reproducible
 constexpr size_t kGraphFrames = 120;
 
-// A dotted world-file key ("lighting.sun.angle") and its value as a patch.
-voxel::json patchFor(const std::string& key, const nlohmann::json& value) {
-    voxel::json patch = voxel::json::parse(value.dump());
-    std::string k = key;
-    for (size_t dot; (dot = k.rfind('.')) != std::string::npos; k = k.substr(0, dot))
-        patch = voxel::json{{k.substr(dot + 1), patch}};
-    return voxel::json{{k, patch}};
-}
-
 class Viewer {
 public:
     explicit Viewer(const ViewOptions& o)
@@ -56,10 +48,10 @@ public:
           ctx_(contextOptions(window_)) {
         live_ = std::make_unique<LiveScene>(ctx_, std::move(loaded_));
         const voxel::World& world = live_->world();
-        // Command-line AO flags, as every command takes them, over the world's.
+        // Command-line AO flags, as every command takes them, over the world's: kept
+        // in desc_ too, so the panel, scripts and a saved world start from them.
         const AoOptions ao = app::resolveAo(world, o.ao);
-        if (!o.ao.method.empty()) desc_.ao.method = o.ao.method;
-        if (!o.ao.quality.empty()) desc_.ao.quality = o.ao.quality;
+        desc_.ao = app::aoDescWithFlags(world.desc().ao, o.ao);
         aoOptions_ = ao;
         objectWorlds_ = voxel::loadObjectWorlds(desc_);
         if (!objectWorlds_.empty()) objects_ = uploadObjects(ctx_, objectWorlds_, desc_);
@@ -171,7 +163,7 @@ private:
                     if (key == "view") setView(value, field);
                     else if (key == "play") playFromScript(value, field);
                     else if (key.rfind("edit.", 0) == 0) setEdit(key, value, field);
-                    else applyPatch(patchFor(key, value), script_->file(), where);
+                    else applyPatch(voxel::settingPatch(key, value), script_->file(), where);
                 }
                 break;
             case ScriptAction::Kind::Resize:
@@ -366,10 +358,7 @@ private:
 
     void applyPatch(const voxel::json& patch, const std::filesystem::path& file, const std::string& field) {
         voxel::WorldDesc d = desc_;
-        if (patch.contains("ao") && patch["ao"].contains("quality"))  // a preset replaces hand-set loop shapes
-            d.ao.slices.reset(), d.ao.steps.reset(), d.ao.rays.reset();
-        voxel::applySettingsPatch(d, patch, file, field);
-        const AoOptions ao = aoOptionsFor(d.ao, live_->world().voxelSize(), file.string());
+        const AoOptions ao = applyViewerPatch(d, patch, live_->world().voxelSize(), file, field);
         if (patch.contains("lighting")) renderer_->setLighting(d.lighting);
         if (patch.contains("ao")) renderer_->setAo(ao);
         if (patch.contains("detail")) renderer_->setCulling(cullingOptions(d.detail));

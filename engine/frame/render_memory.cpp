@@ -13,7 +13,7 @@ namespace grotto {
 RenderMemory estimateRenderMemory(uint32_t width, uint32_t height, const AoOptions& ao) {
     // Bytes per pixel of each target, as Renderer::createTargets and readback make them.
     const uint64_t n = uint64_t(width) * height;
-    const VkExtent2D half = ao.fullResolution ? VkExtent2D{width, height} : VkExtent2D{(width + 1) / 2, (height + 1) / 2};
+    const VkExtent2D half = ao.chain.fullResolution ? VkExtent2D{width, height} : VkExtent2D{(width + 1) / 2, (height + 1) / 2};
     const uint64_t m = uint64_t(half.width) * half.height;
     RenderMemory r;
     const uint64_t colour = 16 * n;                    // RGBA32F
@@ -21,7 +21,7 @@ RenderMemory estimateRenderMemory(uint32_t width, uint32_t height, const AoOptio
     uint64_t chainImages = 0;                          // RGBA32F at AO resolution: raw, denoise, history
     if (ao.enabled) {
         const VkExtent2D atlas = depthMipLayout(half).atlas;
-        chainImages = 1 + std::min(ao.gtao.denoisePasses, 2u) + (ao.gtao.temporalHistory > 0 ? 2 : 0);
+        chainImages = 1 + std::min(ao.chain.denoisePasses, 2u) + (ao.chain.temporalHistory > 0 ? 2 : 0);
         r.targetBytes += 4 * uint64_t(atlas.width) * atlas.height + 16 * m * chainImages + 4 * n;  // + the AO AOV
     }
     r.stagingBytes = colour;
