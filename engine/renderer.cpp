@@ -11,6 +11,7 @@
 #include "shaders/shared/frame.h"
 #include "shaders/shared/quad.h"
 #include "shaders/shared/tone_map.h"
+#include "voxel/settings_table.h"
 
 #include <algorithm>
 #include <chrono>
@@ -289,10 +290,7 @@ void Renderer::setAo(const AoOptions& ao) {
     // What each pass and target is made from (its shader's specialisation, its size).
     const bool chain = old.enabled != ao_.enabled;
     const bool estimator = old.method != ao_.method || old.estimator.ssaoSamples != ao_.estimator.ssaoSamples ||
-                           old.estimator.rays != ao_.estimator.rays ||
-                           old.estimator.slices != ao_.estimator.slices ||
-                           old.estimator.steps != ao_.estimator.steps ||
-                           old.estimator.sampleDistributionPower != ao_.estimator.sampleDistributionPower;
+                           differIn(old, ao_, voxel::kEstimatorPipeline);  // its loop shape: the settings table's column
     const bool denoise = old.chain.denoisePasses != ao_.chain.denoisePasses;
     if (chain) compositePass_.reset();
     if (chain || estimator) gtaoPass_.reset();
