@@ -79,29 +79,20 @@ void validateAo(const AoOptions& ao, const std::string& where) {
 }
 
 void applyAoOverrides(const voxel::AoDesc& d, AoOptions& ao) {
-    for (const voxel::Setting& row : voxel::settingsTable())
-        std::visit(Overloaded{[&](std::optional<double> voxel::AoDesc::*from) {
-                                  if (!(d.*from)) return;
-                                  std::visit(Overloaded{[&](float voxel::EstimatorSettings::*to) { ao.estimator.*to = float(*(d.*from)); },
-                                                        [&](float voxel::ChainSettings::*to) { ao.chain.*to = float(*(d.*from)); },
-                                                        [](auto) {}},
-                                             row.value);
-                              },
-                              [&](std::optional<int> voxel::AoDesc::*from) {
-                                  if (!(d.*from)) return;
-                                  std::visit(Overloaded{[&](uint32_t voxel::EstimatorSettings::*to) { ao.estimator.*to = uint32_t(*(d.*from)); },
-                                                        [&](uint32_t voxel::ChainSettings::*to) { ao.chain.*to = uint32_t(*(d.*from)); },
-                                                        [](auto) {}},
-                                             row.value);
-                              },
-                              [&](std::optional<bool> voxel::AoDesc::*from) {
-                                  if (!(d.*from)) return;
-                                  std::visit(Overloaded{[&](bool voxel::ChainSettings::*to) { ao.chain.*to = *(d.*from); },
-                                                        [](auto) {}},
-                                             row.value);
-                              },
-                              [](auto) {}},
-                   row.desc);
+    for (const voxel::Setting& row : voxel::settingsTable()) {
+        // The world-file value, where it is set, into its place among the settings in effect.
+        auto set = [&](auto& to) {
+            std::visit(Overloaded{[&](auto voxel::AoDesc::*from) {
+                                      if constexpr (requires { (d.*from).has_value(); })
+                                          if (d.*from) to = std::remove_reference_t<decltype(to)>(*(d.*from));
+                                  },
+                                  [](auto) {}},
+                       row.desc);
+        };
+        std::visit(Overloaded{[](std::monostate) {}, [&](auto voxel::EstimatorSettings::*to) { set(ao.estimator.*to); },
+                              [&](auto voxel::ChainSettings::*to) { set(ao.chain.*to); }},
+                   row.value);
+    }
 }
 
 AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::string& where) {
