@@ -3,7 +3,6 @@
 #include "app/options.h"
 #include "common/error.h"
 #include "engine/image_output.h"
-#include "engine/renderer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -32,14 +31,16 @@ double imageChange(const std::vector<float>& withAo, const std::vector<float>& w
     return n ? sum / double(n) : 0.0;
 }
 
-AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
+AoMeasurement measureAo(vk::Context& ctx, RenderSession& session, const Camera& camera,
                         const AoOptions& ao, const CullingOptions& culling, const ReferenceView& reference,
                         int frames, int warmup, bool timed, std::vector<float>* color) {
     // Costs as wall-time differences against the same frames without AO, rendered
     // interleaved: lavapipe's timestamps miss passes that follow a barrier.
     auto make = [&](const AoOptions& options) {
-        auto r = std::make_unique<Renderer>(ctx, scene, world.desc().lighting, options, camera.width, camera.height);
+        auto r = std::make_unique<Renderer>(ctx, session.scene().gpu(), session.world().desc().lighting, options,
+                                            camera.width, camera.height, session.objects());
         r->setCulling(culling);
+        if (session.objects()) r->setObjectPoses(session.poses());
         return r;
     };
     const std::unique_ptr<Renderer> renderer = make(ao);

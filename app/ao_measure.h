@@ -9,8 +9,7 @@
 #include "engine/camera.h"
 #include "engine/frame/chunk_culling.h"
 #include "engine/lab/reference_view.h"
-#include "engine/scene/scene.h"
-#include "voxel/world.h"
+#include "engine/session.h"
 
 namespace grotto::app {
 
@@ -38,12 +37,13 @@ double imageChange(const std::vector<float>& withAo, const std::vector<float>& w
                    const std::vector<uint8_t>& surface);
 
 // Renders frames 0 .. frames-1 of a static camera (consecutive indices, so the
-// temporal pass accumulates), the G-buffer drawn as `culling` says; times are
+// temporal pass accumulates) of the session's world and objects (at its poses),
+// the G-buffer drawn as `culling` says; times are
 // medians over the frames after `warmup`, the AO chain's and the frame's left at 0
 // when `timed` is false (no frames without AO are rendered then). `color`, when
 // given, receives the last frame's displayed RGBA (tone-mapped, before sRGB
 // encoding: displayColor).
-AoMeasurement measureAo(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
+AoMeasurement measureAo(vk::Context& ctx, RenderSession& session, const Camera& camera,
                         const AoOptions& ao, const CullingOptions& culling, const ReferenceView& reference,
                         int frames, int warmup, bool timed = true, std::vector<float>* color = nullptr);
 

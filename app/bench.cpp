@@ -15,9 +15,7 @@
 #include "common/atomic_file.h"
 #include "common/error.h"
 #include "engine/frame/render_memory.h"
-#include "engine/renderer.h"
-#include "engine/scene/scene_objects.h"
-#include "voxel/object_worlds.h"
+#include "engine/session.h"
 #include "voxel/world.h"
 
 #include <nlohmann/json.hpp>
@@ -60,7 +58,7 @@ void addBenchCommand(CLI::App& app) {
         const Size size = parseSize(args->size);
         if (!args->json.empty()) requireOutputPath(args->json);
         auto t = std::chrono::steady_clock::now();
-        const voxel::World world = voxel::World::load(args->world);
+        voxel::World world = voxel::World::load(args->world);
         const double loadMs = msSince(t);
         t = std::chrono::steady_clock::now();
         voxel::Mesh mesh = world.mesh();
@@ -72,11 +70,7 @@ void addBenchCommand(CLI::App& app) {
         const AoOptions ao = resolveAo(world, args->ao);
 
         vk::Context ctx;
-        requireRenderFits(ctx, size.width, size.height, ao, "--size");
-        auto scene = uploadScene(ctx, world);  // with levels of detail and the occupancy rays need
-        // Objects move as in a flythrough at 24 frames a second, so their motion vectors are paid for.
-        const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
-        auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
+        requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");
         const size_t quadCount = mesh.quads.size();
         const std::optional<voxel::MeshChunkQuads> busiest = busiestChunk(mesh);
         mesh = {};  // the GPU holds the quads now
@@ -84,14 +78,19 @@ void addBenchCommand(CLI::App& app) {
         std::vector<double> wallMs, frameGpuMs, chainWallMs, temporalWallMs;
         uint64_t drawn = 0;
         size_t targetBytes = 0;
+        const voxel::Lighting light = world.desc().lighting;
+        const voxel::Detail detail = resolveDetail(world, args->ao);
+        // With levels of detail and the occupancy rays need, and the objects.
+        std::optional<RenderSession> session;
+        session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
+        GpuScene& scene = session->scene().gpu();
         {
-            const voxel::Lighting& light = world.desc().lighting;
-            Renderer renderer(ctx, *scene, light, ao, size.width, size.height, objects.get());
-            renderer.setCulling(cullingOptions(resolveDetail(world, args->ao)));
+            Renderer& renderer = session->renderer();
             targetBytes = renderer.targetBytes();
-            AoCostTimer costs(ctx, *scene, light, ao, size.width, size.height, objects.get());
+            AoCostTimer costs(ctx, scene, light, ao, size.width, size.height, session->objects());
             for (int i = 0; i < args->warmup + args->frames; ++i) {
-                if (objects) renderer.setObjectPoses(objects->poses(i / 24.0));
+                // Objects move as in a flythrough at 24 frames a second, so their motion vectors are paid for.
+                session->setTime(i / 24.0);
                 // Consecutive indices, so the temporal pass runs as in a flythrough.
                 const FrameStats f = costs.render(renderer, camera, uint32_t(i), i >= args->warmup);
                 if (i < args->warmup) continue;
@@ -104,13 +103,12 @@ void addBenchCommand(CLI::App& app) {
             chainWallMs = costs.chainMs();
             temporalWallMs = costs.temporalMs();
         }
-        const size_t hostBytes = stats.hostBytes + scene->hostBytes();
-        const size_t gpuBytes = scene->gpuBytes();
+        const size_t hostBytes = stats.hostBytes + scene.hostBytes();
+        const size_t gpuBytes = scene.gpuBytes();
         // After the frames and the memory figures, so both see the scene as uploaded.
         std::optional<SceneUpdateCost> update;
-        if (busiest) update = measureSceneUpdate(*scene, *busiest, 50);
-        scene.reset();
-        objects.reset();
+        if (busiest) update = measureSceneUpdate(scene, *busiest, 50);
+        session.reset();
         requireNoValidationMessages(ctx);
 
         nlohmann::json j = {

@@ -36,24 +36,28 @@ void addCompareCommand(CLI::App& app) {
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
-        const voxel::World world = voxel::World::load(args->world);
-        const Camera camera = worldCamera(world, args->camera, size.width, size.height);
-        const AoOptions ao = resolveAo(world, args->ao);
+        voxel::World loaded = voxel::World::load(args->world);
+        const Camera camera = worldCamera(loaded, args->camera, size.width, size.height);
+        const AoOptions ao = resolveAo(loaded, args->ao);
         if (!ao.enabled) throw Error("--ao", "off has no AO to compare", "pick gtao, ssao or hbao");
         // The reference's R is the radius the method is given, before GTAO's multiplier.
         const double radius = double(ao.estimator.radius);
         vk::Context ctx;
-        requireRenderFits(ctx, size.width, size.height, ao, "--size");  // before minutes of tracing
-        const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx);
+        requireRenderFits(ctx, worldFrameShape(loaded.desc(), size.width, size.height, ao), "--size");  // before minutes of tracing
+        const voxel::Detail detail = resolveDetail(loaded, args->ao);
+        // The world and its objects at time 0, drawn and traced alike.
+        std::optional<RenderSession> session;
+        session.emplace(ctx, std::move(loaded), ao, detail, size.width, size.height);
+        const voxel::World& world = session->world();
+        const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx, session->posedObjects());
         requireSurface(ref, world, args->camera);
         double maxError = 0.0;
         for (float e : ref.stderror) maxError = std::max(maxError, double(e));
-        auto scene = uploadScene(ctx, world);
         // As `tradeoff` does: a temporal history gets static frames enough to fill.
         const int frames = std::max(args->warmup + args->frames, ao.chain.temporalHistory > 0 ? 32 : 0);
-        const voxel::Detail detail = resolveDetail(world, args->ao);
-        const AoMeasurement m = measureAo(ctx, *scene, world, camera, ao, cullingOptions(detail), ref, frames, args->warmup);
-        scene.reset();
+        const AoMeasurement m = measureAo(ctx, *session, camera, ao, cullingOptions(detail), ref, frames, args->warmup);
+        const std::string name = world.desc().source.stem().string();
+        session.reset();
         requireNoValidationMessages(ctx);
         const voxel::EstimatorSettings& s = ao.estimator;
         char shape[64];
@@ -64,7 +68,7 @@ void addCompareCommand(CLI::App& app) {
             std::snprintf(shape, sizeof shape, "%u slices x %u steps + %u rays", s.slices, s.steps, s.rays);
         else std::snprintf(shape, sizeof shape, "%u slices x %u steps", s.slices, s.steps);
         std::printf("%s: %s %s (%s%s, temporal %u), reference R %g, %u spp (%s, stderr max %.4f)\n",
-                    world.desc().source.stem().c_str(), aoMethodName(ao.method), ao.quality.c_str(), shape,
+                    name.c_str(), aoMethodName(ao.method), ao.quality.c_str(), shape,
                     ao.chain.fullResolution ? ", full resolution" : "", ao.chain.temporalHistory, radius, uint32_t(args->spp),
                     ref.cacheHit ? "from the cache" : "traced", maxError);
         std::printf("pixels %zu  mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f  ao %s  frame %.2f ms\n",

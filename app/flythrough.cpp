@@ -28,11 +28,8 @@
 #include "common/file_lock.h"
 #include "engine/camera_path.h"
 #include "engine/image_output.h"
-#include "engine/scene/live_scene.h"
-#include "engine/scene/path_edits.h"
 #include "engine/frame/render_memory.h"
-#include "engine/renderer.h"
-#include "voxel/object_worlds.h"
+#include "engine/session.h"
 #include "voxel/world.h"
 
 #include <nlohmann/json.hpp>
@@ -119,10 +116,10 @@ json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptio
 }
 
 // Host memory one frame in flight holds: decoded images and encoded pixels.
-size_t bytesPerFrame(const Size& size, const AoOptions& ao, const FrameEncoding& encoding, bool exr) {
-    const size_t n = size_t(size.width) * size.height;
+size_t bytesPerFrame(const FrameShape& shape, const FrameEncoding& encoding, bool exr) {
+    const size_t n = size_t(shape.width) * shape.height;
     if (!exr) return 16 * n + 2 * 3 * n;  // colour, sRGB for the file and the video
-    const size_t images = encoding.exrAovs.empty() ? 16 * n : estimateRenderMemory(size.width, size.height, ao).hostBytes;
+    const size_t images = encoding.exrAovs.empty() ? 16 * n : readbackHostBytes(shape);
     return images + 4 * 18 * n + 3 * n;  // at most 18 channels of float pixels
 }
 
@@ -151,7 +148,8 @@ void run(const Args& a) {
     const AoOptions ao = resolveAo(world, a.ao);
     const voxel::Detail detail = resolveDetail(world, a.ao);
     vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
-    requireRenderFits(ctx, size.width, size.height, ao, "--size");
+    const FrameShape shape = worldFrameShape(world.desc(), size.width, size.height, ao);
+    requireRenderFits(ctx, shape, "--size");
 
     // Frames to write: those of the range not in DIR whole and recorded yet. The
     // video takes them all.
@@ -192,31 +190,25 @@ void run(const Args& a) {
     if (!a.output.empty()) stats.emplace(dir);
     // The world as the path's edits have made it by the first frame rendered;
     // later edits are applied as their frames come. Objects are drawn at each frame's poses.
-    const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
-    auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
-    std::optional<LiveScene> scene;
-    scene.emplace(ctx, std::move(world));
-    PathEdits edits(desc, scene->world());
-    edits.applyUpTo(double(start - 1) / a.fps, *scene);
+    const voxel::CameraDesc lens = world.camera("", size.aspect());
+    std::optional<RenderSession> session;
+    session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
+    session->playPath(desc, lens);
+    session->startPathAt(double(start - 1) / a.fps);
     {
         std::optional<VideoPipe> pipe;
         if (video) pipe.emplace(*videoTools, a.video, size.width, size.height, a.fps, a.videoQuality, range.first);
         const bool exr = a.format == "exr";
-        FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(size, ao, encoding, exr)));
-        Renderer renderer(ctx, scene->gpu(), scene->world().desc().lighting, ao, size.width, size.height, objects.get());
-        renderer.setCulling(cullingOptions(detail));
+        FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(shape, encoding, exr)));
         std::optional<Progress> progress;
         if (!a.quiet) progress.emplace(end - start + 1, stdout);
         for (int i = start; i <= end; ++i) {
             const double time = double(i - 1) / a.fps;
-            const Camera camera = path.camera(time, size.width, size.height);
-            if (i > start && path.cutBetween(double(i - 2) / a.fps, time)) renderer.resetHistory();
-            edits.applyUpTo(time, *scene, &renderer);
-            if (objects) renderer.setObjectPoses(objects->poses(time));
+            const Camera camera = session->pathFrame(time, size.width, size.height).camera;
             const bool write = std::binary_search(missing.begin(), missing.end(), i);
             const bool toVideo = video && i >= range.first;
             FrameCopy* copy = (write || toVideo) ? &writer.slot() : nullptr;
-            const FrameStats frameStats = renderer.render(camera, uint32_t(i), copy);
+            const FrameStats frameStats = session->renderer().render(camera, uint32_t(i), copy);
             json passMs = json::object();
             for (const auto& [name, ms] : frameStats.passMs) passMs[name] = ms;
             json entry = {{"frame", i}, {"time", time}, {"written", write}, {"wall_ms", frameStats.wallMs}, {"pass_ms", passMs}};
@@ -240,8 +232,7 @@ void run(const Args& a) {
         if (pipe) pipe->finish();
         if (progress) progress->finish();
     }
-    scene.reset();
-    objects.reset();
+    session.reset();
     requireNoValidationMessages(ctx);
     if (stats) {
         stats->merge();

@@ -5,10 +5,9 @@
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "common/error.h"
-#include "voxel/object_worlds.h"
 #include "engine/image_output.h"
 #include "engine/frame/render_memory.h"
-#include "engine/renderer.h"
+#include "engine/session.h"
 #include "voxel/world.h"
 
 #include <algorithm>
@@ -76,20 +75,18 @@ void addRenderCommand(CLI::App& app) {
         if (imageFormatFor(out) != ImageFormat::Png && !args->show.empty())
             throw Error(out.string(), "--show needs a .png output", "EXR holds every AOV with --aov");
         requireOutputPath(out);
-        const voxel::World world = voxel::World::load(args->world);
+        voxel::World world = voxel::World::load(args->world);
         const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         AoOptions ao = resolveAo(world, args->ao);
         const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao);
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
-        requireRenderFits(ctx, size.width, size.height, ao, "--size");
-        auto scene = uploadScene(ctx, world);
-        const std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
-        auto objects = objectWorlds.empty() ? nullptr : uploadObjects(ctx, objectWorlds, world.desc());
+        requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");
+        const voxel::Detail detail = resolveDetail(world, args->ao);
         {
-            Renderer renderer(ctx, *scene, world.desc().lighting, ao, size.width, size.height, objects.get());
-            renderer.setCulling(cullingOptions(resolveDetail(world, args->ao)));
-            if (objects) renderer.setObjectPoses(objects->poses(args->time));  // held for every frame
+            RenderSession session(ctx, std::move(world), ao, detail, size.width, size.height);
+            session.setTime(args->time);  // the objects, held for every frame
+            Renderer& renderer = session.renderer();
             for (uint32_t i = 0; i < frames; ++i) renderer.render(camera, i);
             const FrameImages frame = renderer.readback(camera, aovs);
             if (!args->show.empty())
@@ -97,8 +94,6 @@ void addRenderCommand(CLI::App& app) {
             else
                 writeFrame(out, frame, camera, args->aov);
         }
-        scene.reset();
-        objects.reset();
         requireNoValidationMessages(ctx);
         std::printf("wrote %s (%ux%u, %u frame%s, %s)\n", out.c_str(), size.width, size.height, frames,
                     frames == 1 ? "" : "s", ctx.deviceName().c_str());

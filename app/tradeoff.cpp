@@ -181,10 +181,10 @@ void writePlot(const std::filesystem::path& file, const std::vector<Row>& rows, 
 
 // The world's AO setting at bias 0 and at each of `biases`, each against the exact
 // rendering (bias 0) of the same view, settings and frames.
-std::vector<LodRow> measureLod(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
+std::vector<LodRow> measureLod(vk::Context& ctx, RenderSession& session, const Camera& camera,
                                const LodRow& label, std::vector<double> biases, bool occlusion,
                                const ReferenceView& ref, int frames, int warmup) {
-    const AoOptions ao = resolveAo(world, {});
+    const AoOptions ao = resolveAo(session.world(), {});
     frames = std::max(frames, ao.enabled && ao.chain.temporalHistory > 0 ? kTemporalFrames : 0);
     biases.push_back(0.0);  // the exact rendering comes first: every other row is measured against it
     std::sort(biases.begin(), biases.end());
@@ -194,7 +194,7 @@ std::vector<LodRow> measureLod(vk::Context& ctx, GpuScene& scene, const voxel::W
     for (double bias : biases) {
         LodRow row = label;
         row.bias = bias;
-        row.m = measureAo(ctx, scene, world, camera, ao, {.lodBias = bias, .occlusion = occlusion}, ref, frames, warmup,
+        row.m = measureAo(ctx, session, camera, ao, {.lodBias = bias, .occlusion = occlusion}, ref, frames, warmup,
                           true, bias == 0.0 ? &exact : &color);
         row.colourPsnr = colourPsnr(bias == 0.0 ? exact : color, exact);
         row.aoPsnrChange = row.m.error.psnr - (rows.empty() ? row.m.error.psnr : rows[0].m.error.psnr);
@@ -261,26 +261,29 @@ void addTradeoffCommand(CLI::App& app) {
         vk::Context ctx;
         std::vector<Row> rows;
         std::vector<LodRow> lodRows;
-        for (const voxel::World& world : worlds) {
-            const std::string name = world.desc().source.stem().string();
-            const Camera camera = worldCamera(world, args->camera, size.width, size.height);
+        for (voxel::World& loaded : worlds) {
+            const std::string name = loaded.desc().source.stem().string();
+            const Camera camera = worldCamera(loaded, args->camera, size.width, size.height);
             // R is GTAO's radius before its multiplier, as for `grotto reference`.
-            const double radius = double(resolveAo(world, {}).estimator.radius);
-            requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing
-            const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx);
+            const AoOptions worldAo = resolveAo(loaded, {});
+            const double radius = double(worldAo.estimator.radius);
+            requireRenderFits(ctx, worldFrameShape(loaded.desc(), size.width, size.height, worldAo), "--size");  // before minutes of tracing
+            const voxel::Detail detail = resolveDetail(loaded, args->detail);
+            // The world and its objects at time 0, drawn and traced alike.
+            RenderSession session(ctx, std::move(loaded), worldAo, detail, size.width, size.height);
+            const voxel::World& world = session.world();
+            const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx, session.posedObjects());
             requireSurface(ref, world, args->camera);
             double maxError = 0.0;
             for (float e : ref.stderror) maxError = std::max(maxError, double(e));
             std::printf("%s: reference %s, %u spp, stderr max %.4f\n", name.c_str(),
                         ref.cacheHit ? "from the cache" : "traced", uint32_t(args->spp), maxError);
-            auto scene = uploadScene(ctx, world);
-            const voxel::Detail detail = resolveDetail(world, args->detail);
             if (lod) {
                 const std::string view = !args->camera.empty()            ? args->camera
                                          : !world.desc().defaultCamera.empty() ? world.desc().defaultCamera
                                                                                : "default";
                 const std::vector<LodRow> measured =
-                    measureLod(ctx, *scene, world, camera, {.world = name, .camera = view}, args->lodBiases,
+                    measureLod(ctx, session, camera, {.world = name, .camera = view}, args->lodBiases,
                                detail.occlusionCulling, ref, args->warmup + args->frames, args->warmup);
                 lodRows.insert(lodRows.end(), measured.begin(), measured.end());
                 continue;
@@ -293,7 +296,7 @@ void addTradeoffCommand(CLI::App& app) {
                 const AoOptions ao = resolveAo(world, flags);
                 const int frames = std::max(args->warmup + args->frames, s.temporal ? kTemporalFrames : 0);
                 Row row{name, s.method, s.label,
-                        measureAo(ctx, *scene, world, camera, ao, cullingOptions(detail), ref, frames, args->warmup)};
+                        measureAo(ctx, session, camera, ao, cullingOptions(detail), ref, frames, args->warmup)};
                 std::printf("  %-14s %-6s ao %s  frame %7.2f ms  mae %.4f  rmse %.4f  psnr %6.2f dB  bias %+.4f\n",
                             row.method.c_str(), row.quality.c_str(), formatCost(row.m.ao).c_str(), row.m.msFrame, row.m.error.mae,
                             row.m.error.rmse, row.m.error.psnr, row.m.error.bias);

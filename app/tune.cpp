@@ -39,7 +39,7 @@ struct Target {
     const voxel::World* world;
     Camera camera;
     ReferenceView reference;
-    std::unique_ptr<GpuScene> scene;
+    std::unique_ptr<RenderSession> session;  // the world (a copy) and its objects, drawn and traced alike
 };
 
 }  // namespace
@@ -71,10 +71,13 @@ void addTuneCommand(CLI::App& app) {
         for (const voxel::World& world : worlds) {
             Target t{world.desc().source.stem().string(), &world,
                      worldCamera(world, args->camera, size.width, size.height), {}, {}};
-            requireRenderFits(ctx, size.width, size.height, resolveAo(world, {}), "--size");  // before minutes of tracing
-            t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).estimator.radius), uint32_t(args->spp), &ctx);
+            requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, resolveAo(world, {})),
+                              "--size");  // before minutes of tracing
+            t.session = std::make_unique<RenderSession>(ctx, world, resolveAo(world, {}), resolveDetail(world, {}),
+                                                        size.width, size.height);
+            t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).estimator.radius), uint32_t(args->spp),
+                                        &ctx, t.session->posedObjects());
             requireSurface(t.reference, world, args->camera);
-            t.scene = uploadScene(ctx, world);
             targets.push_back(std::move(t));
         }
         AoFlags flags;
@@ -93,7 +96,7 @@ void addTuneCommand(CLI::App& app) {
                 for (const Parameter& p : kParameters) ao.estimator.*p.field() = s.*p.field();
                 const Target& t = targets[i];
                 const CullingOptions culling = cullingOptions(resolveDetail(*t.world, {}));
-                const AoError e = measureAo(ctx, *t.scene, *t.world, t.camera, ao, culling, t.reference, 1, 0, false).error;
+                const AoError e = measureAo(ctx, *t.session, t.camera, ao, culling, t.reference, 1, 0, false).error;
                 if (print)
                     std::printf("    %-8s rmse %.4f  psnr %6.2f dB  mae %.4f  bias %+.4f\n", t.name.c_str(), e.rmse,
                                 e.psnr, e.mae, e.bias);

@@ -96,12 +96,12 @@ gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* pr
 
 Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                    uint32_t width, uint32_t height, const SceneObjects* objects)
-    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), objects_(objects), timestamps_(ctx, 16) {
+    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), targets_(ctx), objects_(objects), timestamps_(ctx, 16) {
     if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
         validateAo(ao_, "AO settings");
         requireOccupancy(ao_);
-        requireRenderFits(ctx, width, height, ao_, "image size");  // before any allocation can fail halfway
+        requireRenderFits(ctx, shapeFor(width, height, ao_, lighting_), "image size");  // before any allocation can fail halfway
         frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         gtaoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         temporalConstants_ =
@@ -110,7 +110,7 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
         // The objects' normal tables: the composite reads them whether or not there are objects.
         objectUniforms_ = vk::createBuffer(ctx, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
         createPasses();
-        createTargets(width, height);
+        targets_.update(shapeFor(width, height, ao_, lighting_));
         cmd_ = vk::allocateCommandBuffer(ctx);
         fence_ = vk::createFence(ctx);
     } catch (...) {  // e.g. a shader that fails to load: free what was made before it
@@ -137,95 +137,38 @@ void Renderer::createPasses() {
         temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.chain.denoisePasses, objects_ != nullptr, motion());
 }
 
-void Renderer::createTargets(uint32_t width, uint32_t height) {
-    vk::Context& ctx = ctx_;
-    const VkExtent2D extent{width, height};
-    const VkImageUsageFlags read = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    gbuffer_.depth = vk::createImage(ctx, extent, VK_FORMAT_D32_SFLOAT, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | read);
-    gbuffer_.surface = vk::createImage(ctx, extent, kSurfaceFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
-    // Sampled too: a game may composite it (include/grotto/grotto.h).
-    color_ = vk::createImage(ctx, extent, kColorFormat,
-                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
-    shadow_ = vk::createImage(ctx, shadows() ? extent : VkExtent2D{1, 1}, VK_FORMAT_R32_SFLOAT,
-                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-    if (softShadows())
-        for (vk::Image& h : shadowHistory_)
-            h = vk::createImage(ctx, extent, VK_FORMAT_R32G32B32A32_SFLOAT, VK_IMAGE_USAGE_STORAGE_BIT);
-    // Where objects move, a motion target (written by the G-buffer pass).
-    if (motion()) gbuffer_.motion = vk::createImage(ctx, extent, kMotionFormat, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | read);
-
-    // The AO chain's targets exist only when AO is on; without it the composite is
-    // bound a 1x1 image (and the constants) it ignores.
-    const VkImageUsageFlags storage = VK_IMAGE_USAGE_STORAGE_BIT | read;
-    if (ao_.enabled) {
-        aoTargets_.half = ao_.chain.fullResolution ? extent : halfOf(extent);
-        aoTargets_.depthAtlas =
-            vk::createImage(ctx, depthMipLayout(aoTargets_.half).atlas, VK_FORMAT_R32_SFLOAT, storage);
-        aoTargets_.raw = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
-        // One denoise pass needs one target (with the temporal pass, only for the
-        // AO_spatial AOV), more ping-pong between two.
-        for (uint32_t i = 0; i < std::min(ao_.chain.denoisePasses, 2u); ++i)
-            aoTargets_.spatial[i] = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
-        if (temporal())
-            for (vk::Image& h : aoTargets_.history)
-                h = vk::createImage(ctx, aoTargets_.half, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
-    } else {
-        aoTargets_.raw = vk::createImage(ctx, {1, 1}, VK_FORMAT_R32G32B32A32_SFLOAT, storage);
-    }
-    // AO images live in GENERAL: written as storage, read as sampled images.
-    ctx.submitAndWait([&](VkCommandBuffer cmd) {
-        auto general = [&](const vk::Image& img) {
-            if (img.image)
-                vk::transition(cmd, img, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL,
-                               VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
-        };
-        general(shadow_);
-        for (const vk::Image& h : shadowHistory_) general(h);
-        general(aoTargets_.depthAtlas);
-        general(aoTargets_.raw);
-        for (const vk::Image& s : aoTargets_.spatial) general(s);
-        for (const vk::Image& h : aoTargets_.history) general(h);
-        general(aoTargets_.full);
-    });
-    if (displayOn_) createDisplayTarget();
-    historyIndex_ = 0;
-    shadowCamera_.reset();
+FrameShape Renderer::shapeFor(uint32_t width, uint32_t height, const AoOptions& ao,
+                             const voxel::Lighting& lighting) const {
+    const bool shadows = lighting.sunShadows && scene_.occupancy;
+    return {.width = width, .height = height, .ao = ao, .shadows = shadows,
+            .softShadows = shadows && lighting.sunAngle > 0.0f, .movingObjects = objects_ && objects_->moving,
+            .display = displayOn_, .aoAov = aoAov_};
 }
 
-void Renderer::createDisplayTarget() {
-    // Sampled too: a game may composite it (include/grotto/grotto.h); a transfer
-    // source for the window's blit.
-    display_ = vk::createImage(ctx_, color_.extent, VK_FORMAT_R16G16B16A16_SFLOAT,
-                               VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_SAMPLED_BIT);
-    ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-        vk::transition(cmd, display_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                       0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
-    });
+// Every frame waits for its fence before render() returns, so no GPU work of ours
+// uses the targets here; histories in new images start afresh.
+void Renderer::updateTargets(const FrameShape& shape) {
+    if (!targets_.update(shape)) return;
+    historyIndex_ = 0;
+    shadowCamera_.reset();
 }
 
 void Renderer::setDisplayImage(bool on) {
     if (on == displayOn_) return;
     displayOn_ = on;
     if (on) {
+        try {
+            requireRenderFits(ctx_, wantedShape(), "display image");
+        } catch (...) {
+            displayOn_ = false;
+            throw;
+        }
         createPasses();
-        createDisplayTarget();
     } else {
-        vkDeviceWaitIdle(ctx_.device);
-        vk::destroy(ctx_, display_);
+        vkDeviceWaitIdle(ctx_.device);  // a game may still read it
         displayPass_.reset();
     }
-}
-
-// Every frame waits for its fence before render() returns, so no GPU work uses
-// the targets here.
-void Renderer::releaseTargets() {
-    for (vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &display_, &shadow_, &shadowHistory_[0], &shadowHistory_[1], &aoTargets_.raw,
-                         &aoTargets_.spatial[0], &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
-                         &aoTargets_.full})
-        vk::destroy(ctx_, *i);
-    vk::destroy(ctx_, aoTargets_.depthAtlas);
-    aoTargets_.half = {};
+    targets_.update(wantedShape());
 }
 
 Renderer::~Renderer() { release(); }
@@ -243,7 +186,7 @@ void Renderer::release() {
     compositePass_.reset();
     displayPass_.reset();
     shadowPass_.reset();
-    releaseTargets();
+    targets_.release();
     vk::destroy(ctx_, objectUniforms_);
     vk::destroy(ctx_, frame_);
     vk::destroy(ctx_, gtaoConstants_);
@@ -252,9 +195,9 @@ void Renderer::release() {
 }
 
 void Renderer::resize(uint32_t width, uint32_t height) {
-    requireRenderFits(ctx_, width, height, ao_, "image size");
-    releaseTargets();
-    createTargets(width, height);
+    const FrameShape shape = shapeFor(width, height, ao_, lighting_);
+    requireRenderFits(ctx_, shape, "image size");
+    updateTargets(shape);
     resetHistory();
 }
 
@@ -265,12 +208,16 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
         if (old.sunDirection != lighting_.sunDirection || old.sunAngle != lighting_.sunAngle) shadowCamera_.reset();
         return;
     }
+    try {  // a soft sun's history may not fit
+        requireRenderFits(ctx_, wantedShape(), "lighting");
+    } catch (...) {
+        lighting_ = old;
+        throw;
+    }
     compositePass_.reset();
     shadowPass_.reset();
     createPasses();
-    const uint32_t width = color_.extent.width, height = color_.extent.height;
-    releaseTargets();
-    createTargets(width, height);
+    updateTargets(wantedShape());
     resetHistory();
 }
 
@@ -283,8 +230,8 @@ void Renderer::requireOccupancy(const AoOptions& ao) const {
 void Renderer::setAo(const AoOptions& ao) {
     validateAo(ao, "AO settings");
     requireOccupancy(ao);
-    const uint32_t width = color_.extent.width, height = color_.extent.height;
-    requireRenderFits(ctx_, width, height, ao, "AO settings");
+    const FrameShape shape = shapeFor(width(), height(), ao, lighting_);
+    requireRenderFits(ctx_, shape, "AO settings");
     const AoOptions old = std::exchange(ao_, ao);
     const bool wasTemporal = old.enabled && old.chain.temporalHistory > 0;
     // What each pass and target is made from (its shader's specialisation, its size).
@@ -304,48 +251,34 @@ void Renderer::setAo(const AoOptions& ao) {
         upsamplePass_.reset();
     }
     createPasses();
-    if (chain || old.chain.fullResolution != ao_.chain.fullResolution || wasTemporal != temporal() ||
-        std::min(old.chain.denoisePasses, 2u) != std::min(ao_.chain.denoisePasses, 2u)) {
-        releaseTargets();
-        createTargets(width, height);
-    }
+    updateTargets(shape);
     resetHistory();
 }
 
-size_t Renderer::targetBytes() const {
-    size_t n = 0;
-    for (const vk::Image* i : {&gbuffer_.depth, &gbuffer_.surface, &gbuffer_.motion, &color_, &display_, &shadow_, &shadowHistory_[0], &shadowHistory_[1], &aoTargets_.raw, &aoTargets_.spatial[0],
-                               &aoTargets_.spatial[1], &aoTargets_.history[0], &aoTargets_.history[1],
-                               &aoTargets_.full})
-        n += i->memory.size;
-    n += aoTargets_.depthAtlas.memory.size;
-    return n;
-}
-
 const vk::Image& Renderer::aoHalfOutput() const {
-    return temporal() ? aoTargets_.history[historyIndex_] : aoTargets_.denoised(ao_.chain.denoisePasses);
+    return temporal() ? targets_.image(TargetId::AoHistory, historyIndex_) : targets_.ao().denoised(ao_.chain.denoisePasses);
 }
 
 void Renderer::recordAo(VkCommandBuffer cmd) {
     timestamps_.begin(cmd, "prefilter");
-    prefilterPass_->record(cmd, gbuffer_.depth, aoTargets_, gtaoConstants_);
+    prefilterPass_->record(cmd, targets_.image(TargetId::Depth), targets_.ao(), gtaoConstants_);
     timestamps_.end(cmd);
     timestamps_.begin(cmd, aoMethodName(ao_.method));  // the estimator: gtao, or a baseline
-    gtaoPass_->record(cmd, gbuffer_.surface, aoTargets_, gtaoConstants_, traceConstants_, scene_.occupancy.get());
+    gtaoPass_->record(cmd, targets_.image(TargetId::Surface), targets_.ao(), gtaoConstants_, traceConstants_, scene_.occupancy.get());
     timestamps_.end(cmd);
     computeToCompute(cmd);
     // With the temporal pass, the final blur is part of it.
     const uint32_t passes = ao_.chain.denoisePasses;
     timestamps_.begin(cmd, "denoise");
-    denoisePass_->record(cmd, aoTargets_, passes, temporal() && passes > 0 ? passes - 1 : passes, gtaoConstants_);
+    denoisePass_->record(cmd, targets_.ao(), passes, temporal() && passes > 0 ? passes - 1 : passes, gtaoConstants_);
     timestamps_.end(cmd);
     if (temporal()) {
         // Reads the last output, writes the other image, which becomes the last.
-        const vk::Image& previous = aoTargets_.history[historyIndex_];
+        const vk::Image& previous = targets_.image(TargetId::AoHistory, historyIndex_);
         historyIndex_ = 1 - historyIndex_;
         timestamps_.begin(cmd, "temporal");
-        temporalPass_->record(cmd, aoTargets_, previous, aoTargets_.history[historyIndex_], gtaoConstants_,
-                              temporalConstants_, &objectUniforms_, motion() ? &gbuffer_.motion : &gbuffer_.depth);
+        temporalPass_->record(cmd, targets_.ao(), previous, targets_.image(TargetId::AoHistory, historyIndex_), gtaoConstants_,
+                              temporalConstants_, &objectUniforms_, motion() ? &targets_.image(TargetId::Motion) : &targets_.image(TargetId::Depth));
         timestamps_.end(cmd);
         computeToCompute(cmd);
     }
@@ -403,11 +336,11 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy
     const auto depthWrite = VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT;
 
     // G-buffer: previous contents are not needed (cleared), so start from UNDEFINED.
-    vk::transition(cmd, gbuffer_.depth, VK_IMAGE_LAYOUT_UNDEFINED, depthAttachment, top, 0, fragmentTests, depthWrite);
-    vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
+    vk::transition(cmd, targets_.image(TargetId::Depth), VK_IMAGE_LAYOUT_UNDEFINED, depthAttachment, top, 0, fragmentTests, depthWrite);
+    vk::transition(cmd, targets_.image(TargetId::Surface), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
                    colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     if (motion())
-        vk::transition(cmd, gbuffer_.motion, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
+        vk::transition(cmd, targets_.image(TargetId::Motion), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, top, 0,
                        colorOut, VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT);
     timestamps_.begin(cmd, "gbuffer");
     FrameStats stats;
@@ -416,51 +349,51 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy
     // so the frame is submitted in two parts. The objects are drawn last.
     const std::vector<QuadDraw>& early = culling_.begin(scene_, camera, cullingOptions_);
     const GBufferObjects* drawn = objects_ ? &drawObjects : nullptr;
-    stats.quadsDrawn = gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera, early, true, drawn,
+    stats.quadsDrawn = gbufferPass_->record(cmd, targets_.gbuffer(), scene_, frame_, camera, early, true, drawn,
                                             !cullingOptions_.occlusion);
     if (cullingOptions_.occlusion) {
-        vk::transition(cmd, gbuffer_.depth, depthAttachment, readOnly, fragmentTests,
+        vk::transition(cmd, targets_.image(TargetId::Depth), depthAttachment, readOnly, fragmentTests,
                        VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
-        hizPass_->record(cmd, gbuffer_.depth);
+        hizPass_->record(cmd, targets_.image(TargetId::Depth));
         submitAndWait(cmd);
         const std::vector<QuadDraw>& late = culling_.late(hizPass_->tiles());
         VK_CHECK(vkResetCommandBuffer(cmd, 0));
         VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
-        vk::transition(cmd, gbuffer_.depth, readOnly, depthAttachment, compute, VK_ACCESS_SHADER_READ_BIT,
+        vk::transition(cmd, targets_.image(TargetId::Depth), readOnly, depthAttachment, compute, VK_ACCESS_SHADER_READ_BIT,
                        fragmentTests, depthWrite);
-        stats.quadsDrawn += gbufferPass_->record(cmd, gbuffer_, scene_, frame_, camera, late, false, drawn);
+        stats.quadsDrawn += gbufferPass_->record(cmd, targets_.gbuffer(), scene_, frame_, camera, late, false, drawn);
     }
     stats.culling = culling_.stats();
     timestamps_.end(cmd);
 
     // Everything after reads the G-buffer from compute shaders.
-    vk::transition(cmd, gbuffer_.depth, depthAttachment, readOnly, fragmentTests,
+    vk::transition(cmd, targets_.image(TargetId::Depth), depthAttachment, readOnly, fragmentTests,
                    VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
-    vk::transition(cmd, gbuffer_.surface, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
+    vk::transition(cmd, targets_.image(TargetId::Surface), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
                    VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     if (motion())
-        vk::transition(cmd, gbuffer_.motion, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
+        vk::transition(cmd, targets_.image(TargetId::Motion), VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL, readOnly, colorOut,
                        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, compute, VK_ACCESS_SHADER_READ_BIT);
     if (shadows()) {
         timestamps_.begin(cmd, "shadow");
-        const vk::Image& history = shadowHistory_[shadowHistoryIndex_];
+        const vk::Image& history = targets_.image(TargetId::ShadowHistory, shadowHistoryIndex_);
         if (softShadows()) shadowHistoryIndex_ = 1 - shadowHistoryIndex_;  // reads the last, writes the other
-        shadowPass_->record(cmd, gbuffer_, objectUniforms_, shadow_, traceConstants_, *scene_.occupancy, &history,
-                            &shadowHistory_[shadowHistoryIndex_]);
+        shadowPass_->record(cmd, targets_.gbuffer(), objectUniforms_, targets_.image(TargetId::Shadow), traceConstants_, *scene_.occupancy, &history,
+                            &targets_.image(TargetId::ShadowHistory, shadowHistoryIndex_));
         timestamps_.end(cmd);
     }
     if (ao_.enabled) recordAo(cmd);
     computeToCompute(cmd);  // the shadow and the AO, before the composite reads them
-    vk::transition(cmd, color_, VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, top, 0, compute,
+    vk::transition(cmd, targets_.image(TargetId::Color), VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_GENERAL, top, 0, compute,
                    VK_ACCESS_SHADER_WRITE_BIT);
     timestamps_.begin(cmd, "composite");
-    compositePass_->record(cmd, gbuffer_, ao_.enabled ? aoHalfOutput() : aoTargets_.raw, color_, frame_,
-                           scene_.palette, gtaoConstants_, objectUniforms_, shadow_);
+    compositePass_->record(cmd, targets_.gbuffer(), ao_.enabled ? aoHalfOutput() : targets_.image(TargetId::AoRaw), targets_.image(TargetId::Color), frame_,
+                           scene_.palette, gtaoConstants_, objectUniforms_, targets_.image(TargetId::Shadow));
     timestamps_.end(cmd);
     if (displayOn_) {
         computeToCompute(cmd);
         timestamps_.begin(cmd, "display");
-        displayPass_->record(cmd, color_, display_, toneMapCurve(lighting_.toneMap));
+        displayPass_->record(cmd, targets_.image(TargetId::Color), targets_.image(TargetId::Display), toneMapCurve(lighting_.toneMap));
         timestamps_.end(cmd);
     }
     if (copy) recordCopy(cmd, *copy, camera);
@@ -512,7 +445,7 @@ void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
 }
 
 void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {
-    copy.begin({.width = color_.extent.width, .height = color_.extent.height, .half = aoTargets_.half,
+    copy.begin({.width = width(), .height = height(), .half = targets_.ao().half,
                 .scale = ao_.chain.fullResolution ? 1u : 2u, .ao = ao_.enabled, .toneMap = toneMapCurve(lighting_.toneMap),
                 .camera = camera, .poses = poses_, .albedo = scene_.albedo});
     const auto ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL, general = VK_IMAGE_LAYOUT_GENERAL;
@@ -520,33 +453,30 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
         const VkDeviceSize bytes = VkDeviceSize(image.extent.width) * image.extent.height * bytesPerPixel;
         vk::recordImageCopy(cmd, image, layout, bytesPerPixel, copy.reserve(part, bytes), 0);
     };
-    copyPart(FrameCopy::Color, color_, general, 16);
+    copyPart(FrameCopy::Color, targets_.image(TargetId::Color), general, 16);
     if (copy.aovs()) {
-        if (shadows()) copyPart(FrameCopy::Shadow, shadow_, general, 4);
-        copyPart(FrameCopy::Depth, gbuffer_.depth, ro, 4);
-        copyPart(FrameCopy::Surface, gbuffer_.surface, ro, 2);
-        if (motion()) copyPart(FrameCopy::Motion, gbuffer_.motion, ro, 16);
+        if (shadows()) copyPart(FrameCopy::Shadow, targets_.image(TargetId::Shadow), general, 4);
+        copyPart(FrameCopy::Depth, targets_.image(TargetId::Depth), ro, 4);
+        copyPart(FrameCopy::Surface, targets_.image(TargetId::Surface), ro, 2);
+        if (motion()) copyPart(FrameCopy::Motion, targets_.image(TargetId::Motion), ro, 16);
     }
     if (copy.aovs() && ao_.enabled) {
         // What the frame computed on the way without storing: the full-res AO (the
         // composite upsamples for itself) and, when the temporal pass blurs for
         // itself, the spatial AO. The same shaders on the same inputs give the same values.
-        const bool firstAovs = !aoTargets_.full.image;  // made on first use: frames do not store it
-        if (firstAovs) {
-            aoTargets_.full = vk::createImage(ctx_, color_.extent, VK_FORMAT_R32_SFLOAT,
-                                              VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT);
-            vk::transition(cmd, aoTargets_.full, VK_IMAGE_LAYOUT_UNDEFINED, general, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT,
-                           0, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT);
+        if (!aoAov_) {  // made on first use: frames do not store it
+            aoAov_ = true;
+            targets_.update(wantedShape(), cmd);
         }
         computeToCompute(cmd);  // after the frame's own writes
         if (temporal() && ao_.chain.denoisePasses > 0)
-            denoisePass_->recordFinal(cmd, aoTargets_, ao_.chain.denoisePasses, gtaoConstants_);
-        upsamplePass_->record(cmd, gbuffer_.depth, gbuffer_.surface, aoHalfOutput(), aoTargets_.full,
+            denoisePass_->recordFinal(cmd, targets_.ao(), ao_.chain.denoisePasses, gtaoConstants_);
+        upsamplePass_->record(cmd, targets_.image(TargetId::Depth), targets_.image(TargetId::Surface), aoHalfOutput(), targets_.image(TargetId::AoFull),
                               gtaoConstants_);
         computeToCompute(cmd);
-        copyPart(FrameCopy::AoFull, aoTargets_.full, general, 4);
-        copyPart(FrameCopy::Raw, aoTargets_.raw, general, 16);
-        copyPart(FrameCopy::Spatial, aoTargets_.denoised(ao_.chain.denoisePasses), general, 16);
+        copyPart(FrameCopy::AoFull, targets_.image(TargetId::AoFull), general, 4);
+        copyPart(FrameCopy::Raw, targets_.image(TargetId::AoRaw), general, 16);
+        copyPart(FrameCopy::Spatial, targets_.ao().denoised(ao_.chain.denoisePasses), general, 16);
         if (temporal()) copyPart(FrameCopy::History, aoHalfOutput(), general, 16);
     }
     vk::recordHostRead(cmd);

@@ -3,6 +3,7 @@
 #include "engine/ao_settings.h"
 #include "engine/camera.h"
 #include "engine/frame/frame_copy.h"
+#include "engine/frame/frame_targets.h"
 #include "engine/frame/frame_images.h"
 #include "engine/frame/history_boxes.h"
 #include "engine/passes/ao_targets.h"
@@ -87,22 +88,27 @@ public:
     // The last frame's images, for an embedding game (include/grotto/grotto.h says
     // how to synchronise with them): scene-linear colour at full size, and the AO the
     // composite read (visibility in red) at AO resolution. Both in GENERAL.
-    const vk::Image& colorImage() const { return color_; }
+    const vk::Image& colorImage() const { return targets_.image(TargetId::Color); }
     // With it on, every frame also tone-maps its colour into displayImage()
     // (RGBA16F, display-linear, GENERAL): what a window or a game shows. Off by
     // default: image files tone-map on the CPU and need no such pass.
     void setDisplayImage(bool on);
-    const vk::Image& displayImage() const { return display_; }
-    const vk::Image& aoImage() const { return ao_.enabled ? aoHalfOutput() : aoTargets_.raw; }
+    const vk::Image& displayImage() const { return targets_.image(TargetId::Display); }
+    const vk::Image& aoImage() const { return ao_.enabled ? aoHalfOutput() : targets_.image(TargetId::AoRaw); }
 
-    size_t targetBytes() const;
+    size_t targetBytes() const { return targets_.bytes(); }
+    // What its targets are made for now (frame_targets.h).
+    const FrameShape& shape() const { return targets_.shape(); }
     const AoOptions& ao() const { return ao_; }
 
 private:
     void createPasses();  // those ao_ needs and that do not exist yet
-    void createTargets(uint32_t width, uint32_t height);
-    void createDisplayTarget();  // display_, in GENERAL, at the colour's size
-    void releaseTargets();
+    // The targets' shape at a size with these settings (and the display and AO AOV as now).
+    FrameShape shapeFor(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting) const;
+    FrameShape wantedShape() const { return shapeFor(width(), height(), ao_, lighting_); }  // at the current size
+    uint32_t width() const { return targets_.shape().width; }
+    uint32_t height() const { return targets_.shape().height; }
+    void updateTargets(const FrameShape& shape);  // restarts the histories when targets change
     void release();  // frees whatever exists; null handles are skipped
     void recordAo(VkCommandBuffer cmd);
     // The last frame's images into `copy`, after everything recorded before.
@@ -121,15 +127,11 @@ private:
     GpuScene& scene_;
     voxel::Lighting lighting_;
     AoOptions ao_;
-    GBufferTargets gbuffer_;
-    AoTargets aoTargets_;
-    vk::Image color_;
-    vk::Image display_;  // with setDisplayImage(true) only
+    FrameTargets targets_;
     bool displayOn_ = false;
-    vk::Image shadow_;  // full res with shadows, else a 1x1 placeholder
-    // A soft sun's history, ping-ponged as the AO's, with the camera and frame index
-    // of its last frame (none: the next frame starts afresh).
-    vk::Image shadowHistory_[2];
+    bool aoAov_ = false;  // a read-back asked for the AO AOVs: their full-res target is kept from then on
+    // A soft sun's history: which image holds the last, and the camera and frame
+    // index of its last frame (none: the next frame starts afresh).
     uint32_t shadowHistoryIndex_ = 0;
     std::optional<Camera> shadowCamera_;
     uint32_t shadowFrame_ = 0;

@@ -6,6 +6,7 @@
 #include "tests/cli_fixture.h"
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -16,6 +17,8 @@
 
 namespace grotto {
 namespace {
+
+namespace fs = std::filesystem;
 
 // The "rmse" figure of compare's last line.
 double compareRmse(const std::string& out) {
@@ -49,6 +52,43 @@ TEST(Compare, MeasuresWhatTradeoffMeasuresForTheSameSetting) {
     ASSERT_EQ(c.exitCode, 0) << c.err;
     EXPECT_NE(c.out.find("from the cache"), std::string::npos) << "tradeoff traced this reference already\n" << c.out;
     EXPECT_NEAR(compareRmse(c.out), tradeoffRmse, 1e-5) << c.out;
+}
+
+// The quads compare's G-buffer drew ("G-buffer: ..., N quads, ...").
+long drawnQuads(const std::string& out) {
+    const size_t at = out.find(" quads, ");
+    const size_t start = out.rfind(", ", at);
+    return at == std::string::npos || start == std::string::npos ? -1 : std::stol(out.substr(start + 2, at - start - 2));
+}
+
+TEST(Compare, DrawsAndTracesTheWorldsObjects) {
+    // yard's three objects at time 0: compare and tradeoff draw them, and their
+    // reference is the one `grotto reference --time 0` traces with the objects
+    // (a cache hit: the key holds the objects' poses).
+    const test::ScratchDir dir;
+    const std::string env = "GROTTO_CACHE_DIR=" + dir.path.string(), view = " --size 96x54 --spp 16";
+    const std::string yard = (test::worldsDir() / "yard.json").string();
+    const test::RunResult c = test::runGrotto("compare " + yard + view + " --frames 1 --warmup 0", env);
+    ASSERT_EQ(c.exitCode, 0) << c.err;
+    const test::RunResult r = test::runGrotto("reference " + yard + view + " --time 0 -o " + (dir / "r.exr").string(), env);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("cache hit"), std::string::npos) << "compare traced another reference\n" << r.out;
+    // Without its objects the same view draws fewer quads.
+    std::ifstream in(yard);
+    nlohmann::json bare = nlohmann::json::parse(in);
+    bare.erase("objects");
+    bare["grid"]["file"] = (test::worldsDir() / "rooms.vdb").string();
+    const fs::path bareFile = dir / "bare.json";
+    std::ofstream(bareFile) << bare.dump();
+    const test::RunResult b = test::runGrotto("compare " + bareFile.string() + view + " --frames 1 --warmup 0", env);
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    std::printf("[ measured ] yard: %ld quads drawn with its objects, %ld without\n", drawnQuads(c.out), drawnQuads(b.out));
+    EXPECT_GT(drawnQuads(c.out), drawnQuads(b.out)) << c.out << b.out;
+    // tradeoff measures against the same reference.
+    const test::RunResult t = test::runGrotto(
+        "tradeoff " + yard + view + " --frames 1 --warmup 0 --csv " + (dir / "t.csv").string(), env);
+    ASSERT_EQ(t.exitCode, 0) << t.err;
+    EXPECT_NE(t.out.find("reference from the cache"), std::string::npos) << t.out;
 }
 
 TEST(Compare, TracesTheReferenceWithTheMethodsRadius) {

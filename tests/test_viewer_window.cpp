@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
@@ -252,6 +253,74 @@ TEST_F(CliErrors, ViewerPlaysAWorldPathAsFlythroughRendersIt) {
                                           kUnderXvfb);
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_NE(bad.err.find("set.play"), std::string::npos) << bad.err;
+}
+
+// The largest difference of two 8-bit images of the same size, in 1/255 steps.
+int maxDifference(const std::vector<uint8_t>& a, const std::vector<uint8_t>& b) {
+    int most = 0;
+    for (size_t i = 0; i < a.size(); ++i) most = std::max(most, std::abs(int(a[i]) - int(b[i])));
+    return most;
+}
+
+TEST_F(CliErrors, ViewerPlaysAPathsEditsAsFlythroughDoes) {
+    REQUIRE_XVFB();
+    // caves' carve path digs a sphere at 0.15 s: frame 29 (29/60 s) shows the dug
+    // cave, as flythrough's frame 30 at --fps 60 does, to within one 8-bit step.
+    const fs::path script = writeText("carve.json", R"({"actions": [
+        {"frame": 0, "set": {"play": "carve"}}, {"frame": 29, "screenshot": "carved.png"}]})");
+    const std::string world = (test::worldsDir() / "caves.json").string();
+    const test::RunResult v =
+        runGrotto("view " + world + " --size 160x90 --script " + script.string() + " --frames 30", kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    const fs::path out = dir_ / "frames";
+    const test::RunResult f =
+        runGrotto("flythrough " + world + " --path carve --fps 60 --frames 30-30 --size 160x90 -o " + out.string());
+    ASSERT_EQ(f.exitCode, 0) << f.err;
+    const std::vector<uint8_t> shown = test::readPixels8(dir_ / "carved.png"), played = test::readPixels8(out / "frame.0030.png");
+    ASSERT_EQ(shown.size(), played.size());
+    const int most = maxDifference(shown, played);
+    std::printf("[ measured ] caves/carve at 29/60 s: max |viewer - flythrough| %d/255, mean %.4f\n", most,
+                meanDifference(shown, played));
+    EXPECT_LE(most, 1);
+}
+
+TEST_F(CliErrors, ViewerRecordsTheEditsMadeWhileRecording) {
+    REQUIRE_XVFB();
+    // A still camera: a key at frame 2, a dig at the window's centre at frame 10,
+    // a key at frame 20. The path saved carries the dig at 8/60 s; flythrough of it
+    // shows the dug view the viewer showed, and without its edits it does not.
+    const fs::path script = writeText("record-dig.json", R"({"actions": [
+        {"frame": 1, "set": {"edit.mode": "dig", "edit.radius": 6}},
+        {"frame": 2, "record": true}, {"frame": 10, "click": [80, 45]},
+        {"frame": 20, "record": true}, {"frame": 20, "screenshot": "dug.png"},
+        {"frame": 22, "save_path": "dig.json"}]})");
+    const std::string world = (test::worldsDir() / "rooms.json").string();
+    const test::RunResult v = runGrotto("view " + world + " --camera table --size 160x90 --script " +
+                                            script.string() + " --frames 24", kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    std::ifstream in(dir_ / "dig.json");
+    nlohmann::json path = nlohmann::json::parse(in, nullptr, false);
+    ASSERT_TRUE(path.is_object());
+    ASSERT_EQ(path["edits"].size(), 1u) << path.dump();
+    EXPECT_EQ(path["edits"][0]["op"], "carve");
+    EXPECT_NEAR(path["edits"][0]["time"].get<double>(), 8.0 / 60.0, 1e-9);
+    // Frame 19 of flythrough at --fps 60 is path time 18/60 s: the second key.
+    auto play = [&](const fs::path& pathFile, const std::string& name) {
+        const fs::path out = dir_ / name;
+        const test::RunResult f = runGrotto("flythrough " + world + " --path " + pathFile.string() +
+                                            " --fps 60 --frames 19-19 --size 160x90 -o " + out.string());
+        EXPECT_EQ(f.exitCode, 0) << f.err;
+        return test::readPixels8(out / "frame.0019.png");
+    };
+    const std::vector<uint8_t> shown = test::readPixels8(dir_ / "dug.png"), replayed = play(dir_ / "dig.json", "replayed");
+    path.erase("edits");
+    const std::vector<uint8_t> undug = play(writeText("undug.json", path.dump()), "undug");
+    ASSERT_EQ(shown.size(), replayed.size());
+    ASSERT_EQ(shown.size(), undug.size());
+    const double same = meanDifference(shown, replayed), other = meanDifference(shown, undug);
+    std::printf("[ measured ] recorded dig: mean |viewer - flythrough| %.3f /255, without the edit %.3f\n", same, other);
+    EXPECT_LT(same, 0.2);
+    EXPECT_GT(other, 10.0 * same + 0.5) << "the dig must show";
 }
 
 }  // namespace

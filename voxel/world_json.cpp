@@ -172,4 +172,6 @@ json worldFileJson(const WorldDesc& d, const fs::path& dir) {
     return j;
 }
 
+json cameraPathJson(const CameraPathDesc& path) { return pathJson(path); }
+
 }  // namespace grotto::voxel

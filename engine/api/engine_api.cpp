@@ -1,14 +1,11 @@
-// The game-facing engine (include/grotto/grotto.h) over the live scene and the renderer.
+// The game-facing engine (include/grotto/grotto.h) over a render session.
 #include "grotto/grotto.h"
 
 #include "common/error.h"
 #include "engine/ao_settings.h"
 #include "engine/camera.h"
 #include "engine/image_output.h"
-#include "engine/scene/live_scene.h"
-#include "engine/renderer.h"
-#include "engine/scene/scene_objects.h"
-#include "voxel/object_worlds.h"
+#include "engine/session.h"
 
 #include <cmath>
 #include <optional>
@@ -17,21 +14,18 @@ namespace grotto {
 
 struct Engine::Impl {
     std::unique_ptr<vk::Context> ctx;
-    std::optional<LiveScene> scene;
-    std::vector<voxel::World> objectWorlds;
-    std::unique_ptr<SceneObjects> objects;
+    std::optional<RenderSession> session;  // its renderer is made on the first frame, kept across settings changes
     std::vector<voxel::ObjectPose> poses;
-    std::unique_ptr<Renderer> renderer;  // made on the first frame, kept across settings changes
     voxel::CameraDesc camera;
-    voxel::Lighting lighting;
-    voxel::Detail detail;  // levels of detail and occlusion culling, from the world file
     voxel::AoDesc aoDesc;  // as set, for saveWorld
-    AoOptions ao;
     uint32_t width = 0, height = 0, frame = 0;
     std::optional<Camera> last;  // the camera of the last frame rendered
 
     void requireWorld(const char* call) const {
-        if (!scene) throw Error(call, "no world is loaded", "call loadWorld() or setWorld() first");
+        if (!session) throw Error(call, "no world is loaded", "call loadWorld() or setWorld() first");
+    }
+    void requireFrame(const char* call) const {
+        if (!session || !last) throw Error(call, "no frame has been rendered", "call render() first");
     }
 };
 
@@ -61,10 +55,7 @@ Engine::Engine(const VulkanDevice& device, const EngineOptions& options) : impl_
 }
 
 Engine::~Engine() {
-    // The renderer and the scene's buffers go before the device they were made on.
-    impl_->renderer.reset();
-    impl_->objects.reset();
-    impl_->scene.reset();
+    impl_->session.reset();  // the renderer and the scene's buffers go before the device they were made on
 }
 
 void Engine::loadWorld(const std::filesystem::path& file) { setWorld(voxel::World::load(file)); }
@@ -72,60 +63,49 @@ void Engine::loadWorld(const std::filesystem::path& file) { setWorld(voxel::Worl
 void Engine::setWorld(voxel::World world) {
     Impl& m = *impl_;
     // Settings first: a world whose AO block is bad is refused before anything changes.
-    AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), world.desc().source.string());
-    std::vector<voxel::World> objectWorlds = voxel::loadObjectWorlds(world.desc());
-    m.renderer.reset();  // it draws the old scene
-    m.objects.reset();
-    m.scene.reset();
-    m.objectWorlds = std::move(objectWorlds);
-    if (!m.objectWorlds.empty()) {
-        m.objects = uploadObjects(*m.ctx, m.objectWorlds, world.desc());
-        m.objects->moving = true;  // a game may move any object (setObjectPose): motion vectors for all
-        m.poses = m.objects->poses(0.0);
-    }
+    const AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), world.desc().source.string());
+    m.session.reset();  // it draws the old scene
     m.camera = world.camera("", double(m.width) / double(m.height));
-    m.lighting = world.desc().lighting;
-    m.detail = world.desc().detail;
     m.aoDesc = world.desc().ao;
-    m.ao = std::move(ao);
-    m.scene.emplace(*m.ctx, std::move(world));
+    const voxel::Detail detail = world.desc().detail;
+    // A game may move any object (setObjectPose): motion vectors for all.
+    m.session.emplace(*m.ctx, std::move(world), ao, detail, m.width, m.height, true);
+    m.poses = m.session->poses();
     m.last.reset();
 }
 
 const voxel::World& Engine::world() const {
     impl_->requireWorld("world");
-    return impl_->scene->world();
+    return impl_->session->world();
 }
 
 void Engine::saveWorld(const std::filesystem::path& file) const {
     const Impl& m = *impl_;
     m.requireWorld("saveWorld");
-    voxel::WorldDesc settings = m.scene->world().desc();
-    settings.lighting = m.lighting;
+    voxel::WorldDesc settings = m.session->world().desc();
+    settings.lighting = m.session->lighting();
     settings.ao = m.aoDesc;
-    m.scene->world().save(file, settings);
+    m.session->world().save(file, settings);
 }
 
 voxel::EditResult Engine::edit(const voxel::Edit& edit) {
     Impl& m = *impl_;
     m.requireWorld("edit");
-    const voxel::EditResult r = m.scene->apply(edit);
-    if (m.renderer && !r.voxels.empty()) m.renderer->invalidateHistory(r.box);
-    return r;
+    return m.session->apply(edit);
 }
 
 voxel::EditResult Engine::undo() {
     Impl& m = *impl_;
     m.requireWorld("undo");
-    const voxel::EditResult r = m.scene->undo();
-    if (m.renderer && !r.voxels.empty()) m.renderer->invalidateHistory(r.box);
-    return r;
+    return m.session->undo();
 }
 
 void Engine::setTime(double seconds) {
     Impl& m = *impl_;
     if (!std::isfinite(seconds)) throw Error("setTime", "the time is not finite");
-    if (m.objects) m.poses = m.objects->poses(seconds);
+    if (!m.session) return;
+    m.session->setTime(seconds);
+    m.poses = m.session->poses();
 }
 
 void Engine::setObjectPose(size_t object, glm::dvec3 position, glm::dquat rotation) {
@@ -145,60 +125,56 @@ size_t Engine::objectCount() const { return impl_->poses.size(); }
 void Engine::setCamera(const voxel::CameraDesc& camera) { impl_->camera = camera; }
 
 void Engine::setLighting(const voxel::Lighting& lighting) {
-    impl_->lighting = lighting;
-    if (impl_->renderer) impl_->renderer->setLighting(lighting);
+    impl_->requireWorld("setLighting");
+    impl_->session->setLighting(lighting);
 }
 
 void Engine::setAo(const voxel::AoDesc& desc) {
     Impl& m = *impl_;
     m.requireWorld("setAo");  // the default radius is in voxels of the world
-    m.ao = aoOptionsFor(desc, m.scene->world().voxelSize(), "AO settings");
+    m.session->setAo(aoOptionsFor(desc, m.session->world().voxelSize(), "AO settings"));
     m.aoDesc = desc;
-    if (m.renderer) m.renderer->setAo(m.ao);
 }
 
 void Engine::resize(uint32_t width, uint32_t height) {
     requireSize(width, height);
     impl_->width = width;
     impl_->height = height;
-    if (impl_->renderer) impl_->renderer->resize(width, height);
+    if (impl_->session) impl_->session->resize(width, height);
 }
 
 void Engine::cut() {
-    if (impl_->renderer) impl_->renderer->resetHistory();
+    if (impl_->session) impl_->session->renderer().resetHistory();
 }
 
 RenderedFrame Engine::render() {
     Impl& m = *impl_;
     m.requireWorld("render");
-    if (!m.renderer)
-        m.renderer =
-            std::make_unique<Renderer>(*m.ctx, m.scene->gpu(), m.lighting, m.ao, m.width, m.height, m.objects.get());
-    m.renderer->setDisplayImage(true);  // what the game shows
-    m.renderer->setCulling(cullingOptions(m.detail));
-    if (m.objects) m.renderer->setObjectPoses(m.poses);
+    Renderer& renderer = m.session->renderer();
+    renderer.setDisplayImage(true);  // what the game shows
+    m.session->setPoses(m.poses);
     const Camera camera = makeCamera(m.camera, m.width, m.height);
-    const FrameStats stats = m.renderer->render(camera, ++m.frame);  // consecutive indices: history accumulates
+    const FrameStats stats = renderer.render(camera, ++m.frame);  // consecutive indices: history accumulates
     m.last = camera;
     auto image = [](const vk::Image& i) {
         return RenderedImage{.image = i.image, .format = i.format, .extent = i.extent, .layout = VK_IMAGE_LAYOUT_GENERAL};
     };
-    return {.color = image(m.renderer->colorImage()), .display = image(m.renderer->displayImage()),
-            .ao = image(m.renderer->aoImage()), .quadsDrawn = stats.quadsDrawn, .wallMs = stats.wallMs};
+    return {.color = image(renderer.colorImage()), .display = image(renderer.displayImage()),
+            .ao = image(renderer.aoImage()), .quadsDrawn = stats.quadsDrawn, .wallMs = stats.wallMs};
 }
 
 Pixels Engine::readPixels() {
     Impl& m = *impl_;
-    if (!m.renderer || !m.last) throw Error("readPixels", "no frame has been rendered", "call render() first");
-    FrameImages f = m.renderer->readback(*m.last, true);
+    m.requireFrame("readPixels");
+    FrameImages f = m.session->renderer().readback(*m.last, true);
     return {.width = f.width, .height = f.height, .rgba = std::move(f.color), .ao = std::move(f.ao)};
 }
 
 void Engine::saveFrame(const std::filesystem::path& file) {
     Impl& m = *impl_;
-    if (!m.renderer || !m.last) throw Error("saveFrame", "no frame has been rendered", "call render() first");
+    m.requireFrame("saveFrame");
     const bool exr = file.extension() == ".exr";
-    writeFrame(file, m.renderer->readback(*m.last, exr), *m.last, exr);
+    writeFrame(file, m.session->renderer().readback(*m.last, exr), *m.last, exr);
 }
 
 std::string Engine::deviceName() const { return impl_->ctx->deviceName(); }

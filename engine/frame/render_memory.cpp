@@ -1,7 +1,6 @@
 #include "engine/frame/render_memory.h"
 
 #include "common/error.h"
-#include "engine/passes/ao_targets.h"
 
 #include <unistd.h>
 
@@ -10,26 +9,28 @@
 
 namespace grotto {
 
-RenderMemory estimateRenderMemory(uint32_t width, uint32_t height, const AoOptions& ao) {
-    // Bytes per pixel of each target, as Renderer::createTargets and readback make them.
-    const uint64_t n = uint64_t(width) * height;
-    const VkExtent2D half = ao.chain.fullResolution ? VkExtent2D{width, height} : VkExtent2D{(width + 1) / 2, (height + 1) / 2};
-    const uint64_t m = uint64_t(half.width) * half.height;
+RenderMemory estimateRenderMemory(const vk::Context& ctx, const FrameShape& shape) {
     RenderMemory r;
-    const uint64_t colour = 16 * n;                    // RGBA32F
-    r.targetBytes = 4 * n + 2 * n + colour;            // depth D32, surface ids R16, colour
-    uint64_t chainImages = 0;                          // RGBA32F at AO resolution: raw, denoise, history
-    if (ao.enabled) {
-        const VkExtent2D atlas = depthMipLayout(half).atlas;
-        chainImages = 1 + std::min(ao.chain.denoisePasses, 2u) + (ao.chain.temporalHistory > 0 ? 2 : 0);
-        r.targetBytes += 4 * uint64_t(atlas.width) * atlas.height + 16 * m * chainImages + 4 * n;  // + the AO AOV
+    for (const TargetRow& row : targetRows()) {
+        const VkExtent2D extent = targetExtent(row, shape);
+        if (extent.width == 0) continue;
+        const uint64_t bytes = vk::imageBytes(ctx, extent, row.format, row.usage);
+        r.targetBytes += row.copies * bytes;
+        r.largestBytes = std::max(r.largestBytes, bytes);
     }
-    r.stagingBytes = colour;
-    r.largestBytes = std::max(colour, 16 * m);
-    // FrameImages with AOVs: colour 16, depth, raw depth and ids 10, normal and
-    // albedo 24, six AO AOVs 24 bytes a pixel, the packed half-res AO 8 per AO pixel.
-    r.hostBytes = 74 * n + 8 * m;
+    r.stagingBytes = 16 * uint64_t(shape.width) * shape.height;  // the colour, RGBA32F
+    r.largestBytes = std::max(r.largestBytes, r.stagingBytes);
+    r.hostBytes = readbackHostBytes(shape);
     return r;
+}
+
+uint64_t readbackHostBytes(const FrameShape& shape) {
+    // FrameImages with AOVs: colour 16, depth, raw depth and ids 10, normal and
+    // albedo 24, six AO AOVs 24, the shadow 4 bytes a pixel (and the motion 16 where
+    // objects move), the packed half-res AO 8 per AO pixel.
+    const uint64_t n = uint64_t(shape.width) * shape.height;
+    const VkExtent2D ao = shape.aoExtent();
+    return (78 + (shape.motion() ? 16 : 0)) * n + 8 * uint64_t(ao.width) * ao.height;
 }
 
 namespace {
@@ -79,17 +80,20 @@ std::string whyNot(const DeviceMemory& d, const RenderMemory& r) {
 
 }  // namespace
 
-void requireRenderFits(const vk::Context& ctx, uint32_t width, uint32_t height, const AoOptions& ao,
-                       const std::string& where) {
+void requireRenderFits(const vk::Context& ctx, const FrameShape& shape, const std::string& where) {
     const DeviceMemory d = deviceMemory(ctx);
-    const std::string why = whyNot(d, estimateRenderMemory(width, height, ao));
+    FrameShape at = shape;
+    at.aoAov = true;
+    const std::string why = whyNot(d, estimateRenderMemory(ctx, at));
     if (why.empty()) return;
     // The largest size of the same shape that fits, for the hint.
+    const uint32_t width = shape.width, height = shape.height;
     uint32_t lo = 1, hi = width;
     while (lo < hi) {
-        const uint32_t w = (lo + hi + 1) / 2, h = std::max<uint32_t>(1, uint32_t(uint64_t(height) * w / width));
-        if (whyNot(d, estimateRenderMemory(w, h, ao)).empty()) lo = w;
-        else hi = w - 1;
+        at.width = (lo + hi + 1) / 2;
+        at.height = std::max<uint32_t>(1, uint32_t(uint64_t(height) * at.width / width));
+        if (whyNot(d, estimateRenderMemory(ctx, at)).empty()) lo = at.width;
+        else hi = at.width - 1;
     }
     const uint32_t fitHeight = std::max<uint32_t>(1, uint32_t(uint64_t(height) * lo / width));
     throw Error(where, std::to_string(width) + "x" + std::to_string(height) + " is too large for " + ctx.deviceName() +

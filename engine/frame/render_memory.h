@@ -2,7 +2,7 @@
 // The memory a Renderer of a given size needs, estimated before anything is
 // allocated, and the check that refuses a size the device cannot hold: a bare
 // out-of-memory from the driver, halfway through, names nothing the user set.
-#include "engine/ao_settings.h"
+#include "engine/frame/frame_targets.h"
 #include "engine/vk/context.h"
 
 #include <cstdint>
@@ -11,22 +11,26 @@
 namespace grotto {
 
 struct RenderMemory {
-    uint64_t targetBytes = 0;   // the render targets: G-buffer, colour, the AO chain's (and its AOV)
+    uint64_t targetBytes = 0;   // the render targets the shape has (frame_targets.h)
     uint64_t stagingBytes = 0;  // the largest read-back buffer (the colour image's)
     uint64_t largestBytes = 0;  // the largest single allocation among both
     uint64_t hostBytes = 0;     // a read-back with every AOV (FrameImages), in host memory
 };
 
-// Exact for the targets up to the driver's padding of each image (2 % at 333x177 on lavapipe).
-RenderMemory estimateRenderMemory(uint32_t width, uint32_t height, const AoOptions& ao);
+// The targets from the same rows the renderer makes them by, each at the size the
+// device asks for it where it says beforehand (Vulkan 1.3: then exact), else at
+// texels x texel size (short of the driver's padding, 2 % at 333x177 on lavapipe).
+RenderMemory estimateRenderMemory(const vk::Context& ctx, const FrameShape& shape);
+// Host memory for a read-back with every AOV (FrameImages); needs no device.
+uint64_t readbackHostBytes(const FrameShape& shape);
 
 // Throws grotto::Error (input), naming `where` with the size and the estimate,
 // when rendering at that size cannot fit the device: an allocation larger than
 // its maxMemoryAllocationSize, or targets and staging larger than its largest
 // device-local heap and read-back larger than the machine's physical memory. On
 // a CPU device (lavapipe) the targets live in host memory too, so there all of
-// it is held against the physical memory.
-void requireRenderFits(const vk::Context& ctx, uint32_t width, uint32_t height, const AoOptions& ao,
-                       const std::string& where);
+// it is held against the physical memory. A read-back with AOVs may come at any
+// frame, so its AO target counts whatever shape.aoAov says.
+void requireRenderFits(const vk::Context& ctx, const FrameShape& shape, const std::string& where);
 
 }  // namespace grotto

@@ -235,6 +235,9 @@ void Context::finishSetup() {
     cmdEndRendering = reinterpret_cast<PFN_vkCmdEndRendering>(proc("vkCmdEndRendering", "vkCmdEndRenderingKHR"));
     cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
         vkGetDeviceProcAddr(device, "vkCmdPushDescriptorSetKHR"));
+    if (core13)
+        getDeviceImageMemoryRequirements = reinterpret_cast<PFN_vkGetDeviceImageMemoryRequirements>(
+            vkGetDeviceProcAddr(device, "vkGetDeviceImageMemoryRequirements"));
 
     VkCommandPoolCreateInfo pci{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO,
                                 .flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT,

@@ -49,6 +49,8 @@ public:
     PFN_vkCmdBeginRendering cmdBeginRendering = nullptr;
     PFN_vkCmdEndRendering cmdEndRendering = nullptr;
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+    // An image's memory requirements without making it: Vulkan 1.3 devices only (else null).
+    PFN_vkGetDeviceImageMemoryRequirements getDeviceImageMemoryRequirements = nullptr;
 
     std::string deviceName() const { return properties.deviceName; }
     bool validationEnabled() const { return messenger_ != VK_NULL_HANDLE; }

@@ -52,10 +52,12 @@ VkDeviceMemory Allocator::allocateMemory(uint32_t type, VkDeviceSize size, void*
     return memory;
 }
 
+VkDeviceSize Allocator::sizeOf(const VkMemoryRequirements& req) const { return alignUp(req.size, granularity_); }
+
 Allocation Allocator::allocate(const VkMemoryRequirements& req, bool hostVisible) {
     const uint32_t type = findType(req.memoryTypeBits, hostVisible);
     const VkDeviceSize align = std::max(req.alignment, granularity_);
-    const VkDeviceSize size = alignUp(req.size, granularity_);
+    const VkDeviceSize size = sizeOf(req);
     if (size > kBlockSize / 2) {
         Allocation a{.size = size, .type = type};
         a.memory = allocateMemory(type, size, &a.mapped);

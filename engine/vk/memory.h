@@ -25,6 +25,8 @@ public:
 
     // Host-visible memory is also host-coherent; device-local is preferred otherwise.
     Allocation allocate(const VkMemoryRequirements& req, bool hostVisible);
+    // The bytes allocate(req) takes (its Allocation::size).
+    VkDeviceSize sizeOf(const VkMemoryRequirements& req) const;
     void free(const Allocation& a);
 
 private:

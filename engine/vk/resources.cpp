@@ -1,6 +1,9 @@
 #include "engine/vk/resources.h"
 
+#include "common/error.h"
+
 #include <cstring>
+#include <string>
 
 namespace grotto::vk {
 
@@ -25,23 +28,42 @@ void destroy(Context& ctx, Buffer& b) {
     b = {};
 }
 
+namespace {
+
+VkImageCreateInfo imageInfo(VkExtent2D extent, VkFormat format, VkImageUsageFlags usage) {
+    return {.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
+            .imageType = VK_IMAGE_TYPE_2D,
+            .format = format,
+            .extent = {extent.width, extent.height, 1},
+            .mipLevels = 1,
+            .arrayLayers = 1,
+            .samples = VK_SAMPLE_COUNT_1_BIT,
+            .tiling = VK_IMAGE_TILING_OPTIMAL,
+            .usage = usage,
+            .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
+            .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
+}
+
+VkDeviceSize texelBytes(VkFormat format) {
+    switch (format) {
+    case VK_FORMAT_R16_UINT: return 2;
+    case VK_FORMAT_R32_SFLOAT:
+    case VK_FORMAT_D32_SFLOAT: return 4;
+    case VK_FORMAT_R16G16B16A16_SFLOAT: return 8;
+    case VK_FORMAT_R32G32B32A32_SFLOAT: return 16;
+    default: throw Error::internal("vk::imageBytes", "no texel size for format " + std::to_string(int(format)));
+    }
+}
+
+}  // namespace
+
 Image createImage(Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage) {
     Image img;
     img.format = format;
     img.extent = extent;
     const bool depth = format == VK_FORMAT_D32_SFLOAT || format == VK_FORMAT_D16_UNORM;
     img.aspect = depth ? VK_IMAGE_ASPECT_DEPTH_BIT : VK_IMAGE_ASPECT_COLOR_BIT;
-    VkImageCreateInfo ci{.sType = VK_STRUCTURE_TYPE_IMAGE_CREATE_INFO,
-                         .imageType = VK_IMAGE_TYPE_2D,
-                         .format = format,
-                         .extent = {extent.width, extent.height, 1},
-                         .mipLevels = 1,
-                         .arrayLayers = 1,
-                         .samples = VK_SAMPLE_COUNT_1_BIT,
-                         .tiling = VK_IMAGE_TILING_OPTIMAL,
-                         .usage = usage,
-                         .sharingMode = VK_SHARING_MODE_EXCLUSIVE,
-                         .initialLayout = VK_IMAGE_LAYOUT_UNDEFINED};
+    const VkImageCreateInfo ci = imageInfo(extent, format, usage);
     VK_CHECK(vkCreateImage(ctx.device, &ci, nullptr, &img.image));
     VkMemoryRequirements req;
     vkGetImageMemoryRequirements(ctx.device, img.image, &req);
@@ -54,6 +76,19 @@ Image createImage(Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsage
                              .subresourceRange = {img.aspect, 0, 1, 0, 1}};
     VK_CHECK(vkCreateImageView(ctx.device, &vi, nullptr, &img.view));
     return img;
+}
+
+VkDeviceSize imageBytes(const Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage) {
+    const uint32_t limit = ctx.properties.limits.maxImageDimension2D;
+    if (ctx.getDeviceImageMemoryRequirements && extent.width <= limit && extent.height <= limit) {
+        const VkImageCreateInfo ci = imageInfo(extent, format, usage);
+        const VkDeviceImageMemoryRequirements query{.sType = VK_STRUCTURE_TYPE_DEVICE_IMAGE_MEMORY_REQUIREMENTS,
+                                                    .pCreateInfo = &ci};
+        VkMemoryRequirements2 req{.sType = VK_STRUCTURE_TYPE_MEMORY_REQUIREMENTS_2};
+        ctx.getDeviceImageMemoryRequirements(ctx.device, &query, &req);
+        return ctx.allocator->sizeOf(req.memoryRequirements);
+    }
+    return VkDeviceSize(extent.width) * extent.height * texelBytes(format);
 }
 
 void destroy(Context& ctx, Image& i) {

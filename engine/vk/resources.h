@@ -26,6 +26,10 @@ Buffer createBuffer(Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, b
 void destroy(Context& ctx, Buffer& b);
 
 Image createImage(Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage);
+// The bytes createImage would allocate for such an image, without making it: the
+// device's own requirement where it says so beforehand (Vulkan 1.3) for a size it
+// supports, else texels x texel size (short of the driver's padding).
+VkDeviceSize imageBytes(const Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage);
 void destroy(Context& ctx, Image& i);
 
 // Device-local buffer filled from host data through a staging buffer.

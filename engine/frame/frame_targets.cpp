@@ -1,0 +1,143 @@
+#include "engine/frame/frame_targets.h"
+
+#include "common/error.h"
+
+#include <algorithm>
+
+namespace grotto {
+namespace {
+
+constexpr VkImageUsageFlags kRead = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+constexpr VkImageUsageFlags kStorage = VK_IMAGE_USAGE_STORAGE_BIT;
+constexpr VkImageLayout kGeneral = VK_IMAGE_LAYOUT_GENERAL, kEachFrame = VK_IMAGE_LAYOUT_UNDEFINED;
+constexpr VkFormat kRgba32f = VK_FORMAT_R32G32B32A32_SFLOAT, kR32f = VK_FORMAT_R32_SFLOAT;
+
+bool always(const FrameShape&) { return true; }
+bool aoOn(const FrameShape& s) { return s.ao.enabled; }
+
+// Colour, display and the G-buffer are read by a game too (include/grotto/grotto.h):
+// sampled, and transfer sources for a window's blit and the read-backs. The AO
+// chain's images live in GENERAL: written as storage, read as sampled images.
+constexpr TargetRow kRows[] = {
+    {TargetId::Depth, VK_FORMAT_D32_SFLOAT, TargetSize::Frame, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | kRead,
+     always, false, 1, kEachFrame},
+    {TargetId::Surface, kSurfaceFormat, TargetSize::Frame, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | kRead, always, false, 1,
+     kEachFrame},
+    {TargetId::Motion, kMotionFormat, TargetSize::Frame, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | kRead,
+     [](const FrameShape& s) { return s.motion(); }, false, 1, kEachFrame},
+    {TargetId::Color, kRgba32f, TargetSize::Frame, kStorage | kRead, always, false, 1, kEachFrame},
+    {TargetId::Display, VK_FORMAT_R16G16B16A16_SFLOAT, TargetSize::Frame, kStorage | kRead,
+     [](const FrameShape& s) { return s.display; }, false, 1, kGeneral},
+    {TargetId::Shadow, kR32f, TargetSize::Frame, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+     [](const FrameShape& s) { return s.shadows; }, true, 1, kGeneral},
+    {TargetId::ShadowHistory, kRgba32f, TargetSize::Frame, kStorage,
+     [](const FrameShape& s) { return s.shadows && s.softShadows; }, false, 2, kGeneral},
+    {TargetId::AoDepthAtlas, kR32f, TargetSize::DepthAtlas, kStorage | kRead, aoOn, false, 1, kGeneral},
+    {TargetId::AoRaw, kRgba32f, TargetSize::Ao, kStorage | kRead, aoOn, true, 1, kGeneral},
+    // One denoise pass needs one target (with the temporal pass, only for the
+    // AO_spatial AOV), more ping-pong between two.
+    {TargetId::AoSpatial0, kRgba32f, TargetSize::Ao, kStorage | kRead,
+     [](const FrameShape& s) { return s.ao.enabled && s.ao.chain.denoisePasses >= 1; }, false, 1, kGeneral},
+    {TargetId::AoSpatial1, kRgba32f, TargetSize::Ao, kStorage | kRead,
+     [](const FrameShape& s) { return s.ao.enabled && s.ao.chain.denoisePasses >= 2; }, false, 1, kGeneral},
+    {TargetId::AoHistory, kRgba32f, TargetSize::Ao, kStorage | kRead, [](const FrameShape& s) { return s.temporal(); },
+     false, 2, kGeneral},
+    // Frames do not store the upsampled AO (the composite upsamples for itself):
+    // only a read-back with AOVs makes it.
+    {TargetId::AoFull, kR32f, TargetSize::Frame, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+     [](const FrameShape& s) { return s.ao.enabled && s.aoAov; }, false, 1, kGeneral},
+};
+
+}  // namespace
+
+VkExtent2D FrameShape::aoExtent() const {
+    return ao.chain.fullResolution ? frame() : VkExtent2D{(width + 1) / 2, (height + 1) / 2};
+}
+
+FrameShape worldFrameShape(const voxel::WorldDesc& desc, uint32_t width, uint32_t height, const AoOptions& ao,
+                           bool objects) {
+    FrameShape s{.width = width, .height = height, .ao = ao};
+    s.shadows = desc.lighting.sunShadows;
+    s.softShadows = desc.lighting.sunAngle > 0.0f;
+    if (objects) s.movingObjects = std::any_of(desc.objects.begin(), desc.objects.end(), [](const auto& o) { return o.moves(); });
+    return s;
+}
+
+std::span<const TargetRow> targetRows() { return kRows; }
+
+VkExtent2D targetExtent(const TargetRow& row, const FrameShape& shape) {
+    if (!row.exists(shape)) return row.placeholder ? VkExtent2D{1, 1} : VkExtent2D{0, 0};
+    switch (row.size) {
+    case TargetSize::Frame: return shape.frame();
+    case TargetSize::Ao: return shape.aoExtent();
+    case TargetSize::DepthAtlas: return depthMipLayout(shape.aoExtent()).atlas;
+    }
+    return {0, 0};
+}
+
+vk::Image& FrameTargets::slot(TargetId id, uint32_t copy) {
+    switch (id) {
+    case TargetId::Depth: return gbuffer_.depth;
+    case TargetId::Surface: return gbuffer_.surface;
+    case TargetId::Motion: return gbuffer_.motion;
+    case TargetId::Color: return color_;
+    case TargetId::Display: return display_;
+    case TargetId::Shadow: return shadow_;
+    case TargetId::ShadowHistory: return shadowHistory_[copy];
+    case TargetId::AoDepthAtlas: return ao_.depthAtlas;
+    case TargetId::AoRaw: return ao_.raw;
+    case TargetId::AoSpatial0: return ao_.spatial[0];
+    case TargetId::AoSpatial1: return ao_.spatial[1];
+    case TargetId::AoHistory: return ao_.history[copy];
+    case TargetId::AoFull: return ao_.full;
+    }
+    throw Error::internal("FrameTargets", "no such target");
+}
+
+const vk::Image& FrameTargets::image(TargetId id, uint32_t copy) const {
+    return const_cast<FrameTargets*>(this)->slot(id, copy);
+}
+
+bool FrameTargets::update(const FrameShape& shape, VkCommandBuffer cmd) {
+    bool changed = false;
+    for (const TargetRow& row : kRows) {
+        const VkExtent2D extent = targetExtent(row, shape);
+        for (uint32_t c = 0; c < row.copies; ++c) {
+            vk::Image& image = slot(row.id, c);
+            if (image.extent.width == extent.width && image.extent.height == extent.height) continue;
+            changed = true;
+            vk::destroy(ctx_, image);
+            if (extent.width == 0) continue;
+            image = vk::createImage(ctx_, extent, row.format, row.usage);
+            if (row.initial == kGeneral)
+                vk::transition(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, kGeneral, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
+                               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+        }
+    }
+    ao_.half = shape.ao.enabled ? shape.aoExtent() : VkExtent2D{};
+    shape_ = shape;
+    return changed;
+}
+
+bool FrameTargets::update(const FrameShape& shape) {
+    bool changed = false;
+    ctx_.submitAndWait([&](VkCommandBuffer cmd) { changed = update(shape, cmd); });
+    return changed;
+}
+
+void FrameTargets::release() {
+    for (const TargetRow& row : kRows)
+        for (uint32_t c = 0; c < row.copies; ++c) vk::destroy(ctx_, slot(row.id, c));
+    ao_.half = {};
+    shape_ = {};
+}
+
+size_t FrameTargets::bytes() const {
+    size_t n = 0;
+    for (const TargetRow& row : kRows)
+        for (uint32_t c = 0; c < row.copies; ++c) n += image(row.id, c).memory.size;
+    return n;
+}
+
+}  // namespace grotto

@@ -1,0 +1,104 @@
+#include "engine/session.h"
+
+#include "engine/camera_path.h"
+#include "voxel/object_worlds.h"
+
+namespace grotto {
+
+RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptions& ao, const voxel::Detail& detail,
+                             uint32_t width, uint32_t height, bool objectsMayMove)
+    : ctx_(ctx), objectWorlds_(voxel::loadObjectWorlds(world.desc())), lighting_(world.desc().lighting), ao_(ao),
+      culling_(cullingOptions(detail)), width_(width), height_(height) {
+    if (!objectWorlds_.empty()) objects_ = uploadObjects(ctx, objectWorlds_, world.desc());
+    if (objects_ && objectsMayMove) objects_->moving = true;
+    scene_ = std::make_unique<LiveScene>(ctx, std::move(world));
+    setTime(0.0);
+}
+
+Renderer& RenderSession::renderer() {
+    if (!renderer_) {
+        renderer_ = std::make_unique<Renderer>(ctx_, scene_->gpu(), lighting_, ao_, width_, height_, objects_.get());
+        renderer_->setCulling(culling_);
+        if (objects_) renderer_->setObjectPoses(poses_);
+    }
+    return *renderer_;
+}
+
+// The renderer draws the scenes: it goes first, the scenes before the device.
+RenderSession::~RenderSession() {
+    renderer_.reset();
+    scene_.reset();
+    objects_.reset();
+}
+
+void RenderSession::setLighting(const voxel::Lighting& lighting) {
+    lighting_ = lighting;
+    if (renderer_) renderer_->setLighting(lighting);
+}
+
+void RenderSession::setAo(const AoOptions& ao) {
+    ao_ = ao;
+    if (renderer_) renderer_->setAo(ao);
+}
+
+void RenderSession::setCulling(const CullingOptions& culling) {
+    culling_ = culling;
+    if (renderer_) renderer_->setCulling(culling);
+}
+
+void RenderSession::resize(uint32_t width, uint32_t height) {
+    width_ = width;
+    height_ = height;
+    if (renderer_) renderer_->resize(width, height);
+}
+
+void RenderSession::setTime(double seconds) {
+    if (objects_) setPoses(objects_->poses(seconds));
+}
+
+void RenderSession::setPoses(std::vector<voxel::ObjectPose> poses) {
+    poses_ = std::move(poses);
+    if (renderer_ && objects_) renderer_->setObjectPoses(poses_);
+}
+
+voxel::EditResult RenderSession::apply(const voxel::Edit& edit) {
+    const voxel::EditResult r = scene_->apply(edit);
+    if (renderer_ && !r.voxels.empty()) renderer_->invalidateHistory(r.box);
+    return r;
+}
+
+voxel::EditResult RenderSession::undo() {
+    const voxel::EditResult r = scene_->undo();
+    if (renderer_ && !r.voxels.empty()) renderer_->invalidateHistory(r.box);
+    return r;
+}
+
+void RenderSession::playPath(const voxel::CameraPathDesc& path, const voxel::CameraDesc& defaults) {
+    stopPath();
+    pathDesc_ = path;  // PathEdits keeps a reference to it
+    edits_ = std::make_unique<PathEdits>(pathDesc_, scene_->world());
+    path_ = std::make_unique<CameraPath>(pathDesc_, defaults);
+}
+
+void RenderSession::stopPath() {
+    path_.reset();
+    edits_.reset();
+    lastPathTime_.reset();
+}
+
+void RenderSession::startPathAt(double time) {
+    edits_->applyUpTo(time, *scene_);
+    lastPathTime_.reset();
+}
+
+RenderSession::PathFrame RenderSession::pathFrame(double time, uint32_t width, uint32_t height) {
+    PathFrame f{.camera = path_->camera(time, width, height), .time = time};
+    f.cut = lastPathTime_ && path_->cutBetween(*lastPathTime_, time);
+    if (f.cut) renderer().resetHistory();
+    f.edited = edits_->applyUpTo(time, *scene_, &renderer());
+    setTime(time);
+    lastPathTime_ = time;
+    return f;
+}
+
+}  // namespace grotto

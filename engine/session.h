@@ -1,0 +1,102 @@
+#pragma once
+// One world being rendered: the live world and its GPU copy, the world's objects,
+// the renderer with its culling, and the camera path playing, if any. Every
+// command that renders, the viewer and grotto::Engine drive one, so they all play
+// a path alike: its camera, its objects' keys, its timed edits and its cuts.
+#include "engine/renderer.h"
+#include "engine/scene/live_scene.h"
+#include "engine/scene/path_edits.h"
+#include "engine/scene/scene_objects.h"
+#include "voxel/reference_ao.h"
+
+#include <memory>
+#include <optional>
+#include <span>
+#include <vector>
+
+namespace grotto {
+
+class CameraPath;
+
+class RenderSession {
+public:
+    // Loads the world's objects and uploads the world and them. `detail`: the
+    // levels of detail and occlusion culling the renderer draws with. With
+    // `objectsMayMove`, every object gets motion vectors, whatever its keys say
+    // (a game poses objects itself).
+    RenderSession(vk::Context& ctx, voxel::World world, const AoOptions& ao, const voxel::Detail& detail,
+                  uint32_t width, uint32_t height, bool objectsMayMove = false);
+    ~RenderSession();
+    RenderSession(const RenderSession&) = delete;
+    RenderSession& operator=(const RenderSession&) = delete;
+
+    LiveScene& scene() { return *scene_; }
+    const voxel::World& world() const { return scene_->world(); }
+    // Made on first use (a command that renders with renderers of its own never makes it).
+    Renderer& renderer();
+    const SceneObjects* objects() const { return objects_.get(); }
+    std::span<const voxel::World> objectWorlds() const { return objectWorlds_; }
+    // Settings and size for the frames that follow, applied to the renderer now
+    // or when it is made (Renderer's setters say what each restarts).
+    void setLighting(const voxel::Lighting& lighting);
+    void setAo(const AoOptions& ao);
+    void setCulling(const CullingOptions& culling);
+    void resize(uint32_t width, uint32_t height);
+    const voxel::Lighting& lighting() const { return lighting_; }
+    const AoOptions& ao() const { return ao_; }
+
+    // The objects at their keys' poses `seconds` into the world's time, for the
+    // frames that follow (at time 0 until then), or at poses of the caller's.
+    void setTime(double seconds);
+    void setPoses(std::vector<voxel::ObjectPose> poses);
+    const std::vector<voxel::ObjectPose>& poses() const { return poses_; }
+    // The objects' worlds at those poses, for the reference to trace.
+    std::vector<voxel::PosedWorld> posedObjects() const { return voxel::posedWorlds(objectWorlds_, poses_); }
+
+    // An edit of the live world (or its undo); the renderer restarts its history
+    // where it changed. Throws grotto::Error (input) for an edit the world refuses.
+    voxel::EditResult apply(const voxel::Edit& edit);
+    voxel::EditResult undo();
+
+    // Plays `path` from its start: the path's edits are checked against the world
+    // now (grotto::Error naming the path's file and field). `defaults`: the lens
+    // of the world's default camera.
+    void playPath(const voxel::CameraPathDesc& path, const voxel::CameraDesc& defaults);
+    void stopPath();
+    bool playing() const { return path_ != nullptr; }
+    const CameraPath& path() const { return *path_; }
+    // Moves the playing path to `time` seconds without rendering: the edits due by
+    // then are applied (no history to restart yet), and the next frame starts afresh.
+    void startPathAt(double time);
+    // Are edits of the path due by `time` not applied yet? (A caller may keep the
+    // world as it was before them.)
+    bool pathEditsPending(double time) const { return edits_ && edits_->pending(time); }
+    struct PathFrame {
+        Camera camera;
+        double time = 0.0;
+        voxel::WorldBox edited;  // what the edits due by then changed (empty: nothing)
+        bool cut = false;        // the path cut since the frame before: the history restarted
+    };
+    // The path at `time` seconds (after the time of the frame before): its camera,
+    // the objects posed at its keys, the edits due applied (the history restarts
+    // where they changed the world) and, after a cut, the history restarted.
+    PathFrame pathFrame(double time, uint32_t width, uint32_t height);
+
+private:
+    vk::Context& ctx_;
+    std::vector<voxel::World> objectWorlds_;
+    std::unique_ptr<SceneObjects> objects_;
+    std::unique_ptr<LiveScene> scene_;
+    std::unique_ptr<Renderer> renderer_;
+    voxel::Lighting lighting_;
+    AoOptions ao_;
+    CullingOptions culling_;
+    uint32_t width_, height_;
+    std::vector<voxel::ObjectPose> poses_;
+    voxel::CameraPathDesc pathDesc_;
+    std::unique_ptr<CameraPath> path_;
+    std::unique_ptr<PathEdits> edits_;
+    std::optional<double> lastPathTime_;  // the path's time at the frame before; unset: none yet
+};
+
+}  // namespace grotto
