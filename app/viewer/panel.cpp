@@ -88,6 +88,7 @@ void settingControls(std::string_view block, const PanelState& s, voxel::json& p
     for (const voxel::Setting& row : voxel::settingsTable()) {
         if (row.key.substr(0, row.key.find('.')) != block || (row.tracingOnly && !traces)) continue;
         const voxel::json value = control(row, s);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", row.help.data(), row.key.data());
         if (!value.is_null()) patch.merge_patch(voxel::settingPatch(std::string(row.key), value));
     }
 }
