@@ -7,9 +7,9 @@ AoCostTimer::AoCostTimer(vk::Context& ctx, GpuScene& scene, const voxel::Lightin
     if (!ao.enabled) return;
     AoOptions noAo = ao, noTemporal = ao;
     noAo.enabled = false;
-    noTemporal.gtao.temporalHistory = 0;
+    noTemporal.chain.temporalHistory = 0;
     withoutAo_ = std::make_unique<Renderer>(ctx, scene, lighting, noAo, width, height, objects);
-    if (ao.gtao.temporalHistory > 0)
+    if (ao.chain.temporalHistory > 0)
         withoutTemporal_ = std::make_unique<Renderer>(ctx, scene, lighting, noTemporal, width, height, objects);
 }
 

@@ -41,7 +41,7 @@ void addCompareCommand(CLI::App& app) {
         const AoOptions ao = resolveAo(loaded, args->ao);
         if (!ao.enabled) throw Error("--ao", "off has no AO to compare", "pick gtao, ssao or hbao");
         // The reference's R is the radius the method is given, before GTAO's multiplier.
-        const double radius = double(ao.gtao.radius);
+        const double radius = double(ao.estimator.radius);
         vk::Context ctx;
         requireRenderFits(ctx, worldFrameShape(loaded.desc(), size.width, size.height, ao), "--size");  // before minutes of tracing
         const voxel::Detail detail = resolveDetail(loaded, args->ao);
@@ -54,22 +54,22 @@ void addCompareCommand(CLI::App& app) {
         double maxError = 0.0;
         for (float e : ref.stderror) maxError = std::max(maxError, double(e));
         // As `tradeoff` does: a temporal history gets static frames enough to fill.
-        const int frames = std::max(args->warmup + args->frames, ao.gtao.temporalHistory > 0 ? 32 : 0);
+        const int frames = std::max(args->warmup + args->frames, ao.chain.temporalHistory > 0 ? 32 : 0);
         const AoMeasurement m = measureAo(ctx, *session, camera, ao, cullingOptions(detail), ref, frames, args->warmup);
         const std::string name = world.desc().source.stem().string();
         session.reset();
         requireNoValidationMessages(ctx);
-        const gpu::GtaoSettings& s = ao.gtao;
+        const voxel::EstimatorSettings& s = ao.estimator;
         char shape[64];
-        if (ao.method == AoMethod::Ssao) std::snprintf(shape, sizeof shape, "%u samples", ao.ssaoSamples);
-        else if (ao.method == AoMethod::Hbao) std::snprintf(shape, sizeof shape, "%u directions x %u steps", 2 * s.sliceCount, s.stepsPerSlice);
-        else if (ao.method == AoMethod::Voxel) std::snprintf(shape, sizeof shape, "%u rays", ao.voxelRays);
+        if (ao.method == AoMethod::Ssao) std::snprintf(shape, sizeof shape, "%u samples", s.ssaoSamples);
+        else if (ao.method == AoMethod::Hbao) std::snprintf(shape, sizeof shape, "%u directions x %u steps", 2 * s.slices, s.steps);
+        else if (ao.method == AoMethod::Voxel) std::snprintf(shape, sizeof shape, "%u rays", s.rays);
         else if (ao.method == AoMethod::Hybrid)
-            std::snprintf(shape, sizeof shape, "%u slices x %u steps + %u rays", s.sliceCount, s.stepsPerSlice, ao.voxelRays);
-        else std::snprintf(shape, sizeof shape, "%u slices x %u steps", s.sliceCount, s.stepsPerSlice);
+            std::snprintf(shape, sizeof shape, "%u slices x %u steps + %u rays", s.slices, s.steps, s.rays);
+        else std::snprintf(shape, sizeof shape, "%u slices x %u steps", s.slices, s.steps);
         std::printf("%s: %s %s (%s%s, temporal %u), reference R %g, %u spp (%s, stderr max %.4f)\n",
                     name.c_str(), aoMethodName(ao.method), ao.quality.c_str(), shape,
-                    ao.fullResolution ? ", full resolution" : "", s.temporalHistory, radius, uint32_t(args->spp),
+                    ao.chain.fullResolution ? ", full resolution" : "", ao.chain.temporalHistory, radius, uint32_t(args->spp),
                     ref.cacheHit ? "from the cache" : "traced", maxError);
         std::printf("pixels %zu  mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f  ao %s  frame %.2f ms\n",
                     m.error.pixels, m.error.mae, m.error.rmse, m.error.psnr, m.error.bias, formatCost(m.ao).c_str(),

@@ -183,7 +183,7 @@ void run(const Args& a) {
     // shrinks by (n-1)/n a frame (n = the history length, 16), so measured at
     // four times n the split frames are within 1/255 of the whole run's
     // (twice n: 3/255); docs/paths.md.
-    const int warmup = a.warmup.value_or(4 * int(ao.gtao.temporalHistory));
+    const int warmup = a.warmup.value_or(4 * int(ao.chain.temporalHistory));
     const int first = video ? range.first : missing.front(), end = video ? range.last : missing.back();
     const int start = std::max(1, first - warmup);
     std::optional<StatsRecorder> stats;  // this run's frame entries

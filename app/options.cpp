@@ -1,7 +1,9 @@
 #include "app/options.h"
 
 #include "common/error.h"
+#include "common/overloaded.h"
 #include "engine/scene/path_edits.h"
+#include "voxel/settings_table.h"
 
 #include <algorithm>
 #include <charconv>
@@ -66,99 +68,116 @@ int pathFrameCount(const CameraPath& path, int fps, const std::string& name) {
                 "accepted: at most " + std::to_string(kMaxPathFrames) + " frames; lower --fps or shorten the path");
 }
 
+namespace {
+
+// --help for a setting's flag: what it does, what it accepts, its default.
+std::string flagHelp(const voxel::Setting& s) {
+    std::string help(s.help);
+    if (s.type == voxel::SettingType::Choice || s.type == voxel::SettingType::Bool) help += ":";
+    else help += ",";
+    help += " " + voxel::acceptedText(s) + " (default: the world's, else " + voxel::defaultText(s);
+    return help + (s.presetShaped ? "; setting it makes the quality custom)" : ")");
+}
+
+// The world-file settings of `block` ("ao", "detail") that have flags.
+template <class F>
+void forFlags(std::string_view block, F&& f) {
+    for (const voxel::Setting& s : voxel::settingsTable())
+        if (!s.flag.empty() && s.key.substr(0, s.key.find('.')) == block) f(s);
+}
+
+}  // namespace
+
 void addAoFlags(CLI::App* cmd, AoFlags& f) {
-    cmd->add_option("--ao", f.method,
-                    "Ambient occlusion: gtao, voxel (exact rays through the voxels), hybrid (GTAO plus voxel rays), "
-                    "ssao, hbao (baselines) or off (default: the world's, else gtao)")
-        ->check(CLI::IsMember({"gtao", "voxel", "hybrid", "ssao", "hbao", "off"}));
-    cmd->add_option("--quality", f.quality,
-                    "Preset: low, medium, high, ultra (SSAO: 8, 16, 32, 64 samples), or custom (high's, with --slices, --steps)")
-        ->check(CLI::IsMember({"low", "medium", "high", "ultra", "custom"}));
-    voxel::AoDesc& d = f.set;
-    // Ranges and defaults: shaders/shared/gtao.h; out-of-range values exit 2 naming the flag.
-    cmd->add_option("--radius", d.radius, "AO radius in world units (> 0)");
-    cmd->add_option("--thin-occluder", d.thinOccluder, "Thin-occluder compensation, 0 to 0.7");
-    cmd->add_option("--max-distance", d.maxDistance, "View depth where AO has faded out, world units (0 = no limit)");
-    cmd->add_option("--rays", d.rays, "Voxel and hybrid AO: rays per AO pixel per frame, 1 to 64 (makes the quality custom)");
-    cmd->add_option("--slices", d.slices, "GTAO slices per pixel, 1 to 32 (makes the quality custom)");
-    cmd->add_option("--steps", d.steps, "GTAO steps per side of a slice, 1 to 32 (makes the quality custom)");
-    cmd->add_option("--radius-multiplier", d.radiusMultiplier, "Screen-space radius compensation, 0.3 to 3");
-    cmd->add_option("--falloff-range", d.falloffRange, "Fraction of the radius over which occluders fade, 0 to 1");
-    cmd->add_option("--sample-distribution-power", d.sampleDistributionPower, "Step spacing power, 1 to 3");
-    cmd->add_option("--final-value-power", d.finalValuePower, "Contrast of the final visibility, 0.5 to 5");
-    cmd->add_option("--depth-mip-offset", d.depthMipOffset, "Higher = coarser depth MIPs later, 0 to 30");
-    cmd->add_option("--strength", d.strength, "AO strength in the composite, 0 (none) to 1");
-    cmd->add_option("--denoise", d.denoisePasses, "Spatial denoise passes, 0 to 4");
-    cmd->add_option("--denoise-blur-beta", d.denoiseBlurBeta, "Centre weight of the denoise blur, 0 to 10");
-    cmd->add_option("--temporal", d.temporalHistory, "Most frames the temporal pass averages, 0 (off) to 64");
-    cmd->add_flag("--ao-full-res", f.fullResolution, "Run the AO chain at full instead of half resolution");
+    // Out-of-range values exit 2 naming the flag (validateAo, after the world's values are merged).
+    forFlags("ao", [&](const voxel::Setting& s) {
+        const std::string flag(s.flag);
+        std::visit(Overloaded{[&](std::string voxel::AoDesc::*m) {
+                                  std::vector<std::string> choices(s.choices.begin(), s.choices.end());
+                                  cmd->add_option(flag, f.set.*m, flagHelp(s))->check(CLI::IsMember(choices));
+                              },
+                              [&](std::optional<bool> voxel::AoDesc::*m) {
+                                  cmd->add_flag_callback(flag, [&f, m] { f.set.*m = true; }, std::string(s.help));
+                              },
+                              [&](auto voxel::AoDesc::*m) { cmd->add_option(flag, f.set.*m, flagHelp(s)); },
+                              [](auto) {}},
+                   s.desc);
+    });
     addDetailFlags(cmd, f);
 }
 
 void addDetailFlags(CLI::App* cmd, AoFlags& f) {
-    cmd->add_option("--lod-bias", f.lodBias,
-                    "Largest size in pixels a coarse cell of far chunks may cover, 0 (exact voxels everywhere) to 64 "
-                    "(default: the world's detail.lod_bias, else 1)")
-        ->check(finiteRange(0.0, 64.0));
-    cmd->add_option("--occlusion-culling", f.occlusionCulling,
-                    "Skip clusters of quads hidden behind nearer geometry: true or false (default: the world's, else true)");
+    forFlags("detail", [&](const voxel::Setting& s) {
+        const std::string flag(s.flag), field(s.key.substr(s.key.find('.') + 1));
+        // Checked here: a value given becomes the world's, read as its file would be.
+        if (s.type == voxel::SettingType::Bool)
+            cmd->add_option_function<bool>(flag, [&f, field](bool v) { f.detail[field] = v; }, flagHelp(s));
+        else
+            cmd->add_option_function<double>(flag, [&f, field](double v) { f.detail[field] = v; }, flagHelp(s))
+                ->check(finiteRange(s.lo, s.hi));
+    });
 }
 
 voxel::Detail resolveDetail(const voxel::World& world, const AoFlags& f) {
-    voxel::Detail d = world.desc().detail;
-    if (f.lodBias) d.lodBias = *f.lodBias;
-    if (f.occlusionCulling) d.occlusionCulling = *f.occlusionCulling;
-    return d;
+    voxel::WorldDesc desc = world.desc();
+    if (!f.detail.empty()) voxel::applySettingsPatch(desc, {{"detail", f.detail}}, kCommandLine, "");
+    return desc.detail;
 }
 
 nlohmann::json detailJson(const voxel::Detail& d) {
-    return {{"lod_bias", d.lodBias}, {"occlusion_culling", d.occlusionCulling}};
+    voxel::WorldDesc desc;
+    desc.detail = d;
+    nlohmann::json j = nlohmann::json::object();
+    for (const voxel::Setting& s : voxel::settingsTable())
+        if (s.key.starts_with("detail.")) {
+            const double v = voxel::settingNumber(s, desc, {}, {});
+            if (s.type == voxel::SettingType::Bool) j[std::string(s.manifest)] = v != 0.0;
+            else j[std::string(s.manifest)] = v;
+        }
+    return j;
+}
+
+voxel::AoDesc aoDescWithFlags(const voxel::AoDesc& world, const AoFlags& f) {
+    voxel::AoDesc d = world;
+    if (!f.set.method.empty()) d.method = f.set.method;
+    if (!f.set.quality.empty()) {
+        d.quality = f.set.quality;
+        voxel::resetPresetShaped(d);  // a preset on the command line replaces the world's loop shape
+    }
+    voxel::overlayAo(f.set, d);
+    return d;
 }
 
 AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
-    voxel::AoDesc desc = world.desc().ao;
-    if (!f.method.empty()) desc.method = f.method;
-    if (!f.quality.empty()) {
-        // A preset on the command line replaces the world's slices and steps too.
-        desc.quality = f.quality;
-        desc.slices.reset();
-        desc.steps.reset();
-        desc.rays.reset();
-    }
-    AoOptions o = aoOptionsFor(desc, world.voxelSize(), world.desc().source.string());
-    o.fullResolution = f.fullResolution;
     // Negative counts would wrap in the unsigned settings, so they are refused here.
-    struct Count {
-        const std::optional<int>& value;
-        const char *flag, *range;
-    };
-    for (const Count& c : {Count{f.set.slices, "--slices", "1 to 32"}, Count{f.set.steps, "--steps", "1 to 32"},
-                           Count{f.set.rays, "--rays", "1 to 64"},
-                           Count{f.set.denoisePasses, "--denoise", "0 to 4"}, Count{f.set.temporalHistory, "--temporal", "0 (off) to 64"}})
-        if (c.value && *c.value < 0)
-            throw Error(c.flag, std::to_string(*c.value) + " is out of range", std::string("accepted: ") + c.range);
-    applyAoOverrides(f.set, o.gtao);
-    if (f.set.rays) {
-        if (*f.set.rays < 1 || *f.set.rays > 64)
-            throw Error("--rays", std::to_string(*f.set.rays) + " is out of range", "accepted: 1 to 64");
-        o.voxelRays = uint32_t(*f.set.rays);
-    }
-    if (f.set.slices || f.set.steps || f.set.rays) o.quality = "custom";
-    validateGtao(o.gtao, kCommandLine);
+    forFlags("ao", [&](const voxel::Setting& s) {
+        if (const auto* m = std::get_if<std::optional<int> voxel::AoDesc::*>(&s.desc))
+            if (const std::optional<int>& v = f.set.*(*m); v && *v < 0)
+                throw Error(std::string(s.flag), std::to_string(*v) + " is out of range",
+                            "accepted: " + voxel::acceptedText(s));
+    });
+    AoOptions o = aoOptionsFor(aoDescWithFlags(world.desc().ao, f), world.voxelSize(), kCommandLine);
+    bool shaped = false;  // slices, steps or rays given: no preset's any more
+    forFlags("ao", [&](const voxel::Setting& s) {
+        if (const auto* m = std::get_if<std::optional<int> voxel::AoDesc::*>(&s.desc))
+            shaped |= s.presetShaped && (f.set.*(*m)).has_value();
+    });
+    if (shaped) o.quality = "custom";
     return o;
 }
 
 nlohmann::json aoSettingsJson(const AoOptions& ao) {
-    const gpu::GtaoSettings& g = ao.gtao;
-    nlohmann::json j = {{"method", ao.enabled ? aoMethodName(ao.method) : "off"}, {"quality", ao.quality},
-            {"full_resolution", ao.fullResolution}, {"ssao_samples", ao.ssaoSamples}, {"radius", g.radius},
-            {"radius_multiplier", g.radiusMultiplier}, {"falloff_range", g.falloffRange},
-            {"sample_distribution_power", g.sampleDistributionPower}, {"thin_occluder", g.thinOccluderCompensation},
-            {"final_value_power", g.finalValuePower}, {"depth_mip_offset", g.depthMipSamplingOffset},
-            {"strength", g.strength}, {"denoise_blur_beta", g.denoiseBlurBeta}, {"slices", g.sliceCount},
-            {"steps", g.stepsPerSlice}, {"denoise", g.denoisePasses}, {"temporal", g.temporalHistory},
-            {"max_distance", g.maxDistance}};
-    if (ao.enabled && tracesVoxels(ao.method)) j["rays"] = ao.voxelRays;
+    nlohmann::json j = {{"method", ao.enabled ? aoMethodName(ao.method) : "off"},
+                        {"quality", ao.quality},
+                        {"ssao_samples", ao.estimator.ssaoSamples}};
+    const bool traces = ao.enabled && tracesVoxels(ao.method);
+    for (const voxel::Setting& s : voxel::settingsTable()) {
+        if (s.manifest.empty() || (s.tracingOnly && !traces)) continue;
+        std::visit(Overloaded{[](std::monostate) {},
+                              [&](auto voxel::EstimatorSettings::*m) { j[std::string(s.manifest)] = ao.estimator.*m; },
+                              [&](auto voxel::ChainSettings::*m) { j[std::string(s.manifest)] = ao.chain.*m; }},
+                   s.value);
+    }
     return j;
 }
 

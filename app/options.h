@@ -51,29 +51,31 @@ int pathFrameCount(const CameraPath& path, int fps, const std::string& name);
 // listing the world's paths when there is no such one.
 voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name);
 
-// The AO flags every rendering subcommand takes, with the level-of-detail ones;
-// unset ones keep the world's values.
+// The AO flags every rendering subcommand takes, with the level-of-detail ones:
+// one per setting of voxel/settings_table.cpp that has a flag; unset ones keep
+// the world's values.
 struct AoFlags {
-    std::string method, quality;
-    voxel::AoDesc set;  // the settings given, each flag named after its world-file key
-    bool fullResolution = false;
-    std::optional<double> lodBias;
-    std::optional<bool> occlusionCulling;
+    voxel::AoDesc set{.method = {}, .quality = {}};  // the AO settings given; method and quality empty when not
+    nlohmann::ordered_json detail = nlohmann::ordered_json::object();  // the "detail" block's fields given
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);
 // Only --lod-bias and --occlusion-culling (addAoFlags adds them too): for a
 // command that chooses the AO settings itself.
 void addDetailFlags(CLI::App* cmd, AoFlags& flags);
 
+// The world's "ao" block with the flags given over it (--quality replaces the
+// world's slices, steps and rays): what a viewer starts from.
+voxel::AoDesc aoDescWithFlags(const voxel::AoDesc& world, const AoFlags& flags);
+
 // Preset, world file, then flags; throws grotto::Error (input) for nonsense.
 AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
 
 // The world file's "detail" block, then --lod-bias and --occlusion-culling.
 voxel::Detail resolveDetail(const voxel::World& world, const AoFlags& flags);
-nlohmann::json detailJson(const voxel::Detail& detail);  // the world file's keys
+nlohmann::json detailJson(const voxel::Detail& detail);  // the settings table's manifest keys
 
-// Everything about the AO that decides the pixels, with the world file's keys:
-// what a resumed flythrough or a stability baseline must match.
+// Everything about the AO that decides the pixels, with the settings table's
+// manifest keys: what a resumed flythrough or a stability baseline must match.
 nlohmann::json aoSettingsJson(const AoOptions& ao);
 
 // CLI::Range for floating options that also refuses NaN (which compares false

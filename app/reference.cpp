@@ -61,7 +61,7 @@ void addReferenceCommand(CLI::App& app) {
         const voxel::World world = voxel::World::load(args->world);
         const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         // R is the radius GTAO is given (before its radius multiplier), so both measure the same thing.
-        const double radius = double(resolveAo(world, args->ao).gtao.radius);
+        const double radius = double(resolveAo(world, args->ao).estimator.radius);
 
         const std::vector<voxel::World> objects = voxel::loadObjectWorlds(world.desc());
         const auto posed = voxel::posedWorlds(objects, voxel::objectPoses(world.desc().objects, args->time));

@@ -23,8 +23,8 @@ namespace {
 // for more than one frame without a temporal pass is refused: it would render
 // the same single-frame estimate, whatever the flag says.
 uint32_t framesToAccumulate(const std::optional<int>& requested, const AoFlags& flags, AoOptions& ao) {
-    const bool temporal = ao.enabled && ao.gtao.temporalHistory > 0;
-    if (!requested) return temporal ? ao.gtao.temporalHistory : 1;
+    const bool temporal = ao.enabled && ao.chain.temporalHistory > 0;
+    if (!requested) return temporal ? ao.chain.temporalHistory : 1;
     const uint32_t frames = uint32_t(*requested);
     if (frames > 1 && !temporal) {
         const std::string off = !ao.enabled                  ? "AO is off"
@@ -33,7 +33,7 @@ uint32_t framesToAccumulate(const std::optional<int>& requested, const AoFlags& 
         throw Error("--accumulate", std::to_string(frames) + " frames have nothing to average: " + off,
                     "accepted without the temporal pass: 1, or leave --accumulate out");
     }
-    if (temporal) ao.gtao.temporalHistory = std::max(ao.gtao.temporalHistory, frames);
+    if (temporal) ao.chain.temporalHistory = std::max(ao.chain.temporalHistory, frames);
     return frames;
 }
 

@@ -89,7 +89,7 @@ void addStabilityCommand(CLI::App& app) {
         const int first = range.first, count = range.count();
         const AoOptions ao = resolveAo(world, args->ao);
         if (!ao.enabled) throw Error("--ao", "stability measures AO; it is off", "use --ao gtao");
-        const uint32_t scale = ao.fullResolution ? 1 : 2;
+        const uint32_t scale = ao.chain.fullResolution ? 1 : 2;
         // Below an 8x8 AO image the horizon search has next to no neighbours and the
         // reprojection next to no pixels: the figures would measure nothing.
         if ((size.width + scale - 1) / scale < kMinAoPixels || (size.height + scale - 1) / scale < kMinAoPixels)
@@ -102,10 +102,10 @@ void addStabilityCommand(CLI::App& app) {
         const json run = {{"world", args->world}, {"path", args->path}, {"size", {size.width, size.height}},
                           {"fps", args->fps}, {"frames", frames},
                           {"ao_resolution", scale == 2 ? "half" : "full"},
-                          {"quality", ao.quality}, {"temporal_history", ao.gtao.temporalHistory},
+                          {"quality", ao.quality}, {"temporal_history", ao.chain.temporalHistory},
                           {"ao", aoSettingsJson(ao)},
                           {"detail", detailJson(resolveDetail(world, args->ao))},
-                          {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}, {"radius", ao.gtao.radius}}}};
+                          {"reference", {{"spp", args->spp}, {"every", args->referenceEvery}, {"radius", ao.estimator.radius}}}};
         std::error_code same;
         if (!args->baseline.empty() && std::filesystem::equivalent(args->baseline, out, same))
             throw Error("--json", out.string() + " is also the --baseline", "write this run's figures elsewhere");

@@ -152,7 +152,7 @@ struct Mean {
 
 StabilityFigures runStability(vk::Context& ctx, RenderSession& session, const AoOptions& ao, const StabilityRunOptions& o) {
     const int first = o.first;
-    const uint32_t scale = ao.fullResolution ? 1 : 2;
+    const uint32_t scale = ao.chain.fullResolution ? 1 : 2;
     const double tolerance = 0.5 * session.world().voxelSize();
     LiveScene& live = session.scene();
     std::vector<EditEvent> events;
@@ -214,14 +214,14 @@ StabilityFigures runStability(vk::Context& ctx, RenderSession& session, const Ao
             for (EditEvent& e : events) {
                 if (i - e.frame >= kEditWindow) continue;
                 // Only the pixels near the edit: the pre- and post-edit references differ nowhere else.
-                const std::vector<uint8_t> near = nearBox(now, e.box, ao.gtao.radius);
-                const auto pre = referenceAt(e.beforeBricks, e.before, posed, points, near.size(), ao.gtao.radius, o.spp, rays, near);
-                const auto post = referenceAt(live.bricks(), world, posed, points, near.size(), ao.gtao.radius, o.spp, rays, near);
+                const std::vector<uint8_t> near = nearBox(now, e.box, ao.estimator.radius);
+                const auto pre = referenceAt(e.beforeBricks, e.before, posed, points, near.size(), ao.estimator.radius, o.spp, rays, near);
+                const auto post = referenceAt(live.bricks(), world, posed, points, near.size(), ao.estimator.radius, o.spp, rays, near);
                 e.frames.push_back(editFrame(i, i - e.frame, now.temporal, historyAt(frame, now), pre, post, near,
                                              existedBefore(e.before, points, near)));
             }
             if (referenceFrame) {
-                reference = referenceAt(live.bricks(), world, posed, points, now.world.size(), ao.gtao.radius,
+                reference = referenceAt(live.bricks(), world, posed, points, now.world.size(), ao.estimator.radius,
                                         o.spp, rays);
                 errors.push_back({{"frame", i},
                                   {"spatial", errorJson(now.spatial, reference, now.surface)},
@@ -276,7 +276,7 @@ StabilityFigures runStability(vk::Context& ctx, RenderSession& session, const Ao
     // the path is shorter than that). A shorter history, or none, starts no
     // earlier than the default one would, so a spatial-only run of the same path
     // is averaged over the same frames.
-    int steadyFrom = first + int(std::max(ao.gtao.temporalHistory, kDefaultTemporalHistory));
+    int steadyFrom = first + int(std::max(ao.chain.temporalHistory, kDefaultTemporalHistory));
     if (errors.empty() || errors.back()["frame"].get<int>() < steadyFrom) steadyFrom = first;
     size_t steadyFrames = 0;
     for (const json& e : errors) steadyFrames += e["frame"].get<int>() >= steadyFrom;

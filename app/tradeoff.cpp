@@ -185,7 +185,7 @@ std::vector<LodRow> measureLod(vk::Context& ctx, RenderSession& session, const C
                                const LodRow& label, std::vector<double> biases, bool occlusion,
                                const ReferenceView& ref, int frames, int warmup) {
     const AoOptions ao = resolveAo(session.world(), {});
-    frames = std::max(frames, ao.enabled && ao.gtao.temporalHistory > 0 ? kTemporalFrames : 0);
+    frames = std::max(frames, ao.enabled && ao.chain.temporalHistory > 0 ? kTemporalFrames : 0);
     biases.push_back(0.0);  // the exact rendering comes first: every other row is measured against it
     std::sort(biases.begin(), biases.end());
     biases.erase(std::unique(biases.begin(), biases.end()), biases.end());
@@ -266,7 +266,7 @@ void addTradeoffCommand(CLI::App& app) {
             const Camera camera = worldCamera(loaded, args->camera, size.width, size.height);
             // R is GTAO's radius before its multiplier, as for `grotto reference`.
             const AoOptions worldAo = resolveAo(loaded, {});
-            const double radius = double(worldAo.gtao.radius);
+            const double radius = double(worldAo.estimator.radius);
             requireRenderFits(ctx, worldFrameShape(loaded.desc(), size.width, size.height, worldAo), "--size");  // before minutes of tracing
             const voxel::Detail detail = resolveDetail(loaded, args->detail);
             // The world and its objects at time 0, drawn and traced alike.
@@ -290,8 +290,8 @@ void addTradeoffCommand(CLI::App& app) {
             }
             for (const Setting& s : kSettings) {
                 AoFlags flags;
-                flags.method = s.method.substr(0, s.method.find('+'));  // "gtao+temporal" is gtao
-                flags.quality = s.quality;
+                flags.set.method = s.method.substr(0, s.method.find('+'));  // "gtao+temporal" is gtao
+                flags.set.quality = s.quality;
                 flags.set.temporalHistory = s.temporal;
                 const AoOptions ao = resolveAo(world, flags);
                 const int frames = std::max(args->warmup + args->frames, s.temporal ? kTemporalFrames : 0);

@@ -8,6 +8,7 @@
 #include "app/options.h"
 #include "common/error.h"
 #include "engine/frame/render_memory.h"
+#include "voxel/settings_table.h"
 
 #include <cstdio>
 #include <memory>
@@ -15,10 +16,22 @@
 namespace grotto::app {
 namespace {
 
+// A setting of the settings table that the search fits, and the values it tries.
 struct Parameter {
-    const char* name;
-    float gpu::GtaoSettings::*field;
+    const char* key;
     std::vector<float> candidates;
+    // Its place among the estimator's settings (every fitted one is a heuristic of the estimator).
+    float voxel::EstimatorSettings::*field() const {
+        return std::get<float voxel::EstimatorSettings::*>(voxel::setting(key).value);
+    }
+    std::string name() const { return std::string(voxel::setting(key).key.substr(3)); }  // past "ao."
+};
+
+const std::vector<Parameter> kParameters = {
+    {"ao.radius_multiplier", {0.8f, 1.0f, 1.2f, 1.457f, 1.7f, 2.0f, 2.4f}},
+    {"ao.falloff_range", {0.1f, 0.3f, 0.45f, 0.615f, 0.8f, 1.0f}},
+    {"ao.final_value_power", {0.8f, 1.0f, 1.3f, 1.6f, 1.9f, 2.2f, 2.6f, 3.0f}},
+    {"ao.thin_occluder", {0.0f, 0.1f, 0.2f, 0.3f, 0.5f, 0.7f}},
 };
 
 struct Target {
@@ -44,8 +57,9 @@ void addTuneCommand(CLI::App& app) {
     cmd->add_option("--camera", args->camera, "Named camera in every world (default: each world's default)");
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--spp", args->spp, "Reference rays per pixel")->capture_default_str()->check(CLI::Range(1, 1 << 24));
+    const voxel::Setting& quality = voxel::setting("ao.quality");
     cmd->add_option("--quality", args->quality, "GTAO preset to fit")->capture_default_str()
-        ->check(CLI::IsMember({"low", "medium", "high", "ultra"}));
+        ->check(CLI::IsMember(std::vector<std::string>(quality.choices.begin(), quality.choices.end())));
     cmd->add_option("--rounds", args->rounds, "Most passes over the four settings")->capture_default_str()
         ->check(CLI::Range(1, 10));
     cmd->callback([args] {
@@ -61,28 +75,25 @@ void addTuneCommand(CLI::App& app) {
                               "--size");  // before minutes of tracing
             t.session = std::make_unique<RenderSession>(ctx, world, resolveAo(world, {}), resolveDetail(world, {}),
                                                         size.width, size.height);
-            t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).gtao.radius), uint32_t(args->spp),
+            t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).estimator.radius), uint32_t(args->spp),
                                         &ctx, t.session->posedObjects());
             requireSurface(t.reference, world, args->camera);
             targets.push_back(std::move(t));
         }
         AoFlags flags;
-        flags.method = "gtao";
-        flags.quality = args->quality;
+        flags.set.method = "gtao";
+        flags.set.quality = args->quality;
         flags.set.temporalHistory = 0;
-        // Each world keeps its own radius; the four heuristics are shared.
+        // Each world keeps its own radius; the fitted heuristics are shared.
         std::vector<AoOptions> base;
         for (const Target& t : targets) base.push_back(resolveAo(*t.world, flags));
-        gpu::GtaoSettings best = base[0].gtao;
+        voxel::EstimatorSettings best = base[0].estimator;
 
-        auto evaluate = [&](const gpu::GtaoSettings& s, bool print) {
+        auto evaluate = [&](const voxel::EstimatorSettings& s, bool print) {
             double sum = 0.0;
             for (size_t i = 0; i < targets.size(); ++i) {
                 AoOptions ao = base[i];
-                ao.gtao.radiusMultiplier = s.radiusMultiplier;
-                ao.gtao.falloffRange = s.falloffRange;
-                ao.gtao.finalValuePower = s.finalValuePower;
-                ao.gtao.thinOccluderCompensation = s.thinOccluderCompensation;
+                for (const Parameter& p : kParameters) ao.estimator.*p.field() = s.*p.field();
                 const Target& t = targets[i];
                 const CullingOptions culling = cullingOptions(resolveDetail(*t.world, {}));
                 const AoError e = measureAo(ctx, *t.session, t.camera, ao, culling, t.reference, 1, 0, false).error;
@@ -93,9 +104,9 @@ void addTuneCommand(CLI::App& app) {
             }
             return sum / double(targets.size());
         };
-        auto show = [](const gpu::GtaoSettings& s) {
-            std::printf("radius_multiplier %.3f falloff_range %.3f final_value_power %.2f thin_occluder %.2f",
-                        s.radiusMultiplier, s.falloffRange, s.finalValuePower, s.thinOccluderCompensation);
+        auto show = [](const voxel::EstimatorSettings& s) {
+            for (const Parameter& p : kParameters)
+                std::printf("%s%s %.3f", &p == &kParameters.front() ? "" : " ", p.name().c_str(), s.*p.field());
         };
         std::printf("before: ");
         show(best);
@@ -104,21 +115,15 @@ void addTuneCommand(CLI::App& app) {
         double bestRmse = beforeRmse;
         std::printf("  mean rmse %.5f\n", bestRmse);
 
-        const std::vector<Parameter> parameters = {
-            {"radius_multiplier", &gpu::GtaoSettings::radiusMultiplier, {0.8f, 1.0f, 1.2f, 1.457f, 1.7f, 2.0f, 2.4f}},
-            {"falloff_range", &gpu::GtaoSettings::falloffRange, {0.1f, 0.3f, 0.45f, 0.615f, 0.8f, 1.0f}},
-            {"final_value_power", &gpu::GtaoSettings::finalValuePower, {0.8f, 1.0f, 1.3f, 1.6f, 1.9f, 2.2f, 2.6f, 3.0f}},
-            {"thin_occluder", &gpu::GtaoSettings::thinOccluderCompensation, {0.0f, 0.1f, 0.2f, 0.3f, 0.5f, 0.7f}},
-        };
         for (int round = 1; round <= args->rounds; ++round) {
             bool changed = false;
-            for (const Parameter& p : parameters) {
+            for (const Parameter& p : kParameters) {
                 for (float v : p.candidates) {
-                    if (v == best.*p.field) continue;
-                    gpu::GtaoSettings s = best;
-                    s.*p.field = v;
+                    if (v == best.*p.field()) continue;
+                    voxel::EstimatorSettings s = best;
+                    s.*p.field() = v;
                     const double rmse = evaluate(s, false);
-                    std::printf("round %d %-18s %.3f: mean rmse %.5f%s\n", round, p.name, v, rmse,
+                    std::printf("round %d %-18s %.3f: mean rmse %.5f%s\n", round, p.name().c_str(), v, rmse,
                                 rmse < bestRmse ? "  (better)" : "");
                     std::fflush(stdout);
                     if (rmse < bestRmse) bestRmse = rmse, best = s, changed = true;

@@ -1,31 +1,30 @@
 #pragma once
 // Which AO a frame gets and with what settings: presets, world-file values and
-// command-line overrides merged in that order, then checked against their ranges.
+// command-line overrides merged in that order, then checked against their ranges
+// (voxel/settings_table.cpp holds the rows). The settings are the estimator's and
+// the chain's (voxel/ao_values.h), packed into the GPU's struct for the shaders.
 #include "shaders/shared/gtao.h"
+#include "voxel/ao_values.h"
 #include "voxel/world_desc.h"
 
 #include <string>
 
 namespace grotto {
 
-// The estimator in the AO chain. Voxel traces exact rays through the world's
-// voxels (the reference's definition, a few rays a frame); hybrid adds such rays
-// to GTAO's horizons. SSAO and HBAO are baselines for measuring GTAO against
-// (docs/tradeoff.md). Each replaces only the main pass, writing the same image,
-// so depth prefilter, denoise, temporal and upsample are shared.
-enum class AoMethod { Gtao, Ssao, Hbao, Voxel, Hybrid };
+// The estimator in the AO chain, in the order of ao.method's choices. Voxel
+// traces exact rays through the world's voxels (the reference's definition, a
+// few rays a frame); hybrid adds such rays to GTAO's horizons. SSAO and HBAO are
+// baselines for measuring GTAO against (docs/tradeoff.md). Each replaces only the
+// main pass, writing the same image, so depth prefilter, denoise, temporal and
+// upsample are shared.
+enum class AoMethod { Gtao, Voxel, Hybrid, Ssao, Hbao };
 
 struct AoOptions {
-    bool enabled = true;                // false for --ao off (no AO chain at all)
-    AoMethod method = AoMethod::Gtao;   // --ao gtao | voxel | hybrid | ssao | hbao
-    std::string quality = "high";       // low, medium, high, ultra or custom
-    // SSAO kernel size, from the quality: low 8, medium 16, high 32 (custom too), ultra 64.
-    // HBAO takes GTAO's sample budget: 2 x slices directions, steps per side.
-    uint32_t ssaoSamples = 32;
-    // Voxel and hybrid: rays per AO pixel per frame, from the quality (voxelRaysPreset) or --rays.
-    uint32_t voxelRays = 6;
-    bool fullResolution = false;   // run the chain at full resolution (for comparison)
-    gpu::GtaoSettings gtao{};
+    bool enabled = true;               // false for --ao off (no AO chain at all)
+    AoMethod method = AoMethod::Gtao;  // --ao gtao | voxel | hybrid | ssao | hbao
+    std::string quality = "high";      // low, medium, high, ultra or custom
+    voxel::EstimatorSettings estimator;
+    voxel::ChainSettings chain;
 };
 
 // "gtao", "voxel", "hybrid", "ssao", "hbao" (the timestamp names the main pass by too).
@@ -44,14 +43,14 @@ inline constexpr double kMinAoRadius = 1e-15, kMaxAoRadius = 1e15;
 inline constexpr double kDefaultRadiusVoxels = 4.0;
 
 // Frames the temporal pass averages by default.
-inline constexpr uint32_t kDefaultTemporalHistory = 16;
+inline constexpr uint32_t kDefaultTemporalHistory = voxel::ChainSettings{}.temporalHistory;
 
-// The defaults (XeGTAO's, three of them refitted to our reference: docs/tuning.md)
-// with the preset's slices and steps; radius in world units.
-gpu::GtaoSettings gtaoPreset(const std::string& quality, double radius);
+// The defaults with the preset's loop shape (slices, steps, SSAO samples, rays);
+// radius in world units. Throws grotto::Error (input) for an unknown quality.
+voxel::EstimatorSettings estimatorPreset(const std::string& quality, double radius);
 
-// The settings `desc` sets, over those in `s` (unset ones stay); unchecked.
-void applyAoOverrides(const voxel::AoDesc& desc, gpu::GtaoSettings& s);
+// The settings `desc` sets, over those in `ao` (unset ones stay); unchecked.
+void applyAoOverrides(const voxel::AoDesc& desc, AoOptions& ao);
 
 // Preset and values from the world file; throws grotto::Error naming `where`.
 AoOptions aoOptionsFor(const voxel::AoDesc& desc, double voxelSize, const std::string& where);
@@ -59,9 +58,13 @@ AoOptions aoOptionsFor(const voxel::AoDesc& desc, double voxelSize, const std::s
 // Throws grotto::Error (input) naming the setting and its accepted range: as
 // `where`'s field, or as its flag when `where` is kCommandLine.
 inline const std::string kCommandLine = "command line";
-void validateGtao(const gpu::GtaoSettings& s, const std::string& where);
+void validateAo(const AoOptions& ao, const std::string& where);
 
-// The command-line flag of a world-file AO setting: radius_multiplier -> --radius-multiplier.
-std::string aoFlagName(const std::string& setting);
+// Whether `a` and `b` differ in a setting held in the estimator's or the chain's
+// settings whose change makes any of `parts` stale (voxel::Invalidates).
+bool differIn(const AoOptions& a, const AoOptions& b, unsigned parts);
+
+// The settings as the shaders take them (shaders/shared/gtao.h).
+gpu::GtaoSettings gpuSettings(const AoOptions& ao);
 
 }  // namespace grotto

@@ -10,6 +10,7 @@
 #include "engine/frame/render_memory.h"
 #include "engine/passes/trace_inputs.h"
 #include "engine/vk/readback.h"
+#include "voxel/settings_table.h"
 
 #include <chrono>
 #include <cmath>
@@ -23,7 +24,7 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
     : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), targets_(ctx), objects_(objects), timestamps_(ctx, 16) {
     if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
-        validateGtao(ao_.gtao, "AO settings");
+        validateAo(ao_, "AO settings");
         requireOccupancy(ao_);
         // Before any allocation can fail halfway.
         requireRenderFits(ctx, shapeFor(width, height, ao_, lighting_), "image size");
@@ -59,7 +60,7 @@ void Renderer::createPasses() {
     if (!denoisePass_) denoisePass_ = std::make_unique<DenoisePass>(ctx);
     if (!upsamplePass_) upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
     if (temporal() && !temporalPass_)
-        temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.gtao.denoisePasses, objects_ != nullptr, motion());
+        temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.chain.denoisePasses, objects_ != nullptr, motion());
 }
 
 FrameShape Renderer::shapeFor(uint32_t width, uint32_t height, const AoOptions& ao,
@@ -153,20 +154,17 @@ void Renderer::requireOccupancy(const AoOptions& ao) const {
 }
 
 void Renderer::setAo(const AoOptions& ao) {
-    validateGtao(ao.gtao, "AO settings");
+    validateAo(ao, "AO settings");
     requireOccupancy(ao);
     const FrameShape shape = shapeFor(width(), height(), ao, lighting_);
     requireRenderFits(ctx_, shape, "AO settings");
     const AoOptions old = std::exchange(ao_, ao);
-    const bool wasTemporal = old.enabled && old.gtao.temporalHistory > 0;
+    const bool wasTemporal = old.enabled && old.chain.temporalHistory > 0;
     // What each pass and target is made from (its shader's specialisation, its size).
     const bool chain = old.enabled != ao_.enabled;
-    const bool estimator = old.method != ao_.method || old.ssaoSamples != ao_.ssaoSamples ||
-                           old.voxelRays != ao_.voxelRays ||
-                           old.gtao.sliceCount != ao_.gtao.sliceCount ||
-                           old.gtao.stepsPerSlice != ao_.gtao.stepsPerSlice ||
-                           old.gtao.sampleDistributionPower != ao_.gtao.sampleDistributionPower;
-    const bool denoise = old.gtao.denoisePasses != ao_.gtao.denoisePasses;
+    const bool estimator = old.method != ao_.method || old.estimator.ssaoSamples != ao_.estimator.ssaoSamples ||
+                           differIn(old, ao_, voxel::kEstimatorPipeline);  // its loop shape: the settings table's column
+    const bool denoise = old.chain.denoisePasses != ao_.chain.denoisePasses;
     if (chain) compositePass_.reset();
     if (chain || estimator) estimatorPass_.reset();
     if (chain || denoise || wasTemporal != temporal()) temporalPass_.reset();
@@ -185,7 +183,7 @@ void Renderer::setAo(const AoOptions& ao) {
 
 TargetRef Renderer::aoOutput() const {
     if (!ao_.enabled) return TargetId::AoRaw;  // the 1x1 placeholder the composite binds
-    return temporal() ? TargetRef{TargetId::AoHistory, historyIndex_} : denoisedTarget(ao_.gtao.denoisePasses);
+    return temporal() ? TargetRef{TargetId::AoHistory, historyIndex_} : denoisedTarget(ao_.chain.denoisePasses);
 }
 
 void Renderer::pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record) {
@@ -266,7 +264,7 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
         estimatorPass_->record(cmd, image(TargetId::Surface), ao, aoConstants_, traceConstants_, scene_.occupancy.get());
     });
     // With the temporal pass, the final blur is part of it.
-    const uint32_t passes = ao_.gtao.denoisePasses, blurs = temporal() && passes > 0 ? passes - 1 : passes;
+    const uint32_t passes = ao_.chain.denoisePasses, blurs = temporal() && passes > 0 ? passes - 1 : passes;
     timestamps_.begin(cmd, DenoisePass::kTimestamp);
     for (uint32_t i = 0; i < blurs; ++i)
         pass(cmd, DenoisePass::declare(i), [&] { denoisePass_->record(cmd, ao, passes, i, aoConstants_); });
@@ -286,8 +284,8 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
     const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
     std::memcpy(frame_.mapped(), &uniforms, sizeof uniforms);
     if (ao_.enabled) {
-        const uint32_t scale = ao_.fullResolution ? 1 : 2;
-        gpu::GtaoConstants constants = gtaoConstants(camera, ao_.gtao, frameIndex, scale);
+        const uint32_t scale = ao_.chain.fullResolution ? 1 : 2;
+        gpu::GtaoConstants constants = gtaoConstants(camera, gpuSettings(ao_), frameIndex, scale);
         if (objects_) normalTable(constants.viewNormals, glm::transpose(camera.basis), poses_);
         std::memcpy(aoConstants_.mapped(), &constants, sizeof constants);
         if (temporal()) {
@@ -330,9 +328,9 @@ void Renderer::submitAndWait(VkCommandBuffer cmd) {
 
 void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
     if (!scene_.occupancy) return;
-    const double radius = ao_.enabled ? ao_.gtao.radius : 1.0;
+    const double radius = ao_.enabled ? ao_.estimator.radius : 1.0;
     gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy, scene_.voxelSize, scene_.worldOrigin,
-                                           lighting_.sunDirection, ao_.voxelRays, radius);
+                                           lighting_.sunDirection, ao_.estimator.rays, radius);
     t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
     t.frameIndex = frameIndex;
     if (softShadows()) {
@@ -342,7 +340,7 @@ void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
         const gpu::TemporalConstants r = temporalConstants(camera, shadowCamera_ ? &*shadowCamera_ : nullptr);
         t.currentToPrevious = r.currentToPrevious;
         t.previousNdcToViewMul_Add = r.previousNdcToViewMul_Add;
-        t.shadowHistory = temporal() ? ao_.gtao.temporalHistory : kDefaultTemporalHistory;
+        t.shadowHistory = temporal() ? ao_.chain.temporalHistory : kDefaultTemporalHistory;
         t.shadowReset = (r.reset != 0u ? 1u : 0u) | (objects_ && objects_->moving ? 2u : 0u);
         shadowCamera_ = camera;
         shadowFrame_ = frameIndex;
@@ -360,7 +358,7 @@ void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
 
 void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {
     copy.begin({.width = width(), .height = height(), .half = targets_.ao().half,
-                .scale = ao_.fullResolution ? 1u : 2u, .ao = ao_.enabled, .toneMap = toneMapCurve(lighting_.toneMap),
+                .scale = ao_.chain.fullResolution ? 1u : 2u, .ao = ao_.enabled, .toneMap = toneMapCurve(lighting_.toneMap),
                 .camera = camera, .poses = poses_, .albedo = scene_.albedo});
     auto copyPart = [&](FrameCopy::Part part, TargetRef target, uint32_t bytesPerPixel) {
         const vk::Image& from = image(target);
@@ -382,7 +380,7 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
             aoAov_ = true;
             targets_.update(wantedShape());
         }
-        const uint32_t passes = ao_.gtao.denoisePasses;
+        const uint32_t passes = ao_.chain.denoisePasses;
         if (temporal() && passes > 0)
             pass(cmd, DenoisePass::declare(passes - 1),
                  [&] { denoisePass_->record(cmd, targets_.ao(), passes, passes - 1, aoConstants_); });

@@ -121,7 +121,7 @@ private:
     void recordAo(VkCommandBuffer cmd);
     // The last frame's images into `copy`, after everything recorded before.
     void recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera);
-    bool temporal() const { return ao_.enabled && ao_.gtao.temporalHistory > 0; }
+    bool temporal() const { return ao_.enabled && ao_.chain.temporalHistory > 0; }
     // Sun shadows need the scene's occupancy; a scene uploaded from a mesh alone has none.
     bool shadows() const { return lighting_.sunShadows && scene_.occupancy; }
     // A sun of finite size: jittered rays accumulated in a history (shadow_pass.h).

@@ -29,7 +29,7 @@ protected:
         desc.radius = radius;
         AoOptions o = aoOptionsFor(desc, 1.0, "test");
         o.method = method;
-        o.gtao.temporalHistory = 0;
+        o.chain.temporalHistory = 0;
         return o;
     }
 };

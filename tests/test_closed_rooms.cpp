@@ -64,7 +64,7 @@ TEST_F(ClosedRooms, ShowNoSkyAndNoSunFromInside) {
                                                         [&](int x, int y, int z) { return room.solid(x, y, z); });
         auto scene = uploadScene(ctx(), world);
         AoOptions noAo;
-        noAo.gtao = gtaoPreset("high", 2.0);
+        noAo.estimator = estimatorPreset("high", 2.0);
         noAo.enabled = false;
         voxel::Lighting lighting = world.desc().lighting;
         lighting.sunShadows = true;

@@ -25,7 +25,7 @@ using test::GpuTest;
 
 AoOptions noAo() {
     AoOptions ao;
-    ao.gtao = gtaoPreset("high", 1.0);
+    ao.estimator = estimatorPreset("high", 1.0);
     ao.enabled = false;
     return ao;
 }

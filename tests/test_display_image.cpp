@@ -27,7 +27,7 @@ TEST_F(DisplayImage, IsTheColourThroughTheSharedToneMap) {
     light.exposure = 1.0f;
     AoOptions ao;
     ao.enabled = false;
-    ao.gtao = gtaoPreset("high", 1.0);  // unused, but checked
+    ao.estimator = estimatorPreset("high", 1.0);  // unused, but checked
     auto scene = uploadScene(ctx(), world);
     const Camera camera = makeCamera(test::lookAt({0, 9, 20}, {0, 0, 0}), 61, 37);
     Renderer renderer(ctx(), *scene, light, ao, 61, 37);

@@ -31,13 +31,13 @@ protected:
         Renderer renderer(ctx(), *scene, world.desc().lighting, ao, w, h);
         renderer.render(r.camera);
         r.img = renderer.readback(r.camera, true);
-        r.constants = gtaoConstants(r.camera, ao.gtao, 0, ao.fullResolution ? 1 : 2);
+        r.constants = gtaoConstants(r.camera, gpuSettings(ao), 0, ao.chain.fullResolution ? 1 : 2);
         return r;
     }
     static AoOptions options(const std::string& quality, double radius = 4.0) {
         AoOptions o;
         o.quality = quality;
-        o.gtao = gtaoPreset(quality, radius);
+        o.estimator = estimatorPreset(quality, radius);
         return o;
     }
     // World position seen at a full-res pixel.
@@ -50,7 +50,7 @@ TEST_F(Gtao, GpuMatchesCpuTwinForEveryPreset) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
     for (const char* quality : {"low", "medium", "high", "ultra", "full-res high"}) {
         AoOptions ao = options(quality[0] == 'f' ? "high" : quality);
-        ao.fullResolution = quality[0] == 'f';
+        ao.chain.fullResolution = quality[0] == 'f';
         const Rendered r = render(world, world.camera("table", 16.0 / 9.0), 160, 90, ao);
         const GtaoTwin twin(r.constants, r.img.depthBuffer, r.img.surfaceIds);
         const glm::uvec2 half = r.constants.halfSize;
@@ -101,7 +101,7 @@ TEST_F(Gtao, CornerDarkensMonotonicallyAndSymmetrically) {
         return (y < 0 && x >= -40) || (x < 0 && y >= 0);
     });
     AoOptions ao = options("ultra", 4.0);
-    ao.gtao.denoisePasses = 2;
+    ao.chain.denoisePasses = 2;
     const Rendered r = render(corner, test::lookAt({14, 14, 24}, {0, 0, 0}, 60.0), 320, 240, ao);
     // Average AO by distance from the corner line, floor and wall apart.
     std::map<int, std::pair<double, int>> floorBins, wallBins;
@@ -133,8 +133,8 @@ TEST_F(Gtao, CornerDarkensMonotonicallyAndSymmetrically) {
 TEST_F(Gtao, TinySizesAndOneSliceOneStepStayFinite) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
     AoOptions minimal = options("low");
-    minimal.gtao.sliceCount = 1;
-    minimal.gtao.stepsPerSlice = 1;
+    minimal.estimator.slices = 1;
+    minimal.estimator.steps = 1;
     for (auto [w, h] : {std::pair{1u, 1u}, {2u, 2u}, {3u, 5u}, {333u, 177u}})
         for (const AoOptions& ao : {minimal, options("high")}) {
             const Rendered r = render(world, world.camera("table", 16.0 / 9.0), w, h, ao);
@@ -198,9 +198,9 @@ TEST_F(Gtao, ThinOccluderCompensationOpensBehindPolesButKeepsWallContact) {
     };
     const voxel::CameraDesc cam = test::lookAt({-12, 9, 14}, {2, 0, -2}, 60.0);
     AoOptions plain = options("ultra", 3.0);
-    plain.gtao.thinOccluderCompensation = 0.0f;  // off against on (the default is 0.2)
+    plain.estimator.thinOccluder = 0.0f;  // off against on (the default is 0.2)
     AoOptions thin = plain;
-    thin.gtao.thinOccluderCompensation = 0.4f;
+    thin.estimator.thinOccluder = 0.4f;
     const Rendered a = render(scene, cam, 256, 192, plain), b = render(scene, cam, 256, 192, thin);
     auto behindPole = [](glm::dvec3 p) { return glm::length(glm::dvec2(p.x, p.z)) < 3.0 && glm::length(glm::dvec2(p.x, p.z)) > 0.8 && p.x > 0.2; };
     auto wallContact = [](glm::dvec3 p) { return p.x > 7.5 && p.x < 9.5 && std::abs(p.z) < 6; };
@@ -221,9 +221,9 @@ TEST_F(Gtao, ThinOccluderCompensationOpensTheFloorBehindThePolesOfThin) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "thin.json");
     const voxel::CameraDesc cam = test::lookAt({0, 7, -7}, {0, 0, -21}, 60.0);
     AoOptions plain = options("ultra");
-    plain.gtao.thinOccluderCompensation = 0.0f;
+    plain.estimator.thinOccluder = 0.0f;
     AoOptions thin = plain;
-    thin.gtao.thinOccluderCompensation = 0.4f;
+    thin.estimator.thinOccluder = 0.4f;
     const Rendered a = render(world, cam, 256, 192, plain), b = render(world, cam, 256, 192, thin);
     auto behindPole = [](glm::dvec3 p) {
         const double poleX = -24.0 + 3.0 * std::round((p.x + 24.0) / 3.0);
@@ -258,7 +258,7 @@ TEST_F(Gtao, CompositeShadesWithTheAoItReports) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
     for (const bool temporal : {false, true}) {
         AoOptions ao = options("high");
-        ao.gtao.temporalHistory = temporal ? 16 : 0;
+        ao.chain.temporalHistory = temporal ? 16 : 0;
         const Rendered r = render(world, world.camera("table", 16.0 / 9.0), 161, 91, ao);
         const voxel::Lighting& l = world.desc().lighting;
         const glm::vec3 sun = l.sunColor * l.sunIntensity, ambient = l.ambientColor * l.ambientIntensity;
@@ -300,8 +300,8 @@ TEST_F(Gtao, MaxDistanceFadesAoOutOverItsLastTenth) {
             if (std::isfinite(depthAt(x, y))) depths.push_back(depthAt(x, y));
     std::nth_element(depths.begin(), depths.begin() + depths.size() / 2, depths.end());
     AoOptions limited = unlimited;
-    limited.gtao.maxDistance = depths[depths.size() / 2];  // half the surface pixels lie beyond
-    const float d = limited.gtao.maxDistance;
+    limited.estimator.maxDistance = depths[depths.size() / 2];  // half the surface pixels lie beyond
+    const float d = limited.estimator.maxDistance;
     const Rendered b = render(world, world.camera("table", 16.0 / 9.0), 160, 90, limited);
     const GtaoTwin twin(b.constants, b.img.depthBuffer, b.img.surfaceIds);
     int nearer = 0, fading = 0, beyond = 0, occludedNearer = 0;

@@ -157,7 +157,7 @@ protected:
     Camera camera_ = makeCamera(test::lookAt({48, 50, 95}, {48, 10, 30}), kW, kH);
     AoOptions noAo() const {
         AoOptions ao;
-        ao.gtao = gtaoPreset("high", 2.0);
+        ao.estimator = estimatorPreset("high", 2.0);
         ao.enabled = false;
         return ao;
     }
@@ -315,8 +315,8 @@ TEST_P(EditHistory, RestartsWithinTheAoRadiusForOneFrame) {
     }, 1.0, offset);
     auto scene = uploadScene(ctx(), world.mesh(), world.desc());
     AoOptions ao;
-    ao.gtao = gtaoPreset("medium", 2.0);
-    ao.gtao.temporalHistory = 16;
+    ao.estimator = estimatorPreset("medium", 2.0);
+    ao.chain.temporalHistory = 16;
     const uint32_t w = 160, h = 120;
     Renderer renderer(ctx(), *scene, world.desc().lighting, ao, w, h);
     const Camera camera = makeCamera(test::lookAt(offset + glm::dvec3(0, 30, 30), offset), w, h);
@@ -326,7 +326,7 @@ TEST_P(EditHistory, RestartsWithinTheAoRadiusForOneFrame) {
     // A box of voxels on the floor, off the centre of the view.
     const voxel::WorldBox box{offset + glm::dvec3(3, 0, -4), offset + glm::dvec3(8, 2, 2)};
     renderer.invalidateHistory(box);
-    const double radius = ao.gtao.radius, reach = aoReach(ao);
+    const double radius = ao.estimator.radius, reach = aoReach(ao);
     EXPECT_GT(reach, radius);
     auto distance = [&](const glm::dvec3& p) {  // Euclidean and per axis, to the box
         const glm::dvec3 d = glm::max(glm::max(box.min - p, p - box.max), glm::dvec3(0.0));
@@ -367,8 +367,8 @@ TEST_F(LiveScene, ResizeLightingAndAoMatchAFreshRenderer) {
     dusk.sunColor = {1.0f, 0.6f, 0.4f};
     dusk.ambientIntensity *= 0.5f;
     AoOptions high;
-    high.gtao = gtaoPreset("high", 3.0);
-    high.gtao.temporalHistory = 16;
+    high.estimator = estimatorPreset("high", 3.0);
+    high.chain.temporalHistory = 16;
     auto view = [](uint32_t w, uint32_t h) { return makeCamera(test::lookAt({40, 30, 80}, {40, 2, 20}), w, h); };
     // The live renderer's frame against a fresh renderer's, both rendering `frames`.
     auto expectFresh = [&](Renderer& live, const voxel::Lighting& l, const AoOptions& ao, uint32_t w, uint32_t h,
@@ -390,9 +390,9 @@ TEST_F(LiveScene, ResizeLightingAndAoMatchAFreshRenderer) {
     live.setLighting(dusk);  // uniforms only: the history goes on
     expectFresh(live, dusk, high, 131, 77, {3, 4}, "lighting");
     AoOptions medium = high;
-    medium.gtao = gtaoPreset("medium", 5.0);
-    medium.gtao.denoisePasses = 2;
-    medium.gtao.temporalHistory = 8;
+    medium.estimator = estimatorPreset("medium", 5.0);
+    medium.chain.denoisePasses = 2;
+    medium.chain.temporalHistory = 8;
     live.setAo(medium);
     expectFresh(live, dusk, medium, 131, 77, {5}, "AO settings");
     AoOptions off = medium;
@@ -400,8 +400,8 @@ TEST_F(LiveScene, ResizeLightingAndAoMatchAFreshRenderer) {
     live.setAo(off);
     expectFresh(live, dusk, off, 131, 77, {6}, "AO off");
     AoOptions full = high;
-    full.fullResolution = true;
-    full.gtao.temporalHistory = 0;
+    full.chain.fullResolution = true;
+    full.chain.temporalHistory = 0;
     full.method = AoMethod::Hbao;
     live.setAo(full);
     live.resize(64, 40);

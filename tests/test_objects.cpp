@@ -36,8 +36,8 @@ voxel::ObjectDesc movingDesc(glm::dvec3 pivot) {
 
 AoOptions options() {
     AoOptions o;
-    o.gtao = gtaoPreset("high", 3.0);
-    o.gtao.temporalHistory = 16;
+    o.estimator = estimatorPreset("high", 3.0);
+    o.chain.temporalHistory = 16;
     return o;
 }
 

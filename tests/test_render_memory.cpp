@@ -48,7 +48,7 @@ TEST_F(GpuTest, RenderMemoryEstimateMatchesTheTargetsOfEveryShape) {
                     voxel::AoDesc aoDesc = desc.ao;
                     aoDesc.method = method;
                     AoOptions ao = aoOptionsFor(aoDesc, 1.0, "test");
-                    ao.fullResolution = fullResolution;
+                    ao.chain.fullResolution = fullResolution;
                     Renderer renderer(ctx(), scene.gpu(), lighting, ao, w, h, moving ? objects.get() : nullptr);
                     const std::string name = std::string(sunAngle > 0 ? "soft" : "hard") + " shadows, " +
                                              (moving ? "moving objects, " : "no objects, ") + method +

@@ -56,8 +56,8 @@ SoftSunError softSunError(vk::Context& ctx, float angle, uint32_t frames, double
     lighting.sunAngle = angle;
     // The temporal AO's history caps the shadow's: long enough for a plain mean of every frame.
     AoOptions ao;
-    ao.gtao = gtaoPreset("low", 2.0);
-    ao.gtao.temporalHistory = frames;
+    ao.estimator = estimatorPreset("low", 2.0);
+    ao.chain.temporalHistory = frames;
     Renderer renderer(ctx, *scene, lighting, ao, 160, 90);
     const voxel::CameraDesc end = world.camera("table", 16.0 / 9.0);
     const glm::dvec3 right = glm::normalize(glm::cross(end.target - end.position, glm::dvec3(0, 1, 0)));
@@ -123,7 +123,7 @@ TEST_F(SoftSun, FirstFramesAfterACutAnEditOrANewSunAreOneRayFromTheDisc) {
     voxel::Lighting lighting = world.desc().lighting;
     lighting.sunAngle = 8.0f;
     AoOptions noAo;
-    noAo.gtao = gtaoPreset("low", 2.0);
+    noAo.estimator = estimatorPreset("low", 2.0);
     noAo.enabled = false;
     Renderer renderer(ctx(), *scene, lighting, noAo, 160, 90);
     const Camera camera = worldCamera(world, "table", 160, 90);

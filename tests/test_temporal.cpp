@@ -38,8 +38,8 @@ Half half(const FrameImages& f) {
 
 AoOptions options(uint32_t history = 16) {
     AoOptions o;
-    o.gtao = gtaoPreset("high", 3.0);
-    o.gtao.temporalHistory = history;
+    o.estimator = estimatorPreset("high", 3.0);
+    o.chain.temporalHistory = history;
     return o;
 }
 
@@ -98,7 +98,7 @@ TEST_F(Temporal, StillCameraReprojectsEveryPixelOntoItself) {
     // two (it blurs the first pass's output and reads the raw AO for its clamp).
     for (const uint32_t denoise : {1u, 2u}) {
         AoOptions ao = options();
-        ao.gtao.denoisePasses = denoise;
+        ao.chain.denoisePasses = denoise;
         Run run = start(world, ao, 160, 90);
         const Camera camera = worldCamera(world, "table", 160, 90);
         run.renderer->render(camera, 7);

@@ -297,7 +297,7 @@ TEST_F(Occupancy, EditsStagedThroughALiveSceneKeepGpuAndCpuInStep) {
     touched.push_back(undone.voxels);
     {
         AoOptions noAo;
-        noAo.gtao = gtaoPreset("high", 2.0);
+        noAo.estimator = estimatorPreset("high", 2.0);
         noAo.enabled = false;
         Renderer renderer(ctx(), scene.gpu(), w.desc().lighting, noAo, 64, 48);
         const Camera camera = makeCamera(test::lookAt({0, 60, 60}, {0, 0, 0}), 64, 48);
@@ -386,7 +386,7 @@ ShadowCheck checkShadows(const voxel::World& world, const FrameImages& f, const 
 FrameImages shadowFrame(vk::Context& ctx, const voxel::World& world, const Camera& camera) {
     auto scene = uploadScene(ctx, world);
     AoOptions noAo;
-    noAo.gtao = gtaoPreset("high", 2.0);
+    noAo.estimator = estimatorPreset("high", 2.0);
     noAo.enabled = false;
     voxel::Lighting lighting = world.desc().lighting;
     lighting.sunShadows = true;

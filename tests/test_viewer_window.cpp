@@ -123,6 +123,24 @@ TEST_F(CliErrors, ViewerRefusesABadScriptSetting) {
                   "ao.method", dir_ / "x.png", kUnderXvfb);
 }
 
+// The command line's AO settings outlast a script's change of another setting:
+// the world saved after it still has them (they were dropped from the viewer's settings).
+TEST_F(CliErrors, ViewerKeepsCommandLineAoSettingsAfterAScriptChange) {
+    REQUIRE_XVFB();
+    const fs::path script = writeText("keep.json", R"({"actions": [
+        {"frame": 1, "set": {"lighting.exposure": 0.8}}, {"frame": 2, "save_world": "kept.json"}]})");
+    const test::RunResult v = runGrotto("view " + good_.string() + " --size 64x48 --thin-occluder 0.45 --temporal 3 " +
+                                            "--ao-full-res --script " + script.string() + " --frames 3", kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    std::ifstream in(dir_ / "kept.json");
+    const nlohmann::json world = nlohmann::json::parse(in, nullptr, false);
+    ASSERT_TRUE(world.is_object());
+    EXPECT_NEAR(world["lighting"]["exposure"].get<double>(), 0.8, 1e-6);
+    EXPECT_NEAR(world["ao"].value("thin_occluder", 0.0), 0.45, 1e-9) << world["ao"].dump();
+    EXPECT_EQ(world["ao"].value("temporal_history", 0), 3) << world["ao"].dump();
+    EXPECT_EQ(world["ao"].value("full_resolution", false), true) << world["ao"].dump();
+}
+
 }  // namespace
 }  // namespace grotto
 

@@ -2,12 +2,15 @@
 
 #include "common/error.h"
 #include "common/file_kind.h"
+#include "common/overloaded.h"
 #include "voxel/grid_block.h"
 #include "voxel/json_reader.h"
+#include "voxel/settings_table.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace grotto::voxel {
@@ -41,10 +44,6 @@ SolidRule parseSolidRule(Reader& r, const std::string& key) {
 
 namespace {
 
-glm::vec3 color(Reader& r, const std::string& key, glm::vec3 fallback) {
-    return glm::vec3(r.vec3(key, glm::dvec3(fallback), 0.0, 1e3));
-}
-
 CameraDesc parseCamera(Reader r) {
     CameraDesc c;
     c.position = r.vec3("position", c.position);
@@ -61,68 +60,69 @@ CameraDesc parseCamera(Reader r) {
     return c;
 }
 
-void parseLighting(Reader r, Lighting& l) {
-    if (r.has("sun")) {
-        Reader s = r.child("sun");
-        glm::dvec3 d = s.vec3("direction", glm::dvec3(l.sunDirection));
-        if (glm::length(d) < 1e-9) s.fail("direction", "must not be zero");
-        l.sunDirection = glm::vec3(glm::normalize(d));
-        l.sunColor = color(s, "color", l.sunColor);
-        l.sunIntensity = float(s.number("intensity", l.sunIntensity, 0.0, 1e3));
-        l.sunShadows = s.boolean("shadows", l.sunShadows);
-        l.sunAngle = float(s.number("angle", l.sunAngle, 0.0, 30.0));
-    }
-    if (r.has("ambient")) {
-        Reader a = r.child("ambient");
-        l.ambientColor = color(a, "color", l.ambientColor);
-        l.ambientIntensity = float(a.number("intensity", l.ambientIntensity, 0.0, 1e3));
-    }
-    if (r.has("sky")) {
-        Reader s = r.child("sky");
-        l.skyZenith = color(s, "zenith", l.skyZenith);
-        l.skyHorizon = color(s, "horizon", l.skyHorizon);
-    }
-    l.exposure = float(r.number("exposure", l.exposure, 1e-3, 1e3));
-    const std::string toneMap = r.string("tone_map", l.toneMap == ToneMap::Filmic ? "filmic" : "linear");
-    if (toneMap != "filmic" && toneMap != "linear") r.fail("tone_map", "unknown tone map '" + toneMap + "'", "accepted: filmic, linear");
-    l.toneMap = toneMap == "filmic" ? ToneMap::Filmic : ToneMap::Linear;
+// A choice's value, refused naming the row's accepted values when it is none of them.
+size_t choiceIndex(Reader& r, const std::string& name, const Setting& s, const std::string& value) {
+    const auto it = std::find(s.choices.begin(), s.choices.end(), value);
+    if (it == s.choices.end())
+        r.fail(name, "unknown " + settingLabel(s) + " '" + value + "'", "accepted: " + acceptedText(s));
+    return size_t(it - s.choices.begin());
 }
 
-void parseDetail(Reader r, Detail& d) {
-    d.lodBias = r.number("lod_bias", d.lodBias, 0.0, 64.0);
-    d.occlusionCulling = r.boolean("occlusion_culling", d.occlusionCulling);
+// Field `name` of `r` into the setting's place in `w`, checked against its row.
+void readSetting(Reader& r, const std::string& name, const Setting& s, WorldDesc& w) {
+    std::visit(Overloaded{
+                   [&](std::string AoDesc::*m) {
+                       w.ao.*m = r.string(name, w.ao.*m);
+                       choiceIndex(r, name, s, w.ao.*m);
+                   },
+                   [&](std::optional<double> AoDesc::*m) {
+                       if (r.has(name)) w.ao.*m = r.number(name, 0.0, s.lo, s.hi);
+                   },
+                   [&](std::optional<int> AoDesc::*m) {
+                       if (r.has(name)) w.ao.*m = int(r.integer(name, 0, int64_t(s.lo), int64_t(s.hi)));
+                   },
+                   [&](std::optional<bool> AoDesc::*m) {
+                       if (r.has(name)) w.ao.*m = r.boolean(name, false);
+                   },
+                   [&](float Lighting::*m) { w.lighting.*m = float(r.number(name, w.lighting.*m, s.lo, s.hi)); },
+                   [&](bool Lighting::*m) { w.lighting.*m = r.boolean(name, w.lighting.*m); },
+                   [&](glm::vec3 Lighting::*m) {
+                       const glm::dvec3 v = r.vec3(name, glm::dvec3(w.lighting.*m), s.lo, s.hi);
+                       const bool direction = s.type == SettingType::Direction;
+                       if (direction && glm::length(v) < 1e-9) r.fail(name, "must not be zero");
+                       w.lighting.*m = glm::vec3(direction ? glm::normalize(v) : v);
+                   },
+                   [&](ToneMap Lighting::*m) {
+                       const std::string v = r.string(name, std::string(s.choices[size_t(w.lighting.*m)]));
+                       w.lighting.*m = ToneMap(choiceIndex(r, name, s, v));
+                   },
+                   [&](double Detail::*m) { w.detail.*m = r.number(name, w.detail.*m, s.lo, s.hi); },
+                   [&](bool Detail::*m) { w.detail.*m = r.boolean(name, w.detail.*m); },
+               },
+               s.desc);
 }
 
-void parseAo(Reader r, AoDesc& ao) {
-    ao.method = r.string("method", ao.method);
-    if (ao.method != "gtao" && ao.method != "ssao" && ao.method != "hbao" && ao.method != "voxel" &&
-        ao.method != "hybrid" && ao.method != "off")
-        r.fail("method", "unknown AO method '" + ao.method + "'", "accepted: gtao, voxel, hybrid, ssao, hbao, off");
-    ao.quality = r.string("quality", ao.quality);
-    if (ao.quality != "low" && ao.quality != "medium" && ao.quality != "high" && ao.quality != "ultra" &&
-        ao.quality != "custom")
-        r.fail("quality", "unknown AO quality '" + ao.quality + "'", "accepted: low, medium, high, ultra, custom");
-    auto opt = [&](const char* key, std::optional<double>& v, double lo, double hi) {
-        if (r.has(key)) v = r.number(key, 0.0, lo, hi);
-    };
-    auto optInt = [&](const char* key, std::optional<int>& v, int lo, int hi) {
-        if (r.has(key)) v = int(r.integer(key, 0, lo, hi));
-    };
-    opt("radius", ao.radius, 1e-15, 1e15);  // what the shaders' floats hold (engine/ao_settings.h)
-    opt("radius_multiplier", ao.radiusMultiplier, 0.3, 3.0);
-    opt("falloff_range", ao.falloffRange, 0.0, 1.0);
-    opt("sample_distribution_power", ao.sampleDistributionPower, 1.0, 3.0);
-    opt("thin_occluder", ao.thinOccluder, 0.0, 0.7);
-    opt("final_value_power", ao.finalValuePower, 0.5, 5.0);
-    opt("depth_mip_offset", ao.depthMipOffset, 0.0, 30.0);
-    opt("strength", ao.strength, 0.0, 1.0);
-    opt("max_distance", ao.maxDistance, 0.0, 1e7);
-    opt("denoise_blur_beta", ao.denoiseBlurBeta, 0.0, 10.0);
-    optInt("slices", ao.slices, 1, 32);
-    optInt("steps", ao.steps, 1, 32);
-    optInt("denoise", ao.denoisePasses, 0, 4);
-    optInt("temporal_history", ao.temporalHistory, 0, 64);
-    optInt("rays", ao.rays, 1, 64);
+// The settings under `block` ("" for a world file's top level, "lighting",
+// "lighting.sun", ...) from `r`, in the table's order; nested blocks that are
+// present are read where their first setting comes.
+void readSettings(Reader& r, const std::string& block, WorldDesc& w) {
+    const std::string prefix = block.empty() ? "" : block + ".";
+    std::vector<std::string> nested;
+    for (const Setting& s : settingsTable()) {
+        if (!s.key.starts_with(prefix)) continue;
+        const std::string rest(s.key.substr(prefix.size()));
+        const size_t dot = rest.find('.');
+        if (dot == std::string::npos) {
+            readSetting(r, rest, s, w);
+            continue;
+        }
+        const std::string child = rest.substr(0, dot);
+        if (std::find(nested.begin(), nested.end(), child) != nested.end()) continue;
+        nested.push_back(child);
+        if (!r.has(child)) continue;
+        Reader c = r.child(child);
+        readSettings(c, prefix + child, w);
+    }
 }
 
 // A path inline, or the name of a path .json beside the world file.
@@ -165,9 +165,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
             w.materials.push_back(mat);
         }
     }
-    if (r.has("lighting")) parseLighting(r.child("lighting"), w.lighting);
-    if (r.has("ao")) parseAo(r.child("ao"), w.ao);
-    if (r.has("detail")) parseDetail(r.child("detail"), w.detail);
+    readSettings(r, "", w);  // lighting, ao, detail
     std::string firstCamera;  // in file order: the default unless 'default_camera' says otherwise
     if (r.has("cameras")) {
         const json& cams = r.at("cameras");
@@ -210,11 +208,18 @@ void applySettingsPatch(WorldDesc& desc, const json& patch, const fs::path& file
     WorldDesc changed = desc;  // kept only when all of the patch is good
     {
         Reader r(file, patch, field);
-        if (r.has("lighting")) parseLighting(r.child("lighting"), changed.lighting);
-        if (r.has("ao")) parseAo(r.child("ao"), changed.ao);
-        if (r.has("detail")) parseDetail(r.child("detail"), changed.detail);
+        if (patch.contains("ao") && patch["ao"].contains("quality")) resetPresetShaped(changed.ao);
+        readSettings(r, "", changed);
     }  // closing the reader refuses unknown fields
     desc = std::move(changed);
+}
+
+json settingPatch(const std::string& key, const nlohmann::json& value) {
+    json patch = json::parse(value.dump());
+    std::string k = key;
+    for (size_t dot; (dot = k.rfind('.')) != std::string::npos; k = k.substr(0, dot))
+        patch = json{{k.substr(dot + 1), patch}};
+    return json{{k, patch}};
 }
 
 }  // namespace grotto::voxel

@@ -59,13 +59,15 @@ struct Lighting {
     ToneMap toneMap = ToneMap::Filmic;
 };
 
-// The "ao" block of a world file: method, preset and any overrides (unset = preset).
+// The "ao" block of a world file: method, preset and any overrides (unset =
+// preset). Keys, ranges and meanings: voxel/settings_table.cpp.
 struct AoDesc {
     std::string method = "gtao";   // gtao, voxel, hybrid, ssao, hbao (baselines) or off
     std::string quality = "high";  // low, medium, high, ultra, custom
     std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
         finalValuePower, depthMipOffset, strength, denoiseBlurBeta, maxDistance;
     std::optional<int> slices, steps, denoisePasses, temporalHistory, rays;
+    std::optional<bool> fullResolution;
 };
 
 // How much of the world the G-buffer draws: levels of detail and occlusion culling.
@@ -98,8 +100,14 @@ struct WorldDesc {
 // and "detail" blocks as a world file writes them (each optional; keys left out keep their
 // values), checked as a world file is, errors naming `file` and `field`. The
 // viewer's panel and scripts change settings through it.
+// A patch that names "ao.quality" replaces the preset's slices, steps and rays,
+// as --quality does.
 void applySettingsPatch(WorldDesc& desc, const nlohmann::ordered_json& patch, const std::filesystem::path& file,
                         const std::string& field);
+
+// One setting, by its dotted key ("lighting.sun.angle", as viewer scripts name
+// it), as the patch applySettingsPatch takes: {"lighting": {"sun": {"angle": v}}}.
+nlohmann::ordered_json settingPatch(const std::string& key, const nlohmann::json& value);
 
 // Reads a world .json, or describes a bare .vdb with defaults. Throws grotto::Error
 // (input) naming the file and field for anything malformed or unknown.

@@ -3,8 +3,12 @@
 // checks that they agree.
 #include "voxel/world_json.h"
 
+#include "common/overloaded.h"
+#include "voxel/settings_table.h"
+
 #include <algorithm>
 #include <charconv>
+#include <optional>
 
 namespace grotto::voxel {
 namespace fs = std::filesystem;
@@ -48,36 +52,37 @@ json cameraJson(const CameraDesc& c) {
             {"near", c.nearPlane}, {"far", c.farPlane}};
 }
 
-json lightingJson(const Lighting& l) {
-    return {{"sun", {{"direction", triple(l.sunDirection)}, {"color", triple(l.sunColor)}, {"intensity", decimal(l.sunIntensity)},
-                     {"shadows", l.sunShadows}, {"angle", decimal(l.sunAngle)}}},
-            {"ambient", {{"color", triple(l.ambientColor)}, {"intensity", decimal(l.ambientIntensity)}}},
-            {"sky", {{"zenith", triple(l.skyZenith)}, {"horizon", triple(l.skyHorizon)}}},
-            {"exposure", decimal(l.exposure)},
-            {"tone_map", l.toneMap == ToneMap::Filmic ? "filmic" : "linear"}};
+// The settings' value as its reader reads it back; nullopt for an AO setting left to the preset.
+std::optional<json> settingJson(const Setting& s, const WorldDesc& d) {
+    return std::visit(Overloaded{
+                          [&](std::string AoDesc::*m) -> std::optional<json> { return d.ao.*m; },
+                          [&](auto AoDesc::*m) -> std::optional<json> {
+                              if (!(d.ao.*m)) return std::nullopt;
+                              return *(d.ao.*m);
+                          },
+                          [&](float Lighting::*m) -> std::optional<json> { return decimal(d.lighting.*m); },
+                          [&](bool Lighting::*m) -> std::optional<json> { return d.lighting.*m; },
+                          [&](glm::vec3 Lighting::*m) -> std::optional<json> { return triple(d.lighting.*m); },
+                          [&](ToneMap Lighting::*m) -> std::optional<json> {
+                              return std::string(s.choices[size_t(d.lighting.*m)]);
+                          },
+                          [&](double Detail::*m) -> std::optional<json> { return d.detail.*m; },
+                          [&](bool Detail::*m) -> std::optional<json> { return d.detail.*m; },
+                      },
+                      s.desc);
 }
 
-json aoJson(const AoDesc& a) {
-    json j = {{"method", a.method}, {"quality", a.quality}};
-    auto set = [&](const char* key, const auto& value) {
-        if (value) j[key] = *value;
-    };
-    set("radius", a.radius);
-    set("radius_multiplier", a.radiusMultiplier);
-    set("falloff_range", a.falloffRange);
-    set("sample_distribution_power", a.sampleDistributionPower);
-    set("thin_occluder", a.thinOccluder);
-    set("final_value_power", a.finalValuePower);
-    set("depth_mip_offset", a.depthMipOffset);
-    set("strength", a.strength);
-    set("max_distance", a.maxDistance);
-    set("denoise_blur_beta", a.denoiseBlurBeta);
-    set("slices", a.slices);
-    set("steps", a.steps);
-    set("denoise", a.denoisePasses);
-    set("temporal_history", a.temporalHistory);
-    set("rays", a.rays);
-    return j;
+// The "lighting", "ao" and "detail" blocks into `j`, in the table's order.
+void writeSettings(const WorldDesc& d, json& j) {
+    for (const Setting& s : settingsTable()) {
+        std::optional<json> value = settingJson(s, d);
+        if (!value) continue;
+        json* block = &j;
+        std::string_view key = s.key;
+        for (size_t dot; (dot = key.find('.')) != std::string_view::npos; key = key.substr(dot + 1))
+            block = &(*block)[std::string(key.substr(0, dot))];
+        (*block)[std::string(key)] = std::move(*value);
+    }
 }
 
 json editJson(const TimedEdit& t) {
@@ -149,9 +154,7 @@ json worldFileJson(const WorldDesc& d, const fs::path& dir) {
         for (const Material& m : d.materials)
             j["materials"].push_back({{"name", m.name}, {"albedo", triple(m.albedo)}, {"ao", decimal(m.ao)}});
     }
-    j["lighting"] = lightingJson(d.lighting);
-    j["ao"] = aoJson(d.ao);
-    j["detail"] = {{"lod_bias", d.detail.lodBias}, {"occlusion_culling", d.detail.occlusionCulling}};
+    writeSettings(d, j);  // lighting, ao, detail
     if (!d.cameras.empty()) {
         j["cameras"] = json::object();
         for (const auto& [name, c] : d.cameras) j["cameras"][name] = cameraJson(c);

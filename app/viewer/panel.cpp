@@ -1,5 +1,8 @@
 #include "app/viewer/panel.h"
 
+#include "common/overloaded.h"
+#include "voxel/settings_table.h"
+
 #include <imgui.h>
 
 #include <algorithm>
@@ -26,6 +29,70 @@ void inputPath(const char* label, std::string& path) {
     if (ImGui::InputText(label, buffer, sizeof buffer)) path = buffer;
 }
 
+// A choice's value now, as the world file names it.
+std::string choiceOf(const voxel::Setting& row, const voxel::WorldDesc& d) {
+    return std::visit(Overloaded{[&](std::string voxel::AoDesc::*m) { return d.ao.*m; },
+                                 [&](voxel::ToneMap voxel::Lighting::*m) {
+                                     return std::string(row.choices[size_t(d.lighting.*m)]);
+                                 },
+                                 [](auto) { return std::string(); }},
+                      row.desc);
+}
+
+// The control of one setting, showing its value in effect; the new value when it was changed.
+voxel::json control(const voxel::Setting& row, const PanelState& s) {
+    const voxel::WorldDesc& d = *s.desc;
+    const std::string label = voxel::settingLabel(row);
+    auto [lo, hi] = voxel::uiRange(row);
+    switch (row.type) {
+    case voxel::SettingType::Choice: {
+        std::string v = choiceOf(row, d);
+        if (combo(label.c_str(), v, {row.choices.begin(), row.choices.end()})) return v;
+        break;
+    }
+    case voxel::SettingType::Number: {
+        float v = float(voxel::settingNumber(row, d, s.ao->estimator, s.ao->chain));
+        if (row.uiRelative) lo *= v, hi *= v;
+        if (ImGui::SliderFloat(label.c_str(), &v, float(lo), float(hi), "%.3g", lo > 0.0 ? ImGuiSliderFlags_Logarithmic : 0))
+            return v;
+        break;
+    }
+    case voxel::SettingType::Whole: {
+        int v = int(voxel::settingNumber(row, d, s.ao->estimator, s.ao->chain));
+        if (ImGui::SliderInt(label.c_str(), &v, int(lo), int(hi))) return v;
+        break;
+    }
+    case voxel::SettingType::Bool: {
+        bool v = voxel::settingNumber(row, d, s.ao->estimator, s.ao->chain) != 0.0;
+        if (ImGui::Checkbox(label.c_str(), &v)) return v;
+        break;
+    }
+    case voxel::SettingType::Color:
+    case voxel::SettingType::Direction: {
+        const glm::vec3 now = d.lighting.*std::get<glm::vec3 voxel::Lighting::*>(row.desc);
+        float v[3] = {now.x, now.y, now.z};
+        const bool changed = row.type == voxel::SettingType::Color
+                                 ? ImGui::ColorEdit3(label.c_str(), v, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR)
+                                 : ImGui::SliderFloat3(label.c_str(), v, float(lo), float(hi)) && (v[0] || v[1] || v[2]);
+        if (changed) return {v[0], v[1], v[2]};
+        break;
+    }
+    }
+    return {};
+}
+
+// A control for each setting of `block` ("lighting", "ao", "detail"), changes
+// added to `patch` under their world-file keys.
+void settingControls(std::string_view block, const PanelState& s, voxel::json& patch) {
+    const bool traces = s.ao->enabled && tracesVoxels(s.ao->method);
+    for (const voxel::Setting& row : voxel::settingsTable()) {
+        if (row.key.substr(0, row.key.find('.')) != block || (row.tracingOnly && !traces)) continue;
+        const voxel::json value = control(row, s);
+        if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", row.help.data(), row.key.data());
+        if (!value.is_null()) patch.merge_patch(voxel::settingPatch(std::string(row.key), value));
+    }
+}
+
 }  // namespace
 
 voxel::json drawPanel(PanelState& s) {
@@ -36,60 +103,13 @@ voxel::json drawPanel(PanelState& s) {
     ImGui::SetNextWindowBgAlpha(0.85f);
     ImGui::Begin("grotto");
     ImGui::PushItemWidth(-150.0f);  // room for the longest label
-    auto aoDetails = [&] {
-        // The values in effect (preset, world file, changes), each control writing its world-file key.
-        const AoOptions& ao = *s.ao;
-        const gpu::GtaoSettings& g = ao.gtao;
-        std::string method = d.ao.method, quality = d.ao.quality;
-        if (combo("method", method, {"gtao", "voxel", "hybrid", "ssao", "hbao", "off"})) patch["ao"]["method"] = method;
-        if (combo("preset", quality, {"low", "medium", "high", "ultra"})) patch["ao"]["quality"] = quality;
-        auto slider = [&](const char* label, const char* key, float value, float lo, float hi) {
-            if (ImGui::SliderFloat(label, &value, lo, hi, "%.3g", lo > 0.0f ? ImGuiSliderFlags_Logarithmic : 0))
-                patch["ao"][key] = value;
-        };
-        auto whole = [&](const char* label, const char* key, uint32_t value, int lo, int hi) {
-            int v = int(value);
-            if (ImGui::SliderInt(label, &v, lo, hi)) patch["ao"][key] = v;
-        };
-        slider("radius", "radius", g.radius, g.radius / 16.0f, g.radius * 16.0f);
-        whole("temporal history", "temporal_history", g.temporalHistory, 0, 64);
-        whole("denoise passes", "denoise", g.denoisePasses, 0, 4);
-        if (method == "voxel" || method == "hybrid") whole("rays", "rays", ao.voxelRays, 1, 64);
-        if (!ImGui::TreeNode("estimator and denoise")) return;
-        whole("slices", "slices", g.sliceCount, 1, 32);
-        whole("steps", "steps", g.stepsPerSlice, 1, 32);
-        slider("thin occluder", "thin_occluder", g.thinOccluderCompensation, 0.0f, 0.7f);
-        slider("radius multiplier", "radius_multiplier", g.radiusMultiplier, 0.3f, 3.0f);
-        slider("falloff range", "falloff_range", g.falloffRange, 0.0f, 1.0f);
-        slider("distribution power", "sample_distribution_power", g.sampleDistributionPower, 1.0f, 3.0f);
-        slider("final value power", "final_value_power", g.finalValuePower, 0.5f, 5.0f);
-        slider("depth MIP offset", "depth_mip_offset", g.depthMipSamplingOffset, 0.0f, 30.0f);
-        slider("denoise blur beta", "denoise_blur_beta", g.denoiseBlurBeta, 0.0f, 10.0f);
-        slider("strength", "strength", g.strength, 0.0f, 1.0f);
-        ImGui::TreePop();
-    };
-    if (ImGui::CollapsingHeader("AO", ImGuiTreeNodeFlags_DefaultOpen)) aoDetails();
-    if (ImGui::CollapsingHeader("Lighting")) {
-        const voxel::Lighting& l = d.lighting;
-        float dir[3] = {l.sunDirection.x, l.sunDirection.y, l.sunDirection.z};
-        if (ImGui::SliderFloat3("sun direction", dir, -1.0f, 1.0f) && (dir[0] || dir[1] || dir[2]))
-            patch["lighting"]["sun"]["direction"] = {dir[0], dir[1], dir[2]};
-        float sun = l.sunIntensity, ambient = l.ambientIntensity, exposure = l.exposure, angle = l.sunAngle;
-        if (ImGui::SliderFloat("sun", &sun, 0.0f, 4.0f)) patch["lighting"]["sun"]["intensity"] = sun;
-        if (ImGui::SliderFloat("sun angle", &angle, 0.0f, 30.0f)) patch["lighting"]["sun"]["angle"] = angle;
-        bool shadows = l.sunShadows;
-        if (ImGui::Checkbox("sun shadows", &shadows)) patch["lighting"]["sun"]["shadows"] = shadows;
-        if (ImGui::SliderFloat("ambient", &ambient, 0.0f, 4.0f)) patch["lighting"]["ambient"]["intensity"] = ambient;
-        if (ImGui::SliderFloat("exposure", &exposure, 0.05f, 4.0f)) patch["lighting"]["exposure"] = exposure;
-    }
+    if (ImGui::CollapsingHeader("AO", ImGuiTreeNodeFlags_DefaultOpen)) settingControls("ao", s, patch);
+    if (ImGui::CollapsingHeader("Lighting")) settingControls("lighting", s, patch);
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) {
         combo("show", s.view, kViews);
         float scale = float(s.renderScale);
         if (ImGui::SliderFloat("render scale", &scale, 0.25f, 1.0f, "%.2f")) s.renderScale = scale;
-        float lodBias = float(d.detail.lodBias);
-        bool occlusion = d.detail.occlusionCulling;
-        if (ImGui::SliderFloat("lod bias (px)", &lodBias, 0.0f, 16.0f, "%.2f")) patch["detail"]["lod_bias"] = lodBias;
-        if (ImGui::Checkbox("occlusion culling", &occlusion)) patch["detail"]["occlusion_culling"] = occlusion;
+        settingControls("detail", s, patch);
         for (const std::string& c : s.cameras) {
             if (ImGui::Button(c.c_str())) s.jumpTo = c;
             ImGui::SameLine();

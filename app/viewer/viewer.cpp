@@ -3,6 +3,7 @@
 #include "app/viewer/viewer_internal.h"
 
 #include "app/options.h"
+#include "app/viewer/settings_patch.h"
 #include "common/error.h"
 #include "common/printable.h"
 #include "engine/image_output.h"
@@ -34,10 +35,10 @@ Viewer::Viewer(const ViewOptions& o)
       window_("grotto view - " + o.world.filename().string(), o.size.width, o.size.height),
       imgui_(window_.handle),
       ctx_(contextOptions(window_)) {
-    // Command-line AO flags, as every command takes them, over the world's.
+    // Command-line AO flags, as every command takes them, over the world's: kept
+    // in desc_ too, so the panel, scripts and a saved world start from them.
     const AoOptions ao = app::resolveAo(loaded_, o.ao);
-    if (!o.ao.method.empty()) desc_.ao.method = o.ao.method;
-    if (!o.ao.quality.empty()) desc_.ao.quality = o.ao.quality;
+    desc_.ao = app::aoDescWithFlags(loaded_.desc().ao, o.ao);
     aoOptions_ = ao;
     desc_.detail = app::resolveDetail(loaded_, o.ao);
     renderScale_ = o.renderScale;
@@ -135,10 +136,7 @@ void Viewer::jumpTo(const std::string& name) {
 
 void Viewer::applyPatch(const voxel::json& patch, const std::filesystem::path& file, const std::string& field) {
     voxel::WorldDesc d = desc_;
-    if (patch.contains("ao") && patch["ao"].contains("quality"))  // a preset replaces hand-set loop shapes
-        d.ao.slices.reset(), d.ao.steps.reset(), d.ao.rays.reset();
-    voxel::applySettingsPatch(d, patch, file, field);
-    const AoOptions ao = aoOptionsFor(d.ao, session_->world().voxelSize(), file.string());
+    const AoOptions ao = applyViewerPatch(d, patch, session_->world().voxelSize(), file, field);
     if (patch.contains("lighting")) renderer().setLighting(d.lighting);
     if (patch.contains("ao")) renderer().setAo(ao);
     if (patch.contains("detail")) renderer().setCulling(cullingOptions(d.detail));

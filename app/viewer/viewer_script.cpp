@@ -7,19 +7,6 @@
 #include <algorithm>
 
 namespace grotto::viewer {
-namespace {
-
-// A dotted world-file key ("lighting.sun.angle") and its value as a patch.
-voxel::json patchFor(const std::string& key, const nlohmann::json& value) {
-    voxel::json patch = voxel::json::parse(value.dump());
-    std::string k = key;
-    for (size_t dot; (dot = k.rfind('.')) != std::string::npos; k = k.substr(0, dot))
-        patch = voxel::json{{k.substr(dot + 1), patch}};
-    return voxel::json{{k, patch}};
-}
-
-}  // namespace
-
 void Viewer::applyScript() {
     if (!script_) return;
     for (const ScriptAction& a : script_->at(frame_)) {
@@ -38,7 +25,7 @@ void Viewer::applyScript() {
                 if (key == "view") setView(value, field);
                 else if (key == "play") playFromScript(value, field);
                 else if (key.rfind("edit.", 0) == 0) setEdit(key, value, field);
-                else applyPatch(patchFor(key, value), script_->file(), where);
+                else applyPatch(voxel::settingPatch(key, value), script_->file(), where);
             }
             break;
         case ScriptAction::Kind::Resize:

@@ -22,7 +22,7 @@ gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l,
     u.rayOrigin = glm::vec4(glm::vec3(corner), 0.0f);
     u.rayStepX = glm::vec4(glm::vec3(right), 0.0f);
     u.rayStepY = glm::vec4(glm::vec3(down), 0.0f);
-    u.aoStrength = glm::vec4(ao.enabled ? ao.gtao.strength : 0.0f, 0.0f, 0.0f, 0.0f);
+    u.aoStrength = glm::vec4(ao.enabled ? ao.chain.strength : 0.0f, 0.0f, 0.0f, 0.0f);
     u.exposure = glm::vec4(l.exposure, 0.0f, 0.0f, 0.0f);
     u.size = {camera.width, camera.height};
     return u;

@@ -37,9 +37,9 @@ constexpr TargetRow kRows[] = {
     // One denoise pass needs one target (with the temporal pass, only for the
     // AO_spatial AOV), more ping-pong between two.
     {TargetId::AoSpatial0, kRgba32f, TargetSize::Ao, kStorage | kRead,
-     [](const FrameShape& s) { return s.ao.enabled && s.ao.gtao.denoisePasses >= 1; }, false, 1, kGeneral},
+     [](const FrameShape& s) { return s.ao.enabled && s.ao.chain.denoisePasses >= 1; }, false, 1, kGeneral},
     {TargetId::AoSpatial1, kRgba32f, TargetSize::Ao, kStorage | kRead,
-     [](const FrameShape& s) { return s.ao.enabled && s.ao.gtao.denoisePasses >= 2; }, false, 1, kGeneral},
+     [](const FrameShape& s) { return s.ao.enabled && s.ao.chain.denoisePasses >= 2; }, false, 1, kGeneral},
     {TargetId::AoHistory, kRgba32f, TargetSize::Ao, kStorage | kRead, [](const FrameShape& s) { return s.temporal(); },
      false, 2, kGeneral},
     // Frames do not store the upsampled AO (the composite upsamples for itself):
@@ -51,7 +51,7 @@ constexpr TargetRow kRows[] = {
 }  // namespace
 
 VkExtent2D FrameShape::aoExtent() const {
-    return ao.fullResolution ? frame() : VkExtent2D{(width + 1) / 2, (height + 1) / 2};
+    return ao.chain.fullResolution ? frame() : VkExtent2D{(width + 1) / 2, (height + 1) / 2};
 }
 
 FrameShape worldFrameShape(const voxel::WorldDesc& desc, uint32_t width, uint32_t height, const AoOptions& ao,

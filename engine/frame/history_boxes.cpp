@@ -19,11 +19,11 @@ double volume(const voxel::WorldBox& b) {
 }  // namespace
 
 double aoReach(const AoOptions& ao) {
-    const double r = ao.gtao.radius;
+    const double r = ao.estimator.radius;
     switch (ao.method) {
     case AoMethod::Ssao: return 1.25 * r;
     case AoMethod::Hbao: return r;
-    default: return r * std::max(1.0, double(ao.gtao.radiusMultiplier));
+    default: return r * std::max(1.0, double(ao.estimator.radiusMultiplier));
     }
 }
 

@@ -54,7 +54,7 @@ void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, do
            vk::Context& ctx, std::span<const voxel::PosedWorld> objects) {
     AoOptions off;
     off.enabled = false;  // only the G-buffer is needed
-    off.gtao = gtaoPreset("high", 1.0);
+    off.estimator = estimatorPreset("high", 1.0);
     FrameImages frame;
     {
         // The mesh alone has no coarser levels: the exact voxels whatever the bias,

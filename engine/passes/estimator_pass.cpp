@@ -7,14 +7,14 @@ namespace grotto {
 namespace {
 
 std::vector<uint32_t> specialization(const AoOptions& ao) {
-    const gpu::GtaoSettings& s = ao.gtao;
+    const voxel::EstimatorSettings& s = ao.estimator;
     switch (ao.method) {
-    case AoMethod::Ssao: return {ao.ssaoSamples};
-    case AoMethod::Hbao: return {2 * s.sliceCount, s.stepsPerSlice};
+    case AoMethod::Ssao: return {s.ssaoSamples};
+    case AoMethod::Hbao: return {2 * s.slices, s.steps};
     case AoMethod::Voxel:
     case AoMethod::Hybrid:
-        return {s.sliceCount, s.stepsPerSlice, std::bit_cast<uint32_t>(s.sampleDistributionPower), ao.voxelRays};
-    default: return {s.sliceCount, s.stepsPerSlice, std::bit_cast<uint32_t>(s.sampleDistributionPower)};
+        return {s.slices, s.steps, std::bit_cast<uint32_t>(s.sampleDistributionPower), s.rays};
+    default: return {s.slices, s.steps, std::bit_cast<uint32_t>(s.sampleDistributionPower)};
     }
 }
 

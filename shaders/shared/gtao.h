@@ -1,7 +1,7 @@
-// GTAO settings and per-frame constants, shared by C++ and GLSL. Every setting
-// carries its default and range; the defaults are XeGTAO's published values
-// except three fitted to our ray-traced reference (docs/tuning.md),
-// and thin-occluder compensation is compiled in and exposed.
+// AO settings and per-frame constants, shared by C++ and GLSL. The settings are
+// packed from the estimator's and the chain's (voxel/ao_values.h, which holds the
+// defaults; engine/ao_settings.cpp gpuSettings); keys and ranges are in
+// voxel/settings_table.cpp. Thin-occluder compensation is compiled in and exposed.
 #ifndef GROTTO_SHARED_GTAO_H
 #define GROTTO_SHARED_GTAO_H
 #include "common.h"
@@ -13,20 +13,20 @@ GROTTO_NAMESPACE_BEGIN
 #define GROTTO_GTAO_GROUP 8u
 
 struct GtaoSettings {
-    float radius;                   // world units (> 0); default 4 voxels, from the world file or --radius
-    float radiusMultiplier;         // 1.7 (0.3 .. 3): compensates for screen-space undersampling (XeGTAO 1.457; fitted)
-    float falloffRange;             // 0.615 (0 .. 1): fraction of the radius over which occluders fade out (fit kept it)
-    float sampleDistributionPower;  // 2.0 (1 .. 3): > 1 puts more samples near the centre
-    float thinOccluderCompensation; // 0.2 (0 .. 0.7): > 0 treats occluders as thinner than they look (XeGTAO 0; fitted)
-    float finalValuePower;          // 1.9 (0.5 .. 5): contrast of the final visibility (XeGTAO 2.2; fitted)
-    float depthMipSamplingOffset;   // 3.30 (0 .. 30): higher = later switch to coarser depth MIPs
-    float strength;                 // 1 (0 .. 1): 0 = no AO, 1 = full AO
-    float denoiseBlurBeta;          // 1.2 (0 .. 10): centre weight of the edge-aware blur
-    uint sliceCount;                // slices per pixel: low 1, medium 2, high 3, ultra 9 (1 .. 32)
-    uint stepsPerSlice;             // steps per side: low 2, medium 2, high 3, ultra 3 (1 .. 32)
-    uint denoisePasses;             // 1 (0 .. 4): edge-aware spatial blur passes
-    uint temporalHistory;           // 16 (0 .. 64): most frames the temporal pass averages; 0 = no temporal pass
-    float maxDistance;              // 0 (0 .. 1e7): view depth, world units, where AO has faded out over the
+    float radius;                   // world units
+    float radiusMultiplier;         // compensates for screen-space undersampling
+    float falloffRange;             // fraction of the radius over which occluders fade out
+    float sampleDistributionPower;  // > 1 puts more samples near the centre
+    float thinOccluderCompensation; // > 0 treats occluders as thinner than they look
+    float finalValuePower;          // contrast of the final visibility
+    float depthMipSamplingOffset;   // higher = later switch to coarser depth MIPs
+    float strength;                 // 0 = no AO, 1 = full AO
+    float denoiseBlurBeta;          // centre weight of the edge-aware blur
+    uint sliceCount;                // slices per pixel
+    uint stepsPerSlice;             // steps per side
+    uint denoisePasses;             // edge-aware spatial blur passes
+    uint temporalHistory;           // most frames the temporal pass averages; 0 = no temporal pass
+    float maxDistance;              // view depth, world units, where AO has faded out over the
                                     // last tenth; farther pixels skip the search. 0 = no limit
     uint pad1, pad2;
 };

@@ -1,0 +1,232 @@
+#include "voxel/settings_table.h"
+
+#include "common/error.h"
+#include "common/overloaded.h"
+
+#include <algorithm>
+#include <array>
+#include <cstdio>
+#include <iterator>
+
+namespace grotto::voxel {
+namespace {
+
+using T = SettingType;
+
+constexpr std::string_view kMethods[] = {"gtao", "voxel", "hybrid", "ssao", "hbao", "off"};
+constexpr auto kQualities = [] {
+    std::array<std::string_view, std::size(kAoPresets)> names;
+    for (size_t i = 0; i < names.size(); ++i) names[i] = kAoPresets[i].name;
+    return names;
+}();
+constexpr std::string_view kToneMaps[] = {"filmic", "linear"};  // ToneMap's order
+
+// Colours are linear RGB; above 1 is allowed (a bright sun), up to 1000.
+constexpr double kMaxRadiance = 1e3;
+// A direction needs no length: far beyond any typed one, well inside a float.
+constexpr double kMaxDirection = 1e12;
+
+// What a change of AO's on/off state, method or chain shape remakes.
+constexpr unsigned kWholeChain =
+    kEstimatorPipeline | kTemporalPipeline | kCompositePipeline | kTargets | kHistory;
+
+// In world-file order: each block's fields in the order the reader reads and the
+// writer writes them.
+const Setting kSettings[] = {
+    // Lighting (no flags: a world's light is its own).
+    {.key = "lighting.sun.direction", .type = T::Direction, .desc = &Lighting::sunDirection,
+     .lo = -kMaxDirection, .hi = kMaxDirection, .uiLo = -1.0, .uiHi = 1.0,
+     .help = "Toward the sun; any length but zero", .invalidates = kHistory},
+    {.key = "lighting.sun.color", .type = T::Color, .desc = &Lighting::sunColor, .lo = 0.0, .hi = kMaxRadiance,
+     .help = "The sun's colour, linear RGB"},
+    {.key = "lighting.sun.intensity", .type = T::Number, .desc = &Lighting::sunIntensity, .lo = 0.0,
+     .hi = kMaxRadiance, .uiLo = 0.0, .uiHi = 4.0, .help = "The sun's radiance, times its colour"},
+    {.key = "lighting.sun.shadows", .type = T::Bool, .desc = &Lighting::sunShadows,
+     .help = "Exact voxel shadows from the sun",
+     .invalidates = kCompositePipeline | kShadowPipeline | kTargets | kHistory},
+    {.key = "lighting.sun.angle", .type = T::Number, .desc = &Lighting::sunAngle, .lo = 0.0, .hi = 30.0,
+     .help = "The sun's angular diameter in degrees; 0: a point, hard shadows",
+     .invalidates = kShadowPipeline | kTargets | kHistory},
+    {.key = "lighting.ambient.color", .type = T::Color, .desc = &Lighting::ambientColor, .lo = 0.0,
+     .hi = kMaxRadiance, .help = "The ambient light's colour, linear RGB"},
+    {.key = "lighting.ambient.intensity", .type = T::Number, .desc = &Lighting::ambientIntensity, .lo = 0.0,
+     .hi = kMaxRadiance, .uiLo = 0.0, .uiHi = 4.0, .help = "The ambient light, times its colour, before AO"},
+    {.key = "lighting.sky.zenith", .type = T::Color, .desc = &Lighting::skyZenith, .lo = 0.0, .hi = kMaxRadiance,
+     .help = "The sky straight up, linear RGB"},
+    {.key = "lighting.sky.horizon", .type = T::Color, .desc = &Lighting::skyHorizon, .lo = 0.0, .hi = kMaxRadiance,
+     .help = "The sky at the horizon, linear RGB"},
+    {.key = "lighting.exposure", .type = T::Number, .desc = &Lighting::exposure, .lo = 1e-3, .hi = 1e3,
+     .uiLo = 0.05, .uiHi = 4.0, .help = "Radiance multiplier before the tone map"},
+    {.key = "lighting.tone_map", .type = T::Choice, .desc = &Lighting::toneMap,
+     .help = "How lit radiance maps to display values", .choices = kToneMaps},
+
+    // AO.
+    {.key = "ao.method", .flag = "--ao", .type = T::Choice, .desc = &AoDesc::method,
+     .help = "Ambient occlusion (voxel: exact rays through the voxels; hybrid: GTAO plus voxel rays; "
+             "ssao, hbao: baselines)",
+     .manifest = "method", .invalidates = kWholeChain, .choices = kMethods},
+    {.key = "ao.quality", .flag = "--quality", .type = T::Choice, .desc = &AoDesc::quality,
+     .help = "Preset of the loop shape (SSAO: 8, 16, 32, 64 samples; custom: high's, for --slices, --steps, "
+             "--rays)",
+     .manifest = "quality", .invalidates = kEstimatorPipeline | kHistory, .choices = kQualities},
+    {.key = "ao.radius", .flag = "--radius", .type = T::Number, .desc = &AoDesc::radius,
+     .value = &EstimatorSettings::radius, .lo = 1e-15, .hi = 1e15, .uiLo = 1.0 / 16.0, .uiHi = 16.0,
+     .help = "AO radius", .accepted = "1e-15 to 1e15 world units", .defaultNote = "4 voxels",
+     .manifest = "radius", .invalidates = kHistory | kReferenceKey, .uiRelative = true},
+    {.key = "ao.radius_multiplier", .flag = "--radius-multiplier", .type = T::Number,
+     .desc = &AoDesc::radiusMultiplier, .value = &EstimatorSettings::radiusMultiplier, .lo = 0.3, .hi = 3.0,
+     .help = "Screen-space radius compensation", .manifest = "radius_multiplier", .invalidates = kHistory},
+    {.key = "ao.falloff_range", .flag = "--falloff-range", .type = T::Number, .desc = &AoDesc::falloffRange,
+     .value = &EstimatorSettings::falloffRange, .lo = 0.0, .hi = 1.0,
+     .help = "Fraction of the radius over which occluders fade", .manifest = "falloff_range",
+     .invalidates = kHistory},
+    {.key = "ao.sample_distribution_power", .flag = "--sample-distribution-power", .type = T::Number,
+     .desc = &AoDesc::sampleDistributionPower, .value = &EstimatorSettings::sampleDistributionPower, .lo = 1.0,
+     .hi = 3.0, .help = "Step spacing power", .manifest = "sample_distribution_power",
+     .invalidates = kEstimatorPipeline | kHistory},
+    {.key = "ao.thin_occluder", .flag = "--thin-occluder", .type = T::Number, .desc = &AoDesc::thinOccluder,
+     .value = &EstimatorSettings::thinOccluder, .lo = 0.0, .hi = 0.7, .help = "Thin-occluder compensation",
+     .manifest = "thin_occluder", .invalidates = kHistory},
+    {.key = "ao.final_value_power", .flag = "--final-value-power", .type = T::Number,
+     .desc = &AoDesc::finalValuePower, .value = &EstimatorSettings::finalValuePower, .lo = 0.5, .hi = 5.0,
+     .help = "Contrast of the final visibility", .manifest = "final_value_power", .invalidates = kHistory},
+    {.key = "ao.depth_mip_offset", .flag = "--depth-mip-offset", .type = T::Number, .desc = &AoDesc::depthMipOffset,
+     .value = &EstimatorSettings::depthMipOffset, .lo = 0.0, .hi = 30.0,
+     .help = "Higher = coarser depth MIPs later", .manifest = "depth_mip_offset", .invalidates = kHistory},
+    {.key = "ao.strength", .flag = "--strength", .type = T::Number, .desc = &AoDesc::strength,
+     .value = &ChainSettings::strength, .lo = 0.0, .hi = 1.0, .help = "AO strength in the composite (0: none)",
+     .manifest = "strength", .invalidates = kHistory},
+    {.key = "ao.max_distance", .flag = "--max-distance", .type = T::Number, .desc = &AoDesc::maxDistance,
+     .value = &EstimatorSettings::maxDistance, .lo = 0.0, .hi = 1e7, .uiLo = 0.0, .uiHi = 1e3,
+     .help = "View depth where AO has faded out", .accepted = "0 (no limit) to 1e7 world units",
+     .manifest = "max_distance", .invalidates = kHistory},
+    {.key = "ao.denoise_blur_beta", .flag = "--denoise-blur-beta", .type = T::Number,
+     .desc = &AoDesc::denoiseBlurBeta, .value = &ChainSettings::denoiseBlurBeta, .lo = 0.0, .hi = 10.0,
+     .help = "Centre weight of the denoise blur", .manifest = "denoise_blur_beta", .invalidates = kHistory},
+    {.key = "ao.slices", .flag = "--slices", .type = T::Whole, .desc = &AoDesc::slices,
+     .value = &EstimatorSettings::slices, .lo = 1, .hi = 32, .help = "GTAO slices per pixel",
+     .defaultNote = "the preset's", .manifest = "slices", .invalidates = kEstimatorPipeline | kHistory,
+     .presetShaped = true},
+    {.key = "ao.steps", .flag = "--steps", .type = T::Whole, .desc = &AoDesc::steps,
+     .value = &EstimatorSettings::steps, .lo = 1, .hi = 32, .help = "GTAO steps per side of a slice",
+     .defaultNote = "the preset's", .manifest = "steps", .invalidates = kEstimatorPipeline | kHistory,
+     .presetShaped = true},
+    {.key = "ao.denoise", .flag = "--denoise", .type = T::Whole, .desc = &AoDesc::denoisePasses,
+     .value = &ChainSettings::denoisePasses, .lo = 0, .hi = 4, .help = "Spatial denoise passes",
+     .manifest = "denoise", .invalidates = kTemporalPipeline | kTargets | kHistory},
+    {.key = "ao.temporal_history", .flag = "--temporal", .type = T::Whole, .desc = &AoDesc::temporalHistory,
+     .value = &ChainSettings::temporalHistory, .lo = 0, .hi = 64,
+     .help = "Most frames the temporal pass averages (0: off)", .manifest = "temporal",
+     .invalidates = kTemporalPipeline | kTargets | kHistory},
+    {.key = "ao.rays", .flag = "--rays", .type = T::Whole, .desc = &AoDesc::rays, .value = &EstimatorSettings::rays,
+     .lo = 1, .hi = 64, .help = "Voxel and hybrid AO: rays per AO pixel per frame", .defaultNote = "the preset's",
+     .manifest = "rays", .invalidates = kEstimatorPipeline | kHistory, .presetShaped = true, .tracingOnly = true},
+    {.key = "ao.full_resolution", .flag = "--ao-full-res", .type = T::Bool, .desc = &AoDesc::fullResolution,
+     .value = &ChainSettings::fullResolution, .help = "Run the AO chain at full instead of half resolution",
+     .manifest = "full_resolution", .invalidates = kTargets | kHistory},
+
+    // Detail.
+    {.key = "detail.lod_bias", .flag = "--lod-bias", .type = T::Number, .desc = &Detail::lodBias, .lo = 0.0,
+     .hi = 64.0, .uiLo = 0.0, .uiHi = 16.0,
+     .help = "Largest size in pixels a coarse cell of far chunks may cover (0: exact voxels everywhere)",
+     .manifest = "lod_bias", .invalidates = kCulling},
+    {.key = "detail.occlusion_culling", .flag = "--occlusion-culling", .type = T::Bool,
+     .desc = &Detail::occlusionCulling, .help = "Skip clusters of quads hidden behind nearer geometry",
+     .manifest = "occlusion_culling", .invalidates = kCulling},
+};
+
+std::string number(double d) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", d);
+    return text;
+}
+
+std::string joined(std::span<const std::string_view> names) {
+    std::string s;
+    for (std::string_view n : names) s += (s.empty() ? "" : ", ") + std::string(n);
+    return s;
+}
+
+}  // namespace
+
+std::span<const Setting> settingsTable() { return kSettings; }
+
+const Setting* findSetting(std::string_view key) {
+    for (const Setting& s : kSettings)
+        if (s.key == key) return &s;
+    return nullptr;
+}
+
+const Setting& setting(std::string_view key) {
+    if (const Setting* s = findSetting(key)) return *s;
+    throw Error::internal("settings table", "no setting '" + std::string(key) + "'");
+}
+
+std::string acceptedText(const Setting& s) {
+    if (!s.accepted.empty()) return std::string(s.accepted);
+    if (s.type == SettingType::Choice) return joined(s.choices);
+    if (s.type == SettingType::Bool) return "true or false";
+    return number(s.lo) + " to " + number(s.hi);
+}
+
+std::string settingLabel(const Setting& s) {
+    const std::string_view key = s.key;
+    const size_t block = key.find('.');
+    std::string label(key.substr(block + 1));
+    std::replace(label.begin(), label.end(), '.', ' ');
+    std::replace(label.begin(), label.end(), '_', ' ');
+    return key.substr(0, block) == "ao" && s.type == SettingType::Choice ? "AO " + label : label;
+}
+
+std::string defaultText(const Setting& s) {
+    if (!s.defaultNote.empty()) return std::string(s.defaultNote);
+    const WorldDesc desc;
+    if (s.type == SettingType::Choice) {
+        if (const auto* m = std::get_if<std::string AoDesc::*>(&s.desc)) return desc.ao.*(*m);
+        return std::string(s.choices[size_t(desc.lighting.*std::get<ToneMap Lighting::*>(s.desc))]);
+    }
+    if (s.type == SettingType::Color || s.type == SettingType::Direction) {
+        const glm::vec3 v = desc.lighting.*std::get<glm::vec3 Lighting::*>(s.desc);
+        return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
+    }
+    const double v = settingNumber(s, desc, EstimatorSettings{}, ChainSettings{});
+    return s.type == SettingType::Bool ? (v != 0.0 ? "true" : "false") : number(v);
+}
+
+std::pair<double, double> uiRange(const Setting& s) {
+    return s.uiLo != 0.0 || s.uiHi != 0.0 ? std::pair(s.uiLo, s.uiHi) : std::pair(s.lo, s.hi);
+}
+
+double settingNumber(const Setting& s, const WorldDesc& desc, const EstimatorSettings& estimator,
+                     const ChainSettings& chain) {
+    if (!std::holds_alternative<std::monostate>(s.value))
+        return std::visit(Overloaded{[](std::monostate) { return 0.0; },
+                                     [&](auto EstimatorSettings::*m) { return double(estimator.*m); },
+                                     [&](auto ChainSettings::*m) { return double(chain.*m); }},
+                          s.value);
+    return std::visit(Overloaded{[&](float Lighting::*m) { return double(desc.lighting.*m); },
+                                 [&](bool Lighting::*m) { return desc.lighting.*m ? 1.0 : 0.0; },
+                                 [&](double Detail::*m) { return desc.detail.*m; },
+                                 [&](bool Detail::*m) { return desc.detail.*m ? 1.0 : 0.0; },
+                                 [&](auto) -> double {
+                                     throw Error::internal("settings table", "'" + std::string(s.key) + "' is not a number");
+                                 }},
+                      s.desc);
+}
+
+void resetPresetShaped(AoDesc& ao) {
+    for (const Setting& s : kSettings)
+        if (s.presetShaped) std::visit(Overloaded{[&](auto AoDesc::*m) { ao.*m = {}; }, [](auto) {}}, s.desc);
+}
+
+void overlayAo(const AoDesc& over, AoDesc& ao) {
+    for (const Setting& s : kSettings)
+        std::visit(Overloaded{[&](std::string AoDesc::*) {},
+                              [&](auto AoDesc::*m) {
+                                  if (over.*m) ao.*m = over.*m;
+                              },
+                              [](auto) {}},
+                   s.desc);
+}
+
+}  // namespace grotto::voxel
