@@ -1,7 +1,9 @@
 #pragma once
-// Orders the passes of a frame and places every barrier between them.
+// Orders the passes of a frame; the barriers between them follow from what each
+// declares it reads and writes (engine/frame/pass_decl.h).
 #include "engine/ao_settings.h"
 #include "engine/camera.h"
+#include "engine/frame/frame_constants.h"
 #include "engine/frame/frame_copy.h"
 #include "engine/frame/frame_targets.h"
 #include "engine/frame/frame_images.h"
@@ -12,7 +14,7 @@
 #include "engine/passes/depth_prefilter_pass.h"
 #include "engine/passes/display_pass.h"
 #include "engine/passes/gbuffer_pass.h"
-#include "engine/passes/gtao_pass.h"
+#include "engine/passes/estimator_pass.h"
 #include "engine/passes/hiz_pass.h"
 #include "engine/passes/shadow_pass.h"
 #include "engine/passes/temporal_pass.h"
@@ -23,6 +25,7 @@
 #include "shaders/shared/temporal.h"
 #include "voxel/world_desc.h"
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -48,7 +51,7 @@ public:
              uint32_t width, uint32_t height, const SceneObjects* objects = nullptr);
     ~Renderer();
 
-    // Renders frame `frameIndex` (it advances the GTAO noise). The temporal pass
+    // Renders frame `frameIndex` (it advances the AO noise). The temporal pass
     // accumulates over consecutive frame indices (wrapping); any other index starts
     // the history afresh. With `copy`, the frame's own command buffer also copies
     // its images into it (the AOVs when copy->aovs()), for decoding later on any
@@ -88,13 +91,13 @@ public:
     // The last frame's images, for an embedding game (include/grotto/grotto.h says
     // how to synchronise with them): scene-linear colour at full size, and the AO the
     // composite read (visibility in red) at AO resolution. Both in GENERAL.
-    const vk::Image& colorImage() const { return targets_.image(TargetId::Color); }
+    const vk::Image& colorImage() const { return image(TargetId::Color); }
     // With it on, every frame also tone-maps its colour into displayImage()
     // (RGBA16F, display-linear, GENERAL): what a window or a game shows. Off by
     // default: image files tone-map on the CPU and need no such pass.
     void setDisplayImage(bool on);
-    const vk::Image& displayImage() const { return targets_.image(TargetId::Display); }
-    const vk::Image& aoImage() const { return ao_.enabled ? aoHalfOutput() : targets_.image(TargetId::AoRaw); }
+    const vk::Image& displayImage() const { return image(TargetId::Display); }
+    const vk::Image& aoImage() const { return image(aoOutput()); }
 
     size_t targetBytes() const { return targets_.bytes(); }
     // What its targets are made for now (frame_targets.h).
@@ -110,6 +113,11 @@ private:
     uint32_t height() const { return targets_.shape().height; }
     void updateTargets(const FrameShape& shape);  // restarts the histories when targets change
     void release();  // frees whatever exists; null handles are skipped
+    // Records a pass: the barriers its declaration calls for, then `record` within its timestamp.
+    void pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record);
+    void writeConstants(const Camera& camera, uint32_t frameIndex);  // uniforms and constants of the frame
+    VkCommandBuffer beginCommands();  // cmd_, reset and begun
+    FrameStats recordGBuffer(VkCommandBuffer cmd, const Camera& camera);
     void recordAo(VkCommandBuffer cmd);
     // The last frame's images into `copy`, after everything recorded before.
     void recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera);
@@ -121,7 +129,8 @@ private:
     void writeTraceConstants(const Camera& camera, uint32_t frameIndex);
     void submitAndWait(VkCommandBuffer cmd);  // ends the command buffer, submits it and waits
     void requireOccupancy(const AoOptions& ao) const;  // throws for a tracing method without one
-    const vk::Image& aoHalfOutput() const;  // the chain's last half-res output: what the composite reads
+    TargetRef aoOutput() const;  // the AO chain's last output: what the composite reads
+    const vk::Image& image(TargetRef target) const { return targets_.image(target); }
 
     vk::Context& ctx_;
     GpuScene& scene_;
@@ -135,7 +144,7 @@ private:
     uint32_t shadowHistoryIndex_ = 0;
     std::optional<Camera> shadowCamera_;
     uint32_t shadowFrame_ = 0;
-    vk::Buffer frame_, gtaoConstants_, temporalConstants_, traceConstants_;
+    vk::Buffer frame_, aoConstants_, temporalConstants_, traceConstants_;
     // Objects: their poses now and at the last frame rendered (with its camera),
     // and their normal tables (bound to the composite in every world).
     const SceneObjects* objects_ = nullptr;
@@ -155,7 +164,7 @@ private:
     ChunkCulling culling_;
     CullingOptions cullingOptions_ = cullingOptions(voxel::Detail{});
     std::unique_ptr<DepthPrefilterPass> prefilterPass_;
-    std::unique_ptr<GtaoPass> gtaoPass_;
+    std::unique_ptr<EstimatorPass> estimatorPass_;
     std::unique_ptr<DenoisePass> denoisePass_;
     std::unique_ptr<TemporalPass> temporalPass_;
     std::unique_ptr<UpsamplePass> upsamplePass_;
@@ -166,14 +175,5 @@ private:
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
 };
-
-// The GTAO constants for a camera (exposed for the CPU twin and its tests).
-gpu::GtaoConstants gtaoConstants(const Camera& camera, const gpu::GtaoSettings& settings, uint32_t frameIndex,
-                                 uint32_t scale = 2);
-// How the current camera's view maps to the previous one's (from the rotation and
-// the step between the cameras, in double, so it stays exact far from the origin),
-// and the current view's axes in the world; reset when there is no history. No
-// invalidated boxes (HistoryBoxes::write adds them).
-gpu::TemporalConstants temporalConstants(const Camera& current, const Camera* previous);
 
 }  // namespace grotto

@@ -19,14 +19,14 @@ struct FrameImages {
     std::vector<float> normal;     // world-space xyz; 0 for sky
     std::vector<float> albedo;     // linear rgb; 0 for sky
     std::vector<float> ao;         // final visibility, full res (1 without AO)
-    std::vector<float> aoRaw;      // GTAO main pass output (half res)
+    std::vector<float> aoRaw;      // the estimator's output (half res)
     std::vector<float> aoSpatial;  // after the spatial denoiser (half res)
     std::vector<float> aoTemporal; // after the temporal pass (half res; the spatial AO without one)
     std::vector<float> aoHistory;  // frames of history behind each temporal pixel (half res; 1 without)
     std::vector<float> edges;      // smallest of the four edge weights (half res)
     std::vector<float> depthBuffer;       // raw reverse-Z values, as the GPU stored them
     std::vector<uint16_t> surfaceIds;     // raw G-buffer surface ids
-    std::vector<float> aoRawHalf;         // GTAO output at half res: visibility, packed edges
+    std::vector<float> aoRawHalf;         // the estimator's output at half res: visibility, packed edges
     std::vector<float> motion;            // where objects move: xy previous minus current pixel, z previous
                                           // view depth, 0 for sky (4 floats a pixel); empty otherwise
     std::vector<float> shadow;            // 1 where the sun reaches a surface, 0 where it does not (full res;

@@ -75,8 +75,9 @@ VkExtent2D targetExtent(const TargetRow& row, const FrameShape& shape) {
     return {0, 0};
 }
 
-vk::Image& FrameTargets::slot(TargetId id, uint32_t copy) {
-    switch (id) {
+vk::Image& FrameTargets::slot(TargetRef target) {
+    const uint32_t copy = target.copy;
+    switch (target.id) {
     case TargetId::Depth: return gbuffer_.depth;
     case TargetId::Surface: return gbuffer_.surface;
     case TargetId::Motion: return gbuffer_.motion;
@@ -94,25 +95,19 @@ vk::Image& FrameTargets::slot(TargetId id, uint32_t copy) {
     throw Error::internal("FrameTargets", "no such target");
 }
 
-const vk::Image& FrameTargets::image(TargetId id, uint32_t copy) const {
-    return const_cast<FrameTargets*>(this)->slot(id, copy);
-}
+const vk::Image& FrameTargets::image(TargetRef target) const { return const_cast<FrameTargets*>(this)->slot(target); }
 
-bool FrameTargets::update(const FrameShape& shape, VkCommandBuffer cmd) {
+bool FrameTargets::update(const FrameShape& shape) {
     bool changed = false;
     for (const TargetRow& row : kRows) {
         const VkExtent2D extent = targetExtent(row, shape);
         for (uint32_t c = 0; c < row.copies; ++c) {
-            vk::Image& image = slot(row.id, c);
+            vk::Image& image = slot({row.id, c});
             if (image.extent.width == extent.width && image.extent.height == extent.height) continue;
             changed = true;
             vk::destroy(ctx_, image);
-            if (extent.width == 0) continue;
-            image = vk::createImage(ctx_, extent, row.format, row.usage);
-            if (row.initial == kGeneral)
-                vk::transition(cmd, image, VK_IMAGE_LAYOUT_UNDEFINED, kGeneral, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, 0,
-                               VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                               VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+            state({row.id, c}) = {};
+            if (extent.width != 0) image = vk::createImage(ctx_, extent, row.format, row.usage);
         }
     }
     ao_.half = shape.ao.enabled ? shape.aoExtent() : VkExtent2D{};
@@ -120,15 +115,12 @@ bool FrameTargets::update(const FrameShape& shape, VkCommandBuffer cmd) {
     return changed;
 }
 
-bool FrameTargets::update(const FrameShape& shape) {
-    bool changed = false;
-    ctx_.submitAndWait([&](VkCommandBuffer cmd) { changed = update(shape, cmd); });
-    return changed;
-}
-
 void FrameTargets::release() {
     for (const TargetRow& row : kRows)
-        for (uint32_t c = 0; c < row.copies; ++c) vk::destroy(ctx_, slot(row.id, c));
+        for (uint32_t c = 0; c < row.copies; ++c) {
+            vk::destroy(ctx_, slot({row.id, c}));
+            state({row.id, c}) = {};
+        }
     ao_.half = {};
     shape_ = {};
 }
@@ -136,7 +128,7 @@ void FrameTargets::release() {
 size_t FrameTargets::bytes() const {
     size_t n = 0;
     for (const TargetRow& row : kRows)
-        for (uint32_t c = 0; c < row.copies; ++c) n += image(row.id, c).memory.size;
+        for (uint32_t c = 0; c < row.copies; ++c) n += image({row.id, c}).memory.size;
     return n;
 }
 

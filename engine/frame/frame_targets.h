@@ -1,9 +1,12 @@
 #pragma once
 // Every render target of a frame, declared once: one row each (format, size, usage,
-// when it exists, how many copies a history keeps, its first layout). Making,
-// freeing, the bytes they hold and the memory estimate (render_memory.h) all read
-// these rows, so a target added here is counted everywhere.
+// when it exists, how many copies a history keeps, whether it outlives a frame).
+// Making, freeing, the bytes they hold and the memory estimate (render_memory.h)
+// all read these rows, so a target added here is counted everywhere; the barriers
+// and layout transitions between passes follow from what each pass declares it
+// uses (pass_decl.h).
 #include "engine/ao_settings.h"
+#include "engine/frame/pass_decl.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/vk/resources.h"
@@ -36,11 +39,6 @@ struct FrameShape {
 FrameShape worldFrameShape(const voxel::WorldDesc& desc, uint32_t width, uint32_t height, const AoOptions& ao,
                            bool objects = true);
 
-enum class TargetId {
-    Depth, Surface, Motion, Color, Display, Shadow, ShadowHistory,
-    AoDepthAtlas, AoRaw, AoSpatial0, AoSpatial1, AoHistory, AoFull,
-};
-
 enum class TargetSize {
     Frame,       // the frame's pixels
     Ao,          // the AO chain's resolution (FrameShape::aoExtent)
@@ -53,9 +51,12 @@ struct TargetRow {
     TargetSize size;
     VkImageUsageFlags usage;
     bool (*exists)(const FrameShape&);
-    bool placeholder;       // where it does not exist, a 1x1 image stands in: its pass binds it regardless
-    uint32_t copies;        // 2: a history, this frame's and the last, ping-ponged
-    VkImageLayout initial;  // GENERAL: laid out once when made; UNDEFINED: every frame lays it out
+    bool placeholder;  // where it does not exist, a 1x1 image stands in: its pass binds it regardless
+    uint32_t copies;   // 2: a history, this frame's and the last, ping-ponged
+    // The layout a frame finds it in: GENERAL, kept from the frame before (histories,
+    // the AO chain's images, what a game may read between frames); UNDEFINED, its
+    // contents are dropped at each frame's start (the G-buffer, the colour).
+    VkImageLayout initial;
 };
 
 std::span<const TargetRow> targetRows();
@@ -72,24 +73,40 @@ public:
     FrameTargets& operator=(const FrameTargets&) = delete;
 
     // Makes the images `shape` has and frees those it lacks, keeping those whose
-    // size stays; the first transitions of new GENERAL images go into `cmd`. The
+    // size stays (new ones are laid out by the first pass that uses them). The
     // caller sees that the GPU uses none of the freed ones. Returns whether
     // anything was made or freed.
-    bool update(const FrameShape& shape, VkCommandBuffer cmd);
-    bool update(const FrameShape& shape);  // in a submission of its own, waited for
+    bool update(const FrameShape& shape);
     void release();
 
     const FrameShape& shape() const { return shape_; }
     size_t bytes() const;  // the device memory of every image
-    const vk::Image& image(TargetId id, uint32_t copy = 0) const;
+    const vk::Image& image(TargetRef target) const;
     const GBufferTargets& gbuffer() const { return gbuffer_; }
     const AoTargets& ao() const { return ao_; }
 
+    // frame_barriers.cpp: what each image went through since its last barrier.
+    // At a frame's start (the last one finished), nothing before needs a barrier,
+    // and the targets it lays out afresh hold nothing worth keeping.
+    void beginFrame();
+    // Records the layout transitions and barriers a pass using `uses` needs after
+    // everything recorded before, in one vkCmdPipelineBarrier (none when nothing is needed).
+    void recordBarriers(VkCommandBuffer cmd, const std::vector<TargetUse>& uses);
+    VkImageLayout layout(TargetRef target) const;  // after what is recorded so far
+
 private:
-    vk::Image& slot(TargetId id, uint32_t copy);
+    struct ImageState {
+        VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+        bool dropped = true;  // contents not needed: the next transition starts from UNDEFINED
+        VkPipelineStageFlags writeStage = 0, readStages = 0, visibleTo = 0;  // the last write; reads since; where it is visible
+        VkAccessFlags writeAccess = 0;
+    };
+    vk::Image& slot(TargetRef target);
+    ImageState& state(TargetRef target) { return states_[size_t(target.id)][target.copy]; }
 
     vk::Context& ctx_;
     FrameShape shape_;
+    std::array<std::array<ImageState, 2>, kTargetCount> states_{};
     GBufferTargets gbuffer_;
     AoTargets ao_;
     vk::Image color_, display_, shadow_;

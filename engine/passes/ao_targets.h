@@ -1,5 +1,6 @@
 #pragma once
-// The half-resolution AO chain's images, all kept in VK_IMAGE_LAYOUT_GENERAL.
+// The AO chain's images at AO resolution (half the frame's, or all of it with
+// --ao-full-res), as the passes take them; FrameTargets makes them.
 #include "engine/vk/resources.h"
 
 #include "shaders/shared/gtao.h"
@@ -9,7 +10,7 @@
 namespace grotto {
 
 struct AoTargets {
-    VkExtent2D half{};                                         // ceil(full / 2)
+    VkExtent2D half{};                                         // the AO resolution; none without AO
     vk::Image depthAtlas;                                      // R32F view depth, every MIP (see depthMipLayout)
     vk::Image raw;                                             // RGBA32F: visibility, packed edges, depth, face + 1
     std::array<vk::Image, 2> spatial;                          // RGBA32F: denoiser ping-pong, same layout (as many

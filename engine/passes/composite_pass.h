@@ -1,10 +1,11 @@
 #pragma once
 // Composite pass. Reads: the surface id, the palette, frame uniforms and, with AO,
-// the AO chain's half-res output, full-res depth and the GTAO constants (it
-// upsamples the AO itself, see upsample.glsl) and, with shadows, the shadow image.
-// Writes: RGBA32F display colour: sun Lambert x shadow + ambient x AO (multi-bounce
-// from albedo), and the sky, through the exposure and tone map. No history. Object faces are lit with their turned normals (the
-// objects' uniforms, shaders/shared/objects.h).
+// the AO chain's output, full-res depth and the AO constants (it upsamples the AO
+// itself, see upsample.glsl) and, with shadows, the shadow image. Writes: RGBA32F
+// scene-linear colour: sun Lambert x shadow + ambient x AO (multi-bounce from
+// albedo), and the sky, times the exposure. No history. Object faces are lit with
+// their turned normals (the objects' uniforms, shaders/shared/objects.h).
+#include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 
@@ -13,6 +14,11 @@ namespace grotto {
 class CompositePass {
 public:
     CompositePass(vk::Context& ctx, bool withAo, bool withShadow);
+    // `ao`: the AO chain's output (or its 1x1 placeholder without AO).
+    static PassDecl declare(TargetRef ao) {
+        return {"composite", {{TargetId::Surface, Access::Sampled}, {TargetId::Color, Access::Write}, {ao, Access::Read},
+                              {TargetId::Depth, Access::Sampled}, {TargetId::Shadow, Access::Read}}};
+    }
     // Without AO, `aoHalf` and `gtaoConstants` are placeholders the shader ignores;
     // without shadows, so is `shadow`.
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& aoHalf, const vk::Image& color,

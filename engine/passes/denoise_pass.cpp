@@ -7,23 +7,13 @@ DenoisePass::DenoisePass(vk::Context& ctx)
             {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
             sizeof(uint32_t)) {}
 
-void DenoisePass::dispatch(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, uint32_t index,
-                           const vk::Buffer& constants) {
+void DenoisePass::record(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, uint32_t index,
+                         const vk::Buffer& constants) {
     const uint32_t finalPass = index + 1 == passes ? 1u : 0u;
     pass_.dispatch(cmd,
                    {vk::uniformBuffer(constants.buffer), vk::storageImage(ao.denoised(index).view),
                     vk::storageImage(ao.denoised(index + 1).view)},
                    ao.half, GROTTO_GTAO_GROUP, &finalPass);
-    computeToCompute(cmd);
-}
-
-void DenoisePass::record(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, uint32_t count,
-                         const vk::Buffer& constants) {
-    for (uint32_t i = 0; i < count; ++i) dispatch(cmd, ao, passes, i, constants);
-}
-
-void DenoisePass::recordFinal(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, const vk::Buffer& constants) {
-    dispatch(cmd, ao, passes, passes - 1, constants);
 }
 
 }  // namespace grotto

@@ -1,9 +1,10 @@
 #pragma once
-// Spatial denoise: N edge-aware blur passes at half resolution. Reads:
-// AoTargets::raw, GTAO constants. Writes: AoTargets::spatial (ping-pong). No history.
+// Spatial denoise: N edge-aware blur passes at AO resolution. Reads:
+// AoTargets::raw, the AO constants. Writes: AoTargets::spatial (ping-pong). No history.
 // With the temporal pass on, that pass runs the final blur itself (temporal.comp),
-// so the frame records only the passes before it; recordFinal reproduces the
-// final pass's output on demand (the AO_spatial AOV).
+// so the frame records only the passes before it; the final pass alone
+// reproduces its output on demand (the AO_spatial AOV).
+#include "engine/frame/pass_decl.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"
 
@@ -12,16 +13,16 @@ namespace grotto {
 class DenoisePass {
 public:
     explicit DenoisePass(vk::Context& ctx);
-    // Passes 0 .. count - 1 of `passes` (all, or all but the last when the temporal
-    // pass runs that), each followed by a barrier.
-    void record(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, uint32_t count, const vk::Buffer& constants);
-    // The last of `passes` alone, into ao.denoised(passes) (needs passes > 0).
-    void recordFinal(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, const vk::Buffer& constants);
+    // Every pass of a frame is timed together under this name.
+    static constexpr const char* kTimestamp = "denoise";
+    // Pass `index` reads denoised(index) and writes denoised(index + 1).
+    static PassDecl declare(uint32_t index) {
+        return {nullptr, {{denoisedTarget(index), Access::Read}, {denoisedTarget(index + 1), Access::Write}}};
+    }
+    // Pass `index` of `passes` (the last one blurs with the final weights).
+    void record(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, uint32_t index, const vk::Buffer& constants);
 
 private:
-    void dispatch(VkCommandBuffer cmd, const AoTargets& ao, uint32_t passes, uint32_t index,
-                  const vk::Buffer& constants);
-
     ComputePass pass_;
 };
 

@@ -37,7 +37,6 @@ void DepthPrefilterPass::record(VkCommandBuffer cmd, const vk::Image& depth, con
                     vk::sampledImage(ctx_.pointSampler, depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
                     vk::storageImage(ao.depthAtlas.view)},
                    {uint32_t(mip1.z), uint32_t(mip1.w)}, GROTTO_GTAO_GROUP);
-    computeToCompute(cmd);
 }
 
 }  // namespace grotto

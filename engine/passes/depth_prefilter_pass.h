@@ -1,6 +1,7 @@
 #pragma once
-// Depth prefilter. Reads: full-res depth (D32), GTAO constants.
-// Writes: the half-res view-depth MIP chain (AoTargets::depthMips). No history.
+// Depth prefilter. Reads: full-res depth (D32), the AO constants.
+// Writes: the AO-resolution view-depth MIP chain (AoTargets::depthAtlas). No history.
+#include "engine/frame/pass_decl.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"
 
@@ -9,6 +10,9 @@ namespace grotto {
 class DepthPrefilterPass {
 public:
     explicit DepthPrefilterPass(vk::Context& ctx);
+    static PassDecl declare() {
+        return {"prefilter", {{TargetId::Depth, Access::Sampled}, {TargetId::AoDepthAtlas, Access::Write}}};
+    }
     void record(VkCommandBuffer cmd, const vk::Image& depth, const AoTargets& ao, const vk::Buffer& constants);
 
 private:

@@ -83,6 +83,12 @@ VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, const char*
 
 }  // namespace
 
+PassDecl GBufferPass::declare() const {
+    PassDecl d{"gbuffer", {{TargetId::Depth, Access::DepthAttachment}, {TargetId::Surface, Access::ColorAttachment}}};
+    if (mode_ == GBufferMode::Motion) d.uses.push_back({TargetId::Motion, Access::ColorAttachment});
+    return d;
+}
+
 GBufferPass::GBufferPass(vk::Context& ctx, GBufferMode mode) : ctx_(ctx), mode_(mode) {
     setLayout_ = vk::pushDescriptorLayout(ctx, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, VK_SHADER_STAGE_VERTEX_BIT);
     try {  // a shader that fails to load must not leak the layouts

@@ -10,6 +10,7 @@
 // frame's and the last frame's transforms and a motion target is written too.
 #include "engine/camera.h"
 #include "engine/frame/chunk_culling.h"
+#include "engine/frame/pass_decl.h"
 #include "engine/scene/scene.h"
 #include "voxel/object_pose.h"
 
@@ -49,6 +50,8 @@ public:
     // Draws `draws` of the scene, then the objects when `drawObjects`, clearing
     // the targets first when `clear`. `objects` also gives the previous camera the
     // motion target needs. Returns the number of quads drawn.
+    // Draws into depth and surface (and motion where objects move) as attachments.
+    PassDecl declare() const;
     uint64_t record(VkCommandBuffer cmd, const GBufferTargets& targets, const GpuScene& scene,
                     const vk::Buffer& frame, const Camera& camera, std::span<const QuadDraw> draws, bool clear,
                     const GBufferObjects* objects = nullptr, bool drawObjects = true);

@@ -2,6 +2,7 @@
 // Depth tiles for occlusion culling. Reads: the G-buffer depth (shader read-only).
 // Writes: the farthest depth of each tile into a host-visible buffer the CPU reads
 // once the submission has finished (engine/frame/chunk_culling.h tests boxes against it).
+#include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/vk/resources.h"
 
@@ -23,6 +24,8 @@ public:
     explicit HizPass(vk::Context& ctx);
     ~HizPass();
 
+    // Samples the depth; timed as part of the G-buffer.
+    static PassDecl declare() { return {nullptr, {{TargetId::Depth, Access::Sampled}}}; }
     // Records the reduction of `depth` (width x height) and a barrier making it
     // visible to the host; the buffer is made or remade for the size.
     void record(VkCommandBuffer cmd, const vk::Image& depth);

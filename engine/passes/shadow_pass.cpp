@@ -18,6 +18,15 @@ std::vector<VkDescriptorType> bindings(bool soft) {
 ShadowPass::ShadowPass(vk::Context& ctx, bool soft)
     : ctx_(ctx), soft_(soft), pass_(ctx, soft ? "soft_shadow.comp" : "shadow.comp", bindings(soft)) {}
 
+PassDecl ShadowPass::declare(uint32_t history) const {
+    PassDecl d{"shadow", {{TargetId::Depth, Access::Sampled}, {TargetId::Surface, Access::Sampled},
+                          {TargetId::Shadow, Access::Write}}};
+    if (soft_)
+        d.uses.insert(d.uses.end(), {{{TargetId::ShadowHistory, history}, Access::Read},
+                                     {{TargetId::ShadowHistory, 1 - history}, Access::Write}});
+    return d;
+}
+
 void ShadowPass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Buffer& objectUniforms,
                         const vk::Image& shadow, const vk::Buffer& traceConstants, const GpuOccupancy& occupancy,
                         const vk::Image* history, const vk::Image* nextHistory) {

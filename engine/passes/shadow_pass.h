@@ -7,6 +7,7 @@
 // and also reads the last frame's RGBA32F history and writes the next; the shadow
 // is the accumulated visibility.
 #include "engine/scene/occupancy.h"
+#include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 
@@ -15,6 +16,8 @@ namespace grotto {
 class ShadowPass {
 public:
     ShadowPass(vk::Context& ctx, bool soft);
+    // A soft sun's pass reads history image `history` and writes the other.
+    PassDecl declare(uint32_t history) const;
     // A soft pass needs `history` (read) and `nextHistory` (written), both in GENERAL.
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& objectUniforms,
                 const vk::Image& shadow, const vk::Buffer& traceConstants, const GpuOccupancy& occupancy,

@@ -1,4 +1,4 @@
-#include "engine/passes/gtao_pass.h"
+#include "engine/passes/estimator_pass.h"
 
 #include "engine/passes/trace_inputs.h"
 #include <bit>
@@ -26,12 +26,18 @@ std::vector<VkDescriptorType> bindingTypes(bool traces) {
 
 }  // namespace
 
-GtaoPass::GtaoPass(vk::Context& ctx, const AoOptions& ao)
+EstimatorPass::EstimatorPass(vk::Context& ctx, const AoOptions& ao)
     : ctx_(ctx),
+      method_(ao.method),
       traces_(tracesVoxels(ao.method)),
       pass_(ctx, std::string(aoMethodName(ao.method)) + ".comp", bindingTypes(traces_), 0, specialization(ao)) {}
 
-void GtaoPass::record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants,
+PassDecl EstimatorPass::declare() const {
+    return {aoMethodName(method_), {{TargetId::AoDepthAtlas, Access::Read}, {TargetId::Surface, Access::Sampled},
+                                    {TargetId::AoRaw, Access::Write}}};
+}
+
+void EstimatorPass::record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants,
                       const vk::Buffer& traceConstants, const GpuOccupancy* occupancy) {
     std::vector<vk::Binding> own = {
         vk::uniformBuffer(constants.buffer), vk::storageImage(ao.depthAtlas.view),

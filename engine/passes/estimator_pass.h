@@ -1,5 +1,5 @@
 #pragma once
-// The AO estimator pass at half resolution: GTAO (gtao.comp), voxel-traced AO
+// The AO estimator pass at AO resolution: GTAO (gtao.comp), voxel-traced AO
 // (voxel.comp), the hybrid of both (hybrid.comp), or one of the baselines SSAO
 // (ssao.comp) and HBAO (hbao.comp), which read and write exactly what GTAO does
 // (shaders/ao_estimator.glsl); voxel and hybrid also bind the trace inputs. Reads: the depth MIP chain, the
@@ -8,22 +8,26 @@
 // GtaoConstants::frameIndex.
 #include "engine/ao_settings.h"
 #include "engine/scene/occupancy.h"
+#include "engine/frame/pass_decl.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"
 
 namespace grotto {
 
-class GtaoPass {
+class EstimatorPass {
 public:
     // The loop shape (GTAO: slices, steps, distribution power; SSAO: samples;
     // HBAO: directions, steps; voxel and hybrid: rays too) is compiled in from `ao`.
-    GtaoPass(vk::Context& ctx, const AoOptions& ao);
+    EstimatorPass(vk::Context& ctx, const AoOptions& ao);
+    // Timed under the method's name (aoMethodName).
+    PassDecl declare() const;
     // `traceConstants` and `occupancy` only for the methods that trace voxels.
     void record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants,
                 const vk::Buffer& traceConstants, const GpuOccupancy* occupancy);
 
 private:
     vk::Context& ctx_;
+    AoMethod method_;
     bool traces_;
     ComputePass pass_;
 };
