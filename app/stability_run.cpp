@@ -185,7 +185,7 @@ StabilityFigures runStability(vk::Context& ctx, RenderSession& session, const Ao
                 voxel::BrickTable bricks(*preEdit);
                 events.push_back({i, pathFrame.edited, std::move(*preEdit), std::move(bricks), {}});
             }
-            const std::vector<voxel::ObjectPose> poses = renderer.objectPoses();
+            const std::vector<voxel::ObjectPose> poses = session.poses();
             const std::vector<voxel::PosedWorld> posed = session.posedObjects();
             const FrameStats stats = costs.render(renderer, camera, uint32_t(i), i > first + 1);  // 2 frames of warm-up
             for (const auto& [name, ms] : stats.passMs) passMs[name].push_back(ms);
