@@ -1,7 +1,7 @@
 #include "app/ao_measure.h"
 
 #include "app/options.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/image_output.h"
 
 #include <algorithm>

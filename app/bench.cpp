@@ -13,7 +13,7 @@
 #include "app/cost_difference.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/frame/render_memory.h"
 #include "engine/session.h"
 #include "voxel/world.h"

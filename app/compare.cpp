@@ -7,7 +7,7 @@
 #include "app/ao_measure.h"
 #include "app/commands.h"
 #include "app/options.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/lab/reference_view.h"
 #include "engine/frame/render_memory.h"
 

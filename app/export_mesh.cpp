@@ -1,7 +1,7 @@
 // grotto export-mesh WORLD -o FILE.ply: exactly the quads that are rasterised.
 #include "app/commands.h"
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/ply_export.h"
 #include "voxel/world.h"
 

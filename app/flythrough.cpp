@@ -24,7 +24,7 @@
 #include "app/progress.h"
 #include "app/video_pipe.h"
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/file_lock.h"
 #include "engine/camera_path.h"
 #include "engine/image_output.h"

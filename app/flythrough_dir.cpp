@@ -2,7 +2,7 @@
 
 #include "app/options.h"
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/file_lock.h"
 #include "common/json_text.h"
 #include "engine/image_output.h"

@@ -1,6 +1,6 @@
 #include "app/frame_names.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <algorithm>
 #include <cctype>

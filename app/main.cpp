@@ -3,7 +3,7 @@
 // --baseline); errors are one line, never a raw exception trace.
 #include "app/commands.h"
 #include "common/closest_name.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/printable.h"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "app/options.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/overloaded.h"
 #include "engine/scene/path_edits.h"
 #include "voxel/settings_table.h"

@@ -5,7 +5,7 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/object_worlds.h"
 #include "engine/image_output.h"
 #include "engine/lab/reference_view.h"

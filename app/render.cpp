@@ -4,7 +4,7 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/image_output.h"
 #include "engine/frame/render_memory.h"
 #include "engine/session.h"

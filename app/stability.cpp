@@ -20,7 +20,7 @@
 #include "app/stability_baseline.h"
 #include "app/stability_run.h"
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/camera_path.h"
 #include "engine/frame/render_memory.h"
 #include "engine/lab/edit_metrics.h"

@@ -1,6 +1,6 @@
 #include "app/stability_baseline.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/json_text.h"
 
 #include <cmath>

@@ -8,7 +8,7 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/lab/reference_view.h"
 #include "engine/frame/render_memory.h"
 

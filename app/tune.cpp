@@ -6,7 +6,7 @@
 #include "app/ao_measure.h"
 #include "app/commands.h"
 #include "app/options.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/frame/render_memory.h"
 #include "voxel/settings_table.h"
 

@@ -1,6 +1,6 @@
 #include "app/video_pipe.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <fcntl.h>
 #include <poll.h>

@@ -3,7 +3,7 @@
 #include "app/options.h"
 #include "app/viewer/viewer.h"
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/image_output.h"
 
 #include <memory>

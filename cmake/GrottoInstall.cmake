@@ -1,23 +1,23 @@
-# `cmake --install build [--prefix DIR]`: the grotto command, the libraries with
-# their headers (include/grotto/, the same paths as in the source tree) and a CMake
-# package, so another project embeds the renderer with find_package(Grotto) and
-# links Grotto::engine (examples/embed). The shaders are built into the libraries.
+# `cmake --install build [--prefix DIR]`: the grotto command, the libraries, the
+# public headers alone (include/grotto/: grotto.h and the few beside it) and a
+# CMake package, so another project embeds the renderer with find_package(Grotto)
+# and links Grotto::engine (examples/). The libraries behind the API are linked
+# for it, their headers not installed; the shaders are built into the libraries.
 include(CMakePackageConfigHelpers)
 
 set_target_properties(grotto_common PROPERTIES EXPORT_NAME common)
 set_target_properties(grotto_voxel PROPERTIES EXPORT_NAME voxel)
 set_target_properties(grotto_vdb_read PROPERTIES EXPORT_NAME vdb_read)
 set_target_properties(grotto_vk PROPERTIES EXPORT_NAME vk)
-set_target_properties(grotto_engine PROPERTIES EXPORT_NAME engine)
+set_target_properties(grotto_engine PROPERTIES EXPORT_NAME frame)
+set_target_properties(grotto_api PROPERTIES EXPORT_NAME engine)
 set_target_properties(grotto_shaders PROPERTIES EXPORT_NAME shaders)
 set_target_properties(grotto_oiio PROPERTIES EXPORT_NAME oiio)
 
 install(TARGETS grotto RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS grotto_common grotto_vdb_read grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_oiio
+install(TARGETS grotto_api grotto_common grotto_vdb_read grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_oiio
         EXPORT GrottoTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
-install(DIRECTORY common engine voxel DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto FILES_MATCHING PATTERN "*.h")
-install(FILES include/grotto/grotto.h DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto)
-install(DIRECTORY shaders/shared DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/grotto/shaders FILES_MATCHING PATTERN "*.h")
+install(DIRECTORY include/grotto DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
 
 set(package_dir ${CMAKE_INSTALL_LIBDIR}/cmake/Grotto)
 install(EXPORT GrottoTargets NAMESPACE Grotto:: DESTINATION ${package_dir})

@@ -1,6 +1,6 @@
 #include "atomic_file.h"
 
-#include "error.h"
+#include "grotto/error.h"
 #include "file_kind.h"
 #include "file_lock.h"
 

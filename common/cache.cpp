@@ -1,7 +1,7 @@
 #include "common/cache.h"
 
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <cstdio>
 #include <cstdlib>

@@ -1,6 +1,6 @@
 #include "file_kind.h"
 
-#include "error.h"
+#include "grotto/error.h"
 
 namespace grotto {
 namespace fs = std::filesystem;

@@ -1,6 +1,6 @@
 #include "file_lock.h"
 
-#include "error.h"
+#include "grotto/error.h"
 
 #include <fcntl.h>
 #include <sys/file.h>

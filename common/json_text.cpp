@@ -1,6 +1,6 @@
 #include "common/json_text.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/file_kind.h"
 
 #include <fstream>

@@ -1,6 +1,6 @@
 #include "limited_child.h"
 
-#include "error.h"
+#include "grotto/error.h"
 
 #include <fcntl.h>
 #include <poll.h>

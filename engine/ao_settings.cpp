@@ -1,6 +1,6 @@
 #include "engine/ao_settings.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/overloaded.h"
 #include "voxel/settings_table.h"
 #include "voxel/world.h"

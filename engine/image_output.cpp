@@ -1,7 +1,7 @@
 #include "engine/image_output.h"
 
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "shaders/shared/tone_map.h"
 
 #include <OpenImageIO/filesystem.h>

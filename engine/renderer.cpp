@@ -5,7 +5,7 @@
 // Each pass declares what it reads and writes; the barriers follow from that.
 #include "engine/renderer.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/frame/object_frame.h"
 #include "engine/frame/render_memory.h"
 #include "engine/passes/trace_inputs.h"
@@ -53,6 +53,7 @@ void Renderer::createPasses() {
     if (!hizPass_) hizPass_ = std::make_unique<HizPass>(ctx);
     if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled, shadows());
     if (displayOn_ && !displayPass_) displayPass_ = std::make_unique<DisplayPass>(ctx);
+    if (normalsOn_ && !normalsPass_) normalsPass_ = std::make_unique<NormalsPass>(ctx);
     if (shadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows());
     if (!ao_.enabled) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
@@ -68,7 +69,7 @@ FrameShape Renderer::shapeFor(uint32_t width, uint32_t height, const AoOptions& 
     const bool shadows = lighting.sunShadows && scene_.occupancy;
     return {.width = width, .height = height, .ao = ao, .shadows = shadows,
             .softShadows = shadows && lighting.sunAngle > 0.0f, .movingObjects = objects_ && objects_->moving,
-            .display = displayOn_, .aoAov = aoAov_};
+            .display = displayOn_, .normals = normalsOn_, .aoAov = aoAov_};
 }
 
 // Every frame waits for its fence before render() returns, so no GPU work of ours
@@ -79,20 +80,24 @@ void Renderer::updateTargets(const FrameShape& shape) {
     shadowCamera_.reset();
 }
 
-void Renderer::setDisplayImage(bool on) {
-    if (on == displayOn_) return;
-    displayOn_ = on;
+void Renderer::setDisplayImage(bool on) { setGameImage(displayOn_, on, "display image"); }
+void Renderer::setNormalsImage(bool on) { setGameImage(normalsOn_, on, "normals image"); }
+
+void Renderer::setGameImage(bool& flag, bool on, const char* what) {
+    if (on == flag) return;
+    flag = on;
     if (on) {
         try {
-            requireRenderFits(ctx_, wantedShape(), "display image");
+            requireRenderFits(ctx_, wantedShape(), what);
         } catch (...) {
-            displayOn_ = false;
+            flag = false;
             throw;
         }
         createPasses();
     } else {
         vkDeviceWaitIdle(ctx_.device);  // a game may still read it
-        displayPass_.reset();
+        if (!displayOn_) displayPass_.reset();
+        if (!normalsOn_) normalsPass_.reset();
     }
     targets_.update(wantedShape());
 }
@@ -111,6 +116,7 @@ void Renderer::release() {
     upsamplePass_.reset();
     compositePass_.reset();
     displayPass_.reset();
+    normalsPass_.reset();
     shadowPass_.reset();
     targets_.release();
     vk::destroy(ctx_, objectUniforms_);
@@ -219,6 +225,10 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy
     if (displayOn_)
         pass(cmd, DisplayPass::declare(), [&] {
             displayPass_->record(cmd, image(TargetId::Color), image(TargetId::Display), toneMapCurve(lighting_.toneMap));
+        });
+    if (normalsOn_)
+        pass(cmd, NormalsPass::declare(), [&] {
+            normalsPass_->record(cmd, targets_.gbuffer().surface, objectUniforms_, image(TargetId::Normals));
         });
     if (copy) recordCopy(cmd, *copy, camera);
     submitAndWait(cmd);
@@ -354,6 +364,19 @@ void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
                                                               std::to_string(objects_ ? objects_->scenes.size() : 0) +
                                                               " objects");
     poses_.assign(poses.begin(), poses.end());
+}
+
+void Renderer::objectAdded(const voxel::ObjectPose& pose) {
+    objectScenes_ = objects_->list();
+    poses_.push_back(pose);
+    if (lastCamera_) lastPoses_.push_back(pose);
+}
+
+void Renderer::objectRemoved(size_t index) {
+    // render() has waited for its frame: no frame in flight draws the scene the caller frees next.
+    objectScenes_.erase(objectScenes_.begin() + ptrdiff_t(index));
+    poses_.erase(poses_.begin() + ptrdiff_t(index));
+    if (index < lastPoses_.size()) lastPoses_.erase(lastPoses_.begin() + ptrdiff_t(index));
 }
 
 void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {

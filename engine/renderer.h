@@ -13,6 +13,7 @@
 #include "engine/passes/denoise_pass.h"
 #include "engine/passes/depth_prefilter_pass.h"
 #include "engine/passes/display_pass.h"
+#include "engine/passes/normals_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/passes/estimator_pass.h"
 #include "engine/passes/hiz_pass.h"
@@ -61,6 +62,11 @@ public:
     // frame before are kept for the motion vectors.
     void setObjectPoses(std::span<const voxel::ObjectPose> poses);
     const std::vector<voxel::ObjectPose>& objectPoses() const { return poses_; }
+    // The caller's objects gained one (at the end, at `pose`, still: no motion in
+    // its first frame) or lost object `index` (before its scene is freed); the
+    // others keep their poses and motion.
+    void objectAdded(const voxel::ObjectPose& pose);
+    void objectRemoved(size_t index);
     // A camera cut: the next frame starts without history.
     void resetHistory() {
         previousCamera_.reset();
@@ -97,6 +103,14 @@ public:
     // default: image files tone-map on the CPU and need no such pass.
     void setDisplayImage(bool on);
     const vk::Image& displayImage() const { return image(TargetId::Display); }
+    // With it on, every frame also writes the world-space normal of each pixel's
+    // face into normalsImage() (normals_pass.h; GENERAL). Off by default.
+    void setNormalsImage(bool on);
+    const vk::Image& normalsImage() const { return image(TargetId::Normals); }
+    // The G-buffer's depth (D32, reverse-Z: 1 at the near plane, 0 at infinity) and
+    // the layout the last frame left it in.
+    const vk::Image& depthImage() const { return image(TargetId::Depth); }
+    VkImageLayout layout(TargetId target) const { return targets_.layout(target); }
     const vk::Image& aoImage() const { return image(aoOutput()); }
 
     size_t targetBytes() const { return targets_.bytes(); }
@@ -106,6 +120,8 @@ public:
 
 private:
     void createPasses();  // those ao_ needs and that do not exist yet
+    // Turns an image only a game or a window reads on or off (`flag`: displayOn_ or normalsOn_).
+    void setGameImage(bool& flag, bool on, const char* what);
     // The targets' shape at a size with these settings (and the display and AO AOV as now).
     FrameShape shapeFor(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting) const;
     FrameShape wantedShape() const { return shapeFor(width(), height(), ao_, lighting_); }  // at the current size
@@ -138,6 +154,7 @@ private:
     AoOptions ao_;
     FrameTargets targets_;
     bool displayOn_ = false;
+    bool normalsOn_ = false;
     bool aoAov_ = false;  // a read-back asked for the AO AOVs: their full-res target is kept from then on
     // A soft sun's history: which image holds the last, and the camera and frame
     // index of its last frame (none: the next frame starts afresh).
@@ -170,6 +187,7 @@ private:
     std::unique_ptr<UpsamplePass> upsamplePass_;
     std::unique_ptr<CompositePass> compositePass_;
     std::unique_ptr<DisplayPass> displayPass_;
+    std::unique_ptr<NormalsPass> normalsPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
     vk::Timestamps timestamps_;
     VkCommandBuffer cmd_ = VK_NULL_HANDLE;

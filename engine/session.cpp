@@ -8,9 +8,10 @@ namespace grotto {
 RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptions& ao, const voxel::Detail& detail,
                              uint32_t width, uint32_t height, bool objectsMayMove)
     : ctx_(ctx), objectWorlds_(voxel::loadObjectWorlds(world.desc())), lighting_(world.desc().lighting), ao_(ao),
-      culling_(cullingOptions(detail)), width_(width), height_(height) {
-    if (!objectWorlds_.empty()) objects_ = uploadObjects(ctx, objectWorlds_, world.desc());
-    if (objects_ && objectsMayMove) objects_->moving = true;
+      culling_(cullingOptions(detail)), width_(width), height_(height), objectsMayMove_(objectsMayMove) {
+    // Objects that may move may also come and go: the renderer draws a list, empty or not.
+    if (!objectWorlds_.empty() || objectsMayMove) objects_ = uploadObjects(ctx, objectWorlds_, world.desc());
+    if (objectsMayMove) objects_->moving = true;
     scene_ = std::make_unique<LiveScene>(ctx, std::move(world));
     setTime(0.0);
 }

@@ -53,6 +53,24 @@ public:
     // The objects' worlds at those poses, for the reference to trace.
     std::vector<voxel::PosedWorld> posedObjects() const { return voxel::posedWorlds(objectWorlds_, poses_); }
 
+    // Objects added and removed between frames (at most GROTTO_MAX_OBJECTS in all):
+    // `world` holds the object's voxels; `desc` its name, pivot and keys (it stands
+    // at its first key's pose until the next setTime). Indices above a removed
+    // object's move down by one. Throws grotto::Error (input) past the limit or
+    // for an index that does not exist.
+    void addObject(voxel::World world, voxel::ObjectDesc desc);
+    void removeObject(size_t index);
+    // The first solid voxel along a ray (unit `direction`, world units), of the
+    // world or of an object at its pose now; an object's hit is in its own voxels,
+    // with `normal` turned by its pose.
+    struct Hit {
+        voxel::RayHit ray;
+        glm::dvec3 normal{0.0};  // the outward normal of the face entered, world axes; 0 inside a voxel
+        int material = 0;
+        int object = -1;  // -1: the world's voxels
+    };
+    std::optional<Hit> raycast(glm::dvec3 origin, glm::dvec3 direction, double maxDistance) const;
+
     // An edit of the live world (or its undo); the renderer restarts its history
     // where it changed. Throws grotto::Error (input) for an edit the world refuses.
     voxel::EditResult apply(const voxel::Edit& edit);
@@ -97,6 +115,7 @@ private:
     std::unique_ptr<CameraPath> path_;
     std::unique_ptr<PathEdits> edits_;
     std::optional<double> lastPathTime_;  // the path's time at the frame before; unset: none yet
+    bool objectsMayMove_;
 };
 
 }  // namespace grotto

@@ -1,7 +1,7 @@
 // Fuzzes the camera-path .json reader, then evaluates every path it accepts the
 // way a flythrough does: an accepted path must give finite poses at its keys and
 // between them. Bad input must end in grotto::Error of kind Input.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/camera_path.h"
 #include "fuzz/input_file.h"
 #include "voxel/camera_path_desc.h"

@@ -2,7 +2,7 @@
 // end in grotto::Error of kind Input; any other exception, crash or sanitizer
 // report is a bug. The memory budget is lowered below libFuzzer's -malloc_limit_mb,
 // so a grid refused by its stated size is refused before that limit trips.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "fuzz/input_file.h"
 #include "voxel/solid.h"
 

@@ -1,6 +1,6 @@
 // Fuzzes the world .json reader. Bad input must end in grotto::Error of kind
 // Input (the CLI's exit 2); any other exception, crash or sanitizer report is a bug.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "fuzz/input_file.h"
 #include "voxel/world_desc.h"
 

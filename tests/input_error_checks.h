@@ -1,7 +1,7 @@
 #pragma once
 // The check every strict-file test makes: loading bad input throws grotto::Error
 // (input, exit code 2) in one line that names the file, the field and the problem.
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <gtest/gtest.h>
 

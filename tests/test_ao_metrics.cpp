@@ -1,6 +1,6 @@
 // The AO error metrics against hand-computed values: only masked pixels count,
 // PSNR has peak 1, the bias keeps its sign, and exact agreement is +inf dB.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/lab/ao_metrics.h"
 
 #include <gtest/gtest.h>

@@ -1,6 +1,6 @@
 // Bricks and solid rules: popcounts of brick occupancy equal the solid voxel
 // count, active tiles included, for every grid type the loader accepts.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/solid.h"
 
 #include <gtest/gtest.h>

@@ -3,7 +3,7 @@
 // shipped paths keep the camera out of solid voxels.
 #include "engine/camera_path.h"
 #include "engine/spline.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "tests/input_error_checks.h"
 #include "tests/test_util.h"
 #include "voxel/camera_path_desc.h"

@@ -34,10 +34,12 @@ TEST(EngineApi, AnEditShowsInTheNextFrameAsAWorldLoadedEdited) {
     EXPECT_EQ(dug.changed, 4u * 5u * 3u);
     const Pixels after = renderOnce(live);
 
+    const test::ScratchDir dir;
     voxel::World edited = voxel::World::load(test::worldsDir() / "rooms.json");
     edited.apply(kDig);
+    edited.save(dir / "dug.json");
     Engine fresh({.width = 160, .height = 90, .validation = true});
-    fresh.setWorld(std::move(edited));
+    fresh.loadWorld(dir / "dug.json");
     fresh.setAo(noAo);
     fresh.setCamera(kView);
     EXPECT_EQ(after.rgba, renderOnce(fresh).rgba);
@@ -57,7 +59,7 @@ TEST(EngineApi, ASavedWorldRendersAsTheEngineThatSavedIt) {
     Engine live({.width = 48, .height = 27, .validation = true});
     live.loadWorld(test::worldsDir() / "yard.json");
     live.edit(kDig);
-    voxel::Lighting evening = live.world().desc().lighting;
+    voxel::Lighting evening = live.lighting();
     evening.sunDirection = glm::normalize(glm::vec3(-0.8f, 0.3f, 0.2f));
     evening.sunColor = {1.0f, 0.6f, 0.3f};
     evening.exposure = 0.9f;
@@ -88,7 +90,7 @@ TEST(EngineApi, SettingsChangeInPlace) {
     p = renderOnce(engine);
     EXPECT_EQ(p.width, 33u);
     EXPECT_EQ(p.rgba.size(), 33u * 17u * 4u);
-    voxel::Lighting dark = engine.world().desc().lighting;
+    voxel::Lighting dark = engine.lighting();
     dark.sunIntensity = 0.0f;
     dark.ambientIntensity = 0.0f;
     const Pixels lit = p;
@@ -112,7 +114,7 @@ TEST(EngineApi, ColourIsSceneLinearAndDisplayItsToneMap) {
     Engine engine({.width = 40, .height = 24, .validation = true});
     engine.loadWorld(test::worldsDir() / "rooms.json");
     engine.setCamera(kView);
-    voxel::Lighting bright = engine.world().desc().lighting;
+    voxel::Lighting bright = engine.lighting();
     bright.sunIntensity = 4.0f;
     bright.exposure = 1.0f;
     engine.setLighting(bright);

@@ -2,7 +2,7 @@
 // round-trips and stops short of the poles, orbits that keep their distance and
 // look at the pivot, and the wheel's speed steps.
 #include "app/viewer/fly_camera.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/camera.h"
 
 #include <gtest/gtest.h>

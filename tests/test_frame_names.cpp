@@ -3,7 +3,7 @@
 // ranges that cover the path exactly once (app/options.h).
 #include "app/frame_names.h"
 #include "app/options.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "tests/input_error_checks.h"
 
 #include <gtest/gtest.h>

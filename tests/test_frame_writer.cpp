@@ -3,7 +3,7 @@
 // frames through two slots; and the first error a job throws reaches the main
 // thread, after which no later job runs.
 #include "app/frame_writer.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/renderer.h"
 #include "tests/gpu_fixture.h"
 #include "tests/test_util.h"

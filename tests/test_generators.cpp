@@ -1,6 +1,6 @@
 // The `mkworld` generators: deterministic, built the way their comments say, and
 // clear errors for bad input.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/generators.h"
 #include "voxel/solid.h"
 

@@ -5,7 +5,7 @@
 // chunks; edits restart the temporal history within the AO's reach for exactly
 // one frame, also 1e6 units from the origin; and resize, lighting and AO changes
 // on a live renderer give what a fresh renderer gives.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/frame/history_boxes.h"
 #include "engine/scene/quad_slots.h"
 #include "engine/renderer.h"

@@ -1,7 +1,7 @@
 // Live worlds: random edits checked against a plain model of the voxels, the
 // chunk-by-chunk mesh and the updated brick table checked against fresh ones,
 // everything undone back to the original; and hand-built cases of each edit.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "tests/live_world_checks.h"
 #include "voxel/generators.h"
 #include "voxel/live_mesh.h"

@@ -1,7 +1,7 @@
 // Objects in world files: poses against analytic values (linear position, slerp,
 // held outside the keys), strict parsing with errors naming file and field, and
 // the command line's exit code 2 for a bad object.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "tests/test_util.h"
 #include "voxel/object_pose.h"
 #include "voxel/world_desc.h"

@@ -11,6 +11,20 @@ scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 unset GROTTO_SHADER_DIR
 cmake --install "$build" --prefix "$scratch/prefix" >/dev/null
+# The public surface stands alone: the prefix's include/ holds grotto/*.h and
+# nothing else; they include only each other, Vulkan, GLM and the standard
+# library; and <grotto/grotto.h> compiles with no include path but the prefix's
+# (Vulkan and GLM come from the system's, as a game has them).
+extra=$(cd "$scratch/prefix/include" && find . -type f ! -path './grotto/*.h')
+[ -z "$extra" ] || { echo "installed beside the public headers: $extra" >&2; exit 1; }
+headers=$(ls "$scratch/prefix/include/grotto" | wc -l)
+[ "$headers" -le 6 ] || { echo "$headers public headers: a handful at most" >&2; exit 1; }
+if grep -h '^#include' "$scratch/prefix/include/grotto/"*.h | grep -vE '^#include ("grotto/[a-z_]+\.h"|<vulkan/vulkan\.h>|<glm/[a-z0-9_/]+\.hpp>|<[a-z_]+>)$'; then
+    echo "a public header includes more than grotto/, Vulkan, GLM and the standard library" >&2; exit 1
+fi
+printf '#include <grotto/grotto.h>\nint main() { grotto::Engine* e = nullptr; return e == nullptr ? 0 : 1; }\n' > "$scratch/alone.cpp"
+"$cxx" -std=c++20 $cxxflags -I"$scratch/prefix/include" -fsyntax-only "$scratch/alone.cpp" ||
+    { echo "<grotto/grotto.h> does not compile with only the prefix, Vulkan and GLM" >&2; exit 1; }
 cmake -S "$source/examples/embed" -B "$scratch/build" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" \
       -DCMAKE_BUILD_TYPE=Release \
       -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_CXX_FLAGS="$cxxflags" -DCMAKE_EXE_LINKER_FLAGS="$ldflags" >/dev/null

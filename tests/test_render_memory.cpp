@@ -3,7 +3,7 @@
 // hard and soft, moving objects, each AO method and resolution, the display image
 // and the AO AOV; and a size the device cannot hold is refused as bad input before
 // any allocation.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/frame/render_memory.h"
 #include "engine/renderer.h"
 #include "engine/scene/live_scene.h"

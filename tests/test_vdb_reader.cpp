@@ -3,7 +3,7 @@
 // was a bare fork: a fork copies the locks other threads hold, and a child that
 // needed OpenVDB's type registries while a thread held them waited until the
 // parent gave up, "reading it stalled for 20 s", about once in five suites.)
-#include "common/error.h"
+#include "grotto/error.h"
 #include "tests/test_util.h"
 #include "voxel/world.h"
 

@@ -2,7 +2,7 @@
 // order, output paths beside the script, and each kind of bad input refused in
 // one line naming the file and the field.
 #include "app/viewer/view_script.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "tests/input_error_checks.h"
 #include "tests/test_util.h"
 

@@ -2,7 +2,7 @@
 // World::save, whose file World::load reads as the same voxels, materials,
 // placement and metadata, and which never leaves a half-written target.
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "tests/test_util.h"
 #include "voxel/world.h"
 #include "voxel/world_from_grid.h"

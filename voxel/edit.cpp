@@ -5,7 +5,7 @@
 
 #include <cstdio>
 
-namespace grotto::voxel {
+namespace grotto {
 
 IndexBox IndexBox::merged(const IndexBox& o) const {
     if (empty()) return o;
@@ -18,6 +18,10 @@ WorldBox WorldBox::merged(const WorldBox& o) const {
     if (o.empty()) return *this;
     return {glm::min(min, o.min), glm::max(max, o.max)};
 }
+
+}  // namespace grotto
+
+namespace grotto::voxel {
 
 namespace {
 

@@ -3,7 +3,7 @@
 // files: every field read is checked, and an unknown field is an error naming file
 // and field. nlohmann-json is a private dependency of grotto_voxel: code outside
 // voxel/ that includes this links nlohmann_json itself.
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/vec2.hpp>

@@ -1,6 +1,6 @@
 // Face culling and greedy merging per 32^3 chunk into rectangles, which LiveMesh
 // welds into quads that meet corner to corner (watertight.h).
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/live_mesh.h"
 #include "voxel/solid.h"
 

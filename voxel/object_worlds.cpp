@@ -1,6 +1,6 @@
 #include "voxel/object_worlds.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/generators.h"
 #include "voxel/solid.h"
 

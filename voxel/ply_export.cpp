@@ -1,7 +1,7 @@
 #include "voxel/ply_export.h"
 
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 
 
 namespace grotto::voxel {

@@ -2,7 +2,7 @@
 // over the OpenVDB tree, so World::raycast and the GPU's sun shadows agree ray for
 // ray. The walk starts where the ray enters the solid bounds, so a camera far from
 // the world costs nothing extra.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/solid.h"
 
 #include <glm/geometric.hpp>

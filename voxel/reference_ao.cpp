@@ -3,7 +3,7 @@
 // exact voxel DDA that crosses empty bricks in one step.
 #include "voxel/reference_ao.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/brick_table.h"
 
 #include <tbb/blocked_range.h>

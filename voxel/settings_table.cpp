@@ -1,6 +1,6 @@
 #include "voxel/settings_table.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/overloaded.h"
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // The solid rule: which voxels of a grid are solid, and of what material.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/solid.h"
 
 #include <openvdb/tools/LevelSetUtil.h>

@@ -1,5 +1,5 @@
 // Reading a .vdb: checked by a reader process under limits, then read for real.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/file_kind.h"
 #include "common/limited_child.h"
 #include "voxel/solid.h"

@@ -2,7 +2,7 @@
 // voxels first (transform, budget). What the reader process runs (vdb_reader.cpp).
 #include "voxel/vdb_read.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/world.h"
 
 #include <cmath>

@@ -3,7 +3,7 @@
 // 3 under the limits it is given (common/limited_child.h), so a damaged or
 // hostile file ends here. Arguments after the limits: FILE (the name errors
 // give), GRID (empty: the first) and the world's memory budget in bytes.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/limited_child.h"
 #include "voxel/vdb_read.h"
 

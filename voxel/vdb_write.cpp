@@ -1,6 +1,6 @@
 // Writing a .vdb atomically, every write checked.
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/solid.h"
 
 #include <openvdb/io/Archive.h>

@@ -1,4 +1,4 @@
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/object_worlds.h"
 #include "voxel/camera_frame.h"
 #include "voxel/solid.h"

@@ -1,6 +1,6 @@
 #include "voxel/world_desc.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/file_kind.h"
 #include "common/overloaded.h"
 #include "voxel/grid_block.h"

@@ -4,7 +4,7 @@
 // brick the edit covers whole that holds one state throughout (empty, or a tile)
 // changes as a whole: it becomes a tile, and its prior state is remembered once,
 // so a fill of a large region costs its bricks, not its voxels.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "shaders/shared/frame.h"
 #include "voxel/solid.h"
 

@@ -1,5 +1,5 @@
 // Worlds made in memory: from a dense array of material ids, or from a grid.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/solid.h"
 #include "voxel/world_from_grid.h"
 

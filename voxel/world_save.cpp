@@ -2,7 +2,7 @@
 // transform and metadata, and beside it the world file naming that .vdb with
 // every setting, camera, path and object: World::load of it is the same world.
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/solid.h"
 #include "voxel/world_json.h"
 

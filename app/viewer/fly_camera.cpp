@@ -1,6 +1,6 @@
 #include "app/viewer/fly_camera.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/camera.h"
 
 #include <glm/geometric.hpp>

@@ -1,7 +1,7 @@
 #include "app/viewer/path_recorder.h"
 
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/world_json.h"
 
 namespace grotto::viewer {

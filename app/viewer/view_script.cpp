@@ -1,6 +1,6 @@
 #include "app/viewer/view_script.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/json_reader.h"
 
 #include <glm/common.hpp>

@@ -4,7 +4,7 @@
 
 #include "app/options.h"
 #include "app/viewer/settings_patch.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "common/printable.h"
 #include "engine/image_output.h"
 #include "voxel/world.h"

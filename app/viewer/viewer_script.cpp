@@ -2,7 +2,7 @@
 // file and the action's field, as the file readers refuse theirs.
 #include "app/viewer/viewer_internal.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <algorithm>
 

@@ -1,6 +1,6 @@
 #include "app/viewer/window.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 
 #define GLFW_INCLUDE_VULKAN
 #include <GLFW/glfw3.h>

@@ -1,6 +1,6 @@
 #include "engine/frame/frame_targets.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <algorithm>
 
@@ -28,6 +28,8 @@ constexpr TargetRow kRows[] = {
     {TargetId::Color, kRgba32f, TargetSize::Frame, kStorage | kRead, always, false, 1, kEachFrame},
     {TargetId::Display, VK_FORMAT_R16G16B16A16_SFLOAT, TargetSize::Frame, kStorage | kRead,
      [](const FrameShape& s) { return s.display; }, false, 1, kGeneral},
+    {TargetId::Normals, VK_FORMAT_R16G16B16A16_SFLOAT, TargetSize::Frame, kStorage | kRead,
+     [](const FrameShape& s) { return s.normals; }, false, 1, kGeneral},
     {TargetId::Shadow, kR32f, TargetSize::Frame, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
      [](const FrameShape& s) { return s.shadows; }, true, 1, kGeneral},
     {TargetId::ShadowHistory, kRgba32f, TargetSize::Frame, kStorage,
@@ -83,6 +85,7 @@ vk::Image& FrameTargets::slot(TargetRef target) {
     case TargetId::Motion: return gbuffer_.motion;
     case TargetId::Color: return color_;
     case TargetId::Display: return display_;
+    case TargetId::Normals: return normals_;
     case TargetId::Shadow: return shadow_;
     case TargetId::ShadowHistory: return shadowHistory_[copy];
     case TargetId::AoDepthAtlas: return ao_.depthAtlas;

@@ -25,6 +25,7 @@ struct FrameShape {
     bool softShadows = false;    // a sun of finite size: its shadow keeps a history
     bool movingObjects = false;  // with the temporal pass: motion vectors
     bool display = false;        // the tone-mapped display image (Renderer::setDisplayImage)
+    bool normals = false;        // the world-space normals image (Renderer::setNormalsImage)
     bool aoAov = false;          // the full-resolution AO a read-back with AOVs upsamples into
 
     bool temporal() const { return ao.enabled && ao.chain.temporalHistory > 0; }
@@ -109,7 +110,7 @@ private:
     std::array<std::array<ImageState, 2>, kTargetCount> states_{};
     GBufferTargets gbuffer_;
     AoTargets ao_;
-    vk::Image color_, display_, shadow_;
+    vk::Image color_, display_, normals_, shadow_;
     std::array<vk::Image, 2> shadowHistory_;
 };
 

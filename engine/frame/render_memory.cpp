@@ -1,6 +1,6 @@
 #include "engine/frame/render_memory.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <unistd.h>
 

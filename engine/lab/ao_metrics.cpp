@@ -1,6 +1,6 @@
 #include "engine/lab/ao_metrics.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <cmath>
 #include <limits>

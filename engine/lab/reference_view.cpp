@@ -1,7 +1,7 @@
 #include "engine/lab/reference_view.h"
 
 #include "common/cache.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/renderer.h"
 #include "engine/lab/surface_points.h"
 #include "voxel/reference_ao.h"

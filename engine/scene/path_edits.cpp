@@ -1,6 +1,6 @@
 #include "engine/scene/path_edits.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "engine/renderer.h"
 
 namespace grotto {

@@ -1,6 +1,6 @@
 #include "engine/scene/scene.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/live_mesh.h"
 #include "voxel/mesh.h"
 #include "voxel/world_desc.h"

@@ -1,6 +1,6 @@
 #include "engine/scene/scene_objects.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/world.h"
 
 namespace grotto {

@@ -1,7 +1,7 @@
 #pragma once
 // VK_CHECK stays on in release builds: a failing call throws grotto::Error naming
 // the call and its VkResult.
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <vulkan/vulkan.h>
 

@@ -1,6 +1,6 @@
 #include "engine/vk/resources.h"
 
-#include "common/error.h"
+#include "grotto/error.h"
 
 #include <cstring>
 #include <string>

@@ -19,21 +19,23 @@ namespace {
 constexpr int kFrames = 120;
 constexpr glm::ivec3 kSize{96, 40, 96};
 
-// Grass ground with a rock hill on it, as a game's generator would make it, and a
-// crate: an object the game moves itself.
-grotto::voxel::World buildWorld() {
-    std::vector<uint8_t> voxels(size_t(kSize.x) * kSize.y * kSize.z, 0);
+// Grass ground with a rock hill on it, as a game's generator would make it.
+grotto::VoxelGrid buildWorld() {
+    grotto::VoxelGrid grid{.size = kSize, .materials = std::vector<uint8_t>(size_t(kSize.x) * kSize.y * kSize.z, 0)};
     for (int z = 0; z < kSize.z; ++z)
         for (int y = 0; y < kSize.y; ++y)
             for (int x = 0; x < kSize.x; ++x) {
                 const bool ground = y < 6, hill = x >= 28 && x < 72 && z >= 24 && z < 64 && y < 30 - std::abs(x - 50) / 3;
                 // The default palette: 1 stone, 2 grass.
-                voxels[(size_t(z) * kSize.y + y) * kSize.x + x] = ground ? 2 : hill ? 1 : 0;
+                grid.materials[(size_t(z) * kSize.y + y) * kSize.x + x] = ground ? 2 : hill ? 1 : 0;
             }
-    grotto::voxel::WorldDesc desc;
-    desc.objects.push_back({.name = "crate", .material = 4 /* brick */, .generator = "box", .boxSize = {4, 4, 4},
-                            .pivot = {2.0, 0.0, 2.0}, .keys = {{}}});
-    return grotto::voxel::World::fromDense(kSize, voxels.data(), 1.0, glm::dvec3(0.0), desc);
+    return grid;
+}
+
+// A crate: an object the game adds and moves itself, turning about its base's centre.
+grotto::Object crate() {
+    return {.name = "crate", .voxels = {.size = {4, 4, 4}, .materials = std::vector<uint8_t>(64, 4)},  // 4: brick
+            .pivot = {2.0, 0.0, 2.0}};
 }
 
 // Copies Grotto's colour image into a host buffer with the game's own command
@@ -120,13 +122,13 @@ int main(int argc, char** argv) {
         {
             grotto::Engine engine(game.handles(), {.width = 320, .height = 180});
             engine.setWorld(buildWorld());
-            if (engine.objectCount() != 1) throw std::runtime_error("the crate is missing");
+            engine.addObject(crate());
             grotto::RenderedFrame frame;
             for (int i = 0; i < kFrames; ++i) {
                 // The digging head moves into the hill's side at z = 63, one sphere a frame.
                 const double t = double(i) / (kFrames - 1);
                 const glm::dvec3 head(50.0, 11.0, 66.0 - 24.0 * t);
-                carved += engine.edit(grotto::voxel::Edit::carveSphere(head, 3.0)).changed;
+                carved += engine.edit(grotto::Edit::carveSphere(head, 3.0)).changed;
                 // The crate slides across the tunnel's mouth on the grass, turning as it goes.
                 engine.setObjectPose(0, glm::dvec3(40.0 + 20.0 * t, 6.0, 70.0),
                                      glm::angleAxis(3.0 * t, glm::dvec3(0.0, 1.0, 0.0)));

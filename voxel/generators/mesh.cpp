@@ -1,7 +1,7 @@
 // mesh: voxelises a triangle mesh (OBJ, or ASCII PLY) into a narrow-band level set.
 // The mesh is scaled uniformly so its largest extent is options.size voxels, centred
 // on x = z = 0 and standing on y = 0.
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/mkworld.h"
 
 #include <openvdb/openvdb.h>

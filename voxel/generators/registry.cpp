@@ -1,6 +1,6 @@
 // The table of world kinds: option checks, dispatch, and writing the .vdb.
 #include "common/atomic_file.h"
-#include "common/error.h"
+#include "grotto/error.h"
 #include "voxel/generators.h"
 #include "voxel/solid.h"
 

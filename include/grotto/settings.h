@@ -1,0 +1,57 @@
+#pragma once
+// The settings of a world as plain data: its palette's materials, a camera, the
+// lighting and the AO settings. A world file's blocks hold the same; a game sets
+// them through Engine (grotto/grotto.h).
+#include <glm/vec3.hpp>
+
+#include <optional>
+#include <string>
+
+namespace grotto {
+
+struct Material {
+    std::string name;
+    glm::vec3 albedo{0.7f};  // linear RGB in [0, 1]
+    float ao = 1.0f;         // baked occlusion of the material in [0, 1]; the composite takes min(AO, this)
+};
+
+struct CameraDesc {
+    glm::dvec3 position{0.0};
+    glm::dvec3 target{0.0, 0.0, -1.0};  // looked-at point, world units
+    double fovDegrees = 60.0;           // vertical field of view
+    double nearPlane = 0.05;            // world units
+    double farPlane = 0.0;              // 0 = infinite (reverse-Z)
+};
+
+// How the composite maps lit radiance (times the exposure) to display values.
+enum class ToneMap {
+    Filmic,  // a filmic curve: a toe for the shadows, highlights rolling off to white
+    Linear,  // clamped to [0, 1] only, for comparisons with unmapped radiance
+};
+
+struct Lighting {
+    glm::vec3 sunDirection{0.466002f, 0.828449f, 0.310668f};  // toward the sun, unit length ((0.45, 0.8, 0.3) normalised)
+    glm::vec3 sunColor{1.0f, 0.95f, 0.85f};
+    float sunIntensity = 1.0f;  // the shipped worlds' daylight, so an untuned .vdb looks like them
+    bool sunShadows = true;     // exact voxel shadows from the sun (docs/lighting.md)
+    float sunAngle = 0.0f;      // the sun's angular diameter in degrees; 0: a point, hard shadows
+    glm::vec3 ambientColor{0.55f, 0.65f, 0.85f};
+    float ambientIntensity = 0.7f;
+    glm::vec3 skyZenith{0.28f, 0.45f, 0.78f};
+    glm::vec3 skyHorizon{0.75f, 0.82f, 0.92f};
+    float exposure = 0.6f;      // radiance multiplier before the tone map (docs/lighting.md: why 0.6)
+    ToneMap toneMap = ToneMap::Filmic;
+};
+
+// The AO settings, as a world file's "ao" block: method, preset and any
+// overrides (unset = the preset's). Keys, ranges and meanings: docs/worlds.md.
+struct AoDesc {
+    std::string method = "gtao";   // gtao, voxel, hybrid, ssao, hbao (baselines) or off
+    std::string quality = "high";  // low, medium, high, ultra, custom
+    std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
+        finalValuePower, depthMipOffset, strength, denoiseBlurBeta, maxDistance;
+    std::optional<int> slices, steps, denoisePasses, temporalHistory, rays;
+    std::optional<bool> fullResolution;
+};
+
+}  // namespace grotto
