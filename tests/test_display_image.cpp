@@ -4,12 +4,16 @@
 // enough to reach the shoulder and the clamp.
 #include "engine/image_output.h"
 #include "engine/renderer.h"
+#include "engine/session.h"
 #include "engine/vk/readback.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 
 #include <glm/gtc/packing.hpp>
 
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
 #include <cstring>
 
 namespace grotto {
@@ -53,6 +57,41 @@ TEST_F(DisplayImage, IsTheColourThroughTheSharedToneMap) {
         EXPECT_GT(brightest, 1.5f) << "the scene must reach the shoulder";
         EXPECT_LT(worst, 1e-3f) << "half floats round to 2^-11 of the value";
     }
+}
+
+// The normals image a game composites with holds each pixel's face normal in world
+// space: the read-back's normals (made on the CPU from the surface ids and the
+// poses), an object's faces turned by its rotation, w 1 on surfaces and 0 on the sky.
+TEST_F(DisplayImage, NormalsAreEachPixelsFaceInWorldSpace) {
+    voxel::World world = test::makeVoxelWorld({-8, -1, -8}, {7, 0, 7}, [](int, int y, int) { return y < 0; });
+    AoOptions ao;
+    ao.enabled = false;
+    ao.estimator = estimatorPreset("high", 1.0);
+    RenderSession session(ctx(), std::move(world), ao, voxel::Detail{}, 48, 36, true);
+    session.addObject(test::makeVoxelWorld({0, 0, 0}, {2, 2, 2}, [](int, int, int) { return true; }),
+                      {.name = "box", .pivot = {1.5, 0.0, 1.5},
+                       .keys = {{.rotation = glm::angleAxis(0.5, glm::dvec3(0.0, 1.0, 0.0))}}});
+    Renderer& renderer = session.renderer();
+    renderer.setNormalsImage(true);
+    const Camera camera = makeCamera(test::lookAt({5, 6, 8}, {0, 1, 0}), 48, 36);
+    renderer.render(camera);
+    const FrameImages f = renderer.readback(camera, true);
+    const std::vector<uint8_t> bytes = vk::readImage(ctx(), renderer.normalsImage(), VK_IMAGE_LAYOUT_GENERAL, 8);
+    ASSERT_EQ(bytes.size(), size_t(48) * 36 * 8);
+    float worst = 0.0f;
+    int turned = 0, sky = 0;
+    for (size_t i = 0; i < size_t(48) * 36; ++i) {
+        uint16_t half[4];
+        std::memcpy(half, &bytes[8 * i], 8);
+        const bool surface = std::isfinite(f.depth[i]);
+        ASSERT_EQ(glm::unpackHalf1x16(half[3]), surface ? 1.0f : 0.0f) << "pixel " << i;
+        sky += !surface;
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(glm::unpackHalf1x16(half[c]) - f.normal[3 * i + c]));
+        turned += surface && std::abs(f.normal[3 * i]) > 0.1f && std::abs(f.normal[3 * i]) < 0.9f;
+    }
+    EXPECT_LT(worst, 1e-3f) << "half floats round to 2^-11";
+    EXPECT_GT(turned, 20) << "the turned box's faces are in view";
+    EXPECT_GT(sky, 20) << "so is the sky";
 }
 
 }  // namespace

@@ -315,7 +315,8 @@ Pixels Engine::readPixels() {
     Impl& m = *impl_;
     m.requireFrame("readPixels");
     FrameImages f = m.session->renderer().readback(*m.last, true);
-    return {.width = f.width, .height = f.height, .rgba = std::move(f.color), .ao = std::move(f.ao)};
+    return {.width = f.width, .height = f.height, .rgba = std::move(f.color), .ao = std::move(f.ao),
+            .depth = std::move(f.depth), .normals = std::move(f.normal)};
 }
 
 void Engine::saveFrame(const std::filesystem::path& file) {

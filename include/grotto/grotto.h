@@ -87,7 +87,9 @@ struct RenderedFrame {
 struct Pixels {
     uint32_t width = 0, height = 0;
     std::vector<float> rgba;  // scene-linear, as RenderedFrame::color
-    std::vector<float> ao;    // visibility per pixel at full size (1 without AO)
+    std::vector<float> ao;       // visibility per pixel at full size (1 without AO)
+    std::vector<float> depth;    // distance along the view axis, world units; +inf on the sky
+    std::vector<float> normals;  // world-space normal, xyz per pixel (3 floats); 0 on the sky
 };
 
 struct EngineOptions {
