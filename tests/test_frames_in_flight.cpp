@@ -13,7 +13,6 @@
 #include "engine/vk/resources.h"
 #include "tests/gpu_fixture.h"
 #include "tests/test_util.h"
-#include "voxel/object_worlds.h"
 #include "voxel/world.h"
 
 #include <chrono>
