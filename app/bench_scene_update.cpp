@@ -22,13 +22,15 @@ SceneUpdateCost measureSceneUpdate(GpuScene& scene, const voxel::MeshChunkQuads&
     cost.chunkQuads = uint32_t(chunk.quads.size());
     cost.updates = updates;
     std::vector<double> ms;
+    vk::Buffer staging;
     for (int i = 0; i < updates; ++i) {
         const auto start = std::chrono::steady_clock::now();
         scene.updateChunks({&chunk, 1}, {});
         ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
         cost.stagedBytes = scene.stagedBytesLast;
-        scene.ctx.submitAndWait([&](VkCommandBuffer cmd) { scene.recordUploads(cmd); });
+        scene.ctx.submitAndWait([&](VkCommandBuffer cmd) { scene.recordUploads(cmd, staging); });
     }
+    vk::destroy(scene.ctx, staging);
     cost.medianMs = median(ms);
     return cost;
 }

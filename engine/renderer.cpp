@@ -1,8 +1,9 @@
-// The whole frame on one screen (render): G-buffer (with occlusion culling, its
-// Hi-Z and a mid-frame submit), sun shadows, then with AO the depth prefilter, the
-// estimator, spatial denoise and temporal accumulation at AO resolution, then the
-// composite (which upsamples the AO itself), the display image and the read-backs.
-// Each pass declares what it reads and writes; the barriers follow from that.
+// The whole frame on one screen (recordFrame): G-buffer (with occlusion culling, its
+// Hi-Z and, in render(), a mid-frame submit), sun shadows, then with AO the depth
+// prefilter, the estimator, spatial denoise and temporal accumulation at AO
+// resolution, then the composite (which upsamples the AO itself), the display image
+// and the read-backs. Each pass declares what it reads and writes; the barriers
+// follow from that. render() waits for its frame; submit() keeps two in flight.
 #include "engine/renderer.h"
 
 #include "grotto/error.h"
@@ -21,24 +22,20 @@ namespace grotto {
 
 Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                    uint32_t width, uint32_t height, const SceneObjects* objects)
-    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), targets_(ctx), objects_(objects), timestamps_(ctx, 16) {
+    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), targets_(ctx), objects_(objects) {
     if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
         validateAo(ao_, "AO settings");
         requireOccupancy(ao_);
         // Before any allocation can fail halfway.
         requireRenderFits(ctx, shapeFor(width, height, ao_, lighting_), "image size");
-        frame_ = vk::createBuffer(ctx, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-        aoConstants_ = vk::createBuffer(ctx, sizeof(gpu::GtaoConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-        temporalConstants_ =
-            vk::createBuffer(ctx, sizeof(gpu::TemporalConstants), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
-        traceConstants_ = vk::createBuffer(ctx, sizeof(gpu::TraceConstants), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
-        // The objects' normal tables: the composite reads them whether or not there are objects.
-        objectUniforms_ = vk::createBuffer(ctx, sizeof(gpu::ObjectUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true);
+        for (auto& s : slots_) s = std::make_unique<FrameSlot>(ctx);
+        VkSemaphoreTypeCreateInfo type{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO,
+                                       .semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE};
+        const VkSemaphoreCreateInfo sci{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, .pNext = &type};
+        VK_CHECK(vkCreateSemaphore(ctx.device, &sci, nullptr, &timeline_));
         createPasses();
         targets_.update(shapeFor(width, height, ao_, lighting_));
-        cmd_ = vk::allocateCommandBuffer(ctx);
-        fence_ = vk::createFence(ctx);
     } catch (...) {  // e.g. a shader that fails to load: free what was made before it
         release();
         throw;
@@ -72,9 +69,9 @@ FrameShape Renderer::shapeFor(uint32_t width, uint32_t height, const AoOptions& 
             .display = displayOn_, .normals = normalsOn_, .aoAov = aoAov_};
 }
 
-// Every frame waits for its fence before render() returns, so no GPU work of ours
-// uses the targets here; histories in new images start afresh.
+// Histories in new images start afresh.
 void Renderer::updateTargets(const FrameShape& shape) {
+    finishFrames();  // no GPU work of ours may use the targets freed
     if (!targets_.update(shape)) return;
     historyIndex_ = 0;
     shadowCamera_.reset();
@@ -85,6 +82,7 @@ void Renderer::setNormalsImage(bool on) { setGameImage(normalsOn_, on, "normals 
 
 void Renderer::setGameImage(bool& flag, bool on, const char* what) {
     if (on == flag) return;
+    finishFrames();
     flag = on;
     if (on) {
         try {
@@ -105,9 +103,11 @@ void Renderer::setGameImage(bool& flag, bool on, const char* what) {
 Renderer::~Renderer() { release(); }
 
 void Renderer::release() {
+    if (timeline_) finishFrames();
     vkDeviceWaitIdle(ctx_.device);
-    vkDestroyFence(ctx_.device, fence_, nullptr);
-    vkFreeCommandBuffers(ctx_.device, ctx_.commandPool, 1, &cmd_);
+    vkDestroySemaphore(ctx_.device, timeline_, nullptr);
+    timeline_ = VK_NULL_HANDLE;
+    for (auto& s : slots_) s.reset();
     gbufferPass_.reset();
     prefilterPass_.reset();
     estimatorPass_.reset();
@@ -119,11 +119,6 @@ void Renderer::release() {
     normalsPass_.reset();
     shadowPass_.reset();
     targets_.release();
-    vk::destroy(ctx_, objectUniforms_);
-    vk::destroy(ctx_, frame_);
-    vk::destroy(ctx_, aoConstants_);
-    vk::destroy(ctx_, temporalConstants_);
-    vk::destroy(ctx_, traceConstants_);
 }
 
 void Renderer::resize(uint32_t width, uint32_t height) {
@@ -146,6 +141,7 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
         lighting_ = old;
         throw;
     }
+    finishFrames();  // before their passes go
     compositePass_.reset();
     shadowPass_.reset();
     createPasses();
@@ -164,6 +160,7 @@ void Renderer::setAo(const AoOptions& ao) {
     requireOccupancy(ao);
     const FrameShape shape = shapeFor(width(), height(), ao, lighting_);
     requireRenderFits(ctx_, shape, "AO settings");
+    finishFrames();  // before passes go
     const AoOptions old = std::exchange(ao_, ao);
     const bool wasTemporal = old.enabled && old.chain.temporalHistory > 0;
     // What each pass and target is made from (its shader's specialisation, its size).
@@ -194,33 +191,74 @@ TargetRef Renderer::aoOutput() const {
 
 void Renderer::pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record) {
     targets_.recordBarriers(cmd, decl.uses);
-    if (decl.timestamp) timestamps_.begin(cmd, decl.timestamp);
+    if (decl.timestamp) slot().timestamps.begin(cmd, decl.timestamp);
     record();
-    if (decl.timestamp) timestamps_.end(cmd);
+    if (decl.timestamp) slot().timestamps.end(cmd);
+}
+
+FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy* copy) {
+    const auto start = std::chrono::steady_clock::now();
+    finishFrames();  // frames submitted in flight before: this one starts on an idle queue
+    FrameStats stats = recordFrame(camera, frameIndex, copy, false);
+    submitAndWait(slot().cmd);
+    stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats.passMs = slot().timestamps.read();
+    slot().timesUnread = false;
+    stats.timelineValue = submitted_;
+    lastCamera_ = camera;
+    lastPoses_ = poses_;
+    return stats;
+}
+
+FrameStats Renderer::submit(const Camera& camera, uint32_t frameIndex, const FrameSync& sync, FrameCopy* copy) {
+    const auto start = std::chrono::steady_clock::now();
+    FrameStats stats = recordFrame(camera, frameIndex, copy, true);
+    submitCommands(slot().cmd, sync.waits);
+    slot().timesUnread = true;
+    stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats.timelineValue = submitted_;
+    lastCamera_ = camera;
+    lastPoses_ = poses_;
+    return stats;
 }
 
 // The frame, top to bottom; each pass's barriers follow from what it declares.
-FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy* copy) {
-    const auto start = std::chrono::steady_clock::now();
+FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, FrameCopy* copy, bool inFlight) {
+    slotIndex_ = 1 - slotIndex_;
+    FrameSlot& s = slot();
+    waitFor(s.done);  // the frame two before: its slot's buffers are the CPU's again
+    std::vector<std::pair<std::string, double>> unread;
+    if (s.timesUnread) unread = s.timestamps.read();
+    s.timesUnread = false;
     writeConstants(camera, frameIndex);
     VkCommandBuffer cmd = beginCommands();
-    timestamps_.reset(cmd);
-    targets_.beginFrame();
-    scene_.recordUploads(cmd);  // edits since the last frame, with their barrier to vertex input
-    FrameStats stats = recordGBuffer(cmd, camera);
+    s.timestamps.reset(cmd);
+    if (inFlight) {
+        // Everything before on the queue (the last frame, a game's reads of it) ends
+        // and its writes are visible before this frame's first command.
+        const VkMemoryBarrier before{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
+                                     .srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT,
+                                     .dstAccessMask = VK_ACCESS_MEMORY_READ_BIT | VK_ACCESS_MEMORY_WRITE_BIT};
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, 0, 1, &before,
+                             0, nullptr, 0, nullptr);
+    }
+    targets_.beginFrame(!inFlight);
+    scene_.recordUploads(cmd, s.staging);  // edits since the last frame, with their barrier to vertex input
+    FrameStats stats = inFlight ? recordGBufferInFlight(cmd, camera) : recordGBuffer(cmd, camera);
+    stats.passMs = std::move(unread);
     if (shadows()) {
         const uint32_t history = shadowHistoryIndex_;
         if (softShadows()) shadowHistoryIndex_ = 1 - shadowHistoryIndex_;  // reads the last, writes the other
         pass(cmd, shadowPass_->declare(history), [&] {
-            shadowPass_->record(cmd, targets_.gbuffer(), objectUniforms_, image(TargetId::Shadow), traceConstants_,
+            shadowPass_->record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::Shadow), s.traceConstants,
                                 *scene_.occupancy, &image({TargetId::ShadowHistory, history}),
                                 &image({TargetId::ShadowHistory, shadowHistoryIndex_}));
         });
     }
     if (ao_.enabled) recordAo(cmd);
     pass(cmd, CompositePass::declare(aoOutput()), [&] {
-        compositePass_->record(cmd, targets_.gbuffer(), image(aoOutput()), image(TargetId::Color), frame_,
-                               scene_.palette, aoConstants_, objectUniforms_, image(TargetId::Shadow));
+        compositePass_->record(cmd, targets_.gbuffer(), image(aoOutput()), image(TargetId::Color), s.frame,
+                               scene_.palette, s.aoConstants, s.objectUniforms, image(TargetId::Shadow));
     });
     if (displayOn_)
         pass(cmd, DisplayPass::declare(), [&] {
@@ -228,14 +266,9 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy
         });
     if (normalsOn_)
         pass(cmd, NormalsPass::declare(), [&] {
-            normalsPass_->record(cmd, targets_.gbuffer().surface, objectUniforms_, image(TargetId::Normals));
+            normalsPass_->record(cmd, targets_.gbuffer().surface, s.objectUniforms, image(TargetId::Normals));
         });
     if (copy) recordCopy(cmd, *copy, camera);
-    submitAndWait(cmd);
-    stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    stats.passMs = timestamps_.read();
-    lastCamera_ = camera;
-    lastPoses_ = poses_;
     return stats;
 }
 
@@ -248,56 +281,107 @@ FrameStats Renderer::recordGBuffer(VkCommandBuffer cmd, const Camera& camera) {
     const GBufferObjects* drawn = objects_ ? &drawObjects : nullptr;
     const PassDecl gbuffer = gbufferPass_->declare();
     FrameStats stats;
+    FrameSlot& s = slot();
     targets_.recordBarriers(cmd, gbuffer.uses);
-    timestamps_.begin(cmd, gbuffer.timestamp);
+    s.timestamps.begin(cmd, gbuffer.timestamp);
     const std::vector<QuadDraw>& early = culling_.begin(scene_, camera, cullingOptions_);
-    stats.quadsDrawn = gbufferPass_->record(cmd, targets_.gbuffer(), scene_, frame_, camera, early, true, drawn,
+    stats.quadsDrawn = gbufferPass_->record(cmd, targets_.gbuffer(), scene_, s.frame, camera, early, true, drawn,
                                             !cullingOptions_.occlusion);
+    s.hizWritten = false;  // these tiles hold the first phase only
     if (cullingOptions_.occlusion) {
-        pass(cmd, HizPass::declare(), [&] { hizPass_->record(cmd, image(TargetId::Depth)); });
+        pass(cmd, HizPass::declare(), [&] { hizPass_->record(cmd, image(TargetId::Depth), s.hiz); });
         submitAndWait(cmd);
-        const std::vector<QuadDraw>& late = culling_.late(hizPass_->tiles());
+        const std::vector<QuadDraw>& late = culling_.late(s.hiz.tiles());
         beginCommands();
         targets_.recordBarriers(cmd, gbuffer.uses);
-        stats.quadsDrawn += gbufferPass_->record(cmd, targets_.gbuffer(), scene_, frame_, camera, late, false, drawn);
+        stats.quadsDrawn += gbufferPass_->record(cmd, targets_.gbuffer(), scene_, s.frame, camera, late, false, drawn);
     }
     stats.culling = culling_.stats();
-    timestamps_.end(cmd);
+    s.timestamps.end(cmd);
     return stats;
+}
+
+// Frames in flight: no wait in the middle. The second phase is culled against the
+// tiles of a finished frame that saw the same (reusableTiles), and both phases are
+// drawn in one pass; this frame's tiles, of its whole depth, serve the frames after.
+FrameStats Renderer::recordGBufferInFlight(VkCommandBuffer cmd, const Camera& camera) {
+    const GBufferObjects drawObjects{objectScenes_, poses_, lastCamera_ ? lastPoses_ : poses_,
+                                     lastCamera_ ? &*lastCamera_ : &camera};
+    const PassDecl gbuffer = gbufferPass_->declare();
+    FrameStats stats;
+    FrameSlot& s = slot();
+    targets_.recordBarriers(cmd, gbuffer.uses);
+    s.timestamps.begin(cmd, gbuffer.timestamp);
+    std::vector<QuadDraw> draws = culling_.begin(scene_, camera, cullingOptions_);
+    if (cullingOptions_.occlusion) {
+        const std::vector<QuadDraw>& late = culling_.late(reusableTiles(camera));
+        draws.insert(draws.end(), late.begin(), late.end());
+    }
+    stats.quadsDrawn = gbufferPass_->record(cmd, targets_.gbuffer(), scene_, s.frame, camera, draws, true,
+                                            objects_ ? &drawObjects : nullptr);
+    s.hizWritten = cullingOptions_.occlusion;
+    if (s.hizWritten) {
+        pass(cmd, HizPass::declare(), [&] { hizPass_->record(cmd, image(TargetId::Depth), s.hiz); });
+        s.hizViewProj = camera.viewProjRelativeDouble();
+        s.hizPosition = camera.position;
+        s.hizSceneUpdates = scene_.updates;
+        s.hizPoses = poses_;
+    }
+    stats.culling = culling_.stats();
+    s.timestamps.end(cmd);
+    return stats;
+}
+
+// Tiles hold the depth of a whole frame: for the same camera, scene and poses, a
+// box behind them is hidden in this frame too. The most recent finished frame's
+// first: the other slot's if it has finished, else this slot's last (waited for).
+DepthTiles Renderer::reusableTiles(const Camera& camera) const {
+    uint64_t reached = 0;
+    VK_CHECK(vkGetSemaphoreCounterValue(ctx_.device, timeline_, &reached));
+    const FrameSlot& other = *slots_[1 - slotIndex_];
+    for (const FrameSlot* s : {&other, static_cast<const FrameSlot*>(&slot())}) {
+        const bool finished = s != &other || other.done <= reached;
+        if (finished && s->hizWritten && s->hizViewProj == camera.viewProjRelativeDouble() &&
+            s->hizPosition == camera.position && s->hiz.width == camera.width && s->hiz.height == camera.height &&
+            s->hizSceneUpdates == scene_.updates && s->hizPoses == poses_)
+            return s->hiz.tiles();
+    }
+    return {};
 }
 
 void Renderer::recordAo(VkCommandBuffer cmd) {
     const AoTargets& ao = targets_.ao();
     pass(cmd, DepthPrefilterPass::declare(),
-         [&] { prefilterPass_->record(cmd, image(TargetId::Depth), ao, aoConstants_); });
+         [&] { prefilterPass_->record(cmd, image(TargetId::Depth), ao, slot().aoConstants); });
     pass(cmd, estimatorPass_->declare(), [&] {
-        estimatorPass_->record(cmd, image(TargetId::Surface), ao, aoConstants_, traceConstants_, scene_.occupancy.get());
+        estimatorPass_->record(cmd, image(TargetId::Surface), ao, slot().aoConstants, slot().traceConstants,
+                               scene_.occupancy.get());
     });
     // With the temporal pass, the final blur is part of it.
     const uint32_t passes = ao_.chain.denoisePasses, blurs = temporal() && passes > 0 ? passes - 1 : passes;
-    timestamps_.begin(cmd, DenoisePass::kTimestamp);
+    slot().timestamps.begin(cmd, DenoisePass::kTimestamp);
     for (uint32_t i = 0; i < blurs; ++i)
-        pass(cmd, DenoisePass::declare(i), [&] { denoisePass_->record(cmd, ao, passes, i, aoConstants_); });
-    timestamps_.end(cmd);
+        pass(cmd, DenoisePass::declare(i), [&] { denoisePass_->record(cmd, ao, passes, i, slot().aoConstants); });
+    slot().timestamps.end(cmd);
     if (!temporal()) return;
     // Reads the last output, writes the other image, which becomes the last.
     const uint32_t previous = historyIndex_;
     historyIndex_ = 1 - historyIndex_;
     pass(cmd, temporalPass_->declare(previous, motion()), [&] {
         temporalPass_->record(cmd, ao, image({TargetId::AoHistory, previous}), image({TargetId::AoHistory, historyIndex_}),
-                              aoConstants_,
-                              temporalConstants_, &objectUniforms_, &image(motion() ? TargetId::Motion : TargetId::Depth));
+                              slot().aoConstants, slot().temporalConstants, &slot().objectUniforms, &image(motion() ? TargetId::Motion : TargetId::Depth));
     });
 }
 
 void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
+    FrameSlot& s = slot();
     const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
-    std::memcpy(frame_.mapped(), &uniforms, sizeof uniforms);
+    std::memcpy(s.frame.mapped(), &uniforms, sizeof uniforms);
     if (ao_.enabled) {
         const uint32_t scale = ao_.chain.fullResolution ? 1 : 2;
         gpu::GtaoConstants constants = gtaoConstants(camera, gpuSettings(ao_), frameIndex, scale);
         if (objects_) normalTable(constants.viewNormals, glm::transpose(camera.basis), poses_);
-        std::memcpy(aoConstants_.mapped(), &constants, sizeof constants);
+        std::memcpy(s.aoConstants.mapped(), &constants, sizeof constants);
         if (temporal()) {
             // A frame index that does not follow the last (wrapping) starts a new
             // sequence. A zoom or new clip planes need no reset: the history is
@@ -305,7 +389,7 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
             if (frameIndex != previousFrame_ + 1u) previousCamera_.reset();
             gpu::TemporalConstants t = temporalConstants(camera, previousCamera_ ? &*previousCamera_ : nullptr);
             invalidated_.write(camera.position, aoReach(ao_), t);
-            std::memcpy(temporalConstants_.mapped(), &t, sizeof t);
+            std::memcpy(s.temporalConstants.mapped(), &t, sizeof t);
             previousCamera_ = camera;
             previousFrame_ = frameIndex;
         }
@@ -316,24 +400,62 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
     if (objects_) {
         const gpu::ObjectUniforms o =
             objectUniforms(poses_, lastCamera_ ? *lastCamera_ : camera, lastCamera_ ? lastPoses_ : poses_);
-        std::memcpy(objectUniforms_.mapped(), &o, sizeof o);
+        std::memcpy(s.objectUniforms.mapped(), &o, sizeof o);
     }
 }
 
 VkCommandBuffer Renderer::beginCommands() {
-    VK_CHECK(vkResetCommandBuffer(cmd_, 0));
+    const VkCommandBuffer cmd = slot().cmd;
+    VK_CHECK(vkResetCommandBuffer(cmd, 0));
     const VkCommandBufferBeginInfo bi{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
                                       .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-    VK_CHECK(vkBeginCommandBuffer(cmd_, &bi));
-    return cmd_;
+    VK_CHECK(vkBeginCommandBuffer(cmd, &bi));
+    return cmd;
 }
 
-void Renderer::submitAndWait(VkCommandBuffer cmd) {
+void Renderer::submitCommands(VkCommandBuffer cmd, std::span<const FrameWait> waits) {
     VK_CHECK(vkEndCommandBuffer(cmd));
-    VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1, .pCommandBuffers = &cmd};
-    VK_CHECK(vkResetFences(ctx_.device, 1, &fence_));
-    VK_CHECK(vkQueueSubmit(ctx_.queue, 1, &si, fence_));
-    VK_CHECK(vkWaitForFences(ctx_.device, 1, &fence_, VK_TRUE, UINT64_MAX));
+    std::vector<VkSemaphore> semaphores;
+    std::vector<uint64_t> values;
+    std::vector<VkPipelineStageFlags> stages;
+    for (const FrameWait& w : waits) {
+        semaphores.push_back(w.semaphore);
+        values.push_back(w.value);  // a binary semaphore's is ignored
+        stages.push_back(w.stages);
+    }
+    const uint64_t signal = ++submitted_;
+    const VkTimelineSemaphoreSubmitInfo timeline{.sType = VK_STRUCTURE_TYPE_TIMELINE_SEMAPHORE_SUBMIT_INFO,
+                                                 .waitSemaphoreValueCount = uint32_t(values.size()),
+                                                 .pWaitSemaphoreValues = values.data(),
+                                                 .signalSemaphoreValueCount = 1,
+                                                 .pSignalSemaphoreValues = &signal};
+    const VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO,
+                          .pNext = &timeline,
+                          .waitSemaphoreCount = uint32_t(semaphores.size()),
+                          .pWaitSemaphores = semaphores.data(),
+                          .pWaitDstStageMask = stages.data(),
+                          .commandBufferCount = 1,
+                          .pCommandBuffers = &cmd,
+                          .signalSemaphoreCount = 1,
+                          .pSignalSemaphores = &timeline_};
+    VK_CHECK(vkQueueSubmit(ctx_.queue, 1, &si, VK_NULL_HANDLE));
+    slot().done = signal;
+}
+
+void Renderer::waitFor(uint64_t timelineValue) {
+    if (timelineValue == 0) return;
+    const VkSemaphoreWaitInfo wi{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_WAIT_INFO,
+                                 .semaphoreCount = 1,
+                                 .pSemaphores = &timeline_,
+                                 .pValues = &timelineValue};
+    VK_CHECK(vkWaitSemaphores(ctx_.device, &wi, UINT64_MAX));
+}
+
+void Renderer::finishFrames() { waitFor(submitted_); }
+
+void Renderer::submitAndWait(VkCommandBuffer cmd) {
+    submitCommands(cmd);
+    waitFor(submitted_);
 }
 
 void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
@@ -355,7 +477,7 @@ void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
         shadowCamera_ = camera;
         shadowFrame_ = frameIndex;
     }
-    std::memcpy(traceConstants_.mapped(), &t, sizeof t);
+    std::memcpy(slot().traceConstants.mapped(), &t, sizeof t);
 }
 
 void Renderer::setObjectPoses(std::span<const voxel::ObjectPose> poses) {
@@ -373,7 +495,7 @@ void Renderer::objectAdded(const voxel::ObjectPose& pose) {
 }
 
 void Renderer::objectRemoved(size_t index) {
-    // render() has waited for its frame: no frame in flight draws the scene the caller frees next.
+    finishFrames();  // no frame in flight may draw the scene the caller frees next
     objectScenes_.erase(objectScenes_.begin() + ptrdiff_t(index));
     poses_.erase(poses_.begin() + ptrdiff_t(index));
     if (index < lastPoses_.size()) lastPoses_.erase(lastPoses_.begin() + ptrdiff_t(index));
@@ -406,10 +528,10 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
         const uint32_t passes = ao_.chain.denoisePasses;
         if (temporal() && passes > 0)
             pass(cmd, DenoisePass::declare(passes - 1),
-                 [&] { denoisePass_->record(cmd, targets_.ao(), passes, passes - 1, aoConstants_); });
+                 [&] { denoisePass_->record(cmd, targets_.ao(), passes, passes - 1, slot().aoConstants); });
         pass(cmd, UpsamplePass::declare(aoOutput()), [&] {
             upsamplePass_->record(cmd, image(TargetId::Depth), image(TargetId::Surface), image(aoOutput()),
-                                  image(TargetId::AoFull), aoConstants_);
+                                  image(TargetId::AoFull), slot().aoConstants);
         });
         copyPart(FrameCopy::AoFull, TargetId::AoFull, 4);
         copyPart(FrameCopy::Raw, TargetId::AoRaw, 16);
@@ -420,6 +542,7 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
 }
 
 FrameImages Renderer::readback(const Camera& camera, bool aovs) {
+    finishFrames();
     FrameCopy copy(ctx_, aovs);
     ctx_.submitAndWait([&](VkCommandBuffer cmd) { recordCopy(cmd, copy, camera); });
     return copy.decode();

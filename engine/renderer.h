@@ -5,6 +5,7 @@
 #include "engine/camera.h"
 #include "engine/frame/frame_constants.h"
 #include "engine/frame/frame_copy.h"
+#include "engine/frame/frame_slot.h"
 #include "engine/frame/frame_targets.h"
 #include "engine/frame/frame_images.h"
 #include "engine/frame/history_boxes.h"
@@ -26,6 +27,7 @@
 #include "shaders/shared/temporal.h"
 #include "voxel/world_desc.h"
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <optional>
@@ -37,10 +39,27 @@
 namespace grotto {
 
 struct FrameStats {
-    std::vector<std::pair<std::string, double>> passMs;  // GPU time per pass
-    double wallMs = 0.0;                                 // record + submit + wait
+    // GPU time per pass: render()'s own frame; submit()'s, the frame submitted two
+    // calls before (when its slot is reused), empty for the first two.
+    std::vector<std::pair<std::string, double>> passMs;
+    double wallMs = 0.0;  // record + submit (+ wait, render())
     uint64_t quadsDrawn = 0;
     CullingStats culling;  // what level of detail and culling left to draw
+    uint64_t timelineValue = 0;  // Renderer::timeline() reaches it once the frame has finished
+};
+
+// A semaphore a frame waits for before its first command: binary (value ignored)
+// or timeline (waits for `value`), at `stages` of the frame's commands.
+struct FrameWait {
+    VkSemaphore semaphore = VK_NULL_HANDLE;
+    uint64_t value = 0;
+    VkPipelineStageFlags stages = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+};
+
+// What a game hands a frame in flight (Renderer::submit): the semaphores of its
+// own work (on other queues) that the frame must wait for.
+struct FrameSync {
+    std::vector<FrameWait> waits;
 };
 
 class Renderer {
@@ -58,6 +77,23 @@ public:
     // its images into it (the AOVs when copy->aovs()), for decoding later on any
     // thread: the same images readback(camera, copy->aovs()) would return.
     FrameStats render(const Camera& camera, uint32_t frameIndex = 0, FrameCopy* copy = nullptr);
+    // The same frame, on a game's device with two frames in flight: records the
+    // whole frame and submits it in one submission after sync's waits, and returns
+    // without waiting for it. It signals timeline() with the returned
+    // timelineValue once finished. First it waits (on the CPU) for the frame two
+    // before, whose slot (frame_slot.h) it reuses. The images (colorImage() and
+    // the others) are this frame's until the next submit() or render(): a game
+    // records its reads of them into submissions on the renderer's queue before
+    // that call, waiting for timelineValue (docs/embedding.md says exactly). With
+    // occlusion culling, the second phase is culled against the depth tiles of a
+    // frame that has finished, one or two frames before, and only while camera,
+    // scene and objects stay as they were then (else it is not culled): the image
+    // is the one render() draws.
+    FrameStats submit(const Camera& camera, uint32_t frameIndex, const FrameSync& sync = {}, FrameCopy* copy = nullptr);
+    // Signalled by every submission with the next value (FrameStats::timelineValue).
+    VkSemaphore timeline() const { return timeline_; }
+    // Waits until every frame submitted has finished (a no-op after render()).
+    void finishFrames();
     // The objects' poses for the next frames, one per object. The poses of the
     // frame before are kept for the motion vectors.
     void setObjectPoses(std::span<const voxel::ObjectPose> poses);
@@ -90,8 +126,8 @@ public:
     void resize(uint32_t width, uint32_t height);
     void setLighting(const voxel::Lighting& lighting);
     void setAo(const AoOptions& ao);
-    // Reads back the last frame, waiting for the copy; the G-buffer and AO AOVs
-    // only when asked for.
+    // Reads back the last frame, waiting for it and the copy; the G-buffer and AO
+    // AOVs only when asked for.
     FrameImages readback(const Camera& camera, bool aovs);
 
     // The last frame's images, for an embedding game (include/grotto/grotto.h says
@@ -132,8 +168,14 @@ private:
     // Records a pass: the barriers its declaration calls for, then `record` within its timestamp.
     void pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record);
     void writeConstants(const Camera& camera, uint32_t frameIndex);  // uniforms and constants of the frame
-    VkCommandBuffer beginCommands();  // cmd_, reset and begun
+    VkCommandBuffer beginCommands();  // the slot's, reset and begun
+    // Takes the next slot once its last frame has finished and records the frame
+    // into its command buffer, not yet ended. `inFlight`: as submit(), else render().
+    FrameStats recordFrame(const Camera& camera, uint32_t frameIndex, FrameCopy* copy, bool inFlight);
     FrameStats recordGBuffer(VkCommandBuffer cmd, const Camera& camera);
+    FrameStats recordGBufferInFlight(VkCommandBuffer cmd, const Camera& camera);
+    // Depth tiles of a finished frame that saw what this one sees; none (cull nothing) otherwise.
+    DepthTiles reusableTiles(const Camera& camera) const;
     void recordAo(VkCommandBuffer cmd);
     // The last frame's images into `copy`, after everything recorded before.
     void recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera);
@@ -143,7 +185,10 @@ private:
     // A sun of finite size: jittered rays accumulated in a history (shadow_pass.h).
     bool softShadows() const { return shadows() && lighting_.sunAngle > 0.0f; }
     void writeTraceConstants(const Camera& camera, uint32_t frameIndex);
-    void submitAndWait(VkCommandBuffer cmd);  // ends the command buffer, submits it and waits
+    // Ends the command buffer and submits it after `waits`, signalling the timeline's next value.
+    void submitCommands(VkCommandBuffer cmd, std::span<const FrameWait> waits = {});
+    void waitFor(uint64_t timelineValue);
+    void submitAndWait(VkCommandBuffer cmd);  // both, for the last value
     void requireOccupancy(const AoOptions& ao) const;  // throws for a tracing method without one
     TargetRef aoOutput() const;  // the AO chain's last output: what the composite reads
     const vk::Image& image(TargetRef target) const { return targets_.image(target); }
@@ -161,14 +206,12 @@ private:
     uint32_t shadowHistoryIndex_ = 0;
     std::optional<Camera> shadowCamera_;
     uint32_t shadowFrame_ = 0;
-    vk::Buffer frame_, aoConstants_, temporalConstants_, traceConstants_;
     // Objects: their poses now and at the last frame rendered (with its camera),
     // and their normal tables (bound to the composite in every world).
     const SceneObjects* objects_ = nullptr;
     std::vector<voxel::ObjectPose> poses_, lastPoses_;
     std::optional<Camera> lastCamera_;
     std::vector<const GpuScene*> objectScenes_;
-    vk::Buffer objectUniforms_;
     bool motion() const { return objects_ && objects_->moving && temporal(); }
     // Temporal state: which history image holds the last output, and the camera
     // and frame index it was rendered with (none after a cut).
@@ -189,9 +232,12 @@ private:
     std::unique_ptr<DisplayPass> displayPass_;
     std::unique_ptr<NormalsPass> normalsPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
-    vk::Timestamps timestamps_;
-    VkCommandBuffer cmd_ = VK_NULL_HANDLE;
-    VkFence fence_ = VK_NULL_HANDLE;
+    // The two frames in flight: each frame takes the other slot than the last.
+    std::array<std::unique_ptr<FrameSlot>, 2> slots_;
+    uint32_t slotIndex_ = 1;
+    FrameSlot& slot() const { return *slots_[slotIndex_]; }  // the frame's being recorded, or the last's
+    VkSemaphore timeline_ = VK_NULL_HANDLE;
+    uint64_t submitted_ = 0;  // the last value a submission signals
 };
 
 }  // namespace grotto

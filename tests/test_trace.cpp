@@ -56,6 +56,7 @@ public:
                                                      glm::vec3(0.0f, 1.0f, 0.0f), 1, 1.0);
         vk::Buffer constants = vk::createBuffer(ctx_, sizeof t, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
         std::memcpy(constants.mapped(), &t, sizeof t);
+        vk::Buffer staging;  // for the scene's uploads
         constexpr size_t kChunk = size_t(1) << 21, kWidth = 1024;
         vk::Buffer in = vk::createBuffer(ctx_, std::min(cells.size(), kChunk) * sizeof(glm::ivec4),
                                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true);
@@ -67,7 +68,7 @@ public:
             for (size_t i = 0; i < n; ++i) c[i] = glm::ivec4(cells[first + i], 0);
             const uint32_t push[2] = {uint32_t(n), uint32_t(kWidth)};
             ctx_.submitAndWait([&](VkCommandBuffer cmd) {
-                if (pending) pending->recordUploads(cmd);
+                if (pending) pending->recordUploads(cmd, staging);
                 // The scene's occupancy buffers may have been replaced by recordUploads' reallocations:
                 // bind them as they are now.
                 pass_.dispatch(cmd,
@@ -80,6 +81,7 @@ public:
             const auto* a = static_cast<const uint32_t*>(answers.mapped());
             for (size_t i = 0; i < n; ++i) out[first + i] = uint8_t(a[i]);
         }
+        vk::destroy(ctx_, staging);
         vk::destroy(ctx_, in);
         vk::destroy(ctx_, answers);
         vk::destroy(ctx_, constants);

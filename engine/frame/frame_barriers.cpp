@@ -35,14 +35,17 @@ constexpr VkAccessFlags kWrites =
 
 }  // namespace
 
-// A frame starts once the last has finished (the renderer waits on its fence), so
-// nothing recorded before needs a barrier; the targets a frame lays out afresh
-// drop their contents.
-void FrameTargets::beginFrame() {
+// A frame that starts once the last has finished needs no barrier against what
+// came before. One that may start while the last still runs (frames in flight,
+// after a memory barrier from every earlier command) orders its first use of each
+// image after every earlier command, the game's reads included. The targets a
+// frame lays out afresh drop their contents either way.
+void FrameTargets::beginFrame(bool lastFinished) {
     for (const TargetRow& row : targetRows())
         for (uint32_t c = 0; c < row.copies; ++c) {
             ImageState& s = state({row.id, c});
-            s.writeStage = s.readStages = 0;
+            s.writeStage = 0;
+            s.readStages = lastFinished ? 0 : VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
             s.writeAccess = 0;
             if (row.initial == VK_IMAGE_LAYOUT_UNDEFINED) s.dropped = true;
         }
@@ -67,7 +70,7 @@ void FrameTargets::recordBarriers(VkCommandBuffer cmd, const std::vector<TargetU
                                 .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
                                 .image = img.image,
                                 .subresourceRange = {img.aspect, 0, 1, 0, 1}});
-            src |= s.dropped ? 0 : s.writeStage | s.readStages;
+            src |= s.writeStage | s.readStages;  // a dropped image's are those of a frame that may still run
             dst |= n.stage;
             s.layout = n.layout;
             s.dropped = false;

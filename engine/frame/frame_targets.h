@@ -87,9 +87,10 @@ public:
     const AoTargets& ao() const { return ao_; }
 
     // frame_barriers.cpp: what each image went through since its last barrier.
-    // At a frame's start (the last one finished), nothing before needs a barrier,
-    // and the targets it lays out afresh hold nothing worth keeping.
-    void beginFrame();
+    // At a frame's start the targets it lays out afresh hold nothing worth keeping;
+    // when the last frame has finished (`lastFinished`) nothing before needs a
+    // barrier, else each image's first use waits for every command before.
+    void beginFrame(bool lastFinished);
     // Records the layout transitions and barriers a pass using `uses` needs after
     // everything recorded before, in one vkCmdPipelineBarrier (none when nothing is needed).
     void recordBarriers(VkCommandBuffer cmd, const std::vector<TargetUse>& uses);

@@ -1,7 +1,8 @@
 #pragma once
 // Depth tiles for occlusion culling. Reads: the G-buffer depth (shader read-only).
-// Writes: the farthest depth of each tile into a host-visible buffer the CPU reads
-// once the submission has finished (engine/frame/chunk_culling.h tests boxes against it).
+// Writes: the farthest depth of each tile into a host-visible buffer (a frame
+// slot's, HizReadback) the CPU reads once the submission has finished
+// (engine/frame/chunk_culling.h tests boxes against it).
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/vk/resources.h"
@@ -19,24 +20,27 @@ struct DepthTiles {
     std::span<const float> farthest;  // reverse-Z depth per tile, 0 where sky shows
 };
 
+// Where a frame's tiles land: a host-visible buffer, made for the depth's size.
+struct HizReadback {
+    vk::Buffer buffer;
+    uint32_t width = 0, height = 0;  // of the depth it was made for
+    DepthTiles tiles() const;        // after the submission that wrote them has finished
+};
+
 class HizPass {
 public:
     explicit HizPass(vk::Context& ctx);
-    ~HizPass();
 
     // Samples the depth; timed as part of the G-buffer.
     static PassDecl declare() { return {nullptr, {{TargetId::Depth, Access::Sampled}}}; }
-    // Records the reduction of `depth` (width x height) and a barrier making it
-    // visible to the host; the buffer is made or remade for the size.
-    void record(VkCommandBuffer cmd, const vk::Image& depth);
-    // After the submission has finished.
-    DepthTiles tiles() const;
+    // Records the reduction of `depth` (width x height) into `into` and a barrier
+    // making it visible to the host; its buffer is made or remade for the size (no
+    // frame in flight may use it).
+    void record(VkCommandBuffer cmd, const vk::Image& depth, HizReadback& into);
 
 private:
     vk::Context& ctx_;
     ComputePass pass_;
-    vk::Buffer buffer_;
-    uint32_t width_ = 0, height_ = 0;
 };
 
 }  // namespace grotto

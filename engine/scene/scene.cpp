@@ -180,7 +180,7 @@ size_t GpuScene::hostBytes() const {
     size_t n = chunks.size() * sizeof(GpuChunk);
     for (const GpuChunk& c : chunks)
         for (const GpuLevel& l : c.levels) n += sizeof(GpuLevel) + l.clusters.size() * sizeof(QuadCluster);
-    return n + (occupancy ? occupancy->hostBytes() : 0);
+    return n + uploads.pendingBytes() + (occupancy ? occupancy->hostBytes() : 0);
 }
 
 size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks) {
@@ -250,6 +250,7 @@ const GpuChunk* GpuScene::findChunk(glm::ivec3 index) const {
 }
 
 void GpuScene::updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std::span<const glm::ivec3> removed) {
+    ++updates;
     auto find = [&](glm::ivec3 index) {
         return std::lower_bound(chunks.begin(), chunks.end(), index,
                                 [](const GpuChunk& c, const glm::ivec3& i) { return indexLess(c.index, i); });
@@ -327,9 +328,9 @@ void GpuScene::updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std
     stagedBytesTotal += staged;
 }
 
-void GpuScene::recordUploads(VkCommandBuffer cmd) {
+void GpuScene::recordUploads(VkCommandBuffer cmd, vk::Buffer& staging) {
     // The occupancy's buffers are read by the passes that trace rays.
-    uploads.record(cmd, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+    uploads.record(cmd, staging, VK_PIPELINE_STAGE_VERTEX_INPUT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
                    VK_ACCESS_VERTEX_ATTRIBUTE_READ_BIT | VK_ACCESS_INDEX_READ_BIT | VK_ACCESS_SHADER_READ_BIT);
 }
 

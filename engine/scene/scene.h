@@ -68,6 +68,7 @@ struct GpuScene {
     uint64_t stagedBytesLast = 0;       // staged by the last updateChunks
     uint64_t stagedBytesTotal = 0;      // staged by every updateChunks so far
     uint32_t vertexBufferGrowths = 0;   // times the vertex buffer was reallocated larger
+    uint64_t updates = 0;               // updateChunks calls so far: the geometry changed
     // The solid voxels for rays (sun shadows, voxel-traced AO); null for a scene
     // uploaded from a mesh alone, which renders without them.
     std::unique_ptr<GpuOccupancy> occupancy;
@@ -79,14 +80,15 @@ struct GpuScene {
     // The host chunk table changes at once. Throws grotto::Error (internal) for a
     // chunk whose face counts do not add up to its quads.
     void updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std::span<const glm::ivec3> removed);
-    // Records the staged copies and a barrier to vertex input; the renderer calls
-    // it first in every frame's command buffer. Nothing when nothing is staged.
-    void recordUploads(VkCommandBuffer cmd);
+    // Records the staged copies through `staging` (StagedUploads::record) and a
+    // barrier to vertex input; the renderer calls it first in every frame's command
+    // buffer, with its frame slot's staging. Nothing when nothing is staged.
+    void recordUploads(VkCommandBuffer cmd, vk::Buffer& staging);
     bool uploadsPending() const { return uploads.pending(); }
     const GpuChunk* findChunk(glm::ivec3 index) const;
 
     size_t gpuBytes() const {
-        return size_t(vertices.size + indices.size + palette.size + uploads.stagingBytes()) +
+        return size_t(vertices.size + indices.size + palette.size) +
                (occupancy ? occupancy->gpuBytes() : 0);
     }
     size_t hostBytes() const;

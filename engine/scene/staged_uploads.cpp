@@ -17,24 +17,17 @@ void transferBarrier(VkCommandBuffer cmd, VkPipelineStageFlags dstStage, VkAcces
 }  // namespace
 
 StagedUploads::~StagedUploads() {
-    vk::destroy(ctx_, staging_);
     for (vk::Buffer& b : retired_) vk::destroy(ctx_, b);
-    for (vk::Buffer& b : finishing_) vk::destroy(ctx_, b);
+    for (std::vector<vk::Buffer>& buffers : finishing_)
+        for (vk::Buffer& b : buffers) vk::destroy(ctx_, b);
 }
 
 void StagedUploads::write(const vk::Buffer& dst, VkDeviceSize offset, const void* data, VkDeviceSize bytes) {
     if (!bytes) return;
-    if (used_ + bytes > staging_.size) {
-        // No frame is in flight between frames, so the old staging buffer can go at once.
-        const VkDeviceSize size = std::max({2 * staging_.size, used_ + bytes, VkDeviceSize(64) << 10});
-        vk::Buffer bigger = vk::createBuffer(ctx_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
-        if (used_) std::memcpy(bigger.mapped(), staging_.mapped(), used_);
-        vk::destroy(ctx_, staging_);
-        staging_ = bigger;
-    }
-    std::memcpy(static_cast<char*>(staging_.mapped()) + used_, data, bytes);
-    writes_.insert_or_assign({dst.buffer, offset}, Write{used_, bytes});
-    used_ += bytes;
+    const VkDeviceSize at = bytes_.size();
+    const auto* from = static_cast<const std::byte*>(data);
+    bytes_.insert(bytes_.end(), from, from + bytes);
+    writes_.insert_or_assign({dst.buffer, offset}, Write{at, bytes});
 }
 
 void StagedUploads::discard(const vk::Buffer& dst, VkDeviceSize offset, VkDeviceSize bytes) {
@@ -90,12 +83,20 @@ void StagedUploads::retire(vk::Buffer& buffer) {
     buffer = {};
 }
 
-void StagedUploads::record(VkCommandBuffer cmd, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess) {
-    // The frame that recorded the last copies has finished (its fence was waited on).
-    for (vk::Buffer& b : finishing_) vk::destroy(ctx_, b);
-    finishing_ = std::move(retired_);
+void StagedUploads::record(VkCommandBuffer cmd, vk::Buffer& staging, VkPipelineStageFlags dstStage,
+                           VkAccessFlags dstAccess) {
+    // The frame two records back has finished (the renderer waited for it).
+    for (vk::Buffer& b : finishing_[0]) vk::destroy(ctx_, b);
+    finishing_[0] = std::move(finishing_[1]);
+    finishing_[1] = std::move(retired_);
     retired_.clear();
     if (!pending()) return;
+    if (staging.size < bytes_.size()) {  // no frame in flight uses it
+        vk::destroy(ctx_, staging);
+        const VkDeviceSize size = std::max(VkDeviceSize(bytes_.size()), VkDeviceSize(64) << 10);
+        staging = vk::createBuffer(ctx_, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+    }
+    if (!bytes_.empty()) std::memcpy(staging.mapped(), bytes_.data(), bytes_.size());
     for (const Move& m : moves_) {
         const VkBufferCopy region{.srcOffset = 0, .dstOffset = 0, .size = m.size};
         vkCmdCopyBuffer(cmd, m.from, m.to, 1, &region);
@@ -110,13 +111,13 @@ void StagedUploads::record(VkCommandBuffer cmd, VkPipelineStageFlags dstStage, V
         regions.push_back({.srcOffset = it->second.src, .dstOffset = it->first.offset, .size = it->second.size});
         const auto next = std::next(it);
         if (next != writes_.end() && next->first.dst == it->first.dst) continue;
-        vkCmdCopyBuffer(cmd, staging_.buffer, it->first.dst, uint32_t(regions.size()), regions.data());
+        vkCmdCopyBuffer(cmd, staging.buffer, it->first.dst, uint32_t(regions.size()), regions.data());
         regions.clear();
     }
     transferBarrier(cmd, dstStage, dstAccess);
     writes_.clear();
     moves_.clear();
-    used_ = 0;
+    bytes_.clear();
 }
 
 }  // namespace grotto

@@ -1,10 +1,12 @@
 #pragma once
-// Writes into device-local buffers through one host-visible staging buffer,
-// recorded into the next frame's command buffer: no submission and no wait of
-// their own. Relies on the renderer's rule that each frame's fence is waited on
-// before the next frame is recorded, so between frames the GPU reads none of
-// these buffers: staging can be refilled and a buffer retired at one record()
-// can be freed at the next.
+// Writes into device-local buffers through a host-visible staging buffer, recorded
+// into the next frame's command buffer: no submission and no wait of their own.
+// The writes wait in host memory until record(), which copies them into the
+// staging buffer it is given: the frame's own (engine/frame/frame_slot.h), which
+// no frame in flight reads, so a game may edit while two frames are in flight.
+// A buffer retired before one record() is freed at the second record() after it:
+// by then the frame that recorded it has finished (the renderer waits for the
+// frame two before each frame it records).
 #include "engine/vk/resources.h"
 
 #include <functional>
@@ -16,11 +18,11 @@ namespace grotto {
 class StagedUploads {
 public:
     explicit StagedUploads(vk::Context& ctx) : ctx_(ctx) {}
-    ~StagedUploads();  // frees staging and retired buffers (no frame may be in flight)
+    ~StagedUploads();  // frees the retired buffers (no frame may be in flight)
     StagedUploads(const StagedUploads&) = delete;
     StagedUploads& operator=(const StagedUploads&) = delete;
 
-    // Copies `bytes` of `data` into staging now; record() copies them into `dst`
+    // Keeps a copy of `bytes` of `data`; record() copies them into `dst`
     // at `offset`. Writes pending together must not overlap (see discard).
     void write(const vk::Buffer& dst, VkDeviceSize offset, const void* data, VkDeviceSize bytes);
     // Drops the pending writes into [offset, offset + bytes) of `dst`: a range given
@@ -35,10 +37,11 @@ public:
     void reallocate(vk::Buffer& buffer, VkDeviceSize size, VkBufferUsageFlags usage, bool keepContents);
 
     bool pending() const { return !writes_.empty() || !moves_.empty(); }
-    // Records the copies and one barrier from them to (dstStage, dstAccess).
-    void record(VkCommandBuffer cmd, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+    // Records the copies through `staging` (made or grown to hold them; the GPU
+    // must use it no more) and one barrier from them to (dstStage, dstAccess).
+    void record(VkCommandBuffer cmd, vk::Buffer& staging, VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
 
-    VkDeviceSize stagingBytes() const { return staging_.size; }
+    size_t pendingBytes() const { return bytes_.capacity(); }  // host memory holding the writes
 
 private:
     // Pending writes by destination and offset. They never overlap, so those a
@@ -53,7 +56,7 @@ private:
             return a.dst != b.dst ? std::less<VkBuffer>()(a.dst, b.dst) : a.offset < b.offset;
         }
     };
-    struct Write { VkDeviceSize src, size; };  // staging bytes [src, src + size)
+    struct Write { VkDeviceSize src, size; };  // bytes_ [src, src + size), staging's at record()
     using Writes = std::map<Target, Write, TargetOrder>;
     struct Move { VkBuffer from, to; VkDeviceSize size, toSize; };  // copy `size` bytes, zero the rest
 
@@ -63,12 +66,12 @@ private:
     void retire(vk::Buffer& buffer);
 
     vk::Context& ctx_;
-    vk::Buffer staging_;
-    VkDeviceSize used_ = 0;              // staging bytes holding pending writes
+    std::vector<std::byte> bytes_;       // the pending writes' data
     Writes writes_;
     std::vector<Move> moves_;            // whole-buffer copies into reallocated buffers
     std::vector<vk::Buffer> retired_;    // replaced since the last record(): the next frame may read them
-    std::vector<vk::Buffer> finishing_;  // replaced before it: free once that frame is done (the next record)
+    // Replaced before the last two records: freed once those frames are done ([0]: the older).
+    std::vector<vk::Buffer> finishing_[2];
 };
 
 }  // namespace grotto

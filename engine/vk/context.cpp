@@ -17,6 +17,11 @@ bool envFlag(const char* name) {
     return v && *v && std::strcmp(v, "0") != 0;
 }
 
+bool envOff(const char* name) {
+    const char* v = std::getenv(name);
+    return v && std::strcmp(v, "0") == 0;
+}
+
 bool hasLayer(const char* name) {
     uint32_t n = 0;
     vkEnumerateInstanceLayerProperties(&n, nullptr);
@@ -35,6 +40,18 @@ bool hasDeviceExtension(VkPhysicalDevice pd, const char* name) {
     for (auto& e : ext)
         if (std::strcmp(e.extensionName, name) == 0) return true;
     return false;
+}
+
+// A frame in flight signals a timeline semaphore (Vulkan 1.2's feature).
+void requireTimelineSemaphores(VkPhysicalDevice pd, const char* where, const char* hint) {
+    VkPhysicalDeviceVulkan12Features f12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceFeatures2 f{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, .pNext = &f12};
+    vkGetPhysicalDeviceFeatures2(pd, &f);
+    if (!f12.timelineSemaphore) {
+        VkPhysicalDeviceProperties p;
+        vkGetPhysicalDeviceProperties(pd, &p);
+        throw Error(where, std::string(p.deviceName) + " lacks Vulkan 1.2's timelineSemaphore feature", hint);
+    }
 }
 
 const char* kNoDevice = "install the Debian package mesa-vulkan-drivers for lavapipe (CPU Vulkan)";
@@ -117,8 +134,18 @@ void Context::create(const ContextOptions& options) {
                        VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT,
         .pfnUserCallback = &Context::onMessage,
         .pUserData = this};
+    // Synchronisation validation checks the hazards between frames in flight, the
+    // host and the game's own work.
+    const VkValidationFeatureEnableEXT syncFeature = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    const bool syncValidation = options.syncValidation && !envOff("GROTTO_SYNC_VALIDATION");
+    VkValidationFeaturesEXT validationFeatures{.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT,
+                                               .pNext = &messengerInfo,
+                                               .enabledValidationFeatureCount = 1,
+                                               .pEnabledValidationFeatures = &syncFeature};
     VkInstanceCreateInfo ici{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
-                             .pNext = validate ? &messengerInfo : nullptr,
+                             .pNext = !validate         ? nullptr
+                                      : syncValidation ? static_cast<const void*>(&validationFeatures)
+                                                       : static_cast<const void*>(&messengerInfo),
                              .pApplicationInfo = &app,
                              .enabledLayerCount = uint32_t(layers.size()),
                              .ppEnabledLayerNames = layers.data(),
@@ -181,8 +208,10 @@ void Context::create(const ContextOptions& options) {
                                 .pQueuePriorities = &priority};
     VkPhysicalDeviceDynamicRenderingFeatures dynamicRendering{
         .sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DYNAMIC_RENDERING_FEATURES, .dynamicRendering = VK_TRUE};
+    requireTimelineSemaphores(physical, "vulkan", "set GROTTO_DEVICE to another device");
     VkPhysicalDeviceVulkan12Features features12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
-                                                .pNext = &dynamicRendering};
+                                                .pNext = &dynamicRendering,
+                                                .timelineSemaphore = VK_TRUE};
     VkDeviceCreateInfo dci{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO,
                            .pNext = &features12,
                            .queueCreateInfoCount = 1,
@@ -207,7 +236,11 @@ void Context::adopt(const ExternalDevice& external) {
     vkGetPhysicalDeviceProperties(physical, &properties);
     if (properties.apiVersion < VK_API_VERSION_1_2)
         throw Error("external Vulkan device", std::string(properties.deviceName) + " is below Vulkan 1.2",
-                    "Grotto needs Vulkan 1.2 with push descriptors and dynamic rendering");
+                    "Grotto needs Vulkan 1.2 with push descriptors, dynamic rendering and timeline semaphores");
+    // Enabled features cannot be queried from a VkDevice: the device must support it,
+    // and ExternalDevice asks the caller to enable it.
+    requireTimelineSemaphores(physical, "external Vulkan device",
+                              "Grotto needs Vulkan 1.2's timelineSemaphore feature, enabled when creating the device");
     uint32_t nq = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(physical, &nq, nullptr);
     std::vector<VkQueueFamilyProperties> families(nq);

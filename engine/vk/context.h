@@ -1,8 +1,9 @@
 #pragma once
 // The Vulkan instance, one device and its queue: headless, lavapipe by default.
 // GROTTO_DEVICE=<substring> picks another device by name; GROTTO_VALIDATION=1
-// (always set by the tests) turns the Khronos validation layer on, and every
-// message it reports is printed and counted.
+// (always set by the tests) turns the Khronos validation layer on, with its
+// synchronisation validation, and every message it reports is printed and counted.
+// The device has Vulkan 1.2's timeline semaphores (a frame in flight signals one).
 #include "engine/vk/check.h"
 #include "engine/vk/external_device.h"
 #include "engine/vk/memory.h"
@@ -17,6 +18,9 @@ namespace grotto::vk {
 
 struct ContextOptions {
     bool validation = false;   // also on when GROTTO_VALIDATION=1
+    // With validation: the layer's synchronisation validation too (hazards between
+    // commands, submissions and the host). GROTTO_SYNC_VALIDATION=0 turns it off.
+    bool syncValidation = true;
     std::string deviceName;    // substring; empty = GROTTO_DEVICE, else lavapipe, else the first
     // Presenting to a window (the viewer): the instance extensions its window system
     // needs, and a function that makes the window's surface once the instance

@@ -44,8 +44,13 @@ GameDevice::GameDevice() {
         .messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT,
         .pfnUserCallback = &onMessage,
         .pUserData = &messages_};
+    // Synchronisation validation too: it checks the hand-over between the game's
+    // work and Grotto's frames in flight.
+    const VkValidationFeatureEnableEXT sync = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    VkValidationFeaturesEXT features{.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT, .pNext = &messenger,
+                                     .enabledValidationFeatureCount = 1, .pEnabledValidationFeatures = &sync};
     VkInstanceCreateInfo ici{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
-                             .pNext = validate ? &messenger : nullptr,
+                             .pNext = validate ? &features : nullptr,
                              .pApplicationInfo = &app,
                              .enabledLayerCount = validate ? 1u : 0u,
                              .ppEnabledLayerNames = &layer,
@@ -89,8 +94,11 @@ GameDevice::GameDevice() {
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo qci{.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO, .queueFamilyIndex = queueFamily,
                                 .queueCount = 1, .pQueuePriorities = &priority};
+    // Grotto's frames in flight signal a timeline semaphore (Vulkan 1.2).
+    VkPhysicalDeviceVulkan12Features features12{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES,
+                                                .timelineSemaphore = VK_TRUE};
     VkPhysicalDeviceVulkan13Features features13{.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
-                                                .dynamicRendering = VK_TRUE};
+                                                .pNext = &features12, .dynamicRendering = VK_TRUE};
     const char* extension = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
     VkDeviceCreateInfo dci{.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, .pNext = &features13,
                            .queueCreateInfoCount = 1, .pQueueCreateInfos = &qci,

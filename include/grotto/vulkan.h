@@ -8,9 +8,11 @@
 namespace grotto {
 
 // A device the game made and keeps, which Grotto renders with and never destroys.
-// It must be Vulkan 1.2 or later, created with VK_KHR_push_descriptor and dynamic
-// rendering (core in 1.3, else VK_KHR_dynamic_rendering, with the feature enabled),
-// and `queue` must be of a family with graphics, compute and timestamps. Grotto
+// It must be Vulkan 1.2 or later, created with VK_KHR_push_descriptor, dynamic
+// rendering (core in 1.3, else VK_KHR_dynamic_rendering, with the feature enabled)
+// and Vulkan 1.2's timelineSemaphore feature enabled (frames in flight signal a
+// timeline semaphore; a device that does not support it is refused), and `queue`
+// must be of a family with graphics, compute and timestamps. Grotto
 // submits to `queue` from the thread that calls Engine::render: the game must not
 // submit to it from another thread at the same time (Vulkan's external
 // synchronisation of queues).
