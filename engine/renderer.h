@@ -48,16 +48,8 @@ struct FrameStats {
     uint64_t timelineValue = 0;  // Renderer::timeline() reaches it once the frame has finished
 };
 
-// A semaphore a frame waits for before its first command: binary (value ignored)
-// or timeline (waits for `value`), at `stages` of the frame's commands.
-struct FrameWait {
-    VkSemaphore semaphore = VK_NULL_HANDLE;
-    uint64_t value = 0;
-    VkPipelineStageFlags stages = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
-};
-
 // What a game hands a frame in flight (Renderer::submit): the semaphores of its
-// own work (on other queues) that the frame must wait for.
+// own work (on other queues) that the frame must wait for (grotto/vulkan.h).
 struct FrameSync {
     std::vector<FrameWait> waits;
 };

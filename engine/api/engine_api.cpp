@@ -35,7 +35,8 @@ struct Engine::Impl {
                         "the world has " + std::to_string(poses.size()) + " objects");
     }
     void setWorld(voxel::World world);
-    RenderedFrame render(const Camera& camera);
+    // `sync`: submitted in flight after its waits; none: rendered and waited for.
+    RenderedFrame render(const Camera& camera, const FrameSync* sync = nullptr);
 };
 
 namespace {
@@ -267,6 +268,16 @@ RenderedFrame Engine::render() {
     return m.render(makeCamera(m.camera, m.width, m.height));
 }
 
+RenderedFrame Engine::submit(const std::vector<FrameWait>& waits) {
+    Impl& m = *impl_;
+    m.requireWorld("submit");
+    for (const FrameWait& w : waits)
+        if (w.semaphore == VK_NULL_HANDLE) throw Error("submit", "a wait names no semaphore");
+    m.session->setPoses(m.poses);
+    const FrameSync sync{.waits = waits};
+    return m.render(makeCamera(m.camera, m.width, m.height), &sync);
+}
+
 void Engine::playPath(const std::string& name) {
     Impl& m = *impl_;
     m.requireWorld("playPath");
@@ -295,11 +306,12 @@ RenderedFrame Engine::renderPath(double seconds) {
     return m.render(f.camera);
 }
 
-RenderedFrame Engine::Impl::render(const Camera& camera) {
+RenderedFrame Engine::Impl::render(const Camera& camera, const FrameSync* sync) {
     Renderer& renderer = session->renderer();
     renderer.setDisplayImage(true);  // what the game shows
     renderer.setNormalsImage(true);  // what it composites with
-    const FrameStats stats = renderer.render(camera, ++frame);  // consecutive indices: history accumulates
+    // Consecutive indices: the history accumulates.
+    const FrameStats stats = sync ? renderer.submit(camera, ++frame, *sync) : renderer.render(camera, ++frame);
     last = camera;
     auto image = [](const vk::Image& i, VkImageLayout layout) {
         return RenderedImage{.image = i.image, .format = i.format, .extent = i.extent, .layout = layout};
@@ -308,7 +320,8 @@ RenderedFrame Engine::Impl::render(const Camera& camera) {
     return {.color = image(renderer.colorImage(), general), .display = image(renderer.displayImage(), general),
             .normals = image(renderer.normalsImage(), general), .ao = image(renderer.aoImage(), general),
             .depth = image(renderer.depthImage(), renderer.layout(TargetId::Depth)),
-            .quadsDrawn = stats.quadsDrawn, .wallMs = stats.wallMs};
+            .quadsDrawn = stats.quadsDrawn, .wallMs = stats.wallMs, .timeline = renderer.timeline(),
+            .timelineValue = stats.timelineValue};
 }
 
 Pixels Engine::readPixels() {

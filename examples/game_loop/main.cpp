@@ -1,15 +1,18 @@
 // A game loop embedding Grotto on the game's own Vulkan device: build a world in
-// memory, then for 120 frames dig a tunnel into a hill while a crate slides and
-// turns in front of it and the camera follows the digging, render, and at the end copy Grotto's colour image with the game's
-// own commands (as a game compositing it would) and write the last frame.
+// memory and add a crate, then for 120 frames dig a tunnel into the hill while the
+// crate slides and turns in front of it and the camera follows the digging, with
+// two frames in flight, the game copying each frame's display image with its own
+// commands (as a game compositing it would). At the end, write the last frame and
+// measure how much of the game's CPU work overlaps Grotto's frames.
 //   game_loop OUT.png
+#include "frame_reader.h"
 #include "vulkan_device.h"
 
 #include <grotto/grotto.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <exception>
 #include <stdexcept>
 #include <vector>
@@ -38,75 +41,38 @@ grotto::Object crate() {
             .pivot = {2.0, 0.0, 2.0}};
 }
 
-// Copies Grotto's colour image into a host buffer with the game's own command
-// buffer, observing the synchronisation grotto.h states.
-std::vector<float> copyColor(const GameDevice& game, const grotto::RenderedImage& color) {
-    VkDevice d = game.device;
-    const VkDeviceSize bytes = VkDeviceSize(color.extent.width) * color.extent.height * 16;
-    VkBufferCreateInfo bci{.sType = VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO, .size = bytes,
-                           .usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT};
-    VkBuffer buffer;
-    if (vkCreateBuffer(d, &bci, nullptr, &buffer) != VK_SUCCESS) throw std::runtime_error("vkCreateBuffer");
-    VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(d, buffer, &req);
-    VkPhysicalDeviceMemoryProperties mp;
-    vkGetPhysicalDeviceMemoryProperties(game.physical, &mp);
-    uint32_t type = UINT32_MAX;
-    const VkMemoryPropertyFlags want = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
-    for (uint32_t i = 0; i < mp.memoryTypeCount && type == UINT32_MAX; ++i)
-        if ((req.memoryTypeBits & (1u << i)) && (mp.memoryTypes[i].propertyFlags & want) == want) type = i;
-    VkMemoryAllocateInfo mai{.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO, .allocationSize = req.size, .memoryTypeIndex = type};
-    VkDeviceMemory memory;
-    if (type == UINT32_MAX || vkAllocateMemory(d, &mai, nullptr, &memory) != VK_SUCCESS) throw std::runtime_error("vkAllocateMemory");
-    vkBindBufferMemory(d, buffer, memory, 0);
+// The game's own CPU work of a frame (simulation, AI, audio...): a fixed amount
+// of arithmetic, so it takes longer when it competes for the CPU.
+double gameWork(int units) {
+    double x = 0.5;
+    for (int i = 0; i < units * 100000; ++i) x = x * 3.7 * (1.0 - x);  // the logistic map: no shortcut
+    return x;
+}
 
-    VkCommandPoolCreateInfo pci{.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO, .queueFamilyIndex = game.queueFamily};
-    VkCommandPool pool;
-    vkCreateCommandPool(d, &pci, nullptr, &pool);
-    VkCommandBufferAllocateInfo ai{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO, .commandPool = pool,
-                                   .level = VK_COMMAND_BUFFER_LEVEL_PRIMARY, .commandBufferCount = 1};
-    VkCommandBuffer cmd;
-    vkAllocateCommandBuffers(d, &ai, &cmd);
-    VkCommandBufferBeginInfo bi{.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO,
-                                .flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT};
-    vkBeginCommandBuffer(cmd, &bi);
-    const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-    // Grotto's compute writes before our transfer read; GENERAL -> TRANSFER_SRC and back again after.
-    VkImageMemoryBarrier toCopy{.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER, .srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT,
-                                .dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT, .oldLayout = color.layout,
-                                .newLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                                .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                .image = color.image, .subresourceRange = all};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,
-                         1, &toCopy);
-    VkBufferImageCopy region{.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1},
-                             .imageExtent = {color.extent.width, color.extent.height, 1}};
-    vkCmdCopyImageToBuffer(cmd, color.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
-    VkImageMemoryBarrier back = toCopy;
-    back.srcAccessMask = VK_ACCESS_TRANSFER_READ_BIT;
-    back.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-    back.oldLayout = VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL;
-    back.newLayout = color.layout;
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 0, nullptr, 0, nullptr,
-                         1, &back);
-    VkBufferMemoryBarrier toHost{.sType = VK_STRUCTURE_TYPE_BUFFER_MEMORY_BARRIER, .srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT,
-                                 .dstAccessMask = VK_ACCESS_HOST_READ_BIT, .srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED,
-                                 .dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED, .buffer = buffer, .size = VK_WHOLE_SIZE};
-    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &toHost, 0, nullptr);
-    vkEndCommandBuffer(cmd);
-    VkSubmitInfo si{.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO, .commandBufferCount = 1, .pCommandBuffers = &cmd};
-    vkQueueSubmit(game.queue, 1, &si, VK_NULL_HANDLE);
-    vkQueueWaitIdle(game.queue);
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-    std::vector<float> pixels(bytes / 4);
-    void* mapped;
-    vkMapMemory(d, memory, 0, bytes, 0, &mapped);
-    std::memcpy(pixels.data(), mapped, bytes);
-    vkUnmapMemory(d, memory);
-    vkDestroyCommandPool(d, pool, nullptr);
-    vkDestroyBuffer(d, buffer, nullptr);
-    vkFreeMemory(d, memory, nullptr);
-    return pixels;
+// How much of the game's CPU work hides behind Grotto's frames with two frames in
+// flight: the same frames with the same work, rendered and waited for (render())
+// against submitted in flight (submit()), and the work alone.
+void measureOverlap(grotto::Engine& engine, int frames, int units) {
+    volatile double sink = 0.0;  // the work's result is used: it cannot be optimised away
+    auto run = [&](int mode) {  // 0: work alone, 1: work + render(), 2: work + submit()
+        const Clock::time_point start = Clock::now();
+        for (int i = 0; i < frames; ++i) {
+            sink = sink + gameWork(units);
+            if (mode == 1) engine.render();
+            if (mode == 2) engine.submit();
+        }
+        if (mode == 2) engine.readPixels();  // waits for the last frame
+        return secondsSince(start);
+    };
+    run(2);  // warm: pipelines, targets
+    const double work = run(0), serial = run(1), inFlight = run(2);
+    std::printf("overlap: %d frames, game work %.1f ms/frame, render() + work %.1f ms/frame, submit() + work %.1f "
+                "ms/frame: %.0f%% of the game's work hidden behind Grotto's frames\n",
+                frames, 1e3 * work / frames, 1e3 * serial / frames, 1e3 * inFlight / frames,
+                100.0 * (serial - inFlight) / work);
 }
 
 }  // namespace
@@ -123,6 +89,7 @@ int main(int argc, char** argv) {
             grotto::Engine engine(game.handles(), {.width = 320, .height = 180});
             engine.setWorld(buildWorld());
             engine.addObject(crate());
+            FrameReader reader(game, {320, 180});
             grotto::RenderedFrame frame;
             for (int i = 0; i < kFrames; ++i) {
                 // The digging head moves into the hill's side at z = 63, one sphere a frame.
@@ -134,15 +101,24 @@ int main(int argc, char** argv) {
                                      glm::angleAxis(3.0 * t, glm::dvec3(0.0, 1.0, 0.0)));
                 // The camera stands back outside the hill, looking into the tunnel.
                 engine.setCamera({.position = glm::dvec3(58.0, 16.0, 92.0), .target = head, .fovDegrees = 50.0});
-                frame = engine.render();
+                // Two frames in flight: this one is submitted without waiting, and the
+                // game's copy of its display image follows it on the queue, before the next.
+                frame = engine.submit();
+                reader.read(frame, i % 2);
             }
-            // The game composites Grotto's image itself: its copy must be the frame Grotto reads back.
-            const std::vector<float> ours = copyColor(game, frame.color);
+            // The game's last copy is Grotto's last frame through the tone map, and its
+            // own copy of the colour image is the frame Grotto reads back.
+            const std::vector<uint16_t> shown = reader.pixels((kFrames - 1) % 2);
             const grotto::Pixels pixels = engine.readPixels();
-            if (ours != pixels.rgba) throw std::runtime_error("the colour image copied by the game differs from Grotto's readback");
+            if (reader.copyNow(frame.color) != pixels.rgba)
+                throw std::runtime_error("the colour image copied by the game differs from Grotto's readback");
+            size_t lit = 0;
+            for (size_t k = 0; k < shown.size(); k += 4) lit += shown[k] != 0;
+            if (lit < shown.size() / 8) throw std::runtime_error("the game's copy of the display image is dark");
             engine.saveFrame(argv[1]);
             std::printf("wrote %s: frame %d on %s, %llu voxels dug, %llu quads drawn\n", argv[1], kFrames,
                         game.name().c_str(), (unsigned long long)carved, (unsigned long long)frame.quadsDrawn);
+            measureOverlap(engine, 24, 40);
         }
         if (game.validationMessages() > 0) {
             std::fprintf(stderr, "game_loop: %d validation messages\n", game.validationMessages());

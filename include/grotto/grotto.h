@@ -80,7 +80,12 @@ struct RenderedFrame {
     RenderedImage depth;    // D32_SFLOAT, full size, reverse-Z with an infinite far plane: depth =
                             // nearPlane / (view distance along the camera's axis); 1 at the near plane, 0 = sky
     uint64_t quadsDrawn = 0;
-    double wallMs = 0.0;    // record + submit + wait
+    double wallMs = 0.0;    // record + submit (+ wait, render())
+    // The frame has finished on the GPU once `timeline` (a timeline semaphore of
+    // Grotto's) reaches `timelineValue`: already so when render() returns; after
+    // submit(), wait for it before reading the images (docs/embedding.md).
+    VkSemaphore timeline = VK_NULL_HANDLE;
+    uint64_t timelineValue = 0;
 };
 
 // A frame read back to host memory, row 0 on top.
@@ -158,8 +163,16 @@ public:
     void resize(uint32_t width, uint32_t height);
     void cut();  // a camera cut: the next frame starts without temporal history
 
-    // Renders a frame. Consecutive calls accumulate temporal AO.
+    // Renders a frame and waits for it. Consecutive calls accumulate temporal AO.
     RenderedFrame render();
+    // The same frame with two frames in flight, for a game's device: recorded and
+    // submitted in one submission after the game's `waits`, returning without
+    // waiting for the GPU (it waits on the CPU only for the frame two before, whose
+    // resources it reuses). The frame has finished when `timeline` reaches
+    // `timelineValue`. The images are single: submit your reads of this frame's
+    // images to the queue (waiting for that value) before the next submit() or
+    // render(). readPixels() and saveFrame() wait for the frame themselves.
+    RenderedFrame submit(const std::vector<FrameWait>& waits = {});
     // A camera path of the world file (docs/paths.md), by name: renderPath(seconds)
     // renders the frame `seconds` into it, as `grotto flythrough` does: the path's
     // camera, its objects at their keys, its edits due by then applied and its cuts

@@ -34,4 +34,13 @@ struct RenderedImage {
     VkImageLayout layout = VK_IMAGE_LAYOUT_GENERAL;
 };
 
+// A semaphore of the game's that a frame in flight (Engine::submit) waits for
+// before its first command: binary (value ignored) or timeline (until it reaches
+// `value`), at `stages` of the frame's commands.
+struct FrameWait {
+    VkSemaphore semaphore = VK_NULL_HANDLE;
+    uint64_t value = 0;
+    VkPipelineStageFlags stages = VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
+};
+
 }  // namespace grotto
