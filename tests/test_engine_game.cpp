@@ -167,5 +167,29 @@ TEST(EngineGame, APathPlaysWithItsEdits) {
     EXPECT_EQ(engine.validationMessages(), 0);
 }
 
+// Frames in flight are the frames render() waits for: three submitted without
+// waiting, with an edit between them, read back as the same pixels.
+TEST(EngineGame, SubmittedFramesAreRenderedFrames) {
+    auto run = [](bool inFlight) {
+        Engine engine({.width = 40, .height = 30, .validation = true});
+        engine.setWorld(floorGrid());
+        engine.addObject(crate());
+        engine.setCamera({.position = {14.0, 8.0, 15.0}, .target = {8.0, 3.0, 8.0}, .fovDegrees = 55.0});
+        uint64_t last = 0;
+        for (int i = 0; i < 3; ++i) {
+            if (i == 1) engine.edit(Edit::carveBox({{9, 1, 9}, {12, 1, 12}}));
+            engine.setObjectPose(0, {8.0 + 0.5 * i, 2.0, 8.0});
+            const RenderedFrame f = inFlight ? engine.submit() : engine.render();
+            EXPECT_GT(f.timelineValue, last) << "each frame signals a later value";
+            last = f.timelineValue;
+        }
+        EXPECT_EQ(engine.validationMessages(), 0);
+        return engine.readPixels();
+    };
+    const Pixels waited = run(false), submitted = run(true);
+    EXPECT_EQ(submitted.rgba, waited.rgba);
+    EXPECT_EQ(submitted.ao, waited.ao);
+}
+
 }  // namespace
 }  // namespace grotto
