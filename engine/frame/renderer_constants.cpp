@@ -1,0 +1,68 @@
+// The uniforms and constants each frame writes into its slot: the frame's, the
+// AO's and the temporal pass's (whose history follows consecutive frame indices),
+// the voxel traces' and the objects' normal tables.
+#include "engine/renderer.h"
+
+#include "engine/frame/frame_constants.h"
+#include "engine/frame/object_frame.h"
+#include "engine/passes/trace_inputs.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace grotto {
+
+void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
+    FrameSlot& s = slot();
+    const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
+    std::memcpy(s.frame.mapped(), &uniforms, sizeof uniforms);
+    if (ao_.enabled) {
+        const uint32_t scale = ao_.chain.fullResolution ? 1 : 2;
+        gpu::GtaoConstants constants = gtaoConstants(camera, gpuSettings(ao_), frameIndex, scale);
+        if (objects_) normalTable(constants.viewNormals, glm::transpose(camera.basis), poses_);
+        std::memcpy(s.aoConstants.mapped(), &constants, sizeof constants);
+        if (temporal()) {
+            // A frame index that does not follow the last (wrapping) starts a new
+            // sequence. A zoom or new clip planes need no reset: the history is
+            // reprojected through the previous projection and holds linear depth.
+            if (frameIndex != previousFrame_ + 1u) previousCamera_.reset();
+            gpu::TemporalConstants t = temporalConstants(camera, previousCamera_ ? &*previousCamera_ : nullptr);
+            invalidated_.write(camera.position, aoReach(ao_), t);
+            std::memcpy(s.temporalConstants.mapped(), &t, sizeof t);
+            previousCamera_ = camera;
+            previousFrame_ = frameIndex;
+        }
+    }
+    writeTraceConstants(camera, frameIndex);  // before the edits are cleared: they restart a soft sun's history
+    invalidated_.clear();  // edits before this frame; later ones go to the next
+    // The frame before (for motion and the temporal plane test); this one's own where there was none.
+    if (objects_) {
+        const gpu::ObjectUniforms o =
+            objectUniforms(poses_, lastCamera_ ? *lastCamera_ : camera, lastCamera_ ? lastPoses_ : poses_);
+        std::memcpy(s.objectUniforms.mapped(), &o, sizeof o);
+    }
+}
+
+void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
+    if (!scene_.occupancy) return;
+    const double radius = ao_.enabled ? ao_.estimator.radius : 1.0;
+    gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy, scene_.voxelSize, scene_.worldOrigin,
+                                           lighting_.sunDirection, ao_.estimator.rays, radius);
+    t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
+    t.frameIndex = frameIndex;
+    if (softShadows()) {
+        // As the AO's history: consecutive frames only. An edit anywhere may move a
+        // shadow anywhere along the sun's rays, so it restarts the whole history.
+        if (frameIndex != shadowFrame_ + 1u || !invalidated_.boxes().empty()) shadowCamera_.reset();
+        const gpu::TemporalConstants r = temporalConstants(camera, shadowCamera_ ? &*shadowCamera_ : nullptr);
+        t.currentToPrevious = r.currentToPrevious;
+        t.previousNdcToViewMul_Add = r.previousNdcToViewMul_Add;
+        t.shadowHistory = temporal() ? ao_.chain.temporalHistory : kDefaultTemporalHistory;
+        t.shadowReset = (r.reset != 0u ? 1u : 0u) | (objects_ && objects_->moving ? 2u : 0u);
+        shadowCamera_ = camera;
+        shadowFrame_ = frameIndex;
+    }
+    std::memcpy(slot().traceConstants.mapped(), &t, sizeof t);
+}
+
+}  // namespace grotto
