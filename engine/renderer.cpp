@@ -7,15 +7,11 @@
 #include "engine/renderer.h"
 
 #include "grotto/error.h"
-#include "engine/frame/object_frame.h"
 #include "engine/frame/render_memory.h"
-#include "engine/passes/trace_inputs.h"
 #include "engine/vk/readback.h"
 #include "voxel/settings_table.h"
 
 #include <chrono>
-#include <cmath>
-#include <cstring>
 #include <utility>
 
 namespace grotto {
