@@ -45,10 +45,12 @@ GameDevice::GameDevice() {
         .pfnUserCallback = &onMessage,
         .pUserData = &messages_};
     // Synchronisation validation too: it checks the hand-over between the game's
-    // work and Grotto's frames in flight.
+    // work and Grotto's frames in flight (GROTTO_SYNC_VALIDATION=0: without it).
+    const char* syncOff = std::getenv("GROTTO_SYNC_VALIDATION");
     const VkValidationFeatureEnableEXT sync = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
     VkValidationFeaturesEXT features{.sType = VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT, .pNext = &messenger,
-                                     .enabledValidationFeatureCount = 1, .pEnabledValidationFeatures = &sync};
+                                     .enabledValidationFeatureCount = syncOff && std::string(syncOff) == "0" ? 0u : 1u,
+                                     .pEnabledValidationFeatures = &sync};
     VkInstanceCreateInfo ici{.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO,
                              .pNext = validate ? &features : nullptr,
                              .pApplicationInfo = &app,
