@@ -1,0 +1,59 @@
+// The visibility bitmask of one slice (VBAO): 32 sectors splitting the slice's
+// half-disc around the projected normal into parts of equal cosine-weighted
+// measure, so the share of sectors left open is the share of the slice's
+// cosine-weighted visibility, the quantity GTAO integrates between its two
+// horizons. An occluder of finite thickness covers only the sectors between its
+// front and its back, so light passes behind it. Written once for GLSL and C++
+// (GLM, with `using namespace glm` around it and <bit> included before it).
+//
+// Angles lie in the slice, measured from the direction to the camera, positive
+// toward the slice's direction; n is the projected normal's angle (|n| < pi/2).
+// Angle t weighs w(t) = cos(t - n) |sin t|: the cosine to the normal times the
+// slice's share of the sphere there. The signed integral of w from 0 to t is
+//   a(t) = (cos n + 2 t sin n - cos(2t - n)) / 4
+// (GTAO's arc per horizon), so the measure below t, from the hemisphere's edge
+// n - pi/2, is a(n - pi/2) + sign(t) a(t), out of cos n + n sin n in all.
+#define kVbaoSectors 32
+#define kVbaoHalfPi 1.57079632679490f
+
+float vbaoArc(float t, float n) { return (cos(n) + 2.0f * t * sin(n) - cos(2.0f * t - n)) * 0.25f; }
+
+// The whole slice's measure: both horizons at the hemisphere's edges.
+float vbaoSliceTotal(float n) { return cos(n) + n * sin(n); }
+
+// The share of the slice's measure below angle t: 0 at n - pi/2, 1 at n + pi/2.
+float vbaoCdf(float t, float n) {
+    float lo = n - kVbaoHalfPi;
+    t = clamp(t, lo, n + kVbaoHalfPi);
+    return clamp((vbaoArc(lo, n) + sign(t) * vbaoArc(t, n)) / vbaoSliceTotal(n), 0.0f, 1.0f);
+}
+
+// Bits lo .. hi - 1 of a sector mask, both clamped to 0 .. 32 first: a shift by
+// 32 is undefined in both languages.
+uint vbaoBits(int lo, int hi) {
+    lo = clamp(lo, 0, kVbaoSectors);
+    hi = clamp(hi, lo, kVbaoSectors);
+    uint below = hi == kVbaoSectors ? 0xFFFFFFFFu : (1u << uint(hi)) - 1u;
+    uint under = lo == kVbaoSectors ? 0xFFFFFFFFu : (1u << uint(lo)) - 1u;
+    return below & ~under;
+}
+
+// The sectors an occluder seen between angles a and b (either order) covers:
+// those it covers more than half of, so the error is at most half a sector at
+// each end and has no bias.
+uint vbaoOccluded(float a, float b, float n) {
+    float lo = vbaoCdf(min(a, b), n) * float(kVbaoSectors), hi = vbaoCdf(max(a, b), n) * float(kVbaoSectors);
+    return vbaoBits(int(floor(lo + 0.5f)), int(floor(hi + 0.5f)));
+}
+
+#ifdef __cplusplus
+int vbaoOpenSectors(uint mask) { return kVbaoSectors - std::popcount(mask); }
+#else
+int vbaoOpenSectors(uint mask) { return kVbaoSectors - bitCount(mask); }
+#endif
+
+// The slice's visibility from its mask, on GTAO's scale: projectedLength times the
+// measure of the open sectors (GTAO's projectedLength * (arc0 + arc1)).
+float vbaoVisibility(uint mask, float n, float projectedLength) {
+    return projectedLength * vbaoSliceTotal(n) * float(vbaoOpenSectors(mask)) / float(kVbaoSectors);
+}
