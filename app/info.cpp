@@ -96,10 +96,11 @@ void addInfoCommand(CLI::App& app) {
             const voxel::IndexBox ob = objects[i].bounds();
             const glm::dvec3 olo = objects[i].origin() + glm::dvec3(ob.min) * objects[i].voxelSize();
             const glm::dvec3 ohi = objects[i].origin() + glm::dvec3(ob.max + 1) * objects[i].voxelSize();
-            std::printf("object         %s: %s, %llu voxels, own bounds (%g %g %g)..(%g %g %g), %s\n",
+            // Its quads as a renderer uploads them: the exact voxels (objects have no coarser levels).
+            std::printf("object         %s: %s, %llu voxels, %zu quads, own bounds (%g %g %g)..(%g %g %g), %s\n",
                         printable(o.name).c_str(), printable(objectSource(o)).c_str(),
-                        (unsigned long long)objects[i].stats().solidVoxels, olo.x, olo.y, olo.z, ohi.x, ohi.y, ohi.z,
-                        objectMotion(o).c_str());
+                        (unsigned long long)objects[i].stats().solidVoxels, objects[i].mesh().quads.size(), olo.x,
+                        olo.y, olo.z, ohi.x, ohi.y, ohi.z, objectMotion(o).c_str());
         }
         for (size_t i = 0; i < d.materials.size(); ++i) {
             const voxel::Material& m = d.materials[i];

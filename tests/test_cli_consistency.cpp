@@ -183,7 +183,9 @@ TEST_F(CliErrors, FlythroughQuietPrintsOnlyTheResults) {
     EXPECT_TRUE(fs::exists(dir_ / "quiet" / "frame.0003.png"));
 }
 
-// info lists each object: where its voxels come from, how many and where, and how it moves.
+// info lists each object: where its voxels come from, how many, its quads (a box
+// is its six faces, a one-voxel slab of 16 x 16 its two sides and four edges), where
+// it is and how it moves.
 TEST_F(CliErrors, InfoListsObjects) {
     const fs::path world = writeText("objects.json", R"({"grid": {"file": "good.vdb"}, "objects": [
         {"name": "door", "generator": {"kind": "box", "size": [1, 10, 6], "material": 4}, "pivot": [0, -0.5, -0.5],
@@ -191,9 +193,9 @@ TEST_F(CliErrors, InfoListsObjects) {
         {"name": "slab", "grid": {"file": "good.vdb", "name": "solid"}, "keys": [{"time": 0, "position": [2, 3, 4]}]}]})");
     const test::RunResult r = runGrotto("info " + world.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_NE(r.out.find("object         door: generator box 1x10x6, material 4, 60 voxels, own bounds (-0.5 -0.5 -0.5)..(0.5 9.5 5.5), "
+    EXPECT_NE(r.out.find("object         door: generator box 1x10x6, material 4, 60 voxels, 6 quads, own bounds (-0.5 -0.5 -0.5)..(0.5 9.5 5.5), "
                          "moves: 2 keys from 0 to 1.5 s"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("object         slab: grid " + good_.string() + " (name solid, rule auto), 256 voxels, own bounds "
+    EXPECT_NE(r.out.find("object         slab: grid " + good_.string() + " (name solid, rule auto), 256 voxels, 6 quads, own bounds "
                          "(-0.5 -0.5 -0.5)..(15.5 0.5 15.5), still at (2 3 4)"), std::string::npos) << r.out;
     const test::RunResult bare = runGrotto("info " + good_.string());
     ASSERT_EQ(bare.exitCode, 0) << bare.err;
