@@ -33,5 +33,7 @@ float denoiseBlur(ivec2 p, float beta, out vec2 range) {
     float wbr = diagonal * (wr * er.w + wb * eb.y);
     float sum = beta * c.x + wl * l.x + wr * r.x + wt * t.x + wb * b.x + wtl * tl.x + wtr * tr.x + wbl * bl.x + wbr * br.x;
     float weight = beta + wl + wr + wt + wb + wtl + wtr + wbl + wbr;
-    return weight > 0.0 ? sum / weight : c.x;
+    // A weighted mean of fractions is a fraction, but its division can round one
+    // ulp above 1 (NVIDIA's does): clamped, so AO stays in [0, 1].
+    return weight > 0.0 ? clamp(sum / weight, 0.0, 1.0) : c.x;
 }

@@ -71,5 +71,5 @@ float upsampledAo(AoBlock b, ivec2 h, ivec2 offset, uint face) {
             weight += w[i];
         }
     }
-    return weight > 1e-4 ? sum / weight : nearestAo;
+    return weight > 1e-4 ? clamp(sum / weight, 0.0, 1.0) : nearestAo;  // rounding may pass 1
 }

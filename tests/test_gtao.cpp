@@ -3,7 +3,7 @@
 // silhouettes in the upsample, and thin-occluder compensation.
 #include "engine/lab/gtao_twin.h"
 #include "engine/renderer.h"
-#include "tests/gpu_fixture.h"
+#include "tests/ao_fixture.h"
 #include "tests/scenes.h"
 #include "tests/test_util.h"
 
@@ -14,37 +14,9 @@
 namespace grotto {
 namespace {
 
-using test::GpuTest;
+using test::Rendered;
 
-struct Rendered {
-    FrameImages img;
-    Camera camera;
-    gpu::GtaoConstants constants;
-};
-
-class Gtao : public GpuTest {
-protected:
-    Rendered render(const voxel::World& world, const voxel::CameraDesc& cd, uint32_t w, uint32_t h,
-                    const AoOptions& ao) {
-        Rendered r{{}, makeCamera(cd, w, h), {}};
-        auto scene = uploadScene(ctx(), world.mesh(), world.desc());
-        Renderer renderer(ctx(), *scene, world.desc().lighting, ao, w, h);
-        renderer.render(r.camera);
-        r.img = renderer.readback(r.camera, true);
-        r.constants = gtaoConstants(r.camera, gpuSettings(ao), 0, ao.chain.fullResolution ? 1 : 2);
-        return r;
-    }
-    static AoOptions options(const std::string& quality, double radius = 4.0) {
-        AoOptions o;
-        o.quality = quality;
-        o.estimator = estimatorPreset(quality, radius);
-        return o;
-    }
-    // World position seen at a full-res pixel.
-    static glm::dvec3 worldAt(const Rendered& r, uint32_t x, uint32_t y) {
-        return r.camera.pointAt(x + 0.5, y + 0.5, r.img.depth[size_t(y) * r.img.width + x]);
-    }
-};
+class Gtao : public test::AoFixture {};
 
 TEST_F(Gtao, GpuMatchesCpuTwinForEveryPreset) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
@@ -139,8 +111,9 @@ TEST_F(Gtao, TinySizesAndOneSliceOneStepStayFinite) {
         for (const AoOptions& ao : {minimal, options("high")}) {
             const Rendered r = render(world, world.camera("table", 16.0 / 9.0), w, h, ao);
             for (size_t i = 0; i < r.img.ao.size(); ++i) {
-                ASSERT_TRUE(r.img.ao[i] >= 0.0f && r.img.ao[i] <= 1.0f) << w << "x" << h;
-                ASSERT_TRUE(r.img.aoRaw[i] >= 0.0f && r.img.aoRaw[i] <= 1.0f) << w << "x" << h;
+                ASSERT_TRUE(r.img.ao[i] >= 0.0f && r.img.ao[i] <= 1.0f) << w << "x" << h << " pixel " << i << ": " << r.img.ao[i];
+                ASSERT_TRUE(r.img.aoRaw[i] >= 0.0f && r.img.aoRaw[i] <= 1.0f)
+                    << w << "x" << h << " pixel " << i << ": " << r.img.aoRaw[i];
                 for (int c = 0; c < 4; ++c) ASSERT_TRUE(std::isfinite(r.img.color[4 * i + c])) << w << "x" << h;
             }
         }
@@ -386,8 +359,10 @@ TEST_F(Gtao, NumericalExtremesStayFinite) {
         const Rendered r = render(*e.world, e.camera, e.width, e.height, ao);
         size_t bad = 0;
         for (size_t i = 0; i < r.img.ao.size(); ++i) {
-            if (!(r.img.ao[i] >= 0.0f && r.img.ao[i] <= 1.0f) || !(r.img.aoRaw[i] >= 0.0f && r.img.aoRaw[i] <= 1.0f))
+            if (!(r.img.ao[i] >= 0.0f && r.img.ao[i] <= 1.0f) || !(r.img.aoRaw[i] >= 0.0f && r.img.aoRaw[i] <= 1.0f)) {
+                if (bad < 4) ADD_FAILURE() << e.name << ": pixel " << i << " AO " << r.img.ao[i] << ", raw " << r.img.aoRaw[i];
                 ++bad;
+            }
             for (int c = 0; c < 4; ++c)
                 if (!std::isfinite(r.img.color[4 * i + c])) ++bad;
         }
