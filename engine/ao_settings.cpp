@@ -106,6 +106,7 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
                   kDefaultRadiusVoxels * voxel::kMaxVoxelSize <= kMaxAoRadius);
     o.estimator = estimatorPreset(d.quality, d.radius ? *d.radius : kDefaultRadiusVoxels * voxelSize);
     o.estimator.rays = voxelRaysPreset(o.method, d.quality);
+    o.estimator.thickness = float(kDefaultThicknessVoxels * voxelSize);
     applyAoOverrides(d, o);
     validateAo(o, where);
     return o;
@@ -137,6 +138,8 @@ gpu::GtaoSettings gpuSettings(const AoOptions& ao) {
     s.denoisePasses = c.denoisePasses;
     s.temporalHistory = c.temporalHistory;
     s.maxDistance = e.maxDistance;
+    s.thickness = e.thickness;
+    s.thicknessMode = uint32_t(e.thicknessMode);
     return s;
 }
 

@@ -13,21 +13,23 @@ namespace grotto {
 
 // The estimator in the AO chain, in the order of ao.method's choices. Voxel
 // traces exact rays through the world's voxels (the reference's definition, a
-// few rays a frame); hybrid adds such rays to GTAO's horizons. SSAO and HBAO are
+// few rays a frame); hybrid adds such rays to GTAO's horizons; VBAO keeps GTAO's
+// slices but as bitmasks of 32 sectors, so an occluder hides only the sectors
+// between its front and its back (docs/vbao.md). SSAO and HBAO are
 // baselines for measuring GTAO against (docs/tradeoff.md). Each replaces only the
 // main pass, writing the same image, so depth prefilter, denoise, temporal and
 // upsample are shared.
-enum class AoMethod { Gtao, Voxel, Hybrid, Ssao, Hbao };
+enum class AoMethod { Gtao, Voxel, Hybrid, Ssao, Hbao, Vbao };
 
 struct AoOptions {
     bool enabled = true;               // false for --ao off (no AO chain at all)
-    AoMethod method = AoMethod::Gtao;  // --ao gtao | voxel | hybrid | ssao | hbao
+    AoMethod method = AoMethod::Gtao;  // --ao gtao | voxel | hybrid | ssao | hbao | vbao
     std::string quality = "high";      // low, medium, high, ultra or custom
     voxel::EstimatorSettings estimator;
     voxel::ChainSettings chain;
 };
 
-// "gtao", "voxel", "hybrid", "ssao", "hbao" (the timestamp names the main pass by too).
+// "gtao", "voxel", "hybrid", "ssao", "hbao", "vbao" (the timestamp names the main pass by too).
 const char* aoMethodName(AoMethod method);
 // Throws grotto::Error (input) naming `where` for anything but those.
 AoMethod parseAoMethod(const std::string& name, const std::string& where);
@@ -41,6 +43,8 @@ uint32_t voxelRaysPreset(AoMethod method, const std::string& quality);
 // within these bounds. The default radius is four voxels.
 inline constexpr double kMinAoRadius = 1e-15, kMaxAoRadius = 1e15;
 inline constexpr double kDefaultRadiusVoxels = 4.0;
+// VBAO's default constant thickness: one voxel behind each depth sample.
+inline constexpr double kDefaultThicknessVoxels = 1.0;
 
 // Frames the temporal pass averages by default.
 inline constexpr uint32_t kDefaultTemporalHistory = voxel::ChainSettings{}.temporalHistory;

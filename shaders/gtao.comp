@@ -12,6 +12,11 @@ layout(constant_id = 2) const float specPower = 2.0;
 #define kGtaoSteps specSteps
 #define kGtaoPower specPower
 
+#ifdef GROTTO_VBAO
+// VBAO (vbao.comp): the same kernel, each slice a bitmask of 32 sectors that an
+// occluder hides only between its front and its back.
+#include "shared/vbao_sectors.h"
+#endif
 #include "ao_estimator.glsl"
 
 void main() {

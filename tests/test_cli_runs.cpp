@@ -27,6 +27,28 @@ using test::runGrotto;
 constexpr const char* kFlyPath = R"({"keys": [{"time": 0, "position": [8, 10, 30], "target": [8, 0, 8]},
     {"time": 0.5, "position": [20, 8, 24], "target": [8, 0, 8]}, {"time": 1, "position": [26, 6, 12], "target": [8, 0, 6]}]})";
 
+// VBAO is chosen by --ao vbao or by the world file's ao.method alike, and is not GTAO.
+TEST_F(CliErrors, VbaoIsChosenByTheFlagOrTheWorldFile) {
+    auto bytes = [](const fs::path& p) {
+        std::ifstream in(p, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    const fs::path rooms = test::worldsDir() / "rooms.json";
+    nlohmann::json desc = nlohmann::json::parse(bytes(rooms));
+    desc["grid"]["file"] = (test::worldsDir() / "rooms.vdb").string();
+    desc["ao"]["method"] = "vbao";
+    const fs::path world = writeText("vbao.json", desc.dump());
+    const std::string size = " --size 48x27 --camera table --show ao -o ";
+    test::RunResult flag = runGrotto("render " + rooms.string() + " --ao vbao" + size + (dir_ / "flag.png").string());
+    ASSERT_EQ(flag.exitCode, 0) << flag.err;
+    test::RunResult file = runGrotto("render " + world.string() + size + (dir_ / "file.png").string());
+    ASSERT_EQ(file.exitCode, 0) << file.err;
+    test::RunResult gtao = runGrotto("render " + rooms.string() + " --ao gtao" + size + (dir_ / "gtao.png").string());
+    ASSERT_EQ(gtao.exitCode, 0) << gtao.err;
+    EXPECT_EQ(bytes(dir_ / "flag.png"), bytes(dir_ / "file.png"));
+    EXPECT_NE(bytes(dir_ / "flag.png"), bytes(dir_ / "gtao.png"));
+}
+
 TEST_F(CliErrors, FlythroughResumesButNeverMixesSequences) {
     const fs::path world = writeText("fly.json", std::string(R"({"grid": {"file": "good.vdb"}, "paths": {"p": )") + kFlyPath + "}}");
     const fs::path seq = dir_ / "seq";

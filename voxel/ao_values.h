@@ -8,6 +8,10 @@
 
 namespace grotto::voxel {
 
+// How VBAO sizes an occluder behind its depth sample (shaders/shared/gtao.h's
+// kVbaoThickness* values, in this order).
+enum class ThicknessMode : uint32_t { Constant, Distance };
+
 struct EstimatorSettings {
     float radius = 4.0f;  // world units; a world's default is 4 of its voxels
     // Fitted to the reference (docs/tuning.md: coordinate search, mean RMSE over
@@ -19,6 +23,11 @@ struct EstimatorSettings {
     float finalValuePower = 1.9f;   // [2.2]
     float depthMipOffset = 3.30f;
     float maxDistance = 0.0f;       // no limit
+    // VBAO: how far behind each depth sample its occluder reaches, in world units
+    // (constant; a world's default is one of its voxels) or as a share of the
+    // sample's view depth (distance).
+    float thickness = 1.0f;
+    ThicknessMode thicknessMode = ThicknessMode::Constant;
     uint32_t slices = 3, steps = 3;  // the loop shape: the quality preset's (these are high's)
     uint32_t rays = 6;               // voxel and hybrid: rays per AO pixel per frame
     uint32_t ssaoSamples = 32;       // SSAO's kernel, from the quality alone

@@ -3,12 +3,15 @@
 #include "shaders/shared/quad.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 
 namespace grotto {
 namespace twin {
 using namespace glm;
 using namespace grotto::gpu;
+
+#include "shaders/shared/vbao_sectors.h"
 
 // The kernel's functions become members; its inputs are the G-buffer copies here.
 struct Kernel {
@@ -52,12 +55,20 @@ struct Kernel {
     }
 };
 
+// VBAO: the same kernel with each slice's bitmask (what vbao.comp compiles).
+struct VbaoKernel : Kernel {
+#define GROTTO_VBAO
+#include "shaders/shared/gtao_kernel.h"
+#undef GROTTO_VBAO
+};
+
 }  // namespace twin
 
-struct GtaoTwin::Kernel : twin::Kernel {};
+struct GtaoTwin::Kernel : twin::VbaoKernel {};
 
-GtaoTwin::GtaoTwin(const gpu::GtaoConstants& constants, std::vector<float> depthBuffer, std::vector<uint16_t> surface)
-    : kernel_(new Kernel) {
+GtaoTwin::GtaoTwin(const gpu::GtaoConstants& constants, std::vector<float> depthBuffer, std::vector<uint16_t> surface,
+                   bool vbao)
+    : kernel_(new Kernel), vbao_(vbao) {
     kernel_->gtao = constants;
     kernel_->depthBuffer = std::move(depthBuffer);
     kernel_->surface = std::move(surface);
@@ -66,6 +77,8 @@ GtaoTwin::GtaoTwin(const gpu::GtaoConstants& constants, std::vector<float> depth
 
 GtaoTwin::~GtaoTwin() { delete kernel_; }
 
-glm::vec2 GtaoTwin::pixel(glm::ivec2 p) const { return kernel_->gtaoPixel(p); }
+glm::vec2 GtaoTwin::pixel(glm::ivec2 p) const {
+    return vbao_ ? kernel_->VbaoKernel::gtaoPixel(p) : kernel_->twin::Kernel::gtaoPixel(p);
+}
 
 }  // namespace grotto

@@ -1,7 +1,7 @@
 #pragma once
-// The CPU twin of the GTAO main pass: the same kernel source (shaders/shared/
-// gtao_kernel.h), the same noise and the same depth MIP chain, run on a read-back
-// G-buffer. Tests use it to pin the GPU result.
+// The CPU twin of the GTAO and VBAO main passes: the same kernel source (shaders/
+// shared/gtao_kernel.h), the same noise and the same depth MIP chain, run on a
+// read-back G-buffer. Tests use it to pin the GPU result.
 #include "shaders/shared/gtao.h"
 
 #include <glm/glm.hpp>
@@ -14,8 +14,10 @@ namespace grotto {
 
 class GtaoTwin {
 public:
-    // depthBuffer: full-res reverse-Z values as stored; surface: full-res ids.
-    GtaoTwin(const gpu::GtaoConstants& constants, std::vector<float> depthBuffer, std::vector<uint16_t> surface);
+    // depthBuffer: full-res reverse-Z values as stored; surface: full-res ids;
+    // vbao: the kernel as vbao.comp compiles it (each slice a sector bitmask).
+    GtaoTwin(const gpu::GtaoConstants& constants, std::vector<float> depthBuffer, std::vector<uint16_t> surface,
+             bool vbao = false);
     ~GtaoTwin();
 
     // Visibility and packed edges at a half-resolution pixel.
@@ -24,6 +26,7 @@ public:
 private:
     struct Kernel;
     Kernel* kernel_;
+    bool vbao_;
 };
 
 }  // namespace grotto

@@ -46,7 +46,7 @@ struct Lighting {
 // The AO settings, as a world file's "ao" block: method, preset and any
 // overrides (unset = the preset's). Keys, ranges and meanings: docs/worlds.md.
 struct AoDesc {
-    std::string method = "gtao";   // gtao, voxel, hybrid, ssao, hbao (baselines) or off
+    std::string method = "gtao";   // gtao, voxel, hybrid, vbao, ssao, hbao (baselines) or off
     std::string quality = "high";  // low, medium, high, ultra, custom
     std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
         finalValuePower, depthMipOffset, strength, denoiseBlurBeta, maxDistance;

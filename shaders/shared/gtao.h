@@ -28,9 +28,12 @@ struct GtaoSettings {
     uint temporalHistory;           // most frames the temporal pass averages; 0 = no temporal pass
     float maxDistance;              // view depth, world units, where AO has faded out over the
                                     // last tenth; farther pixels skip the search. 0 = no limit
-    uint pad1, pad2;
+    float thickness;                // VBAO: how deep occluders are (world units, or x view depth)
+    uint thicknessMode;             // VBAO: kVbaoThicknessConstant or kVbaoThicknessDistance
 };
 GROTTO_STATIC_ASSERT(sizeof(GtaoSettings) == 64);
+#define kVbaoThicknessConstant 0u
+#define kVbaoThicknessDistance 1u
 
 // What the GTAO passes need besides the settings, all at half resolution.
 struct GtaoConstants {

@@ -129,6 +129,32 @@ vec3 gtaoViewNormal(ivec2 pixel) {
     return vec3(gtao.viewNormals[surfaceKey(gtaoSurface(pixel * int(gtao.scale))) - 1u]);
 }
 
+#ifdef GROTTO_VBAO
+// How far behind a depth sample the solid it belongs to ends, as the view depth
+// of its back: the settings' thickness, in world units (constant) or as a share
+// of the sample's depth (distance).
+float vbaoBackDepth(float front) {
+    float t = gtao.settings.thickness;
+    return gtao.settings.thicknessMode == kVbaoThicknessDistance ? front * (1.0f + t) : front + t;
+}
+
+// The sectors one sample hides: the angles of its front and of its back, the
+// point its own view ray leaves the solid (view positions scale with view depth
+// along a pixel's ray). side: +1 for samples toward the slice's direction, -1
+// against. The falloff weight pulls the front toward the hemisphere's edge as
+// GTAO's weight pulls a horizon, so with no back (infinite thickness) the two
+// agree, a thicker occluder never hides less, and a weight of 0 hides nothing.
+uint vbaoSampleSectors(vec3 position, vec3 delta, float weight, vec3 viewVec, float n, float side) {
+    vec3 front = position + delta;
+    float frontDepth = -front.z;
+    vec3 backDelta = front * (vbaoBackDepth(frontDepth) / max(frontDepth, 1e-30f)) - position;
+    float thetaFront = side * acos(clamp(dot(normalize(delta), viewVec), -1.0f, 1.0f));
+    float thetaBack = side * acos(clamp(dot(normalize(backDelta), viewVec), -1.0f, 1.0f));
+    float faded = mix(n + side * kVbaoHalfPi, thetaFront, weight);
+    return side * (thetaBack - faded) > 0.0f ? vbaoOccluded(faded, thetaBack, n) : 0u;
+}
+
+#endif
 // Visibility in [0, 1] (1 = open) at a half-resolution pixel, and its packed edges.
 vec2 gtaoPixel(ivec2 pixel) {
     GtaoSettings s = gtao.settings;
@@ -175,6 +201,9 @@ vec2 gtaoPixel(ivec2 pixel) {
         // The hemisphere's own horizons: cos(n + pi/2) = -sin n, cos(n - pi/2) = sin n.
         float lowCos0 = -sinN, lowCos1 = sinN;
         float horizonCos0 = lowCos0, horizonCos1 = lowCos1;
+#ifdef GROTTO_VBAO
+        uint occluded = 0u;  // the slice's sectors hidden by some sample's front-to-back span
+#endif
 
         for (uint stepIndex = 0u; stepIndex < kGtaoSteps; ++stepIndex) {
             // Golden-ratio jitter per step decorrelates steps sharing the pixel's noise.
@@ -207,14 +236,22 @@ vec2 gtaoPixel(ivec2 pixel) {
             float inside1 = all(equal(p1, c1)) ? 1.0f : 0.0f;
             float weight0 = gtaoSaturate(falloff0 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon0, normal) * 32.0f) * inside0;
             float weight1 = gtaoSaturate(falloff1 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon1, normal) * 32.0f) * inside1;
+#ifdef GROTTO_VBAO
+            occluded |= vbaoSampleSectors(position, delta0, weight0, viewVec, n, 1.0f);
+            occluded |= vbaoSampleSectors(position, delta1, weight1, viewVec, n, -1.0f);
+#else
             float shc0 = mix(lowCos0, dot(horizon0, viewVec), weight0);
             float shc1 = mix(lowCos1, dot(horizon1, viewVec), weight1);
             horizonCos0 = max(horizonCos0, shc0);
             horizonCos1 = max(horizonCos1, shc1);
+#endif
         }
         // Cosine-weighted integral of the visible arc between the two horizons, and
         // of the whole arc (horizons at n -/+ pi/2, where it is cos n + n sin n).
         projectedLength = mix(projectedLength, 1.0f, 0.05f);
+#ifdef GROTTO_VBAO
+        visible += vbaoVisibility(occluded, n, projectedLength);
+#else
         // cos(2h - n) by the angle formulas from cos h, which the search found, so
         // only the angles themselves need an acos.
         float c0 = clamp(horizonCos1, -1.0f, 1.0f), c1 = clamp(horizonCos0, -1.0f, 1.0f);
@@ -225,6 +262,7 @@ vec2 gtaoPixel(ivec2 pixel) {
         float arc0 = (cosNorm + 2.0f * h0 * sinN - cos2h0n) / 4.0f;
         float arc1 = (cosNorm + 2.0f * h1 * sinN - cos2h1n) / 4.0f;
         visible += projectedLength * (arc0 + arc1);
+#endif
         unoccluded += projectedLength * (cosNorm + n * sinN);
     }
     // Normalised by the unoccluded integral of the same slices: an open plane is

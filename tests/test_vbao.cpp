@@ -1,0 +1,111 @@
+// VBAO: the GPU pass against its CPU twin, and the analytic cases: an open floor
+// stays open, a closed corner stays dark, and an occluder of known thickness
+// hides only what the reference says it hides.
+#include "engine/lab/gtao_twin.h"
+#include "engine/lab/reference_view.h"
+#include "tests/ao_fixture.h"
+#include "tests/scenes.h"
+#include "tests/test_util.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace grotto {
+namespace {
+
+using test::Rendered;
+
+class Vbao : public test::AoFixture {
+protected:
+    static AoOptions vbao(const std::string& quality, double radius = 4.0, double thickness = 1.0) {
+        AoOptions o = options(quality, radius, AoMethod::Vbao);
+        o.estimator.thickness = float(thickness);
+        return o;
+    }
+};
+
+TEST_F(Vbao, GpuMatchesCpuTwinForEveryPreset) {
+    const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
+    for (const char* quality : {"low", "medium", "high", "ultra", "full-res high", "distance"}) {
+        AoOptions ao = vbao(quality[0] == 'f' || quality[0] == 'd' ? "high" : quality, 4.0, 4.0);
+        ao.chain.fullResolution = quality[0] == 'f';
+        if (quality[0] == 'd') {
+            ao.estimator.thicknessMode = voxel::ThicknessMode::Distance;
+            ao.estimator.thickness = 0.5f;
+        }
+        const Rendered r = render(world, world.camera("table", 16.0 / 9.0), 160, 90, ao);
+        const GtaoTwin twin(r.constants, r.img.depthBuffer, r.img.surfaceIds, true);
+        const glm::uvec2 half = r.constants.halfSize;
+        int compared = 0, occluded = 0;
+        for (uint32_t y = 0; y < half.y; y += 3)
+            for (uint32_t x = 0; x < half.x; x += 3) {
+                const glm::vec2 cpu = twin.pixel(glm::ivec2(x, y));
+                const float* gpu = &r.img.aoRawHalf[2 * (size_t(y) * half.x + x)];
+                // A sector boundary can fall between the GPU's and the CPU's rounding
+                // of an angle: one sector of one slice is at most 1 / 32 of the pixel.
+                EXPECT_NEAR(gpu[0], cpu.x, 1.0 / 32.0 + 1e-3) << quality << " pixel " << x << "," << y;
+                EXPECT_EQ(gpu[1], cpu.y) << quality << " edges at " << x << "," << y;
+                occluded += cpu.x < 0.9f;
+                ++compared;
+            }
+        EXPECT_GT(compared, 300);
+        EXPECT_GT(occluded, 20) << quality << ": the view must have occlusion to compare";
+    }
+}
+
+TEST_F(Vbao, FlatFloorStaysOpenFromStraightDownToGrazing) {
+    const voxel::World floor = test::makeVoxelWorld({-256, -1, -256}, {255, -1, 255}, [](int, int, int) { return true; });
+    for (double degrees : {0.0, 45.0, 80.0, 85.0, 89.0, 89.5}) {
+        const double a = glm::radians(degrees);
+        const glm::dvec3 eye(0.0, 1.5, 0.0);
+        const glm::dvec3 dir(std::sin(a), -std::cos(a), 0.0);
+        const Rendered r = render(floor, test::lookAt(eye, eye + dir, 70.0), 192, 108, vbao("high"));
+        int floorPixels = 0;
+        for (size_t i = 0; i < r.img.ao.size(); ++i) {
+            if (!std::isfinite(r.img.depth[i])) continue;
+            ++floorPixels;
+            EXPECT_GE(r.img.ao[i], 0.99f) << degrees << " degrees, pixel " << i % 192 << "," << i / 192;
+            EXPECT_GE(r.img.aoRaw[i], 0.99f) << degrees << " degrees, raw";
+            if (r.img.ao[i] < 0.99f || r.img.aoRaw[i] < 0.99f) break;  // one report per view is enough
+        }
+        EXPECT_GT(floorPixels, 1000) << degrees;
+    }
+}
+
+// Thickness only ever opens what GTAO's horizon hides: with no back (an infinite
+// thickness) VBAO is GTAO up to its sectors, and a thicker occluder never hides
+// less. A closed corner, seen along its bisector, within two voxels of the line.
+TEST_F(Vbao, InfinitelyThickIsGtaoAndThickerNeverHidesLess) {
+    const voxel::World corner = test::makeVoxelWorld({-40, -40, -60}, {40, 40, 60}, [](int x, int y, int) {
+        return (y < 0 && x >= -40) || (x < 0 && y >= 0);
+    });
+    const voxel::CameraDesc cam = test::lookAt({14, 14, 24}, {0, 0, 0}, 60.0);
+    auto nearTheLine = [&](const AoOptions& ao) {
+        const Rendered r = render(corner, cam, 192, 144, ao);
+        double sum = 0.0;
+        int n = 0;
+        for (uint32_t y = 0; y < r.img.height; ++y)
+            for (uint32_t x = 0; x < r.img.width; ++x) {
+                const size_t i = size_t(y) * r.img.width + x;
+                if (!std::isfinite(r.img.depth[i])) continue;
+                const glm::dvec3 w = worldAt(r, x, y);
+                const double d = r.img.normal[3 * i + 1] > 0.5f ? w.x : w.y;  // from the corner line
+                if (std::abs(w.z) < 8 && d < 2.0) sum += r.img.aoRaw[i], ++n;
+            }
+        EXPECT_GT(n, 300);
+        return sum / std::max(n, 1);
+    };
+    const double gtao = nearTheLine(options("high"));
+    double previous = 1.0;
+    for (double thickness : {0.5, 1.0, 2.0, 4.0, 8.0, 1e6}) {
+        const double v = nearTheLine(vbao("high", 4.0, thickness));
+        std::printf("closed corner, thickness %g: VBAO %.3f (GTAO %.3f)\n", thickness, v, gtao);
+        EXPECT_LE(v, previous + 1e-3) << "thickness " << thickness << " hides less than a thinner one";
+        previous = v;
+    }
+    EXPECT_LT(previous, 0.8) << "the corner must stay dark";
+    EXPECT_NEAR(previous, gtao, 1.0 / 32.0) << "infinitely thick VBAO is GTAO within a sector";
+}
+
+}  // namespace
+}  // namespace grotto
