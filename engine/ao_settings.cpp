@@ -13,6 +13,13 @@ namespace {
 
 const voxel::Setting& methodRow() { return voxel::setting("ao.method"); }
 
+voxel::ThicknessMode parseThicknessMode(const std::string& name, const std::string& where) {
+    const voxel::Setting& row = voxel::setting("ao.thickness");
+    for (size_t i = 0; i < row.choices.size(); ++i)
+        if (name == row.choices[i]) return voxel::ThicknessMode(i);
+    throw Error(where, "unknown AO thickness '" + name + "'", "accepted: " + acceptedText(row));
+}
+
 const voxel::AoPreset* findPreset(const std::string& quality) {
     for (const voxel::AoPreset& p : voxel::kAoPresets)
         if (quality == p.name) return &p;
@@ -106,7 +113,10 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
                   kDefaultRadiusVoxels * voxel::kMaxVoxelSize <= kMaxAoRadius);
     o.estimator = estimatorPreset(d.quality, d.radius ? *d.radius : kDefaultRadiusVoxels * voxelSize);
     o.estimator.rays = voxelRaysPreset(o.method, d.quality);
-    o.estimator.thickness = float(kDefaultThicknessVoxels * voxelSize);
+    o.estimator.thicknessMode = parseThicknessMode(d.thickness, where);
+    o.estimator.thickness = float(o.estimator.thicknessMode == voxel::ThicknessMode::Distance
+                                      ? kDefaultThicknessDistance
+                                      : kDefaultThicknessVoxels * voxelSize);
     applyAoOverrides(d, o);
     validateAo(o, where);
     return o;

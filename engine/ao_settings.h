@@ -43,8 +43,9 @@ uint32_t voxelRaysPreset(AoMethod method, const std::string& quality);
 // within these bounds. The default radius is four voxels.
 inline constexpr double kMinAoRadius = 1e-15, kMaxAoRadius = 1e15;
 inline constexpr double kDefaultRadiusVoxels = 4.0;
-// VBAO's default constant thickness: one voxel behind each depth sample.
-inline constexpr double kDefaultThicknessVoxels = 1.0;
+// VBAO's default thickness: one voxel behind each depth sample (constant), or a
+// tenth of its view depth (distance).
+inline constexpr double kDefaultThicknessVoxels = 1.0, kDefaultThicknessDistance = 0.1;
 
 // Frames the temporal pass averages by default.
 inline constexpr uint32_t kDefaultTemporalHistory = voxel::ChainSettings{}.temporalHistory;

@@ -107,5 +107,30 @@ TEST_F(Vbao, InfinitelyThickIsGtaoAndThickerNeverHidesLess) {
     EXPECT_NEAR(previous, gtao, 1.0 / 32.0) << "infinitely thick VBAO is GTAO within a sector";
 }
 
+// The world file's ao.thickness and ao.thickness_value, with their defaults.
+TEST(VbaoSettings, ThicknessModesTheirDefaultsAndBadNames) {
+    voxel::AoDesc desc;
+    desc.method = "vbao";
+    AoOptions constant = aoOptionsFor(desc, 0.25, "w.json");
+    EXPECT_EQ(constant.estimator.thicknessMode, voxel::ThicknessMode::Constant);
+    EXPECT_FLOAT_EQ(constant.estimator.thickness, 0.25f) << "one voxel";
+    desc.thickness = "distance";
+    AoOptions distance = aoOptionsFor(desc, 0.25, "w.json");
+    EXPECT_EQ(distance.estimator.thicknessMode, voxel::ThicknessMode::Distance);
+    EXPECT_FLOAT_EQ(distance.estimator.thickness, 0.1f);
+    desc.thicknessValue = 0.3;
+    EXPECT_FLOAT_EQ(aoOptionsFor(desc, 0.25, "w.json").estimator.thickness, 0.3f);
+    EXPECT_EQ(gpuSettings(aoOptionsFor(desc, 0.25, "w.json")).thicknessMode, kVbaoThicknessDistance);
+    desc.thickness = "voxel";
+    try {
+        aoOptionsFor(desc, 0.25, "w.json");
+        ADD_FAILURE() << "an unknown thickness mode was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("w.json"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("'voxel'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("distance"), std::string::npos) << e.what();
+    }
+}
+
 }  // namespace
 }  // namespace grotto

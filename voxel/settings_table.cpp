@@ -20,6 +20,7 @@ constexpr auto kQualities = [] {
     return names;
 }();
 constexpr std::string_view kToneMaps[] = {"filmic", "linear"};  // ToneMap's order
+constexpr std::string_view kThicknessModes[] = {"constant", "distance"};  // ThicknessMode's order
 
 // Colours are linear RGB; above 1 is allowed (a bright sun), up to 1000.
 constexpr double kMaxRadiance = 1e3;
@@ -100,6 +101,15 @@ const Setting kSettings[] = {
      .value = &EstimatorSettings::maxDistance, .lo = 0.0, .hi = 1e7, .uiLo = 0.0, .uiHi = 1e3,
      .help = "View depth where AO has faded out", .accepted = "0 (no limit) to 1e7 world units",
      .manifest = "max_distance", .invalidates = kHistory},
+    {.key = "ao.thickness", .flag = "--thickness", .type = T::Choice, .desc = &AoDesc::thickness,
+     .help = "VBAO: how deep an occluder reaches behind what the depth buffer shows (constant: "
+             "--thickness-value world units; distance: --thickness-value times its view depth)",
+     .manifest = "thickness", .invalidates = kHistory, .choices = kThicknessModes},
+    {.key = "ao.thickness_value", .flag = "--thickness-value", .type = T::Number, .desc = &AoDesc::thicknessValue,
+     .value = &EstimatorSettings::thickness, .lo = 0.0, .hi = 1e7, .uiLo = 0.0, .uiHi = 16.0,
+     .help = "VBAO: the thickness, in world units (constant) or times the view depth (distance)",
+     .accepted = "0 to 1e7", .defaultNote = "1 voxel (constant), 0.1 (distance)", .manifest = "thickness_value",
+     .invalidates = kHistory},
     {.key = "ao.denoise_blur_beta", .flag = "--denoise-blur-beta", .type = T::Number,
      .desc = &AoDesc::denoiseBlurBeta, .value = &ChainSettings::denoiseBlurBeta, .lo = 0.0, .hi = 10.0,
      .help = "Centre weight of the denoise blur", .manifest = "denoise_blur_beta", .invalidates = kHistory},
