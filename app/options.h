@@ -55,7 +55,7 @@ voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::strin
 // one per setting of voxel/settings_table.cpp that has a flag; unset ones keep
 // the world's values.
 struct AoFlags {
-    voxel::AoDesc set{.method = {}, .quality = {}};  // the AO settings given; method and quality empty when not
+    voxel::AoDesc set{.method = {}, .quality = {}, .thickness = {}};  // the AO settings given; choices empty when not
     nlohmann::ordered_json detail = nlohmann::ordered_json::object();  // the "detail" block's fields given
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);

@@ -35,6 +35,11 @@ const char* aoMethodName(AoMethod method);
 AoMethod parseAoMethod(const std::string& name, const std::string& where);
 // Does the method trace rays through the world's voxels (and so need its occupancy)?
 inline bool tracesVoxels(AoMethod m) { return m == AoMethod::Voxel || m == AoMethod::Hybrid; }
+// Does VBAO read its occluders' thickness from the voxels (a traced thickness
+// atlas beside the depth MIPs, and so the world's occupancy)?
+inline bool voxelThickness(const AoOptions& ao) {
+    return ao.enabled && ao.method == AoMethod::Vbao && ao.estimator.thicknessMode == voxel::ThicknessMode::Voxels;
+}
 // Rays per AO pixel per frame of a quality preset (docs/tradeoff.md measured them).
 uint32_t voxelRaysPreset(AoMethod method, const std::string& quality);
 

@@ -49,7 +49,7 @@ void Renderer::createPasses() {
     if (normalsOn_ && !normalsPass_) normalsPass_ = std::make_unique<NormalsPass>(ctx);
     if (shadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows());
     if (!ao_.enabled) return;
-    if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx);
+    if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx, voxelThickness(ao_));
     if (!estimatorPass_) estimatorPass_ = std::make_unique<EstimatorPass>(ctx, ao_);
     if (!denoisePass_) denoisePass_ = std::make_unique<DenoisePass>(ctx);
     if (!upsamplePass_) upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
@@ -146,7 +146,7 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
 }
 
 void Renderer::requireOccupancy(const AoOptions& ao) const {
-    if (ao.enabled && tracesVoxels(ao.method) && !scene_.occupancy)
+    if ((ao.enabled && tracesVoxels(ao.method) || voxelThickness(ao)) && !scene_.occupancy)
         throw Error("AO settings", std::string("--ao ") + aoMethodName(ao.method) + " traces the world's voxels",
                     "upload the scene from its world (uploadScene(ctx, world)), not from a mesh alone");
 }
@@ -166,6 +166,7 @@ void Renderer::setAo(const AoOptions& ao) {
     const bool denoise = old.chain.denoisePasses != ao_.chain.denoisePasses;
     if (chain) compositePass_.reset();
     if (chain || estimator) estimatorPass_.reset();
+    if (voxelThickness(old) != voxelThickness(ao_)) prefilterPass_.reset();
     if (chain || denoise || wasTemporal != temporal()) temporalPass_.reset();
     // Moving objects get motion vectors only with the temporal pass: its G-buffer pass and target follow it.
     const bool motionChanged = objects_ && objects_->moving && wasTemporal != temporal();
@@ -347,8 +348,10 @@ DepthTiles Renderer::reusableTiles(const Camera& camera) const {
 
 void Renderer::recordAo(VkCommandBuffer cmd) {
     const AoTargets& ao = targets_.ao();
-    pass(cmd, DepthPrefilterPass::declare(),
-         [&] { prefilterPass_->record(cmd, image(TargetId::Depth), ao, slot().aoConstants); });
+    pass(cmd, prefilterPass_->declare(), [&] {
+        prefilterPass_->record(cmd, image(TargetId::Depth), image(TargetId::Surface), ao, slot().aoConstants,
+                               slot().traceConstants, scene_.occupancy.get());
+    });
     pass(cmd, estimatorPass_->declare(), [&] {
         estimatorPass_->record(cmd, image(TargetId::Surface), ao, slot().aoConstants, slot().traceConstants,
                                scene_.occupancy.get());

@@ -16,6 +16,10 @@ layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D aoEdges;  // AO,
 ivec2 gtaoMipOffset(int mip);  // in the kernel below
 
 float gtaoDepth(ivec2 texel, int mip) { return imageLoad(depthAtlas, (texel >> mip) + gtaoMipOffset(mip)).r; }
+#ifdef GROTTO_VBAO
+layout(set = 0, binding = 4, r32f) uniform readonly image2D thicknessAtlas;  // the depth atlas's layout
+float gtaoThickness(ivec2 texel, int mip) { return imageLoad(thicknessAtlas, (texel >> mip) + gtaoMipOffset(mip)).r; }
+#endif
 uint gtaoSurface(ivec2 pixel) { return texelFetch(surfaceTex, pixel, 0).r; }
 
 #include "shared/gtao_kernel.h"

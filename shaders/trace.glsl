@@ -74,6 +74,27 @@ VoxelRayStart traceStart(vec3 viewPosition, uint face, vec3 worldNormal) {
     return face < 6u ? voxelRayOpenStart(s, int(face >> 1)) : s;
 }
 
+// How deep the solid behind a world face runs along the view ray through a
+// camera-relative view-space point on it, in world units, up to maxT: the ray
+// starts in the solid voxel behind the face, a hair past its plane.
+float traceThickness(vec3 viewPosition, uint face, float maxT) {
+    vec3 world = trace.viewToWorld[0].xyz * viewPosition.x + trace.viewToWorld[1].xyz * viewPosition.y +
+                 trace.viewToWorld[2].xyz * viewPosition.z;
+    vec3 p = world * trace.cameraFraction.w + trace.cameraFraction.xyz;
+    ivec3 cell = ivec3(floor(p));
+    vec3 fraction = p - vec3(cell);
+    uint axis = face >> 1;
+    int plane = int(round(p[axis]));
+    bool positive = (face & 1u) == 0u;
+    cell[axis] = positive ? plane - 1 : plane;
+    fraction[axis] = positive ? 1.0 - trace.normalOffset : trace.normalOffset;
+    VoxelRayStart s;
+    s.voxel = trace.cameraCell.xyz + cell;
+    s.fraction = clamp(fraction, vec3(0.0), vec3(1.0));
+    float voxels = voxelRayExit(s, normalize(world), maxT * trace.cameraFraction.w);
+    return voxels / trace.cameraFraction.w;
+}
+
 // The solid voxel a ray from `start` along the unit direction d enters within tMax
 // voxels (t -1: none): the exact traversal (shared/voxel_ray.h), within the world's
 // bounds. From a world face the start voxel is tested (it is the open one in front

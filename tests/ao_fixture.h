@@ -20,7 +20,9 @@ protected:
     Rendered render(const voxel::World& world, const voxel::CameraDesc& cd, uint32_t w, uint32_t h,
                     const AoOptions& ao) {
         Rendered r{{}, makeCamera(cd, w, h), {}};
-        auto scene = uploadScene(ctx(), world.mesh(), world.desc());
+        // The world's occupancy only where the AO traces it.
+        auto scene = tracesVoxels(ao.method) || voxelThickness(ao) ? uploadScene(ctx(), world)
+                                                                   : uploadScene(ctx(), world.mesh(), world.desc());
         Renderer renderer(ctx(), *scene, world.desc().lighting, ao, w, h);
         renderer.render(r.camera);
         r.img = renderer.readback(r.camera, true);

@@ -47,6 +47,11 @@ TEST_F(CliErrors, VbaoIsChosenByTheFlagOrTheWorldFile) {
     ASSERT_EQ(gtao.exitCode, 0) << gtao.err;
     EXPECT_EQ(bytes(dir_ / "flag.png"), bytes(dir_ / "file.png"));
     EXPECT_NE(bytes(dir_ / "flag.png"), bytes(dir_ / "gtao.png"));
+    // And the thickness mode by its flag: the voxels' own differs from one voxel everywhere.
+    test::RunResult voxels =
+        runGrotto("render " + rooms.string() + " --ao vbao --thickness voxels" + size + (dir_ / "voxels.png").string());
+    ASSERT_EQ(voxels.exitCode, 0) << voxels.err;
+    EXPECT_NE(bytes(dir_ / "flag.png"), bytes(dir_ / "voxels.png"));
 }
 
 TEST_F(CliErrors, FlythroughResumesButNeverMixesSequences) {

@@ -107,6 +107,48 @@ TEST_F(Vbao, InfinitelyThickIsGtaoAndThickerNeverHidesLess) {
     EXPECT_NEAR(previous, gtao, 1.0 / 32.0) << "infinitely thick VBAO is GTAO within a sector";
 }
 
+// With the thickness the voxels give: a closed corner (walls forty voxels deep)
+// stays as dark as GTAO has it, as an infinite thickness would; behind a pole one
+// voxel thin the wall opens up against an infinite thickness, since light passes
+// behind the pole.
+TEST_F(Vbao, VoxelThicknessIsDeepInWallsAndThinInPoles) {
+    const voxel::World corner = test::makeVoxelWorld({-40, -40, -60}, {40, 40, 60}, [](int x, int y, int) {
+        return (y < 0 && x >= -40) || (x < 0 && y >= 0);
+    });
+    AoOptions voxels = vbao("high"), infinite = vbao("high", 4.0, 1e6);
+    voxels.estimator.thicknessMode = voxel::ThicknessMode::Voxels;
+    const voxel::CameraDesc cornerView = test::lookAt({14, 14, 24}, {0, 0, 0}, 60.0);
+    const Rendered g = render(corner, cornerView, 192, 144, options("high")), v = render(corner, cornerView, 192, 144, voxels);
+    double gSum = 0, vSum = 0;
+    int n = 0;
+    for (size_t i = 0; i < v.img.ao.size(); ++i) {
+        if (!std::isfinite(v.img.depth[i])) continue;
+        const glm::dvec3 w = worldAt(v, uint32_t(i % 192), uint32_t(i / 192));
+        if (std::abs(w.z) < 8 && (v.img.normal[3 * i + 1] > 0.5f ? w.x : w.y) < 2.0) gSum += g.img.ao[i], vSum += v.img.ao[i], ++n;
+    }
+    ASSERT_GT(n, 300);
+    std::printf("closed corner: GTAO %.3f, VBAO with voxel thickness %.3f\n", gSum / n, vSum / n);
+    EXPECT_NEAR(vSum / n, gSum / n, 1.0 / 32.0);
+
+    // A pole one voxel square, a voxel in front of a wall, seen from the side.
+    const voxel::World pole = test::makeVoxelWorld({-20, -2, -20}, {20, 12, 20}, [](int x, int y, int z) {
+        return y < 0 || z < -6 || (x == 0 && z == -5 && y < 10);
+    });
+    const voxel::CameraDesc poleView = test::lookAt({6, 4, 6}, {0, 4, -6}, 50.0);
+    const Rendered pv = render(pole, poleView, 192, 144, voxels), pi = render(pole, poleView, 192, 144, infinite);
+    double thin = 0, thick = 0;
+    int m = 0;
+    for (size_t i = 0; i < pv.img.ao.size(); ++i) {
+        if (!std::isfinite(pv.img.depth[i]) || pv.img.normal[3 * i + 2] < 0.5f) continue;  // the wall's face (+z)
+        const glm::dvec3 w = worldAt(pv, uint32_t(i % 192), uint32_t(i / 192));
+        if (w.z > -5.5 || std::abs(w.x) > 3.0 || w.y < 2.0 || w.y > 8.0) continue;  // behind the pole
+        thin += pv.img.ao[i], thick += pi.img.ao[i], ++m;
+    }
+    ASSERT_GT(m, 200);
+    std::printf("wall behind a pole (%d pixels): voxel thickness %.3f, infinite %.3f\n", m, thin / m, thick / m);
+    EXPECT_GT(thin / m, thick / m + 0.02) << "light must pass behind a pole one voxel thin";
+}
+
 // The world file's ao.thickness and ao.thickness_value, with their defaults.
 TEST(VbaoSettings, ThicknessModesTheirDefaultsAndBadNames) {
     voxel::AoDesc desc;

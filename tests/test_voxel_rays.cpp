@@ -187,6 +187,62 @@ TEST_F(VoxelRays, GpuAndCpuAgreeOnRaysAlongFacesAndThroughEdgesAndCorners) {
     EXPECT_GT(longHits, rays.size() / 50);  // and rays cross empty bricks before they hit
 }
 
+// How far rays run through solid voxels (VBAO's voxels thickness): across a slab
+// five voxels thick exactly 5 / |d.y| from its bottom face, capped at the length
+// asked for, 0 from an open voxel; and the GPU and the CPU agree bit for bit on
+// random starts in a random world, along faces and through edges and corners.
+TEST_F(VoxelRays, SolidRunsCrossSlabsExactlyAndAgreeOnGpuAndCpu) {
+    const voxel::World slab = test::makeVoxelWorld({-40, -2, -40}, {40, 8, 40}, [](int, int y, int) { return y >= 0 && y < 5; });
+    for (glm::vec3 d : {glm::vec3(0, 1, 0), glm::vec3(0.5f, 1, 0), glm::vec3(1.3f, 1, -0.4f), glm::vec3(-2, 1, 3)}) {
+        d = glm::normalize(d);
+        const voxel::RayStart bottom{glm::ivec3(0, 0, 0), glm::vec3(0.5f, 0.0f, 0.5f)};
+        EXPECT_NEAR(slab.solidRun(bottom, d, 1e3), 5.0 / d.y, 1e-4 * 5.0 / d.y) << d.x << "," << d.y << "," << d.z;
+        EXPECT_FLOAT_EQ(float(slab.solidRun(bottom, d, 2.0)), 2.0f) << "capped";
+        EXPECT_EQ(slab.solidRun({glm::ivec3(0, 6, 0), glm::vec3(0.5f)}, d, 1e3), 0.0) << "from an open voxel";
+    }
+
+    std::mt19937 rng(4242);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    const glm::ivec3 lo(-70, -20, -40), hi(-40, 12, -10);
+    const voxel::World world = test::makeVoxelWorld(lo, hi, [&](int x, int y, int z) {
+        if (((x >> 3) + (y >> 3) + (z >> 3)) % 3 == 0) return false;  // empty bricks
+        return u(rng) < 0.6f;  // mostly solid: runs of several voxels
+    });
+    const GpuOccupancy occupancy(ctx(), world);
+    TraceQuery query(ctx());
+    const float fractions[] = {0.0f, 1.0f, 0.5f, 1e-4f, 1.0f - 1e-4f, 0.25f};
+    const std::vector<glm::vec3> ties = tieDirections();
+    std::uniform_int_distribution<int> x(lo.x, hi.x), y(lo.y, hi.y), z(lo.z, hi.z), pick(0, 5);
+    std::vector<QueryRay> rays;
+    while (rays.size() < 20000) {
+        QueryRay r;
+        r.voxel = glm::ivec4(x(rng), y(rng), z(rng), -2);
+        if (!world.solid(glm::ivec3(r.voxel))) continue;
+        for (int a = 0; a < 3; ++a) r.fraction[a] = fractions[pick(rng)];
+        r.fraction.w = rays.size() % 4 == 0 ? 2.0f + 10.0f * u(rng) : 1e30f;
+        glm::vec3 d = ties[rays.size() % ties.size()];
+        if (rays.size() % 5 == 4) d = glm::normalize(glm::vec3(u(rng), u(rng), u(rng)) * 2.0f - 1.0f);
+        r.direction = glm::vec4(d, 0.0f);
+        rays.push_back(r);
+    }
+    const std::vector<Hit> gpu = query.trace(occupancy, rays);
+    size_t differ = 0, longRuns = 0;
+    for (size_t i = 0; i < rays.size(); ++i) {
+        const QueryRay& r = rays[i];
+        const float cpu = float(world.solidRun({glm::ivec3(r.voxel), glm::vec3(r.fraction)}, glm::vec3(r.direction),
+                                               double(r.fraction.w)));
+        longRuns += cpu > 2.0f;
+        if (gpu[i].t == cpu) continue;
+        if (++differ <= 10)
+            ADD_FAILURE() << "run " << i << " from voxel (" << r.voxel.x << ", " << r.voxel.y << ", " << r.voxel.z
+                          << "): GPU " << gpu[i].t << ", CPU " << cpu;
+    }
+    std::printf("[ measured ] %zu solid runs (%zu longer than 2 voxels), %zu differ between GPU and CPU\n", rays.size(),
+                longRuns, differ);
+    EXPECT_EQ(differ, 0u);
+    EXPECT_GT(longRuns, rays.size() / 10);
+}
+
 // Solid voxels that meet only along an edge (two) or at a corner (six around it):
 // a ray from the open voxel before them through that edge or corner is blocked
 // there, on the GPU and the CPU alike; and a ray from a floor point at the foot of

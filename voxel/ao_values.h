@@ -10,7 +10,7 @@ namespace grotto::voxel {
 
 // How VBAO sizes an occluder behind its depth sample (shaders/shared/gtao.h's
 // kVbaoThickness* values, in this order).
-enum class ThicknessMode : uint32_t { Constant, Distance };
+enum class ThicknessMode : uint32_t { Constant, Distance, Voxels };
 
 struct EstimatorSettings {
     float radius = 4.0f;  // world units; a world's default is 4 of its voxels
@@ -25,7 +25,7 @@ struct EstimatorSettings {
     float maxDistance = 0.0f;       // no limit
     // VBAO: how far behind each depth sample its occluder reaches, in world units
     // (constant; a world's default is one of its voxels) or as a share of the
-    // sample's view depth (distance).
+    // sample's view depth (distance); voxels reads it from the world's voxels.
     float thickness = 1.0f;
     ThicknessMode thicknessMode = ThicknessMode::Constant;
     uint32_t slices = 3, steps = 3;  // the loop shape: the quality preset's (these are high's)

@@ -58,6 +58,15 @@ std::optional<RayHit> World::raycast(const RayStart& start, glm::vec3 direction,
     return RayHit{double(hit.t) * w.voxelSize, hit.voxel, hit.face};
 }
 
+double World::solidRun(const RayStart& start, glm::vec3 direction, double maxDistance) const {
+    const Impl& w = *impl_;
+    if (!(std::abs(glm::length(direction) - 1.0f) < 1e-3f))
+        throw Error::internal("solidRun", "ray direction must be a unit vector");
+    VdbRays rays{w.solid->getConstAccessor()};
+    const float maxT = float(std::min(maxDistance / w.voxelSize, 1e15));
+    return double(rays.voxelRayExit(kernelStart(start), direction, maxT)) * w.voxelSize;
+}
+
 RayStart World::faceRayStart(const RayStart& start, int normalAxis) const {
     if (normalAxis < 0 || normalAxis > 2) throw Error::internal("faceRayStart", "the face's axis must be 0, 1 or 2");
     VdbRays rays{impl_->solid->getConstAccessor()};

@@ -20,7 +20,7 @@ constexpr auto kQualities = [] {
     return names;
 }();
 constexpr std::string_view kToneMaps[] = {"filmic", "linear"};  // ToneMap's order
-constexpr std::string_view kThicknessModes[] = {"constant", "distance"};  // ThicknessMode's order
+constexpr std::string_view kThicknessModes[] = {"constant", "distance", "voxels"};  // ThicknessMode's order
 
 // Colours are linear RGB; above 1 is allowed (a bright sun), up to 1000.
 constexpr double kMaxRadiance = 1e3;
@@ -103,8 +103,9 @@ const Setting kSettings[] = {
      .manifest = "max_distance", .invalidates = kHistory},
     {.key = "ao.thickness", .flag = "--thickness", .type = T::Choice, .desc = &AoDesc::thickness,
      .help = "VBAO: how deep an occluder reaches behind what the depth buffer shows (constant: "
-             "--thickness-value world units; distance: --thickness-value times its view depth)",
-     .manifest = "thickness", .invalidates = kHistory, .choices = kThicknessModes},
+             "--thickness-value world units; distance: --thickness-value times its view depth; voxels: "
+             "as far as its voxels go along the view ray)",
+     .manifest = "thickness", .invalidates = kEstimatorPipeline | kTargets | kHistory, .choices = kThicknessModes},
     {.key = "ao.thickness_value", .flag = "--thickness-value", .type = T::Number, .desc = &AoDesc::thicknessValue,
      .value = &EstimatorSettings::thickness, .lo = 0.0, .hi = 1e7, .uiLo = 0.0, .uiHi = 16.0,
      .help = "VBAO: the thickness, in world units (constant) or times the view depth (distance)",
@@ -231,7 +232,9 @@ void resetPresetShaped(AoDesc& ao) {
 
 void overlayAo(const AoDesc& over, AoDesc& ao) {
     for (const Setting& s : kSettings)
-        std::visit(Overloaded{[&](std::string AoDesc::*) {},
+        std::visit(Overloaded{[&](std::string AoDesc::*m) {
+                                  if (!(over.*m).empty()) ao.*m = over.*m;  // a choice given
+                              },
                               [&](auto AoDesc::*m) {
                                   if (over.*m) ao.*m = over.*m;
                               },

@@ -91,6 +91,10 @@ public:
     // one placed a hair inside the solid voxel beside that one (at a concave edge)
     // moves onto the open voxel's edge.
     RayStart faceRayStart(const RayStart& start, int normalAxis) const;
+    // How far a ray from a start in a solid voxel runs through solid voxels before
+    // it enters an open one, in world units, up to maxDistance (0 when the start
+    // voxel is open): VBAO's voxels thickness, as the GPU traces it.
+    double solidRun(const RayStart& start, glm::vec3 direction, double maxDistance) const;
 
     // Material id of a voxel, 0 when empty.
     int material(glm::ivec3 voxel) const;

@@ -35,6 +35,9 @@ constexpr TargetRow kRows[] = {
     {TargetId::ShadowHistory, kRgba32f, TargetSize::Frame, kStorage,
      [](const FrameShape& s) { return s.shadows && s.softShadows; }, false, 2, kGeneral},
     {TargetId::AoDepthAtlas, kR32f, TargetSize::DepthAtlas, kStorage | kRead, aoOn, false, 1, kGeneral},
+    // VBAO binds it whatever its thickness mode; only the voxels mode fills it.
+    {TargetId::AoThickness, kR32f, TargetSize::DepthAtlas, kStorage,
+     [](const FrameShape& s) { return voxelThickness(s.ao); }, true, 1, kGeneral},
     {TargetId::AoRaw, kRgba32f, TargetSize::Ao, kStorage | kRead, aoOn, true, 1, kGeneral},
     // One denoise pass needs one target (with the temporal pass, only for the
     // AO_spatial AOV), more ping-pong between two.
@@ -89,6 +92,7 @@ vk::Image& FrameTargets::slot(TargetRef target) {
     case TargetId::Shadow: return shadow_;
     case TargetId::ShadowHistory: return shadowHistory_[copy];
     case TargetId::AoDepthAtlas: return ao_.depthAtlas;
+    case TargetId::AoThickness: return ao_.thickness;
     case TargetId::AoRaw: return ao_.raw;
     case TargetId::AoSpatial0: return ao_.spatial[0];
     case TargetId::AoSpatial1: return ao_.spatial[1];

@@ -26,6 +26,8 @@ struct Kernel {
         return mips[mip][size_t(t.y) * mipSize[mip].x + t.x];
     }
     uint gtaoSurface(ivec2 p) { return surface[size_t(p.y) * gtao.fullSize.x + p.x]; }
+    // VBAO's voxels thickness is traced on the GPU only: the twin runs the other modes.
+    float gtaoThickness(ivec2, int) { return 1e30f; }
 
 #include "shaders/shared/gtao_kernel.h"
 

@@ -12,6 +12,8 @@ namespace grotto {
 struct AoTargets {
     VkExtent2D half{};                                         // the AO resolution; none without AO
     vk::Image depthAtlas;                                      // R32F view depth, every MIP (see depthMipLayout)
+    vk::Image thickness;                                       // R32F: VBAO's voxel thickness, the same layout
+                                                               // (1x1 unless voxelThickness)
     vk::Image raw;                                             // RGBA32F: visibility, packed edges, depth, face + 1
     std::array<vk::Image, 2> spatial;                          // RGBA32F: denoiser ping-pong, same layout (as many
                                                                // as the passes need: none, one, or two)

@@ -1,5 +1,7 @@
 #include "engine/passes/depth_prefilter_pass.h"
 
+#include "engine/passes/trace_inputs.h"
+
 #include <algorithm>
 
 namespace grotto {
@@ -22,21 +24,47 @@ DepthMipLayout depthMipLayout(VkExtent2D half) {
     return l;
 }
 
-DepthPrefilterPass::DepthPrefilterPass(vk::Context& ctx)
-    : ctx_(ctx),
-      pass_(ctx, "depth_prefilter.comp",
-            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-             VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}) {}
+namespace {
 
-void DepthPrefilterPass::record(VkCommandBuffer cmd, const vk::Image& depth, const AoTargets& ao,
-                                const vk::Buffer& constants) {
+std::vector<VkDescriptorType> bindingTypes(bool thickness) {
+    std::vector<VkDescriptorType> own = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                                         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+    if (!thickness) return own;
+    own.insert(own.end(), {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    return withTraceBindings(own);
+}
+
+}  // namespace
+
+DepthPrefilterPass::DepthPrefilterPass(vk::Context& ctx, bool thickness)
+    : ctx_(ctx),
+      thickness_(thickness),
+      pass_(ctx, thickness ? "depth_prefilter_thickness.comp" : "depth_prefilter.comp", bindingTypes(thickness)) {}
+
+PassDecl DepthPrefilterPass::declare() const {
+    PassDecl d{"prefilter", {{TargetId::Depth, Access::Sampled}, {TargetId::AoDepthAtlas, Access::Write}}};
+    if (thickness_) {
+        d.uses.push_back({TargetId::Surface, Access::Sampled});
+        d.uses.push_back({TargetId::AoThickness, Access::Write});
+    }
+    return d;
+}
+
+void DepthPrefilterPass::record(VkCommandBuffer cmd, const vk::Image& depth, const vk::Image& surface,
+                                const AoTargets& ao, const vk::Buffer& constants, const vk::Buffer& traceConstants,
+                                const GpuOccupancy* occupancy) {
     // One thread per MIP-1 texel; each group writes its share of every MIP.
     const glm::ivec4 mip1 = depthMipLayout(ao.half).mips[1];
-    pass_.dispatch(cmd,
-                   {vk::uniformBuffer(constants.buffer),
-                    vk::sampledImage(ctx_.pointSampler, depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
-                    vk::storageImage(ao.depthAtlas.view)},
-                   {uint32_t(mip1.z), uint32_t(mip1.w)}, GROTTO_GTAO_GROUP);
+    std::vector<vk::Binding> own = {
+        vk::uniformBuffer(constants.buffer),
+        vk::sampledImage(ctx_.pointSampler, depth.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
+        vk::storageImage(ao.depthAtlas.view)};
+    if (thickness_) {
+        own.push_back(vk::storageImage(ao.thickness.view));
+        own.push_back(vk::sampledImage(ctx_.pointSampler, surface.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL));
+        own = withTraceBindings(std::move(own), traceConstants, *occupancy);
+    }
+    pass_.dispatch(cmd, own, {uint32_t(mip1.z), uint32_t(mip1.w)}, GROTTO_GTAO_GROUP);
 }
 
 }  // namespace grotto

@@ -18,10 +18,11 @@ std::vector<uint32_t> specialization(const AoOptions& ao) {
     }
 }
 
-std::vector<VkDescriptorType> bindingTypes(bool traces) {
+std::vector<VkDescriptorType> bindingTypes(AoMethod method) {
     std::vector<VkDescriptorType> own = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
                                          VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    return traces ? withTraceBindings(own) : own;
+    if (method == AoMethod::Vbao) own.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the thickness atlas
+    return tracesVoxels(method) ? withTraceBindings(own) : own;
 }
 
 }  // namespace
@@ -30,11 +31,13 @@ EstimatorPass::EstimatorPass(vk::Context& ctx, const AoOptions& ao)
     : ctx_(ctx),
       method_(ao.method),
       traces_(tracesVoxels(ao.method)),
-      pass_(ctx, std::string(aoMethodName(ao.method)) + ".comp", bindingTypes(traces_), 0, specialization(ao)) {}
+      pass_(ctx, std::string(aoMethodName(ao.method)) + ".comp", bindingTypes(ao.method), 0, specialization(ao)) {}
 
 PassDecl EstimatorPass::declare() const {
-    return {aoMethodName(method_), {{TargetId::AoDepthAtlas, Access::Read}, {TargetId::Surface, Access::Sampled},
-                                    {TargetId::AoRaw, Access::Write}}};
+    PassDecl d{aoMethodName(method_), {{TargetId::AoDepthAtlas, Access::Read}, {TargetId::Surface, Access::Sampled},
+                                       {TargetId::AoRaw, Access::Write}}};
+    if (method_ == AoMethod::Vbao) d.uses.push_back({TargetId::AoThickness, Access::Read});
+    return d;
 }
 
 void EstimatorPass::record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants,
@@ -43,6 +46,7 @@ void EstimatorPass::record(VkCommandBuffer cmd, const vk::Image& surface, const 
         vk::uniformBuffer(constants.buffer), vk::storageImage(ao.depthAtlas.view),
         vk::sampledImage(ctx_.pointSampler, surface.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
         vk::storageImage(ao.raw.view)};
+    if (method_ == AoMethod::Vbao) own.push_back(vk::storageImage(ao.thickness.view));
     pass_.dispatch(cmd, traces_ ? withTraceBindings(std::move(own), traceConstants, *occupancy) : own, ao.half,
                    GROTTO_GTAO_GROUP);
 }

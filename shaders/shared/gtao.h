@@ -29,11 +29,12 @@ struct GtaoSettings {
     float maxDistance;              // view depth, world units, where AO has faded out over the
                                     // last tenth; farther pixels skip the search. 0 = no limit
     float thickness;                // VBAO: how deep occluders are (world units, or x view depth)
-    uint thicknessMode;             // VBAO: kVbaoThicknessConstant or kVbaoThicknessDistance
+    uint thicknessMode;             // VBAO: kVbaoThickness*
 };
 GROTTO_STATIC_ASSERT(sizeof(GtaoSettings) == 64);
 #define kVbaoThicknessConstant 0u
 #define kVbaoThicknessDistance 1u
+#define kVbaoThicknessVoxels 2u  // read from the thickness atlas the depth prefilter traces
 
 // What the GTAO passes need besides the settings, all at half resolution.
 struct GtaoConstants {

@@ -130,12 +130,16 @@ vec3 gtaoViewNormal(ivec2 pixel) {
 }
 
 #ifdef GROTTO_VBAO
-// How far behind a depth sample the solid it belongs to ends, as the view depth
-// of its back: the settings' thickness, in world units (constant) or as a share
-// of the sample's depth (distance).
-float vbaoBackDepth(float front) {
+// Where the solid behind a depth sample ends along the sample's view ray, as a
+// multiple of its view position: the settings' thickness in world units
+// (constant) or as a share of the view depth (distance), or what the depth
+// prefilter traced through the voxels at that texel and MIP (voxels; the includer
+// provides gtaoThickness then).
+float vbaoBackScale(vec3 front, ivec2 texel, int mip) {
+    uint mode = gtao.settings.thicknessMode;
     float t = gtao.settings.thickness;
-    return gtao.settings.thicknessMode == kVbaoThicknessDistance ? front * (1.0f + t) : front + t;
+    if (mode == kVbaoThicknessVoxels) return 1.0f + gtaoThickness(texel, mip) / max(length(front), 1e-30f);
+    return mode == kVbaoThicknessDistance ? 1.0f + t : 1.0f + t / max(-front.z, 1e-30f);
 }
 
 // The sectors one sample hides: the angles of its front and of its back, the
@@ -144,10 +148,8 @@ float vbaoBackDepth(float front) {
 // against. The falloff weight pulls the front toward the hemisphere's edge as
 // GTAO's weight pulls a horizon, so with no back (infinite thickness) the two
 // agree, a thicker occluder never hides less, and a weight of 0 hides nothing.
-uint vbaoSampleSectors(vec3 position, vec3 delta, float weight, vec3 viewVec, float n, float side) {
-    vec3 front = position + delta;
-    float frontDepth = -front.z;
-    vec3 backDelta = front * (vbaoBackDepth(frontDepth) / max(frontDepth, 1e-30f)) - position;
+uint vbaoSampleSectors(vec3 position, vec3 delta, float backScale, float weight, vec3 viewVec, float n, float side) {
+    vec3 backDelta = (position + delta) * backScale - position;
     float thetaFront = side * acos(clamp(dot(normalize(delta), viewVec), -1.0f, 1.0f));
     float thetaBack = side * acos(clamp(dot(normalize(backDelta), viewVec), -1.0f, 1.0f));
     float faded = mix(n + side * kVbaoHalfPi, thetaFront, weight);
@@ -237,8 +239,8 @@ vec2 gtaoPixel(ivec2 pixel) {
             float weight0 = gtaoSaturate(falloff0 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon0, normal) * 32.0f) * inside0;
             float weight1 = gtaoSaturate(falloff1 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon1, normal) * 32.0f) * inside1;
 #ifdef GROTTO_VBAO
-            occluded |= vbaoSampleSectors(position, delta0, weight0, viewVec, n, 1.0f);
-            occluded |= vbaoSampleSectors(position, delta1, weight1, viewVec, n, -1.0f);
+            occluded |= vbaoSampleSectors(position, delta0, vbaoBackScale(position + delta0, c0, mip), weight0, viewVec, n, 1.0f);
+            occluded |= vbaoSampleSectors(position, delta1, vbaoBackScale(position + delta1, c1, mip), weight1, viewVec, n, -1.0f);
 #else
             float shc0 = mix(lowCos0, dot(horizon0, viewVec), weight0);
             float shc1 = mix(lowCos1, dot(horizon1, viewVec), weight1);

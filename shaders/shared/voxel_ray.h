@@ -112,6 +112,33 @@ VoxelRayHit voxelRay(VoxelRayStart start, vec3 d, float maxT, ivec3 lo, ivec3 hi
     return hit;
 }
 
+// How far the ray from `start`, in a solid voxel, runs through solid voxels before
+// it enters an open one, in voxels; maxT when it is still in solid there. One
+// voxel at a time (the runs are short), crossing as voxelRay does: on a tie
+// z first, then y, then x.
+float voxelRayExit(VoxelRayStart start, vec3 d, float maxT) {
+    bvec3 parallel = lessThanEqual(abs(d), vec3(1e-20f));
+    bvec3 positive = greaterThanEqual(d, vec3(0.0f));
+    vec3 step = mix(mix(vec3(-1.0f), vec3(1.0f), positive) / max(abs(d), vec3(1e-20f)), vec3(0.0f), parallel);
+    vec3 never = mix(vec3(0.0f), vec3(kVoxelRayNever), parallel);
+    ivec3 isgn = mix(ivec3(-1), ivec3(1), positive), ahead = mix(ivec3(0), ivec3(1), positive);
+    if (voxelRayBlock(start.voxel) >= 0) return 0.0f;
+    ivec3 r = ivec3(0);
+    for (int i = 0; i < 4096; ++i) {
+        vec3 t = voxelRayLeave(start, step, never, r + ahead);
+        int a = t.y <= t.x ? 1 : 0;
+        float ta = min(t.x, t.y);
+        if (t.z <= ta) {
+            a = 2;
+            ta = t.z;
+        }
+        if (ta >= maxT) return maxT;
+        r += isgn * ivec3(equal(ivec3(a), ivec3(0, 1, 2)));
+        if (voxelRayBlock(start.voxel + r) >= 0) return ta;
+    }
+    return maxT;
+}
+
 // The start of a ray leaving a point on a voxel face: the open voxel in front of
 // the face (`start`, the point within it), the face's axis `normalAxis`. A point
 // placed from float depth near a concave edge or corner may land a hair inside the
