@@ -98,3 +98,28 @@ TEST(VbaoSectors, MasksAreBoundsChecked) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+// The kernel's per-slice form: the same shares from an angle's cosine, with the
+// fast acos, within 2e-4 of the definition (a sector is 1/32).
+TEST(VbaoSectors, TheSlicesFormFromCosinesIsTheCdf) {
+    float worstAcos = 0.0f;
+    for (float x = -1.0f; x <= 1.0f; x += 1.0f / 1024.0f)
+        worstAcos = std::max(worstAcos, std::abs(vbao::vbaoAcos(x) - std::acos(x)));
+    EXPECT_LT(worstAcos, 7e-5f);
+    float worst = 0.0f;
+    for (float n = -1.5f; n <= 1.5f; n += 0.1f) {
+        const vbao::VbaoSlice slice = vbao::vbaoSlice(n, std::cos(n), std::sin(n));
+        for (float side : {1.0f, -1.0f})
+            for (float c = -1.0f; c <= 1.0f; c += 1.0f / 256.0f)
+                worst = std::max(worst, std::abs(vbao::vbaoSliceCdf(slice, c, side) - vbao::vbaoCdf(side * std::acos(c), n)));
+    }
+    EXPECT_LT(worst, 2e-4f);
+    EXPECT_EQ(vbao::vbaoSectorsBetween(0.25f, 0.5f), vbao::vbaoBits(8, 16));
+    EXPECT_EQ(vbao::vbaoSectorsBetween(1.0f, 0.0f), 0xFFFFFFFFu);
+}
+
+}  // namespace
+}  // namespace grotto

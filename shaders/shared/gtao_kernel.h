@@ -142,18 +142,19 @@ float vbaoBackScale(vec3 front, ivec2 texel, int mip) {
     return mode == kVbaoThicknessDistance ? 1.0f + t : 1.0f + t / max(-front.z, 1e-30f);
 }
 
-// The sectors one sample hides: the angles of its front and of its back, the
-// point its own view ray leaves the solid (view positions scale with view depth
-// along a pixel's ray). side: +1 for samples toward the slice's direction, -1
-// against. The falloff weight pulls the front toward the hemisphere's edge as
-// GTAO's weight pulls a horizon, so with no back (infinite thickness) the two
-// agree, a thicker occluder never hides less, and a weight of 0 hides nothing.
-uint vbaoSampleSectors(vec3 position, vec3 delta, float backScale, float weight, vec3 viewVec, float n, float side) {
+// The sectors one sample hides: from its front to its back, the point its own
+// view ray leaves the solid (view positions scale with view depth along a pixel's
+// ray), as shares of the slice's measure. side: +1 for samples toward the slice's
+// direction, -1 against; lowCos: the cosine of the hemisphere's edge on that side.
+// The falloff weight pulls the front's cosine toward that edge's exactly as GTAO
+// pulls a horizon's, so with no back (infinite thickness) the two agree up to the
+// sectors, a thicker occluder never hides less, and a weight of 0 hides nothing.
+uint vbaoSampleSectors(VbaoSlice slice, vec3 position, vec3 horizon, vec3 delta, float backScale, float weight,
+                       vec3 viewVec, float lowCos, float side) {
     vec3 backDelta = (position + delta) * backScale - position;
-    float thetaFront = side * acos(clamp(dot(normalize(delta), viewVec), -1.0f, 1.0f));
-    float thetaBack = side * acos(clamp(dot(normalize(backDelta), viewVec), -1.0f, 1.0f));
-    float faded = mix(n + side * kVbaoHalfPi, thetaFront, weight);
-    return side * (thetaBack - faded) > 0.0f ? vbaoOccluded(faded, thetaBack, n) : 0u;
+    float faded = vbaoSliceCdf(slice, mix(lowCos, dot(horizon, viewVec), weight), side);
+    float back = vbaoSliceCdf(slice, dot(normalize(backDelta), viewVec), side);
+    return side * (back - faded) > 0.0f ? vbaoSectorsBetween(faded, back) : 0u;
 }
 
 #endif
@@ -205,6 +206,7 @@ vec2 gtaoPixel(ivec2 pixel) {
         float horizonCos0 = lowCos0, horizonCos1 = lowCos1;
 #ifdef GROTTO_VBAO
         uint occluded = 0u;  // the slice's sectors hidden by some sample's front-to-back span
+        VbaoSlice sectors = vbaoSlice(n, cosNorm, sinN);
 #endif
 
         for (uint stepIndex = 0u; stepIndex < kGtaoSteps; ++stepIndex) {
@@ -239,8 +241,10 @@ vec2 gtaoPixel(ivec2 pixel) {
             float weight0 = gtaoSaturate(falloff0 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon0, normal) * 32.0f) * inside0;
             float weight1 = gtaoSaturate(falloff1 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon1, normal) * 32.0f) * inside1;
 #ifdef GROTTO_VBAO
-            occluded |= vbaoSampleSectors(position, delta0, vbaoBackScale(position + delta0, c0, mip), weight0, viewVec, n, 1.0f);
-            occluded |= vbaoSampleSectors(position, delta1, vbaoBackScale(position + delta1, c1, mip), weight1, viewVec, n, -1.0f);
+            occluded |= vbaoSampleSectors(sectors, position, horizon0, delta0, vbaoBackScale(position + delta0, c0, mip),
+                                          weight0, viewVec, lowCos0, 1.0f);
+            occluded |= vbaoSampleSectors(sectors, position, horizon1, delta1, vbaoBackScale(position + delta1, c1, mip),
+                                          weight1, viewVec, lowCos1, -1.0f);
 #else
             float shc0 = mix(lowCos0, dot(horizon0, viewVec), weight0);
             float shc1 = mix(lowCos1, dot(horizon1, viewVec), weight1);

@@ -46,6 +46,49 @@ uint vbaoOccluded(float a, float b, float n) {
     return vbaoBits(int(floor(lo + 0.5f)), int(floor(hi + 0.5f)));
 }
 
+// acos to within 7e-5 radians (Abramowitz and Stegun 4.4.45), far inside a
+// sector, for the kernel's two angles per sample.
+float vbaoAcos(float x) {
+    float a = abs(x);
+    float r = sqrt(1.0f - a) * (1.5707288f + a * (-0.2121144f + a * (0.0742610f - 0.0187293f * a)));
+    return x < 0.0f ? 3.14159265358979f - r : r;
+}
+
+// One slice's terms of vbaoCdf, computed once per slice rather than per sample.
+struct VbaoSlice {
+    float n, cosN, sinN, arcLo, total;
+};
+
+VbaoSlice vbaoSlice(float n, float cosN, float sinN) {
+    VbaoSlice s;
+    s.n = n;
+    s.cosN = cosN;
+    s.sinN = sinN;
+    s.total = cosN + n * sinN;
+    s.arcLo = vbaoArc(n - kVbaoHalfPi, n);
+    return s;
+}
+
+// vbaoCdf at the angle whose cosine to the view direction is c, on the side
+// side (+1: toward the slice's direction, -1: against): cos(2t - n) from c by the
+// double-angle formulas, so the only transcendental is the angle itself.
+float vbaoSliceCdf(VbaoSlice s, float c, float side) {
+    c = clamp(c, -1.0f, 1.0f);
+    float t = side * vbaoAcos(c);
+    if (t <= s.n - kVbaoHalfPi) return 0.0f;
+    if (t >= s.n + kVbaoHalfPi) return 1.0f;
+    float sinT = side * sqrt(max(1.0f - c * c, 0.0f));
+    float cos2tn = (2.0f * c * c - 1.0f) * s.cosN + 2.0f * sinT * c * s.sinN;
+    float a = (s.cosN + 2.0f * t * s.sinN - cos2tn) * 0.25f;
+    return clamp((s.arcLo + sign(t) * a) / s.total, 0.0f, 1.0f);
+}
+
+// The sectors between two shares of the slice's measure (either order), each
+// rounded to the nearest sector boundary as vbaoOccluded rounds.
+uint vbaoSectorsBetween(float a, float b) {
+    return vbaoBits(int(floor(min(a, b) * float(kVbaoSectors) + 0.5f)), int(floor(max(a, b) * float(kVbaoSectors) + 0.5f)));
+}
+
 #ifdef __cplusplus
 int vbaoOpenSectors(uint mask) { return kVbaoSectors - std::popcount(mask); }
 #else
