@@ -28,9 +28,10 @@ struct Row {
     AoMeasurement m;
 };
 
-// Every setting measured: the baselines, GTAO, voxel-traced and hybrid AO without
-// temporal accumulation, then each method's high preset with it, after enough
-// static frames to fill its history. SSAO's presets are labelled by their sample counts.
+// Every setting measured: the baselines, GTAO, voxel-traced, hybrid AO and VBAO
+// without temporal accumulation, then each method's high preset with it, after
+// enough static frames to fill its history. SSAO's presets are labelled by their
+// sample counts; "vbao/constant" is VBAO with that thickness mode (its own is voxels).
 struct Setting {
     std::string method, quality, label;
     int temporal;
@@ -44,6 +45,9 @@ const std::vector<Setting> kSettings = {
     {"voxel+temporal", "high", "high", 16},
     {"hybrid", "low", "low", 0},    {"hybrid", "medium", "medium", 0}, {"hybrid", "high", "high", 0},
     {"hybrid+temporal", "high", "high", 16},
+    {"vbao", "low", "low", 0},      {"vbao", "medium", "medium", 0}, {"vbao", "high", "high", 0},
+    {"vbao", "ultra", "ultra", 0},  {"vbao/constant", "high", "high", 0}, {"vbao/distance", "high", "high", 0},
+    {"vbao+temporal", "high", "high", 16},
 };
 constexpr int kTemporalFrames = 32;
 
@@ -290,7 +294,9 @@ void addTradeoffCommand(CLI::App& app) {
             }
             for (const Setting& s : kSettings) {
                 AoFlags flags;
-                flags.set.method = s.method.substr(0, s.method.find('+'));  // "gtao+temporal" is gtao
+                flags.set.method = s.method.substr(0, s.method.find_first_of("+/"));  // "gtao+temporal" is gtao
+                if (const size_t slash = s.method.find('/'); slash != std::string::npos)
+                    flags.set.thickness = s.method.substr(slash + 1);
                 flags.set.quality = s.quality;
                 flags.set.temporalHistory = s.temporal;
                 const AoOptions ao = resolveAo(world, flags);

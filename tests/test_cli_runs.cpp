@@ -47,11 +47,11 @@ TEST_F(CliErrors, VbaoIsChosenByTheFlagOrTheWorldFile) {
     ASSERT_EQ(gtao.exitCode, 0) << gtao.err;
     EXPECT_EQ(bytes(dir_ / "flag.png"), bytes(dir_ / "file.png"));
     EXPECT_NE(bytes(dir_ / "flag.png"), bytes(dir_ / "gtao.png"));
-    // And the thickness mode by its flag: the voxels' own differs from one voxel everywhere.
-    test::RunResult voxels =
-        runGrotto("render " + rooms.string() + " --ao vbao --thickness voxels" + size + (dir_ / "voxels.png").string());
-    ASSERT_EQ(voxels.exitCode, 0) << voxels.err;
-    EXPECT_NE(bytes(dir_ / "flag.png"), bytes(dir_ / "voxels.png"));
+    // And the thickness mode by its flag: one voxel everywhere differs from the voxels' own (the default).
+    test::RunResult constant =
+        runGrotto("render " + rooms.string() + " --ao vbao --thickness constant" + size + (dir_ / "constant.png").string());
+    ASSERT_EQ(constant.exitCode, 0) << constant.err;
+    EXPECT_NE(bytes(dir_ / "flag.png"), bytes(dir_ / "constant.png"));
 }
 
 TEST_F(CliErrors, FlythroughResumesButNeverMixesSequences) {
@@ -202,17 +202,21 @@ TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
         for (int i = 0; i < 4; ++i) std::getline(fields, field, ',');  // world,method,quality,ms_ao
         EXPECT_GE(std::stod(field), 0.0) << "a negative cost: " << line;
     }
-    EXPECT_EQ(rows, 20);  // ssao x3, hbao x4, gtao x4, gtao+temporal, voxel x3, voxel+temporal, hybrid x3, hybrid+temporal
-    // The same rows as a Markdown table (header, rule, 20 rows), SSAO by sample count.
+    // ssao x3, hbao x4, gtao x4, gtao+temporal, voxel x3, voxel+temporal, hybrid x3, hybrid+temporal,
+    // vbao x4, vbao/constant, vbao/distance, vbao+temporal
+    EXPECT_EQ(rows, 27);
+    // The same rows as a Markdown table (header, rule, 27 rows), SSAO by sample count.
     std::ifstream md(markdown);
     std::vector<std::string> table;
     while (std::getline(md, line)) table.push_back(line);
-    ASSERT_EQ(table.size(), 22u);
+    ASSERT_EQ(table.size(), 29u);
     EXPECT_EQ(table[0].rfind("| world | method | quality |", 0), 0u);
     EXPECT_EQ(table[2].rfind("| cam | ssao | 8 |", 0), 0u) << table[2];
     EXPECT_EQ(table[13].rfind("| cam | gtao+temporal | high |", 0), 0u) << table[13];
     EXPECT_EQ(table[17].rfind("| cam | voxel+temporal | high |", 0), 0u) << table[17];
     EXPECT_EQ(table[21].rfind("| cam | hybrid+temporal | high |", 0), 0u) << table[21];
+    EXPECT_EQ(table[26].rfind("| cam | vbao/constant | high |", 0), 0u) << table[26];
+    EXPECT_EQ(table[28].rfind("| cam | vbao+temporal | high |", 0), 0u) << table[28];
 }
 
 }  // namespace

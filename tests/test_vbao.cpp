@@ -19,6 +19,7 @@ class Vbao : public test::AoFixture {
 protected:
     static AoOptions vbao(const std::string& quality, double radius = 4.0, double thickness = 1.0) {
         AoOptions o = options(quality, radius, AoMethod::Vbao);
+        o.estimator.thicknessMode = voxel::ThicknessMode::Constant;
         o.estimator.thickness = float(thickness);
         return o;
     }
@@ -153,6 +154,12 @@ TEST_F(Vbao, VoxelThicknessIsDeepInWallsAndThinInPoles) {
 TEST(VbaoSettings, ThicknessModesTheirDefaultsAndBadNames) {
     voxel::AoDesc desc;
     desc.method = "vbao";
+    const AoOptions byDefault = aoOptionsFor(desc, 0.25, "w.json");
+    EXPECT_EQ(byDefault.estimator.thicknessMode, voxel::ThicknessMode::Voxels);
+    EXPECT_FLOAT_EQ(byDefault.estimator.falloffRange, 0.3f) << "VBAO's own falloff";
+    desc.falloffRange = 0.5;
+    EXPECT_FLOAT_EQ(aoOptionsFor(desc, 0.25, "w.json").estimator.falloffRange, 0.5f) << "unless one is given";
+    desc.thickness = "constant";
     AoOptions constant = aoOptionsFor(desc, 0.25, "w.json");
     EXPECT_EQ(constant.estimator.thicknessMode, voxel::ThicknessMode::Constant);
     EXPECT_FLOAT_EQ(constant.estimator.thickness, 0.25f) << "one voxel";

@@ -27,7 +27,7 @@ struct EstimatorSettings {
     // (constant; a world's default is one of its voxels) or as a share of the
     // sample's view depth (distance); voxels reads it from the world's voxels.
     float thickness = 1.0f;
-    ThicknessMode thicknessMode = ThicknessMode::Constant;
+    ThicknessMode thicknessMode = ThicknessMode::Voxels;
     uint32_t slices = 3, steps = 3;  // the loop shape: the quality preset's (these are high's)
     uint32_t rays = 6;               // voxel and hybrid: rays per AO pixel per frame
     uint32_t ssaoSamples = 32;       // SSAO's kernel, from the quality alone

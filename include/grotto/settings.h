@@ -48,7 +48,7 @@ struct Lighting {
 struct AoDesc {
     std::string method = "gtao";   // gtao, voxel, hybrid, vbao, ssao, hbao (baselines) or off
     std::string quality = "high";  // low, medium, high, ultra, custom
-    std::string thickness = "constant";  // vbao: constant or distance
+    std::string thickness = "voxels";  // vbao: voxels, constant or distance
     std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
         finalValuePower, depthMipOffset, strength, denoiseBlurBeta, maxDistance, thicknessValue;
     std::optional<int> slices, steps, denoisePasses, temporalHistory, rays;
