@@ -170,9 +170,11 @@ nlohmann::json aoSettingsJson(const AoOptions& ao) {
     nlohmann::json j = {{"method", ao.enabled ? aoMethodName(ao.method) : "off"},
                         {"quality", ao.quality},
                         {"ssao_samples", ao.estimator.ssaoSamples}};
-    const bool traces = ao.enabled && tracesVoxels(ao.method);
+    const std::string method = ao.enabled ? aoMethodName(ao.method) : "off";
+    if (ao.enabled && ao.method == AoMethod::Vbao)
+        j["thickness"] = voxel::setting("ao.thickness").choices[size_t(ao.estimator.thicknessMode)];
     for (const voxel::Setting& s : voxel::settingsTable()) {
-        if (s.manifest.empty() || (s.tracingOnly && !traces)) continue;
+        if (s.manifest.empty() || !voxel::usedBy(s, method)) continue;
         std::visit(Overloaded{[](std::monostate) {},
                               [&](auto voxel::EstimatorSettings::*m) { j[std::string(s.manifest)] = ao.estimator.*m; },
                               [&](auto voxel::ChainSettings::*m) { j[std::string(s.manifest)] = ao.chain.*m; }},

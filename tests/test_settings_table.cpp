@@ -187,3 +187,30 @@ TEST_F(SettingsTable, ViewerKeepsTheCommandLinesAoSettingsAcrossAPatch) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+// A manifest records what decides the pixels and nothing else: VBAO's thickness
+// for VBAO only, the tracing methods' rays for them only.
+TEST(SettingsManifest, RecordsEachMethodsOwnSettingsOnly) {
+    AoOptions gtao;
+    using app::aoSettingsJson;
+    const nlohmann::json g = aoSettingsJson(gtao);
+    EXPECT_FALSE(g.contains("thickness"));
+    EXPECT_FALSE(g.contains("thickness_value"));
+    EXPECT_FALSE(g.contains("rays"));
+    AoOptions vbao;
+    vbao.method = AoMethod::Vbao;
+    const nlohmann::json v = aoSettingsJson(vbao);
+    EXPECT_EQ(v.value("thickness", ""), "voxels");
+    EXPECT_TRUE(v.contains("thickness_value"));
+    EXPECT_FALSE(v.contains("rays"));
+    AoOptions voxel;
+    voxel.method = AoMethod::Voxel;
+    EXPECT_TRUE(aoSettingsJson(voxel).contains("rays"));
+    EXPECT_FALSE(aoSettingsJson(voxel).contains("thickness"));
+}
+
+}  // namespace
+}  // namespace grotto

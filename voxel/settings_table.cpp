@@ -106,12 +106,13 @@ const Setting kSettings[] = {
      .help = "VBAO: how deep an occluder reaches behind what the depth buffer shows (constant: "
              "--thickness-value world units; distance: --thickness-value times its view depth; voxels: "
              "as far as its voxels go along the view ray)",
-     .manifest = "thickness", .invalidates = kEstimatorPipeline | kTargets | kHistory, .choices = kThicknessModes},
+     .manifest = "thickness", .invalidates = kEstimatorPipeline | kTargets | kHistory, .choices = kThicknessModes,
+     .vbaoOnly = true},
     {.key = "ao.thickness_value", .flag = "--thickness-value", .type = T::Number, .desc = &AoDesc::thicknessValue,
      .value = &EstimatorSettings::thickness, .lo = 0.0, .hi = 1e7, .uiLo = 0.0, .uiHi = 16.0,
      .help = "VBAO: the thickness, in world units (constant) or times the view depth (distance)",
      .accepted = "0 to 1e7", .defaultNote = "1 voxel (constant), 0.1 (distance)", .manifest = "thickness_value",
-     .invalidates = kHistory},
+     .invalidates = kHistory, .vbaoOnly = true},
     {.key = "ao.denoise_blur_beta", .flag = "--denoise-blur-beta", .type = T::Number,
      .desc = &AoDesc::denoiseBlurBeta, .value = &ChainSettings::denoiseBlurBeta, .lo = 0.0, .hi = 10.0,
      .help = "Centre weight of the denoise blur", .manifest = "denoise_blur_beta", .invalidates = kHistory},
@@ -229,6 +230,12 @@ double settingNumber(const Setting& s, const WorldDesc& desc, const EstimatorSet
 void resetPresetShaped(AoDesc& ao) {
     for (const Setting& s : kSettings)
         if (s.presetShaped) std::visit(Overloaded{[&](auto AoDesc::*m) { ao.*m = {}; }, [](auto) {}}, s.desc);
+}
+
+bool usedBy(const Setting& s, std::string_view method) {
+    if (s.tracingOnly) return method == "voxel" || method == "hybrid";
+    if (s.vbaoOnly) return method == "vbao";
+    return true;
 }
 
 void overlayAo(const AoDesc& over, AoDesc& ao) {

@@ -63,8 +63,13 @@ struct Setting {
     std::span<const std::string_view> choices = {};
     bool presetShaped = false;  // the quality preset sets it: naming a preset replaces it
     bool tracingOnly = false;   // only the methods that trace voxels use it
+    bool vbaoOnly = false;      // only VBAO uses it
     bool uiRelative = false;    // the panel's range is uiLo to uiHi times the value in effect
 };
+
+// Does the AO method named `method` use the setting (the panel shows it, a
+// manifest records it)? Every setting but the tracing methods' and VBAO's own.
+bool usedBy(const Setting& s, std::string_view method);
 
 // Every setting: lighting, AO, detail, in world-file order.
 std::span<const Setting> settingsTable();

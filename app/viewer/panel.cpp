@@ -84,9 +84,9 @@ voxel::json control(const voxel::Setting& row, const PanelState& s) {
 // A control for each setting of `block` ("lighting", "ao", "detail"), changes
 // added to `patch` under their world-file keys.
 void settingControls(std::string_view block, const PanelState& s, voxel::json& patch) {
-    const bool traces = s.ao->enabled && tracesVoxels(s.ao->method);
+    const std::string method = s.ao->enabled ? aoMethodName(s.ao->method) : "off";
     for (const voxel::Setting& row : voxel::settingsTable()) {
-        if (row.key.substr(0, row.key.find('.')) != block || (row.tracingOnly && !traces)) continue;
+        if (row.key.substr(0, row.key.find('.')) != block || !voxel::usedBy(row, method)) continue;
         const voxel::json value = control(row, s);
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (%s)", row.help.data(), row.key.data());
         if (!value.is_null()) patch.merge_patch(voxel::settingPatch(std::string(row.key), value));
