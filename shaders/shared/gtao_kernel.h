@@ -5,6 +5,9 @@
 //                                             AO pixel texel (always inside the AO image)
 //                                             from MIP mip, i.e. MIP texel texel >> mip
 //   uint  gtaoSurface(ivec2 fullResPixel);    G-buffer surface id (shared/quad.h)
+//   float gtaoThickness(ivec2 texel, int mip); with GROTTO_VBAO only: the traced thickness
+//                                             behind the depth at that texel and MIP
+//                                             (world units along the view ray)
 // and, in C++, `using namespace glm` around it. Float literals carry an f so both
 // languages read them the same way.
 //
