@@ -6,7 +6,7 @@
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 
 #include <algorithm>
 #include <cmath>

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 #include <openvdb/io/File.h>
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 #include <tbb/global_control.h>
 
 #include <cstring>

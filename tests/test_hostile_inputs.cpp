@@ -6,7 +6,7 @@
 #include "tests/cli_fixture.h"
 
 #include <gtest/gtest.h>
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 
 #include <sys/stat.h>
 

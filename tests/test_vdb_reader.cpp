@@ -8,7 +8,7 @@
 #include "voxel/world.h"
 
 #include <gtest/gtest.h>
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 
 #include <atomic>
 #include <thread>

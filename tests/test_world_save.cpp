@@ -11,7 +11,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <gtest/gtest.h>
 #include <openvdb/io/File.h>
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 
 #include <signal.h>
 #include <spawn.h>

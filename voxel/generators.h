@@ -7,7 +7,7 @@
 // Index space: Y up, the ground (where there is one) at y = 0.
 #include "voxel/mkworld.h"
 
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 
 namespace grotto::voxel {
 

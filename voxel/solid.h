@@ -4,7 +4,7 @@
 #include "voxel/vdb_read.h"
 #include "voxel/world.h"
 
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 
 #include <functional>
 

@@ -5,7 +5,7 @@
 #include "voxel/generators/noise.h"
 #include "voxel/mkworld.h"
 
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 

@@ -4,7 +4,7 @@
 #include "voxel/generators/noise.h"
 #include "voxel/mkworld.h"
 
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 
 #include <algorithm>
 

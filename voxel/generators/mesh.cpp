@@ -4,7 +4,7 @@
 #include "grotto/error.h"
 #include "voxel/mkworld.h"
 
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 #include <openvdb/tools/MeshToVolume.h>
 
 #include <algorithm>

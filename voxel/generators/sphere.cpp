@@ -1,7 +1,7 @@
 // sphere: a narrow-band level set resting on the ground, the simplest smooth surface.
 #include "voxel/mkworld.h"
 
-#include <openvdb/openvdb.h>
+#include "voxel/openvdb_grids.h"
 #include <openvdb/tools/LevelSetSphere.h>
 
 namespace grotto::voxel {
