@@ -66,6 +66,7 @@ struct Args {
 std::vector<std::string> exrAovs(const Args& a) {
     std::vector<std::string> all(std::begin(kExrAovs), std::end(kExrAovs));
     if (!a.given("--aovs")) return all;
+    all.push_back(kBentNormalAov);  // VBAO's, by name only
     if (a.aovs == "none") return {};
     std::vector<std::string> asked;
     for (size_t from = 0, comma; from <= a.aovs.size(); from = comma + 1) {
@@ -147,6 +148,9 @@ void run(const Args& a) {
     }
     const AoOptions ao = resolveAo(world, a.ao);
     const voxel::Detail detail = resolveDetail(world, a.ao);
+    if (std::find(encoding.exrAovs.begin(), encoding.exrAovs.end(), kBentNormalAov) != encoding.exrAovs.end() &&
+        !(ao.enabled && ao.method == AoMethod::Vbao))
+        throw Error("--aovs", "bent_normal is VBAO's", "add --ao vbao, or leave bent_normal out");
     vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
     const FrameShape shape = worldFrameShape(world.desc(), size.width, size.height, ao);
     requireRenderFits(ctx, shape, "--size");

@@ -27,6 +27,9 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& frame, con
 // N.x N.y N.z and "albedo" albedo.R albedo.G albedo.B, the others one channel each.
 inline constexpr const char* kExrAovs[] = {"Z",           "N",          "albedo", "AO",    "AO_raw",
                                            "AO_spatial", "AO_temporal", "AO_history", "edges", "shadow"};
+// VBAO's bent normal (world-space xyz, the AO pixel's): written beside those for
+// a frame that has it (FrameImages::bentNormal), and only asked for by name.
+inline constexpr const char* kBentNormalAov = "bent_normal";
 // How a frame is encoded. PNG: the zlib level, 0 (none, fastest) to 9 (smallest).
 // EXR: which AOV layers beside the colour (kExrAovs names; the frame must have
 // been read back with AOVs when any is asked for), and half-float channels
@@ -74,7 +77,7 @@ void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t heig
                 const Camera* camera = nullptr, int pngLevel = FrameEncoding::kDefaultPngLevel);
 
 // The AOVs showAov draws.
-inline constexpr const char* kShownAovs = "ao, normal, depth, edges, shadow, raw, spatial, temporal, history";
+inline constexpr const char* kShownAovs = "ao, normal, depth, edges, shadow, raw, spatial, temporal, history, bent_normal";
 // One AOV drawn for eyeballing (kShownAovs; raw, spatial, temporal: the AO
 // chain's stages; history: its length over 64 frames), as display-linear RGBA
 // like displayColor's, so that 8-bit sRGB values are the AOV's values (normals as

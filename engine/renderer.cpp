@@ -44,13 +44,14 @@ void Renderer::createPasses() {
         gbufferPass_ = std::make_unique<GBufferPass>(
             ctx, motion() ? GBufferMode::Motion : objects_ ? GBufferMode::Objects : GBufferMode::World);
     if (!hizPass_) hizPass_ = std::make_unique<HizPass>(ctx);
-    if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled, shadows());
+    if (!compositePass_)
+        compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled, shadows(), bentNormals(ao_, lighting_));
     if (displayOn_ && !displayPass_) displayPass_ = std::make_unique<DisplayPass>(ctx);
     if (normalsOn_ && !normalsPass_) normalsPass_ = std::make_unique<NormalsPass>(ctx);
     if (shadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows());
     if (!ao_.enabled) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx, voxelThickness(ao_));
-    if (!estimatorPass_) estimatorPass_ = std::make_unique<EstimatorPass>(ctx, ao_);
+    if (!estimatorPass_) estimatorPass_ = std::make_unique<EstimatorPass>(ctx, ao_, bentNormals(ao_, lighting_));
     if (!denoisePass_) denoisePass_ = std::make_unique<DenoisePass>(ctx);
     if (!upsamplePass_) upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
     if (temporal() && !temporalPass_)
@@ -107,6 +108,7 @@ void Renderer::release() {
     gbufferPass_.reset();
     prefilterPass_.reset();
     estimatorPass_.reset();
+    bentPass_.reset();
     denoisePass_.reset();
     temporalPass_.reset();
     upsamplePass_.reset();
@@ -127,7 +129,8 @@ void Renderer::resize(uint32_t width, uint32_t height) {
 void Renderer::setLighting(const voxel::Lighting& lighting) {
     const bool hadShadows = shadows(), wasSoft = softShadows();
     const voxel::Lighting old = std::exchange(lighting_, lighting);
-    if (hadShadows == shadows() && wasSoft == softShadows()) {  // uniforms only
+    const bool sameAmbient = old.ambientFrom == lighting_.ambientFrom;
+    if (hadShadows == shadows() && wasSoft == softShadows() && sameAmbient) {  // uniforms only
         if (old.sunDirection != lighting_.sunDirection || old.sunAngle != lighting_.sunAngle) shadowCamera_.reset();
         return;
     }
@@ -140,6 +143,8 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
     finishFrames();  // before their passes go
     compositePass_.reset();
     shadowPass_.reset();
+    if (!sameAmbient) estimatorPass_.reset();  // VBAO's bent normals follow the ambient's source
+    bentPass_.reset();
     createPasses();
     updateTargets(wantedShape());
     resetHistory();
@@ -164,8 +169,10 @@ void Renderer::setAo(const AoOptions& ao) {
     const bool estimator = old.method != ao_.method || old.estimator.ssaoSamples != ao_.estimator.ssaoSamples ||
                            differIn(old, ao_, voxel::kEstimatorPipeline);  // its loop shape: the settings table's column
     const bool denoise = old.chain.denoisePasses != ao_.chain.denoisePasses;
-    if (chain) compositePass_.reset();
-    if (chain || estimator) estimatorPass_.reset();
+    const bool bent = bentNormals(old, lighting_) != bentNormals(ao_, lighting_);
+    if (chain || bent) compositePass_.reset();
+    if (chain || estimator || bent) estimatorPass_.reset();
+    bentPass_.reset();
     if (voxelThickness(old) != voxelThickness(ao_)) prefilterPass_.reset();
     if (chain || denoise || wasTemporal != temporal()) temporalPass_.reset();
     // Moving objects get motion vectors only with the temporal pass: its G-buffer pass and target follow it.
@@ -255,7 +262,8 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
     if (ao_.enabled) recordAo(cmd);
     pass(cmd, CompositePass::declare(aoOutput()), [&] {
         compositePass_->record(cmd, targets_.gbuffer(), image(aoOutput()), image(TargetId::Color), s.frame,
-                               scene_.palette, s.aoConstants, s.objectUniforms, image(TargetId::Shadow));
+                               scene_.palette, s.aoConstants, s.objectUniforms, image(TargetId::Shadow),
+                               image(TargetId::AoBentNormal));
     });
     if (displayOn_)
         pass(cmd, DisplayPass::declare(), [&] {
@@ -417,6 +425,17 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
             aoAov_ = true;
             targets_.update(wantedShape());
         }
+        // VBAO's bent normals, where the frame did not find them: its estimator again
+        // with them (the same kernel on the same inputs and noise).
+        if (ao_.method == AoMethod::Vbao && !bentNormals(ao_, lighting_)) {
+            if (!bentPass_) bentPass_ = std::make_unique<EstimatorPass>(ctx_, ao_, true);
+            PassDecl untimed = bentPass_->declare();
+            untimed.timestamp = nullptr;  // not the frame's cost
+            pass(cmd, untimed, [&] {
+                bentPass_->record(cmd, image(TargetId::Surface), targets_.ao(), slot().aoConstants,
+                                  slot().traceConstants, scene_.occupancy.get());
+            });
+        }
         const uint32_t passes = ao_.chain.denoisePasses;
         if (temporal() && passes > 0)
             pass(cmd, DenoisePass::declare(passes - 1),
@@ -427,6 +446,7 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
         });
         copyPart(FrameCopy::AoFull, TargetId::AoFull, 4);
         copyPart(FrameCopy::Raw, TargetId::AoRaw, 16);
+        if (ao_.method == AoMethod::Vbao) copyPart(FrameCopy::BentNormal, TargetId::AoBentNormal, 8);
         copyPart(FrameCopy::Spatial, denoisedTarget(passes), 16);
         if (temporal()) copyPart(FrameCopy::History, aoOutput(), 16);
     }

@@ -176,6 +176,10 @@ private:
     bool shadows() const { return lighting_.sunShadows && scene_.occupancy; }
     // A sun of finite size: jittered rays accumulated in a history (shadow_pass.h).
     bool softShadows() const { return shadows() && lighting_.sunAngle > 0.0f; }
+    // VBAO finds bent normals in every frame: the sky's ambient is lit around them.
+    static bool bentNormals(const AoOptions& ao, const voxel::Lighting& lighting) {
+        return ao.enabled && ao.method == AoMethod::Vbao && lighting.ambientFrom == voxel::AmbientSource::Sky;
+    }
     void writeTraceConstants(const Camera& camera, uint32_t frameIndex);
     // Ends the command buffer and submits it after `waits`, signalling the timeline's next value.
     void submitCommands(VkCommandBuffer cmd, std::span<const FrameWait> waits = {});
@@ -217,6 +221,7 @@ private:
     CullingOptions cullingOptions_ = cullingOptions(voxel::Detail{});
     std::unique_ptr<DepthPrefilterPass> prefilterPass_;
     std::unique_ptr<EstimatorPass> estimatorPass_;
+    std::unique_ptr<EstimatorPass> bentPass_;  // VBAO with bent normals, for read-backs of frames without them
     std::unique_ptr<DenoisePass> denoisePass_;
     std::unique_ptr<TemporalPass> temporalPass_;
     std::unique_ptr<UpsamplePass> upsamplePass_;

@@ -19,6 +19,8 @@ float gtaoDepth(ivec2 texel, int mip) { return imageLoad(depthAtlas, (texel >> m
 #ifdef GROTTO_VBAO
 layout(set = 0, binding = 4, r32f) uniform readonly image2D thicknessAtlas;  // the depth atlas's layout
 float gtaoThickness(ivec2 texel, int mip) { return imageLoad(thicknessAtlas, (texel >> mip) + gtaoMipOffset(mip)).r; }
+layout(set = 0, binding = 5, rgba16f) uniform writeonly image2D bentNormals;  // AO resolution, world space
+void vbaoBentNormal(ivec2 texel, vec3 direction) { imageStore(bentNormals, texel, vec4(direction, 0.0)); }
 #endif
 uint gtaoSurface(ivec2 pixel) { return texelFetch(surfaceTex, pixel, 0).r; }
 

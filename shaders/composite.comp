@@ -12,6 +12,7 @@
 
 layout(constant_id = 0) const bool withAo = true;  // false: one invocation per pixel, no AO bound
 layout(constant_id = 3) const bool withShadow = true;  // false: the sun reaches everything, no shadow bound
+layout(constant_id = 4) const bool withBentNormals = false;  // VBAO's bent normals light the sky's ambient
 // The group's side, set by CompositePass: lavapipe runs 16x16 groups of single
 // pixels faster, 8x8 groups of 2x2 blocks (docs/benchmarks.md).
 layout(local_size_x_id = 1, local_size_y_id = 2) in;
@@ -24,6 +25,7 @@ layout(set = 0, binding = 5, rgba32f) uniform readonly image2D aoHalf;  // the A
 layout(set = 0, binding = 6) uniform sampler2D depthBuffer;             // full-res D32, reverse-Z
 layout(set = 0, binding = 7, std140) uniform Objects { ObjectUniforms objects; };  // object faces' normals
 layout(set = 0, binding = 8, r32f) uniform readonly image2D shadowImage;  // full res: 1 = sunlit (shadow.comp)
+layout(set = 0, binding = 9, rgba16f) uniform readonly image2D bentNormals;  // AO res, world space (vbao)
 
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
@@ -42,24 +44,38 @@ vec3 multiBounce(float v, vec3 albedo) {
 vec3 sky(ivec2 pixel) {
     vec2 p = vec2(pixel) + 0.5;
     vec3 ray = frame.rayOrigin.xyz + p.x * frame.rayStepX.xyz + p.y * frame.rayStepY.xyz;
-    float up = ray.y * inversesqrt(dot(ray, ray));
-    return up >= 0.0 ? mix(frame.skyHorizon.rgb, frame.skyZenith.rgb, sqrt(up)) : frame.skyHorizon.rgb * 0.8;
+    return skyRadiance(ray.y * inversesqrt(dot(ray, ray)), frame.skyZenith.rgb, frame.skyHorizon.rgb);
+}
+
+// The ambient light on a surface: a constant, or the sky's light on a surface
+// facing the AO pixel's bent normal (where VBAO found one) or its own normal.
+vec3 ambientLight(vec3 normal, ivec2 aoPixel) {
+    if (frame.ambient.w < 0.5) return frame.ambient.rgb;
+    vec3 direction = normal;
+    if (withBentNormals) {
+        vec3 bent = imageLoad(bentNormals, aoPixel).xyz;
+        if (dot(bent, bent) > 0.25) direction = bent;
+    }
+    float t = (clamp(direction.y, -1.0, 1.0) * 0.5 + 0.5) * float(GROTTO_SKY_LIGHT_ROWS - 1);
+    int row = min(int(t), GROTTO_SKY_LIGHT_ROWS - 2);
+    return frame.ambient.rgb * mix(frame.skyLight[row].rgb, frame.skyLight[row + 1].rgb, t - float(row));
 }
 
 // Scene-linear: the exposure applied, no tone map (that is made where a display
 // image is: display.comp, the image writers; shared/tone_map.h).
 vec3 exposed(vec3 radiance) { return radiance * frame.exposure.x; }
 
-vec3 shade(uint surface, float ao, float sunReach) {
+vec3 shade(uint surface, float ao, float sunReach, ivec2 aoPixel) {
     uint face = surfaceFace(surface);
-    // The sun term for an axis normal is one component of the sun direction.
-    float cosSun = (facePositive(face) ? 1.0 : -1.0) * frame.sunDirection[faceAxis(face)];
+    vec3 normal = vec3(0.0);
+    normal[faceAxis(face)] = facePositive(face) ? 1.0 : -1.0;
     if (surfaceObject(surface) != 0u)  // an object's face, turned with it
-        cosSun = dot(objects.worldNormals[surfaceKey(surface) - 1u].xyz, frame.sunDirection.xyz);
+        normal = objects.worldNormals[surfaceKey(surface) - 1u].xyz;
+    float cosSun = dot(normal, frame.sunDirection.xyz);
     vec4 material = albedo[surfaceMaterial(surface) - 1u];  // rgb albedo, a: material AO
     vec3 base = material.rgb;
     float visibility = min(mix(1.0, ao, frame.aoStrength.x), material.a);
-    return base * (frame.sunRadiance.rgb * (max(cosSun, 0.0) * sunReach) + frame.ambient.rgb * multiBounce(visibility, base));
+    return base * (frame.sunRadiance.rgb * (max(cosSun, 0.0) * sunReach) + ambientLight(normal, aoPixel) * multiBounce(visibility, base));
 }
 
 float sunlit(ivec2 q) { return withShadow ? imageLoad(shadowImage, q).r : 1.0; }
@@ -69,7 +85,7 @@ void compositePixel(AoBlock block, ivec2 h, ivec2 offset) {
     ivec2 q = h * int(gtao.scale) + offset;
     if (any(greaterThanEqual(uvec2(q), frame.size))) return;
     uint surface = texelFetch(surfaceTex, q, 0).r;
-    vec3 color = surface == 0u ? sky(q) : shade(surface, upsampledAo(block, h, offset, surfaceKey(surface)), sunlit(q));
+    vec3 color = surface == 0u ? sky(q) : shade(surface, upsampledAo(block, h, offset, surfaceKey(surface)), sunlit(q), h);
     imageStore(outColor, q, vec4(exposed(color), 1.0));
 }
 
@@ -78,7 +94,7 @@ void main() {
     if (!withAo) {
         if (any(greaterThanEqual(uvec2(h), frame.size))) return;
         uint surface = texelFetch(surfaceTex, h, 0).r;
-        imageStore(outColor, h, vec4(exposed(surface == 0u ? sky(h) : shade(surface, 1.0, sunlit(h))), 1.0));
+        imageStore(outColor, h, vec4(exposed(surface == 0u ? sky(h) : shade(surface, 1.0, sunlit(h), h)), 1.0));
         return;
     }
     if (any(greaterThanEqual(uvec2(h), gtao.halfSize))) return;

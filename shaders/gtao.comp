@@ -14,7 +14,10 @@ layout(constant_id = 2) const float specPower = 2.0;
 
 #ifdef GROTTO_VBAO
 // VBAO (vbao.comp): the same kernel, each slice a bitmask of 32 sectors that an
-// occluder hides only between its front and its back.
+// occluder hides only between its front and its back; the open sectors give the
+// bent normal when a frame wants it (sky ambient, the bent_normal AOV).
+layout(constant_id = 3) const bool specBentNormals = false;
+#define kVbaoBentNormals specBentNormals
 #include "shared/vbao_sectors.h"
 #endif
 #include "ao_estimator.glsl"

@@ -17,13 +17,14 @@ struct Rendered {
 
 class AoFixture : public GpuTest {
 protected:
+    // The world's own lighting unless `lighting` is given.
     Rendered render(const voxel::World& world, const voxel::CameraDesc& cd, uint32_t w, uint32_t h,
-                    const AoOptions& ao) {
+                    const AoOptions& ao, const voxel::Lighting* lighting = nullptr) {
         Rendered r{{}, makeCamera(cd, w, h), {}};
         // The world's occupancy only where the AO traces it.
         auto scene = tracesVoxels(ao.method) || voxelThickness(ao) ? uploadScene(ctx(), world)
                                                                    : uploadScene(ctx(), world.mesh(), world.desc());
-        Renderer renderer(ctx(), *scene, world.desc().lighting, ao, w, h);
+        Renderer renderer(ctx(), *scene, lighting ? *lighting : world.desc().lighting, ao, w, h);
         renderer.render(r.camera);
         r.img = renderer.readback(r.camera, true);
         r.constants = gtaoConstants(r.camera, gpuSettings(ao), 0, ao.chain.fullResolution ? 1 : 2);

@@ -150,6 +150,77 @@ TEST_F(Vbao, VoxelThicknessIsDeepInWallsAndThinInPoles) {
     EXPECT_GT(thin / m, thick / m + 0.02) << "light must pass behind a pole one voxel thin";
 }
 
+// The bent normal: the GPU's (half floats) is the twin's; on an open floor it is
+// the floor's normal; beside a wall it leans away from the wall as the mean open
+// direction of exact cosine-weighted rays does (the reference's rays, R = 4).
+TEST_F(Vbao, BentNormalIsTheTwinsAndTheMeanOpenDirection) {
+    const voxel::World corner = test::makeVoxelWorld({-40, -40, -60}, {40, 40, 60}, [](int x, int y, int) {
+        return (y < 0 && x >= -40) || (x < 0 && y >= 0);
+    });
+    AoOptions ao = vbao("high", 4.0, 1e6);  // the walls are forty voxels deep
+    ao.estimator.falloffRange = float(kVbaoFalloffRange);
+    const Rendered r = render(corner, test::lookAt({14, 14, 24}, {0, 0, 0}, 60.0), 128, 96, ao);
+    ASSERT_EQ(r.img.bentNormal.size(), 3 * r.img.ao.size());
+    const GtaoTwin twin(r.constants, r.img.depthBuffer, r.img.surfaceIds, true);
+    auto bentAt = [&](size_t i) { return glm::vec3(r.img.bentNormal[3 * i], r.img.bentNormal[3 * i + 1], r.img.bentNormal[3 * i + 2]); };
+    int compared = 0, closeToTwin = 0;
+    for (uint32_t y = 0; y < r.constants.halfSize.y; y += 2)
+        for (uint32_t x = 0; x < r.constants.halfSize.x; x += 2) {
+            const size_t i = size_t(2 * y) * r.img.width + 2 * x;
+            const glm::vec3 cpu = twin.bentNormal(glm::ivec2(x, y)), gpu = bentAt(i);
+            if (!std::isfinite(r.img.depth[i])) {
+                EXPECT_EQ(glm::length(gpu), 0.0f) << "sky at " << x << "," << y;
+                continue;
+            }
+            EXPECT_NEAR(glm::length(cpu), 1.0f, 1e-4f);
+            // A sector boundary may fall between the GPU's and the CPU's rounding.
+            EXPECT_GT(glm::dot(gpu, cpu), 0.98f) << "pixel " << x << "," << y;
+            closeToTwin += glm::dot(gpu, cpu) > 0.9995f;
+            ++compared;
+        }
+    EXPECT_GT(compared, 300);
+    EXPECT_GT(closeToTwin, compared * 9 / 10) << "most within half-float rounding";
+
+    // Against exact rays: cosine-weighted directions about the floor's normal
+    // (a Fibonacci lattice on the disc), open when nothing solid lies within R.
+    auto meanOpen = [&](const glm::dvec3& p) {
+        glm::dvec3 sum(0.0);
+        const int rays = 1024;
+        for (int k = 0; k < rays; ++k) {
+            const double u = (k + 0.5) / rays, phi = 2.0 * 3.14159265358979 * std::fmod(k * 0.6180339887498949, 1.0);
+            const double r2 = std::sqrt(u);
+            const glm::dvec3 d(r2 * std::cos(phi), std::sqrt(1.0 - u), r2 * std::sin(phi));
+            if (!corner.raycast(p + glm::dvec3(0, 1e-4, 0), d, 4.0)) sum += d;
+        }
+        return glm::normalize(sum);
+    };
+    double worst = 0.0, mean = 0.0;
+    int near = 0, open = 0;
+    for (uint32_t y = 0; y < r.img.height; y += 2)
+        for (uint32_t x = 0; x < r.img.width; x += 2) {
+            const size_t i = size_t(y) * r.img.width + x;
+            if (!std::isfinite(r.img.depth[i]) || r.img.normal[3 * i + 1] < 0.5f) continue;  // the floor
+            const glm::dvec3 w = worldAt(r, x, y);
+            if (std::abs(w.z) > 6.0 || w.x > 10.0) continue;
+            const glm::dvec3 gpu = glm::normalize(glm::dvec3(bentAt(i)));
+            if (w.x > 7.0) {  // beyond the effective radius (R times its multiplier) from the wall: open
+                EXPECT_GT(gpu.y, 0.999) << "open floor at x " << w.x;
+                ++open;
+                continue;
+            }
+            const glm::dvec3 ref = meanOpen(w);
+            const double angle = std::acos(std::clamp(glm::dot(gpu, ref), -1.0, 1.0));
+            worst = std::max(worst, angle), mean += angle, ++near;
+            if (w.x < 3.0) EXPECT_GT(gpu.x, 0.0) << "leans away from the wall at x " << w.x;
+        }
+    ASSERT_GT(near, 50);
+    ASSERT_GT(open, 20);
+    std::printf("bent normal beside a wall, %d pixels: mean %.2f, worst %.2f degrees from the exact rays'\n", near,
+                glm::degrees(mean / near), glm::degrees(worst));
+    EXPECT_LT(glm::degrees(mean / near), 5.0);
+    EXPECT_LT(glm::degrees(worst), 25.0);  // at the wall's foot, where the falloff fades the wall most
+}
+
 // The world file's ao.thickness and ao.thickness_value, with their defaults.
 TEST(VbaoSettings, ThicknessModesTheirDefaultsAndBadNames) {
     voxel::AoDesc desc;

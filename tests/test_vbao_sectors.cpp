@@ -123,3 +123,64 @@ TEST(VbaoSectors, TheSlicesFormFromCosinesIsTheCdf) {
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+vbao::VbaoSlice sliceAt(float n) { return vbao::vbaoSlice(n, std::cos(n), std::sin(n)); }
+
+// The integral of the direction (toward the slice's direction, toward the
+// camera) times the weight over [a, b], by the midpoint rule.
+glm::dvec2 directionIntegral(double a, double b, double n) {
+    const int steps = 20000;
+    glm::dvec2 sum(0.0);
+    const double dt = (b - a) / steps;
+    for (int i = 0; i < steps; ++i) {
+        const double t = a + (i + 0.5) * dt;
+        sum += glm::dvec2(std::sin(t), std::cos(t)) * (std::cos(t - n) * std::abs(std::sin(t)) * dt);
+    }
+    return sum;
+}
+
+TEST(VbaoSectors, AngleAtInvertsTheCdf) {
+    float worst = 0.0f;
+    for (const float n : kNormals)
+        for (int k = 0; k <= 32; ++k) {
+            const float u = float(k) / 32.0f, t = vbao::vbaoAngleAt(sliceAt(n), u);
+            EXPECT_GE(t, n - kVbaoHalfPi - 1e-6f);
+            EXPECT_LE(t, n + kVbaoHalfPi + 1e-6f);
+            worst = std::max(worst, std::abs(vbao::vbaoCdf(t, n) - u));
+        }
+    EXPECT_LT(worst, 2e-4f) << "well inside a sector (1/32)";
+}
+
+// The bent normal's slice integral: exact for runs of open sectors wherever they
+// lie, including runs across the direction to the camera (where the weight's
+// |sin t| folds) and the whole half-disc.
+TEST(VbaoSectors, OpenDirectionIsTheIntegralOverTheOpenSectors) {
+    const uint32_t masks[] = {0u, 0xFFFF0000u, 0x0000FFFFu, 0x0FF00FF0u, 0xF000000Fu, 0x00FFFF00u, 0xFFFFFFFEu};
+    for (const float n : kNormals)
+        for (const uint32_t mask : masks) {
+            glm::dvec2 expected(0.0);
+            for (int k = 0; k < 32; ++k)
+                if (!(mask >> k & 1u)) {
+                    const double a = vbao::vbaoAngleAt(sliceAt(n), k / 32.0f), b = vbao::vbaoAngleAt(sliceAt(n), (k + 1) / 32.0f);
+                    expected += directionIntegral(a, b, n);
+                }
+            const glm::vec2 got = vbao::vbaoOpenDirection(sliceAt(n), mask);
+            EXPECT_NEAR(got.x, expected.x, 2e-4) << "n " << n << " mask " << std::hex << mask;
+            EXPECT_NEAR(got.y, expected.y, 2e-4) << "n " << n << " mask " << std::hex << mask;
+        }
+    // Closed entirely: no open direction.
+    const glm::vec2 none = vbao::vbaoOpenDirection(sliceAt(0.4f), 0xFFFFFFFFu);
+    EXPECT_EQ(none.x, 0.0f);
+    EXPECT_EQ(none.y, 0.0f);
+    // Open, facing the camera: straight at it, by symmetry, with the hemisphere's
+    // integral of cos^2 t |sin t| (2/3).
+    const glm::vec2 open = vbao::vbaoOpenDirection(sliceAt(0.0f), 0u);
+    EXPECT_NEAR(open.x, 0.0f, 1e-6f);
+    EXPECT_NEAR(open.y, 2.0f / 3.0f, 1e-6f);
+}
+
+}  // namespace
+}  // namespace grotto

@@ -20,6 +20,7 @@ constexpr auto kQualities = [] {
     return names;
 }();
 constexpr std::string_view kToneMaps[] = {"filmic", "linear"};  // ToneMap's order
+constexpr std::string_view kAmbientSources[] = {"color", "sky"};  // AmbientSource's order
 constexpr std::string_view kThicknessModes[] = {"constant", "distance", "voxels"};  // ThicknessMode's order
 
 // Colours are linear RGB; above 1 is allowed (a bright sun), up to 1000.
@@ -52,6 +53,10 @@ const Setting kSettings[] = {
      .hi = kMaxRadiance, .help = "The ambient light's colour, linear RGB"},
     {.key = "lighting.ambient.intensity", .type = T::Number, .desc = &Lighting::ambientIntensity, .lo = 0.0,
      .hi = kMaxRadiance, .uiLo = 0.0, .uiHi = 4.0, .help = "The ambient light, times its colour, before AO"},
+    {.key = "lighting.ambient.from", .type = T::Choice, .desc = &Lighting::ambientFrom,
+     .help = "color: the ambient colour on every surface; sky: the sky gradient's light on each surface, "
+             "around VBAO's bent normal (times the intensity, before AO)",
+     .invalidates = kEstimatorPipeline | kCompositePipeline | kTargets, .choices = kAmbientSources},
     {.key = "lighting.sky.zenith", .type = T::Color, .desc = &Lighting::skyZenith, .lo = 0.0, .hi = kMaxRadiance,
      .help = "The sky straight up, linear RGB"},
     {.key = "lighting.sky.horizon", .type = T::Color, .desc = &Lighting::skyHorizon, .lo = 0.0, .hi = kMaxRadiance,
@@ -196,7 +201,8 @@ std::string defaultText(const Setting& s) {
     const WorldDesc desc;
     if (s.type == SettingType::Choice) {
         if (const auto* m = std::get_if<std::string AoDesc::*>(&s.desc)) return desc.ao.*(*m);
-        return std::string(s.choices[size_t(desc.lighting.*std::get<ToneMap Lighting::*>(s.desc))]);
+        if (const auto* m = std::get_if<ToneMap Lighting::*>(&s.desc)) return std::string(s.choices[size_t(desc.lighting.*(*m))]);
+        return std::string(s.choices[size_t(desc.lighting.*std::get<AmbientSource Lighting::*>(s.desc))]);
     }
     if (s.type == SettingType::Color || s.type == SettingType::Direction) {
         const glm::vec3 v = desc.lighting.*std::get<glm::vec3 Lighting::*>(s.desc);

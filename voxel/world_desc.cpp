@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 namespace grotto::voxel {
 namespace fs = std::filesystem;
@@ -92,9 +93,9 @@ void readSetting(Reader& r, const std::string& name, const Setting& s, WorldDesc
                        if (direction && glm::length(v) < 1e-9) r.fail(name, "must not be zero");
                        w.lighting.*m = glm::vec3(direction ? glm::normalize(v) : v);
                    },
-                   [&](ToneMap Lighting::*m) {
+                   [&]<class E>(E Lighting::*m) requires std::is_enum_v<E> {
                        const std::string v = r.string(name, std::string(s.choices[size_t(w.lighting.*m)]));
-                       w.lighting.*m = ToneMap(choiceIndex(r, name, s, v));
+                       w.lighting.*m = E(choiceIndex(r, name, s, v));
                    },
                    [&](double Detail::*m) { w.detail.*m = r.number(name, w.detail.*m, s.lo, s.hi); },
                    [&](bool Detail::*m) { w.detail.*m = r.boolean(name, w.detail.*m); },

@@ -26,6 +26,7 @@ enum class SolidRule {
 };
 const char* solidRuleName(SolidRule rule);
 
+using grotto::AmbientSource;
 using grotto::AoDesc;
 using grotto::CameraDesc;
 using grotto::Lighting;

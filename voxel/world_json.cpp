@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <charconv>
 #include <optional>
+#include <type_traits>
 
 namespace grotto::voxel {
 namespace fs = std::filesystem;
@@ -63,7 +64,7 @@ std::optional<json> settingJson(const Setting& s, const WorldDesc& d) {
                           [&](float Lighting::*m) -> std::optional<json> { return decimal(d.lighting.*m); },
                           [&](bool Lighting::*m) -> std::optional<json> { return d.lighting.*m; },
                           [&](glm::vec3 Lighting::*m) -> std::optional<json> { return triple(d.lighting.*m); },
-                          [&](ToneMap Lighting::*m) -> std::optional<json> {
+                          [&]<class E>(E Lighting::*m) -> std::optional<json> requires std::is_enum_v<E> {
                               return std::string(s.choices[size_t(d.lighting.*m)]);
                           },
                           [&](double Detail::*m) -> std::optional<json> { return d.detail.*m; },

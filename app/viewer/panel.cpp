@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <type_traits>
 
 namespace grotto::viewer {
 namespace {
@@ -32,7 +33,7 @@ void inputPath(const char* label, std::string& path) {
 // A choice's value now, as the world file names it.
 std::string choiceOf(const voxel::Setting& row, const voxel::WorldDesc& d) {
     return std::visit(Overloaded{[&](std::string voxel::AoDesc::*m) { return d.ao.*m; },
-                                 [&](voxel::ToneMap voxel::Lighting::*m) {
+                                 [&]<class E>(E voxel::Lighting::*m) requires std::is_enum_v<E> {
                                      return std::string(row.choices[size_t(d.lighting.*m)]);
                                  },
                                  [](auto) { return std::string(); }},

@@ -1,5 +1,6 @@
 #include "engine/frame/frame_constants.h"
 
+#include "engine/frame/sky_light.h"
 #include "shaders/shared/tone_map.h"
 
 #include <cmath>
@@ -11,7 +12,13 @@ gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l,
     u.viewProj = camera.viewProjRelative();
     u.sunDirection = glm::vec4(l.sunDirection, 0.0f);
     u.sunRadiance = glm::vec4(l.sunColor * l.sunIntensity, 0.0f);
-    u.ambient = glm::vec4(l.ambientColor * l.ambientIntensity, 0.0f);
+    if (l.ambientFrom == voxel::AmbientSource::Sky) {
+        u.ambient = glm::vec4(glm::vec3(l.ambientIntensity), 1.0f);
+        const auto rows = skyLightTable(l.skyZenith, l.skyHorizon);
+        for (int k = 0; k < GROTTO_SKY_LIGHT_ROWS; ++k) u.skyLight[k] = glm::vec4(rows[k], 0.0f);
+    } else {
+        u.ambient = glm::vec4(l.ambientColor * l.ambientIntensity, 0.0f);
+    }
     u.skyZenith = glm::vec4(l.skyZenith, 0.0f);
     u.skyHorizon = glm::vec4(l.skyHorizon, 0.0f);
     // rayDirection() is linear in the pixel position before normalising.

@@ -3,6 +3,8 @@
 #include "engine/frame/object_frame.h"
 #include "shaders/shared/quad.h"
 
+#include <glm/gtc/packing.hpp>
+
 #include <algorithm>
 #include <cstring>
 #include <limits>
@@ -97,6 +99,16 @@ FrameImages FrameCopy::decode() const {
     } else {
         f.aoTemporal = f.aoSpatial;
         f.aoHistory.assign(n, 1.0f);
+    }
+    if (copied_[BentNormal]) {  // RGBA16F at AO resolution
+        const std::vector<uint16_t> halves = values<uint16_t>(buffers_[BentNormal], copied_[BentNormal]);
+        std::vector<float> bent(halves.size());
+        for (size_t i = 0; i < halves.size(); ++i) bent[i] = glm::unpackHalf1x16(halves[i]);
+        f.bentNormal.resize(3 * n);
+        for (uint32_t c = 0; c < 3; ++c) {
+            const std::vector<float> channel = halfToFull(bent, l.half, 4, c, l.scale, f.width, f.height);
+            for (size_t i = 0; i < n; ++i) f.bentNormal[3 * i + c] = channel[i];
+        }
     }
     const std::vector<float> packed = halfToFull(raw, l.half, 4, 1, l.scale, f.width, f.height);
     f.edges.resize(n);

@@ -17,6 +17,8 @@ struct FrameImages {
     uint32_t toneMap = GROTTO_TONE_MAP_FILMIC;  // the curve that makes `color` display values (shared/tone_map.h)
     std::vector<float> depth;      // view-axis distance in world units; +inf for sky
     std::vector<float> normal;     // world-space xyz; 0 for sky
+    std::vector<float> bentNormal; // VBAO: the mean open direction, world-space xyz (half res); 0 for sky;
+                                   // empty with other methods
     std::vector<float> albedo;     // linear rgb; 0 for sky
     std::vector<float> ao;         // final visibility, full res (1 without AO)
     std::vector<float> aoRaw;      // the estimator's output (half res)

@@ -38,6 +38,10 @@ constexpr TargetRow kRows[] = {
     // VBAO binds it whatever its thickness mode; only the voxels mode fills it.
     {TargetId::AoThickness, kR32f, TargetSize::DepthAtlas, kStorage,
      [](const FrameShape& s) { return voxelThickness(s.ao); }, true, 1, kGeneral},
+    // VBAO's bent normals, when the sky's ambient or a read-back wants them; the
+    // composite binds it (a placeholder) with every method.
+    {TargetId::AoBentNormal, VK_FORMAT_R16G16B16A16_SFLOAT, TargetSize::Ao, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+     [](const FrameShape& s) { return s.ao.enabled && s.ao.method == AoMethod::Vbao; }, true, 1, kGeneral},
     {TargetId::AoRaw, kRgba32f, TargetSize::Ao, kStorage | kRead, aoOn, true, 1, kGeneral},
     // One denoise pass needs one target (with the temporal pass, only for the
     // AO_spatial AOV), more ping-pong between two.
@@ -93,6 +97,7 @@ vk::Image& FrameTargets::slot(TargetRef target) {
     case TargetId::ShadowHistory: return shadowHistory_[copy];
     case TargetId::AoDepthAtlas: return ao_.depthAtlas;
     case TargetId::AoThickness: return ao_.thickness;
+    case TargetId::AoBentNormal: return ao_.bentNormal;
     case TargetId::AoRaw: return ao_.raw;
     case TargetId::AoSpatial0: return ao_.spatial[0];
     case TargetId::AoSpatial1: return ao_.spatial[1];

@@ -10,7 +10,7 @@ namespace grotto {
 
 enum class TargetId {
     Depth, Surface, Motion, Color, Display, Normals, Shadow, ShadowHistory,
-    AoDepthAtlas, AoThickness, AoRaw, AoSpatial0, AoSpatial1, AoHistory, AoFull,
+    AoDepthAtlas, AoThickness, AoBentNormal, AoRaw, AoSpatial0, AoSpatial1, AoHistory, AoFull,
 };
 inline constexpr int kTargetCount = int(TargetId::AoFull) + 1;
 

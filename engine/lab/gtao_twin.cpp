@@ -59,6 +59,9 @@ struct Kernel {
 
 // VBAO: the same kernel with each slice's bitmask (what vbao.comp compiles).
 struct VbaoKernel : Kernel {
+    static constexpr bool kVbaoBentNormals = true;
+    vec3 bent{0.0f};  // the last pixel's bent normal
+    void vbaoBentNormal(ivec2, vec3 direction) { bent = direction; }
 #define GROTTO_VBAO
 #include "shaders/shared/gtao_kernel.h"
 #undef GROTTO_VBAO
@@ -81,6 +84,11 @@ GtaoTwin::~GtaoTwin() { delete kernel_; }
 
 glm::vec2 GtaoTwin::pixel(glm::ivec2 p) const {
     return vbao_ ? kernel_->VbaoKernel::gtaoPixel(p) : kernel_->twin::Kernel::gtaoPixel(p);
+}
+
+glm::vec3 GtaoTwin::bentNormal(glm::ivec2 p) const {
+    kernel_->VbaoKernel::gtaoPixel(p);
+    return kernel_->bent;
 }
 
 }  // namespace grotto

@@ -22,6 +22,8 @@ public:
 
     // Visibility and packed edges at a half-resolution pixel.
     glm::vec2 pixel(glm::ivec2 halfPixel) const;
+    // VBAO's bent normal there (world space, unit length; zero for the sky).
+    glm::vec3 bentNormal(glm::ivec2 halfPixel) const;
 
 private:
     struct Kernel;

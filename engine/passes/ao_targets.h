@@ -14,6 +14,8 @@ struct AoTargets {
     vk::Image depthAtlas;                                      // R32F view depth, every MIP (see depthMipLayout)
     vk::Image thickness;                                       // R32F: VBAO's voxel thickness, the same layout
                                                                // (1x1 unless voxelThickness)
+    vk::Image bentNormal;                                      // RGBA16F: VBAO's bent normal, world space, zero
+                                                               // for the sky (1x1 but with VBAO)
     vk::Image raw;                                             // RGBA32F: visibility, packed edges, depth, face + 1
     std::array<vk::Image, 2> spatial;                          // RGBA32F: denoiser ping-pong, same layout (as many
                                                                // as the passes need: none, one, or two)

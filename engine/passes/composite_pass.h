@@ -4,7 +4,9 @@
 // itself, see upsample.glsl) and, with shadows, the shadow image. Writes: RGBA32F
 // scene-linear colour: sun Lambert x shadow + ambient x AO (multi-bounce from
 // albedo), and the sky, times the exposure. No history. Object faces are lit with
-// their turned normals (the objects' uniforms, shaders/shared/objects.h).
+// their turned normals (the objects' uniforms, shaders/shared/objects.h). The
+// ambient is a constant or the sky's light (shared/sky.h), around VBAO's bent
+// normals where the frame has them.
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
@@ -13,17 +15,18 @@ namespace grotto {
 
 class CompositePass {
 public:
-    CompositePass(vk::Context& ctx, bool withAo, bool withShadow);
+    CompositePass(vk::Context& ctx, bool withAo, bool withShadow, bool withBentNormals);
     // `ao`: the AO chain's output (or its 1x1 placeholder without AO).
     static PassDecl declare(TargetRef ao) {
         return {"composite", {{TargetId::Surface, Access::Sampled}, {TargetId::Color, Access::Write}, {ao, Access::Read},
-                              {TargetId::Depth, Access::Sampled}, {TargetId::Shadow, Access::Read}}};
+                              {TargetId::Depth, Access::Sampled}, {TargetId::Shadow, Access::Read},
+                              {TargetId::AoBentNormal, Access::Read}}};
     }
     // Without AO, `aoHalf` and `gtaoConstants` are placeholders the shader ignores;
-    // without shadows, so is `shadow`.
+    // without shadows, so is `shadow`; without bent normals, so is `bentNormals`.
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& aoHalf, const vk::Image& color,
                 const vk::Buffer& frame, const vk::Buffer& palette, const vk::Buffer& gtaoConstants,
-                const vk::Buffer& objectUniforms, const vk::Image& shadow);
+                const vk::Buffer& objectUniforms, const vk::Image& shadow, const vk::Image& bentNormals);
 
 private:
     vk::Context& ctx_;

@@ -6,7 +6,7 @@
 namespace grotto {
 namespace {
 
-std::vector<uint32_t> specialization(const AoOptions& ao) {
+std::vector<uint32_t> specialization(const AoOptions& ao, bool bentNormals) {
     const voxel::EstimatorSettings& s = ao.estimator;
     switch (ao.method) {
     case AoMethod::Ssao: return {s.ssaoSamples};
@@ -14,6 +14,8 @@ std::vector<uint32_t> specialization(const AoOptions& ao) {
     case AoMethod::Voxel:
     case AoMethod::Hybrid:
         return {s.slices, s.steps, std::bit_cast<uint32_t>(s.sampleDistributionPower), s.rays};
+    case AoMethod::Vbao:
+        return {s.slices, s.steps, std::bit_cast<uint32_t>(s.sampleDistributionPower), bentNormals ? 1u : 0u};
     default: return {s.slices, s.steps, std::bit_cast<uint32_t>(s.sampleDistributionPower)};
     }
 }
@@ -21,22 +23,28 @@ std::vector<uint32_t> specialization(const AoOptions& ao) {
 std::vector<VkDescriptorType> bindingTypes(AoMethod method) {
     std::vector<VkDescriptorType> own = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
                                          VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    if (method == AoMethod::Vbao) own.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the thickness atlas
+    if (method == AoMethod::Vbao) {
+        own.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the thickness atlas
+        own.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the bent normals
+    }
     return tracesVoxels(method) ? withTraceBindings(own) : own;
 }
 
 }  // namespace
 
-EstimatorPass::EstimatorPass(vk::Context& ctx, const AoOptions& ao)
+EstimatorPass::EstimatorPass(vk::Context& ctx, const AoOptions& ao, bool bentNormals)
     : ctx_(ctx),
       method_(ao.method),
       traces_(tracesVoxels(ao.method)),
-      pass_(ctx, std::string(aoMethodName(ao.method)) + ".comp", bindingTypes(ao.method), 0, specialization(ao)) {}
+      pass_(ctx, std::string(aoMethodName(ao.method)) + ".comp", bindingTypes(ao.method), 0, specialization(ao, bentNormals)) {}
 
 PassDecl EstimatorPass::declare() const {
     PassDecl d{aoMethodName(method_), {{TargetId::AoDepthAtlas, Access::Read}, {TargetId::Surface, Access::Sampled},
                                        {TargetId::AoRaw, Access::Write}}};
-    if (method_ == AoMethod::Vbao) d.uses.push_back({TargetId::AoThickness, Access::Read});
+    if (method_ == AoMethod::Vbao) {
+        d.uses.push_back({TargetId::AoThickness, Access::Read});
+        d.uses.push_back({TargetId::AoBentNormal, Access::Write});
+    }
     return d;
 }
 
@@ -46,7 +54,10 @@ void EstimatorPass::record(VkCommandBuffer cmd, const vk::Image& surface, const 
         vk::uniformBuffer(constants.buffer), vk::storageImage(ao.depthAtlas.view),
         vk::sampledImage(ctx_.pointSampler, surface.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
         vk::storageImage(ao.raw.view)};
-    if (method_ == AoMethod::Vbao) own.push_back(vk::storageImage(ao.thickness.view));
+    if (method_ == AoMethod::Vbao) {
+        own.push_back(vk::storageImage(ao.thickness.view));
+        own.push_back(vk::storageImage(ao.bentNormal.view));
+    }
     pass_.dispatch(cmd, traces_ ? withTraceBindings(std::move(own), traceConstants, *occupancy) : own, ao.half,
                    GROTTO_GTAO_GROUP);
 }

@@ -17,8 +17,9 @@ namespace grotto {
 class EstimatorPass {
 public:
     // The loop shape (GTAO: slices, steps, distribution power; SSAO: samples;
-    // HBAO: directions, steps; voxel and hybrid: rays too) is compiled in from `ao`.
-    EstimatorPass(vk::Context& ctx, const AoOptions& ao);
+    // HBAO: directions, steps; voxel and hybrid: rays too) is compiled in from `ao`;
+    // VBAO writes its bent normals too when `bentNormals`.
+    EstimatorPass(vk::Context& ctx, const AoOptions& ao, bool bentNormals = false);
     // Timed under the method's name (aoMethodName).
     PassDecl declare() const;
     // `traceConstants` and `occupancy` only for the methods that trace voxels.

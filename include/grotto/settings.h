@@ -29,6 +29,12 @@ enum class ToneMap {
     Linear,  // clamped to [0, 1] only, for comparisons with unmapped radiance
 };
 
+// Where the ambient light comes from.
+enum class AmbientSource {
+    Color,  // a constant colour times the intensity, times AO
+    Sky,    // the sky gradient's light on the surface (around VBAO's bent normal), times the intensity, times AO
+};
+
 struct Lighting {
     glm::vec3 sunDirection{0.466002f, 0.828449f, 0.310668f};  // toward the sun, unit length ((0.45, 0.8, 0.3) normalised)
     glm::vec3 sunColor{1.0f, 0.95f, 0.85f};
@@ -37,6 +43,7 @@ struct Lighting {
     float sunAngle = 0.0f;      // the sun's angular diameter in degrees; 0: a point, hard shadows
     glm::vec3 ambientColor{0.55f, 0.65f, 0.85f};
     float ambientIntensity = 0.7f;
+    AmbientSource ambientFrom = AmbientSource::Color;
     glm::vec3 skyZenith{0.28f, 0.45f, 0.78f};
     glm::vec3 skyHorizon{0.75f, 0.82f, 0.92f};
     float exposure = 0.6f;      // radiance multiplier before the tone map (docs/lighting.md: why 0.6)

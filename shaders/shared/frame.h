@@ -5,6 +5,7 @@
 #ifndef GROTTO_SHARED_FRAME_H
 #define GROTTO_SHARED_FRAME_H
 #include "common.h"
+#include "sky.h"
 
 GROTTO_NAMESPACE_BEGIN
 
@@ -12,7 +13,7 @@ struct FrameUniforms {
     mat4 viewProj;       // camera-relative world -> clip (reverse-Z)
     vec4 sunDirection;   // xyz: unit vector toward the sun
     vec4 sunRadiance;    // rgb: colour x intensity
-    vec4 ambient;        // rgb: colour x intensity
+    vec4 ambient;        // rgb: colour x intensity (from the sky: the intensity); w: 1 = from the sky
     vec4 skyZenith;      // rgb
     vec4 skyHorizon;     // rgb
     vec4 rayOrigin;      // xyz: unnormalised view ray through pixel corner (0, 0)
@@ -22,8 +23,9 @@ struct FrameUniforms {
     vec4 exposure;       // x: radiance multiplier (the composite's colour is radiance x this); yzw unused
     uvec2 size;          // full-resolution width, height
     uvec2 pad;
+    vec4 skyLight[GROTTO_SKY_LIGHT_ROWS];  // rgb: the sky's light on a surface facing height -1 + k / 4
 };
-GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16);
+GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16 + 16 * GROTTO_SKY_LIGHT_ROWS);
 
 // G-buffer push constants: one chunk's corner in whole voxels from the camera's
 // voxel, and the camera's place in that voxel. A vertex's position is computed from

@@ -8,6 +8,9 @@
 //   float gtaoThickness(ivec2 texel, int mip); with GROTTO_VBAO only: the traced thickness
 //                                             behind the depth at that texel and MIP
 //                                             (world units along the view ray)
+//   kVbaoBentNormals, and                     with GROTTO_VBAO only: whether to find the bent
+//   void vbaoBentNormal(ivec2 texel, vec3 n); normal, and where it goes: a world-space unit
+//                                             vector, or zero for the sky
 // and, in C++, `using namespace glm` around it. Float literals carry an f so both
 // languages read them the same way.
 //
@@ -132,6 +135,12 @@ vec3 gtaoViewNormal(ivec2 pixel) {
     return vec3(gtao.viewNormals[surfaceKey(gtaoSurface(pixel * int(gtao.scale))) - 1u]);
 }
 
+// A view-space direction in world space: the view-space world axes are the first
+// six face normals (+X -X +Y -Y +Z -Z).
+vec3 gtaoWorldDirection(vec3 v) {
+    return vec3(dot(v, vec3(gtao.viewNormals[0])), dot(v, vec3(gtao.viewNormals[2])), dot(v, vec3(gtao.viewNormals[4])));
+}
+
 #ifdef GROTTO_VBAO
 // Where the solid behind a depth sample ends along the sample's view ray, as a
 // multiple of its view position: the settings' thickness in world units
@@ -168,7 +177,13 @@ vec2 gtaoPixel(ivec2 pixel) {
     float z = gtaoDepth(pixel, 0);
     float edges = gtaoPixelEdges(pixel);
     float distanceFade = gtaoDistanceFade(z);
-    if (z >= kGtaoSky || distanceFade >= 1.0f) return vec2(1.0f, edges);
+    if (z >= kGtaoSky || distanceFade >= 1.0f) {
+#ifdef GROTTO_VBAO
+        if (kVbaoBentNormals)
+            vbaoBentNormal(pixel, z >= kGtaoSky ? vec3(0.0f) : gtaoWorldDirection(gtaoViewNormal(pixel)));
+#endif
+        return vec2(1.0f, edges);
+    }
 
     vec3 normal = gtaoViewNormal(pixel);
     vec3 position = gtaoViewPosition(vec2(pixel), z);
@@ -187,6 +202,9 @@ vec2 gtaoPixel(ivec2 pixel) {
     vec2 noise = gtaoNoise(uvec2(pixel), gtao.frameIndex);
     float mipScale = exp2(1.0f - 2.0f * s.depthMipSamplingOffset);  // (2^(0.5 - offset))^2
     float thinStretch = (1.0f + s.thinOccluderCompensation) * (1.0f + s.thinOccluderCompensation) - 1.0f;
+#ifdef GROTTO_VBAO
+    vec3 bent = vec3(0.0f);  // the open directions' cosine-weighted sum over the slices
+#endif
 
     // Slice directions by rotation: one sin/cos pair for the first and for the step.
     float phi0 = noise.x / float(kGtaoSlices) * kGtaoPi, dPhi = kGtaoPi / float(kGtaoSlices);
@@ -208,6 +226,7 @@ vec2 gtaoPixel(ivec2 pixel) {
         float lowCos0 = -sinN, lowCos1 = sinN;
         float horizonCos0 = lowCos0, horizonCos1 = lowCos1;
 #ifdef GROTTO_VBAO
+        float sliceWeight = projectedLength;  // |N| in the slice: its cosines' scale
         uint occluded = 0u;  // the slice's sectors hidden by some sample's front-to-back span
         VbaoSlice sectors = vbaoSlice(n, cosNorm, sinN);
 #endif
@@ -260,6 +279,10 @@ vec2 gtaoPixel(ivec2 pixel) {
         projectedLength = mix(projectedLength, 1.0f, 0.05f);
 #ifdef GROTTO_VBAO
         visible += vbaoVisibility(occluded, n, projectedLength);
+        if (kVbaoBentNormals) {
+            vec2 open = vbaoOpenDirection(sectors, occluded);
+            bent += sliceWeight * (normalize(orthoDirection) * open.x + viewVec * open.y);
+        }
 #else
         // cos(2h - n) by the angle formulas from cos h, which the search found, so
         // only the angles themselves need an acos.
@@ -280,5 +303,13 @@ vec2 gtaoPixel(ivec2 pixel) {
     // small-radius fade is added once, not per slice, so no preset dilutes it.
     visibility = gtaoSaturate(visible / max(unoccluded, 1e-6f) + visibility);
     visibility = max(pow(visibility, s.finalValuePower), 0.03f);
+#ifdef GROTTO_VBAO
+    // Fully hidden, or fading out with distance: toward the surface's normal.
+    if (kVbaoBentNormals) {
+        float found = length(bent);
+        vec3 direction = found > 1e-6f ? bent / found : normal;
+        vbaoBentNormal(pixel, gtaoWorldDirection(normalize(mix(direction, normal, distanceFade))));
+    }
+#endif
     return vec2(mix(visibility, 1.0f, distanceFade), edges);
 }

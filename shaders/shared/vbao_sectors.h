@@ -91,12 +91,70 @@ uint vbaoSectorsBetween(float a, float b) {
 
 #ifdef __cplusplus
 int vbaoOpenSectors(uint mask) { return kVbaoSectors - std::popcount(mask); }
+int vbaoLowestBit(uint mask) { return std::countr_zero(mask); }  // mask != 0
 #else
 int vbaoOpenSectors(uint mask) { return kVbaoSectors - bitCount(mask); }
+int vbaoLowestBit(uint mask) { return findLSB(mask); }
 #endif
 
 // The slice's visibility from its mask, on GTAO's scale: projectedLength times the
 // measure of the open sectors (GTAO's projectedLength * (arc0 + arc1)).
 float vbaoVisibility(uint mask, float n, float projectedLength) {
     return projectedLength * vbaoSliceTotal(n) * float(vbaoOpenSectors(mask)) / float(kVbaoSectors);
+}
+
+// --- The bent normal: the mean open direction, cosine-weighted --------------
+
+// vbaoCdf at angle t of the slice s.
+float vbaoSliceCdfAt(VbaoSlice s, float t) {
+    t = clamp(t, s.n - kVbaoHalfPi, s.n + kVbaoHalfPi);
+    float a = (s.cosN + 2.0f * t * s.sinN - cos(2.0f * t - s.n)) * 0.25f;
+    return clamp((s.arcLo + sign(t) * a) / s.total, 0.0f, 1.0f);
+}
+
+// The angle below which the slice holds share u of its measure (vbaoCdf's
+// inverse): Newton's method inside a bracket that halves where a step would leave
+// it (the weight vanishes toward the camera, where Newton alone would overshoot).
+float vbaoAngleAt(VbaoSlice s, float u) {
+    float lo = s.n - kVbaoHalfPi, hi = s.n + kVbaoHalfPi;
+    float t = lo + u * (hi - lo);
+    for (int i = 0; i < 8; ++i) {
+        float f = vbaoSliceCdfAt(s, t) - u;
+        if (f > 0.0f) hi = t; else lo = t;
+        float slope = cos(t - s.n) * abs(sin(t)) / s.total;
+        float next = t - f / max(slope, 1e-6f);
+        t = next >= lo && next <= hi ? next : 0.5f * (lo + hi);
+    }
+    return t;
+}
+
+// The integral of the direction times the weight w from angle 0 to t: x toward
+// the slice's direction, y toward the camera. With w = cos(t - n) |sin t| it is
+// sign(t) (G(t) - G(0)) for
+//   G_x = sin^3 t cos n / 3 + sin n (cos^3 t / 3 - cos t)
+//   G_y = (sin^3 t sin n - cos^3 t cos n) / 3.
+vec2 vbaoDirectionTo(VbaoSlice s, float t) {
+    float c = cos(t), sn = sin(t);
+    float c3 = c * c * c, s3 = sn * sn * sn;
+    vec2 g = vec2(s3 * s.cosN / 3.0f + s.sinN * (c3 / 3.0f - c), (s3 * s.sinN - c3 * s.cosN) / 3.0f);
+    vec2 g0 = vec2(-2.0f * s.sinN / 3.0f, -s.cosN / 3.0f);
+    return sign(t) * (g - g0);
+}
+
+// The cosine-weighted integral of the directions the mask leaves open, in the
+// slice (x toward its direction, y toward the camera): each run of open sectors
+// integrated exactly between its ends' angles.
+vec2 vbaoOpenDirection(VbaoSlice s, uint mask) {
+    vec2 sum = vec2(0.0f);
+    uint open = ~mask;
+    while (open != 0u) {
+        int lo = vbaoLowestBit(open);
+        uint closedAbove = mask & ~vbaoBits(0, lo);
+        int hi = closedAbove == 0u ? kVbaoSectors : vbaoLowestBit(closedAbove);
+        open &= ~vbaoBits(lo, hi);
+        float a = lo == 0 ? s.n - kVbaoHalfPi : vbaoAngleAt(s, float(lo) / float(kVbaoSectors));
+        float b = hi == kVbaoSectors ? s.n + kVbaoHalfPi : vbaoAngleAt(s, float(hi) / float(kVbaoSectors));
+        sum += vbaoDirectionTo(s, b) - vbaoDirectionTo(s, a);
+    }
+    return sum;
 }
