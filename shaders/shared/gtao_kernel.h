@@ -161,12 +161,31 @@ float vbaoBackScale(vec3 front, ivec2 texel, int mip) {
 // The falloff weight pulls the front's cosine toward that edge's exactly as GTAO
 // pulls a horizon's, so with no back (infinite thickness) the two agree up to the
 // sectors, a thicker occluder never hides less, and a weight of 0 hides nothing.
-uint vbaoSampleSectors(VbaoSlice slice, vec3 position, vec3 horizon, vec3 delta, float backScale, float weight,
-                       vec3 viewVec, float lowCos, float side) {
-    vec3 backDelta = (position + delta) * backScale - position;
-    float faded = vbaoSliceCdf(slice, mix(lowCos, dot(horizon, viewVec), weight), side);
-    float back = vbaoSliceCdf(slice, dot(normalize(backDelta), viewVec), side);
-    return side * (back - faded) > 0.0f ? vbaoSectorsBetween(faded, back) : 0u;
+struct VbaoSample {
+    float front, back;    // shares of the slice's measure
+    float zFront, zBack;  // view depths of the solid along the sample's ray
+    bool hides;
+};
+
+VbaoSample vbaoSample(VbaoSlice slice, vec3 position, vec3 horizon, vec3 delta, float backScale, float weight,
+                      vec3 viewVec, float lowCos, float side) {
+    VbaoSample s;
+    vec3 front = position + delta;
+    s.front = vbaoSliceCdf(slice, mix(lowCos, dot(horizon, viewVec), weight), side);
+    s.back = vbaoSliceCdf(slice, dot(normalize(front * backScale - position), viewVec), side);
+    s.zFront = -front.z;
+    s.zBack = -front.z * backScale;
+    s.hides = side * (s.back - s.front) > 0.0f;
+    return s;
+}
+
+uint vbaoSampleSectors(VbaoSample s) { return s.hides ? vbaoSectorsBetween(s.front, s.back) : 0u; }
+
+// Two consecutive samples on one side whose solids overlap in view depth are one
+// occluder: the surface between them hides the sectors between their fronts too.
+uint vbaoBridge(VbaoSample a, VbaoSample b) {
+    bool joined = a.hides && b.hides && max(a.zFront, b.zFront) <= min(a.zBack, b.zBack);
+    return joined ? vbaoSectorsBetween(a.front, b.front) : 0u;
 }
 
 #endif
@@ -229,6 +248,9 @@ vec2 gtaoPixel(ivec2 pixel) {
         float sliceWeight = projectedLength;  // |N| in the slice: its cosines' scale
         uint occluded = 0u;  // the slice's sectors hidden by some sample's front-to-back span
         VbaoSlice sectors = vbaoSlice(n, cosNorm, sinN);
+        VbaoSample last0, last1;
+        last0.hides = false;
+        last1.hides = false;
 #endif
 
         for (uint stepIndex = 0u; stepIndex < kGtaoSteps; ++stepIndex) {
@@ -263,10 +285,13 @@ vec2 gtaoPixel(ivec2 pixel) {
             float weight0 = gtaoSaturate(falloff0 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon0, normal) * 32.0f) * inside0;
             float weight1 = gtaoSaturate(falloff1 * falloffMul + falloffAdd) * gtaoSaturate(dot(horizon1, normal) * 32.0f) * inside1;
 #ifdef GROTTO_VBAO
-            occluded |= vbaoSampleSectors(sectors, position, horizon0, delta0, vbaoBackScale(position + delta0, c0, mip),
-                                          weight0, viewVec, lowCos0, 1.0f);
-            occluded |= vbaoSampleSectors(sectors, position, horizon1, delta1, vbaoBackScale(position + delta1, c1, mip),
-                                          weight1, viewVec, lowCos1, -1.0f);
+            VbaoSample s0 = vbaoSample(sectors, position, horizon0, delta0, vbaoBackScale(position + delta0, c0, mip),
+                                       weight0, viewVec, lowCos0, 1.0f);
+            VbaoSample s1 = vbaoSample(sectors, position, horizon1, delta1, vbaoBackScale(position + delta1, c1, mip),
+                                       weight1, viewVec, lowCos1, -1.0f);
+            occluded |= vbaoSampleSectors(s0) | vbaoSampleSectors(s1) | vbaoBridge(last0, s0) | vbaoBridge(last1, s1);
+            last0 = s0;
+            last1 = s1;
 #else
             float shc0 = mix(lowCos0, dot(horizon0, viewVec), weight0);
             float shc1 = mix(lowCos1, dot(horizon1, viewVec), weight1);
