@@ -30,5 +30,25 @@ TEST(Tune, ReportsAFitNoWorseThanTheDefaultsAndReproducesIt) {
     EXPECT_NEAR(rooms, after, 1e-4);
 }
 
+// VBAO fits its own settings: the shared heuristics and, with a thickness that
+// is a share of the view depth, that share; not GTAO's thin-occluder compensation.
+TEST(Tune, FitsVbaosOwnSettings) {
+    const test::ScratchDir cache;
+    const test::RunResult r = test::runGrotto("tune " + (test::worldsDir() / "rooms.json").string() +
+                                                  " --size 64x36 --spp 64 --rounds 1 --ao vbao --thickness distance",
+                                              "GROTTO_CACHE_DIR=" + cache.path.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string before = r.out.substr(0, r.out.find('\n'));
+    EXPECT_NE(before.find("falloff_range 0.300"), std::string::npos) << "VBAO's own falloff default: " << before;
+    EXPECT_NE(before.find("thickness_value 0.100"), std::string::npos) << before;
+    EXPECT_EQ(r.out.find("thin_occluder"), std::string::npos) << r.out;
+    const size_t summary = r.out.rfind("mean rmse ");
+    ASSERT_NE(summary, std::string::npos) << r.out;
+    double after = 0.0, start = 0.0;
+    ASSERT_EQ(std::sscanf(r.out.c_str() + summary, "mean rmse %lf (before %lf)", &after, &start), 2) << r.out;
+    EXPECT_LE(after, start);
+    EXPECT_GT(after, 0.0);
+}
+
 }  // namespace
 }  // namespace grotto
