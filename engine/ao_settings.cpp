@@ -114,8 +114,11 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
     o.estimator = estimatorPreset(d.quality, d.radius ? *d.radius : kDefaultRadiusVoxels * voxelSize);
     o.estimator.rays = voxelRaysPreset(o.method, d.quality);
     o.estimator.thicknessMode = parseThicknessMode(d.thickness, where);
-    // VBAO's samples fade with GTAO's fitted falloff too soon (docs/vbao.md).
-    if (o.method == AoMethod::Vbao) o.estimator.falloffRange = float(kVbaoFalloffRange);
+    if (o.method == AoMethod::Vbao) {  // its own fit (docs/vbao.md)
+        o.estimator.falloffRange = float(kVbaoFalloffRange);
+        o.estimator.radiusMultiplier = float(kVbaoRadiusMultiplier);
+        o.estimator.finalValuePower = float(kVbaoFinalValuePower);
+    }
     o.estimator.thickness = float(o.estimator.thicknessMode == voxel::ThicknessMode::Distance
                                       ? kDefaultThicknessDistance
                                       : kDefaultThicknessVoxels * voxelSize);

@@ -48,8 +48,9 @@ uint32_t voxelRaysPreset(AoMethod method, const std::string& quality);
 // within these bounds. The default radius is four voxels.
 inline constexpr double kMinAoRadius = 1e-15, kMaxAoRadius = 1e15;
 inline constexpr double kDefaultRadiusVoxels = 4.0;
-// VBAO's default falloff range, which measured best with the voxels' thickness.
-inline constexpr double kVbaoFalloffRange = 0.3;
+// VBAO's own fit of the heuristics it shares with GTAO (grotto tune --ao vbao,
+// docs/tuning.md): GTAO's fitted falloff fades VBAO's samples too soon.
+inline constexpr double kVbaoFalloffRange = 0.3, kVbaoRadiusMultiplier = 2.0, kVbaoFinalValuePower = 1.6;
 // VBAO's default thickness: one voxel behind each depth sample (constant), or a
 // tenth of its view depth (distance).
 inline constexpr double kDefaultThicknessVoxels = 1.0, kDefaultThicknessDistance = 0.1;
