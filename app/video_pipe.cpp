@@ -211,8 +211,9 @@ void VideoPipe::failed(const std::string& what) {
     if (tail.size() > 600) tail = "..." + tail.substr(tail.size() - 600);
     std::replace(tail.begin(), tail.end(), '\n', ' ');
     while (!tail.empty() && tail.back() == ' ') tail.pop_back();
-    throw Error::internal(target_.string(), what + (status_ > 0 ? " (ffmpeg exit status " + std::to_string(status_) + ")" : "") +
-                                                (tail.empty() ? "" : ": " + tail));
+    failure_ = what + (status_ > 0 ? " (ffmpeg exit status " + std::to_string(status_) + ")" : "") +
+               (tail.empty() ? "" : ": " + tail);
+    throw Error::internal(target_.string(), failure_);
 }
 
 void VideoPipe::write(const std::vector<uint8_t>& rgb) {
@@ -237,7 +238,7 @@ void VideoPipe::write(const std::vector<uint8_t>& rgb) {
 
 void VideoPipe::frame(int index, std::vector<uint8_t> rgb) {
     std::lock_guard lock(mutex_);
-    if (input_ < 0) throw Error::internal(target_.string(), "ffmpeg has already failed");
+    if (input_ < 0) throw Error::internal(target_.string(), failure_.empty() ? "ffmpeg has already failed" : failure_);
     waiting_[index] = std::move(rgb);
     for (auto it = waiting_.begin(); it != waiting_.end() && it->first == next_; it = waiting_.erase(it), ++next_)
         write(it->second);

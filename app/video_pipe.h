@@ -75,6 +75,7 @@ private:
     int timeoutSeconds_;
     pid_t child_ = -1;
     int status_ = 0;
+    std::string failure_;  // the first failure's message: later frames report it too, whichever thread sees them
     int input_ = -1;            // the pipe to ffmpeg's stdin
     std::FILE* log_ = nullptr;  // ffmpeg's stderr, an unnamed temporary file
     int first_, next_;          // the first frame, the next frame to pipe
