@@ -1,6 +1,8 @@
 #include "engine/frame/sky_light.h"
 
 #include <cmath>
+#include <optional>
+#include <utility>
 
 namespace grotto {
 
@@ -24,9 +26,14 @@ glm::vec3 skyLight(double up, glm::vec3 zenith, glm::vec3 horizon) {
 }
 
 std::array<glm::vec3, GROTTO_SKY_LIGHT_ROWS> skyLightTable(glm::vec3 zenith, glm::vec3 horizon) {
-    std::array<glm::vec3, GROTTO_SKY_LIGHT_ROWS> rows;
+    // Every frame asks, and the sky rarely changes: the last sky's rows are kept
+    // (per thread, so renderers on several threads need no lock).
+    thread_local std::optional<std::pair<glm::vec3, glm::vec3>> lastSky;
+    thread_local std::array<glm::vec3, GROTTO_SKY_LIGHT_ROWS> rows;
+    if (lastSky == std::pair(zenith, horizon)) return rows;
     for (int k = 0; k < GROTTO_SKY_LIGHT_ROWS; ++k)
         rows[k] = skyLight(-1.0 + 2.0 * k / (GROTTO_SKY_LIGHT_ROWS - 1), zenith, horizon);
+    lastSky = std::pair(zenith, horizon);
     return rows;
 }
 
