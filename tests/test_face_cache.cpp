@@ -1,0 +1,206 @@
+// The face cache's CPU rays (voxel/face_cache.h, voxel/face_bake.h): which faces
+// are exposed, and each texel's AO, sky light and sun visibility against closed
+// forms (an open floor, a closed room), the reference AO at the same points, and
+// World::raycast toward the sun; a bake split into parts equals one bake.
+#include "grotto/error.h"
+#include "voxel/brick_table.h"
+#include "voxel/face_bake.h"
+#include "voxel/reference_ao.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <tuple>
+#include <random>
+
+namespace grotto::voxel {
+namespace {
+
+World denseWorld(glm::ivec3 size, const std::function<bool(glm::ivec3)>& solid) {
+    std::vector<uint8_t> m(size_t(size.x) * size.y * size.z, 0);
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x)
+                if (solid({x, y, z})) m[(size_t(z) * size.y + y) * size.x + x] = 1;
+    return World::fromDense(size, m.data(), 1.0, glm::dvec3(0.0));
+}
+
+std::vector<FaceTexel> bake(const World& w, std::span<const ExposedFace> faces, const FaceBakeSettings& s) {
+    std::vector<FaceTexel> t(faces.size() * s.texelsPerSide * s.texelsPerSide);
+    bakeFaces(BrickTable(w), w, faces, s, t);
+    return t;
+}
+
+TEST(FaceCache, ExposedFacesAreTheSolidVoxelsOpenSides) {
+    EXPECT_EQ(exposedFaces(denseWorld({3, 3, 3}, [](glm::ivec3 v) { return v == glm::ivec3(1); })).size(), 6u);
+    EXPECT_EQ(exposedFaces(denseWorld({4, 3, 3}, [](glm::ivec3 v) { return v.y == 1 && v.z == 1 && v.x >= 1 && v.x <= 2; })).size(), 10u);
+    const World cube = denseWorld({5, 5, 5}, [](glm::ivec3 v) { return glm::all(glm::greaterThan(v, glm::ivec3(0))) && glm::all(glm::lessThan(v, glm::ivec3(4))); });
+    const std::vector<ExposedFace> faces = exposedFaces(cube);
+    ASSERT_EQ(faces.size(), 54u);  // 6 sides of 3 x 3
+    EXPECT_TRUE(std::is_sorted(faces.begin(), faces.end()));
+    for (const ExposedFace& f : faces) {
+        EXPECT_TRUE(cube.solid(f.cell));
+        EXPECT_FALSE(cube.solid(f.cell + glm::ivec3(faceNormal(f.dir))));
+    }
+}
+
+TEST(FaceCache, TexelsTileTheFaceOnItsPlane) {
+    const ExposedFace top{{2, 3, 4}, 2};  // +Y: the plane y = 4
+    for (uint32_t k : {1u, 2u, 4u}) {
+        glm::dvec3 sum(0.0);
+        for (uint32_t j = 0; j < k; ++j)
+            for (uint32_t i = 0; i < k; ++i) {
+                const glm::dvec3 p = texelPoint(top, k, i, j);
+                EXPECT_EQ(p.y, 4.0);
+                EXPECT_GT(p.x, 2.0); EXPECT_LT(p.x, 3.0); EXPECT_GT(p.z, 4.0); EXPECT_LT(p.z, 5.0);
+                sum += p;
+            }
+        EXPECT_NEAR(sum.x / (k * k), 2.5, 1e-12);  // centred on the face
+        EXPECT_NEAR(sum.z / (k * k), 4.5, 1e-12);
+    }
+    EXPECT_EQ(texelPoint({{2, 3, 4}, 1}, 1, 0, 0).x, 2.0);  // -X: the plane x = 2
+    EXPECT_EQ(texelPoint({{2, 3, 4}, 0}, 1, 0, 0).x, 3.0);  // +X: the plane x = 3
+}
+
+// An open floor sees the whole sky: the cosine-weighted mean of sqrt(height) over
+// the upper hemisphere is 2 * integral of u^1.5 = 0.8, so zenith 0.8, horizon 0.2;
+// its underside sees only the darker horizon below (0.8); a side face half of each.
+TEST(FaceCache, AnOpenFloorSeesTheSkyAsTheClosedFormsSay) {
+    const World floor = denseWorld({33, 2, 33}, [](glm::ivec3 v) { return v.y == 0; });
+    const std::vector<ExposedFace> faces = {{{16, 0, 16}, 2}, {{16, 0, 16}, 3}, {{32, 0, 16}, 0}};
+    const std::vector<ExposedFace> all = exposedFaces(floor);
+    for (const ExposedFace& f : faces) ASSERT_TRUE(std::binary_search(all.begin(), all.end(), f));
+    FaceBakeSettings s{.radius = 4.0, .texelsPerSide = 2, .rays = 1024, .sunDirection = {0.45, 0.8, 0.3}};
+    const std::vector<FaceTexel> t = bake(floor, faces, s);
+    const FaceTexel& top = t[0];
+    EXPECT_EQ(top.samples, 1024u);
+    EXPECT_EQ(top.open, 1024u);
+    EXPECT_NEAR(top.skyZenith / top.samples, 0.8, 0.003);
+    EXPECT_NEAR(top.skyHorizon / top.samples, 0.2, 0.003);
+    EXPECT_EQ(top.sun(), 1.0);
+    const FaceTexel& bottom = t[4];
+    EXPECT_EQ(bottom.open, bottom.samples);
+    EXPECT_NEAR(bottom.skyHorizon / bottom.samples, 0.8, 1e-6);
+    EXPECT_EQ(bottom.skyZenith, 0.0f);
+    EXPECT_EQ(bottom.sun(), 0.0);  // turned away from the sun
+    // A side face: half its rays go down (horizon 0.8), half up, where the zenith's
+    // weight sqrt(height) averages (0.4 / pi) * integral of sqrt(cos) over a half turn
+    // = 0.4 sqrt(pi) Gamma(3/4) / (pi Gamma(5/4)).
+    const FaceTexel& side = t[8];
+    EXPECT_EQ(side.open, side.samples);
+    const double zenith = 0.4 * std::sqrt(std::numbers::pi) * std::tgamma(0.75) / (std::numbers::pi * std::tgamma(1.25));
+    EXPECT_NEAR(side.skyZenith / side.samples, zenith, 0.005);
+    EXPECT_NEAR(side.skyHorizon / side.samples, 0.4 + 0.5 - zenith, 0.005);
+}
+
+// A closed room's inside sees no sky and no sun, whatever the sun does; its AO is
+// the reference's at the same points, within the two estimates' error.
+TEST(FaceCache, AClosedRoomIsDarkInsideAndItsAoIsTheReferences) {
+    const World clipped = denseWorld({12, 12, 12}, [](glm::ivec3 v) {  // the room's walls alone
+        const bool inside = glm::all(glm::greaterThanEqual(v, glm::ivec3(1))) && glm::all(glm::lessThanEqual(v, glm::ivec3(10)));
+        return inside && (glm::any(glm::equal(v, glm::ivec3(1))) || glm::any(glm::equal(v, glm::ivec3(10))));
+    });
+    const std::vector<ExposedFace> faces = exposedFaces(clipped);
+    FaceBakeSettings s{.radius = 4.0, .texelsPerSide = 2, .rays = 256, .sunRays = 8, .sunDirection = {0.0, 1.0, 0.0},
+                       .sunAngleDegrees = 5.0};
+    const std::vector<FaceTexel> t = bake(clipped, faces, s);
+    std::vector<glm::dvec3> points, normals;
+    std::vector<size_t> inside;
+    for (size_t f = 0; f < faces.size(); ++f) {
+        const glm::dvec3 n = faceNormal(faces[f].dir);
+        const glm::ivec3 open = faces[f].cell + glm::ivec3(n);
+        const bool in = glm::all(glm::greaterThan(open, glm::ivec3(1))) && glm::all(glm::lessThan(open, glm::ivec3(10)));
+        for (size_t x = 0; x < 4; ++x) {
+            const FaceTexel& v = t[4 * f + x];
+            if (in) {
+                EXPECT_EQ(v.skyHorizon, 0.0f);
+                EXPECT_EQ(v.skyZenith, 0.0f);
+                EXPECT_EQ(v.sunOpen, 0u);
+                inside.push_back(4 * f + x);
+                points.push_back(texelPoint(faces[f], 2, uint32_t(x % 2), uint32_t(x / 2)));
+                normals.push_back(n);
+            }
+        }
+    }
+    ASSERT_EQ(inside.size(), 6u * 64u * 4u);  // 8 x 8 faces a wall inside
+    const ReferenceAo ref = referenceAo(clipped, points, normals, {.radius = 4.0, .spp = 1024, .seed = 7});
+    double worst = 0.0, meanDiff = 0.0;
+    for (size_t k = 0; k < inside.size(); ++k) {
+        const double a = t[inside[k]].ao(), b = ref.visibility[k];
+        const double sigma = std::sqrt(b * (1.0 - b) * (1.0 / 256 + 1.0 / 1024)) + 1.0 / 256;
+        worst = std::max(worst, std::abs(a - b) / sigma);
+        meanDiff += (a - b) / inside.size();
+    }
+    EXPECT_LT(worst, 5.0) << "every texel within 5 sigma of the reference";
+    EXPECT_LT(std::abs(meanDiff), 0.003) << "no bias";
+}
+
+// A point sun's visibility is one ray, World::raycast's answer from the texel.
+TEST(FaceCache, PointSunVisibilityIsTheRaycastsAnswer) {
+    std::mt19937 rng(11);
+    std::bernoulli_distribution fill(0.18);
+    std::vector<bool> cells(20 * 20 * 20);
+    for (size_t k = 0; k < cells.size(); ++k) cells[k] = fill(rng);
+    const World w = denseWorld({20, 20, 20}, [&](glm::ivec3 v) { return cells[(size_t(v.z) * 20 + v.y) * 20 + v.x]; });
+    const std::vector<ExposedFace> faces = exposedFaces(w);
+    const glm::dvec3 sun = glm::normalize(glm::dvec3(0.45, 0.8, 0.3));
+    FaceBakeSettings s{.texelsPerSide = 1, .rays = 4, .sunDirection = sun};
+    const std::vector<FaceTexel> t = bake(w, faces, s);
+    size_t lit = 0;
+    for (size_t f = 0; f < faces.size(); ++f) {
+        const glm::dvec3 n = faceNormal(faces[f].dir);
+        const glm::dvec3 p = texelPoint(faces[f], 1, 0, 0) + n * s.epsilon;
+        const bool open = glm::dot(n, sun) > 0.0 && !w.raycast(p, sun, 1e9);
+        ASSERT_EQ(t[f].sunOpen, open ? 1u : 0u) << "face " << f;
+        lit += open;
+    }
+    EXPECT_GT(lit, faces.size() / 10);  // both answers occur
+    EXPECT_LT(lit, faces.size() / 2);
+}
+
+// Each texel's rays depend on the texel alone: parts baked apart, in any order, and
+// rays added in two calls give the same counts as one bake.
+TEST(FaceCache, ABakeSplitIntoPartsEqualsOneBake) {
+    std::mt19937 rng(5);
+    std::bernoulli_distribution fill(0.25);
+    std::vector<bool> cells(16 * 16 * 16);
+    for (size_t k = 0; k < cells.size(); ++k) cells[k] = fill(rng);
+    const World w = denseWorld({16, 16, 16}, [&](glm::ivec3 v) { return cells[(size_t(v.z) * 16 + v.y) * 16 + v.x]; });
+    const std::vector<ExposedFace> faces = exposedFaces(w);
+    FaceBakeSettings s{.texelsPerSide = 2, .rays = 64, .sunRays = 4, .sunAngleDegrees = 2.0};
+    const std::vector<FaceTexel> whole = bake(w, faces, s);
+    const size_t half = faces.size() / 3;
+    std::vector<FaceTexel> parts = bake(w, std::span(faces).subspan(half), s);
+    const std::vector<FaceTexel> first = bake(w, std::span(faces).first(half), s);
+    parts.insert(parts.begin(), first.begin(), first.end());
+    EXPECT_TRUE(parts == whole);
+
+    FaceBakeSettings halfRays = s;
+    halfRays.rays = 32, halfRays.sunRays = 2;
+    std::vector<FaceTexel> twice(whole.size());
+    const BrickTable table(w);
+    bakeFaces(table, w, faces, halfRays, twice);
+    bakeFaces(table, w, faces, halfRays, twice);
+    for (size_t k = 0; k < whole.size(); ++k) {
+        ASSERT_EQ(twice[k].open, whole[k].open);
+        ASSERT_EQ(twice[k].sunOpen, whole[k].sunOpen);
+        ASSERT_NEAR(twice[k].skyZenith, whole[k].skyZenith, 1e-4);
+    }
+}
+
+TEST(FaceCache, BadSettingsAreRefused) {
+    const World w = denseWorld({3, 3, 3}, [](glm::ivec3 v) { return v == glm::ivec3(1); });
+    const std::vector<ExposedFace> faces = exposedFaces(w);
+    std::vector<FaceTexel> t(faces.size());
+    EXPECT_THROW(bakeFaces(BrickTable(w), w, faces, {.radius = 0.0, .texelsPerSide = 1}, t), Error);
+    EXPECT_THROW(bakeFaces(BrickTable(w), w, faces, {.texelsPerSide = 0}, t), Error);
+    EXPECT_THROW(bakeFaces(BrickTable(w), w, faces, {.texelsPerSide = 2}, t), Error);
+}
+
+}  // namespace
+}  // namespace grotto::voxel

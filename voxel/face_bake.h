@@ -1,0 +1,33 @@
+#pragma once
+// Rays for the face cache (voxel/face_cache.h), traced on the CPU: what a bake
+// runs on every core, and what tests hold the GPU's texels to. Each texel's rays
+// follow one low-discrepancy sequence turned by a hash of the face and texel, so
+// a texel gets the same bits whichever faces share its call, in whatever order:
+// a bake split into parts and joined equals one bake.
+#include "voxel/face_cache.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <span>
+
+namespace grotto::voxel {
+
+struct FaceBakeSettings {
+    double radius = 4.0;             // AO's R, world units (> 0)
+    uint32_t texelsPerSide = 2;      // k: k x k texels per face
+    uint32_t rays = 256;             // cosine-weighted rays per texel per call (AO and sky)
+    uint32_t sunRays = 16;           // rays per texel per call over the sun's disc (one for a point sun)
+    glm::dvec3 sunDirection{0.0, 1.0, 0.0};  // toward the sun, unit length
+    double sunAngleDegrees = 0.0;    // the disc's angular diameter; 0: a point
+    double epsilon = 1e-4;           // rays leave this far (voxels) in front of the face
+};
+
+// Adds `rays` and `sunRays` more to each texel of `faces` (texels: faces.size() x
+// k x k, face-major, then j, then i), continuing each texel's sequence from the
+// samples it holds. Multithreaded. Throws grotto::Error (input) for a radius <= 0,
+// k 0 or a texel span of the wrong size.
+void bakeFaces(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
+               const FaceBakeSettings& settings, std::span<FaceTexel> texels);
+
+}  // namespace grotto::voxel

@@ -1,0 +1,74 @@
+#pragma once
+// Light cached on the world's exposed voxel faces. A static world's AO, sky light
+// and sun visibility belong to its surfaces, not to the view: each exposed face
+// (a solid voxel and the direction of its open neighbour) carries k x k texels,
+// and each texel accumulates, from the same cosine-weighted rays:
+//  - AO: the share of rays that enter no solid voxel within R (the reference's
+//    definition, docs/metrics.md, so every AO figure stays comparable);
+//  - sky light: the same rays run on through the whole world; an open one adds the
+//    sky gradient's radiance in its direction (shaders/shared/sky.h), kept as the
+//    weights of its two colours, so a new sky re-weights without tracing;
+//  - sun visibility: the share of rays toward the sun's disc that leave the world.
+// Counts stay beside the sums, so more rays can be added later and a texel's
+// convergence is known. OpenVDB-free interface.
+#include "voxel/world.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace grotto::voxel {
+
+class BrickTable;
+
+// A solid voxel's face whose neighbour across it is open. `dir` as RayHit::face:
+// 0..5 = +X -X +Y -Y +Z -Z (the direction the face looks).
+struct ExposedFace {
+    glm::ivec3 cell{0};
+    uint8_t dir = 0;
+    bool operator==(const ExposedFace&) const = default;
+};
+// The order faces are listed in: by cell (x, then y, then z), then direction.
+inline bool operator<(const ExposedFace& a, const ExposedFace& b) {
+    if (a.cell.x != b.cell.x) return a.cell.x < b.cell.x;
+    if (a.cell.y != b.cell.y) return a.cell.y < b.cell.y;
+    if (a.cell.z != b.cell.z) return a.cell.z < b.cell.z;
+    return a.dir < b.dir;
+}
+
+// Every exposed face of the world, in that order whatever the grid's own.
+std::vector<ExposedFace> exposedFaces(const World& world);
+std::vector<ExposedFace> exposedFaces(const BrickTable& table, const World& world);
+
+// A texel's sums. Sky light from them: horizon * skyHorizon / samples +
+// zenith * skyZenith / samples (irradiance over pi: an open floor under a uniform
+// sky of radiance L gets L).
+struct FaceTexel {
+    uint32_t samples = 0;     // cosine-weighted rays cast
+    uint32_t open = 0;        // of those, entering no solid voxel within R
+    float skyHorizon = 0.0f;  // sum over rays that leave the world of the horizon colour's weight
+    float skyZenith = 0.0f;   // likewise for the zenith colour
+    uint32_t sunSamples = 0;  // rays toward the sun's disc cast
+    uint32_t sunOpen = 0;     // of those, leaving the world
+
+    double ao() const { return samples ? double(open) / samples : 1.0; }
+    double sun() const { return sunSamples ? double(sunOpen) / sunSamples : 1.0; }
+    bool operator==(const FaceTexel&) const = default;
+};
+
+// How the sky's radiance in a direction of height `up` (its y) splits between the
+// horizon and zenith colours: shaders/shared/sky.h's skyRadiance, as two weights.
+struct SkyWeights {
+    float horizon, zenith;
+};
+SkyWeights skyWeights(double up);
+
+// Where texel (i, j) of a face with k texels a side lies, in voxel index units
+// (relative to voxel corner 0,0,0): on the face's plane, i along the face's U
+// axis and j along V (shaders/shared/quad.h).
+glm::dvec3 texelPoint(const ExposedFace& face, uint32_t k, uint32_t i, uint32_t j);
+// The face's outward unit normal.
+glm::dvec3 faceNormal(uint8_t dir);
+
+}  // namespace grotto::voxel
