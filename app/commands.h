@@ -16,5 +16,6 @@ void addTradeoffCommand(CLI::App& app);
 void addTuneCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
+void addBakeCommand(CLI::App& app);
 
 }  // namespace grotto::app

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
     grotto::app::addTuneCommand(app);
     grotto::app::addCompareCommand(app);
     grotto::app::addViewCommand(app);
+    grotto::app::addBakeCommand(app);
     // Bare `grotto` is a usage error, but one worth the whole usage: on stdout,
     // with the usual one line on stderr.
     if (argc < 2) {

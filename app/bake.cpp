@@ -1,0 +1,110 @@
+// grotto bake WORLD -o FILE [--chunk K/N] [--rays N] [--texels K]
+// grotto bake --merge PART... -o FILE
+// Converges the face cache (voxel/face_cache.h) of every exposed face on every
+// core, with progress and an ETA, and writes it tied to the world and settings
+// (voxel/face_cache_file.h). --chunk bakes the K-th of N equal runs of faces, for
+// a farm; --merge joins the parts into the file one machine's bake writes.
+#include "app/commands.h"
+#include "app/options.h"
+#include "app/progress.h"
+#include "common/atomic_file.h"
+#include "grotto/error.h"
+#include "voxel/brick_table.h"
+#include "voxel/face_bake.h"
+#include "voxel/face_cache_file.h"
+
+#include <chrono>
+#include <cstdio>
+#include <regex>
+
+namespace grotto::app {
+namespace {
+
+// "K/N" with 0 <= K < N.
+std::pair<uint64_t, uint64_t> parseChunk(const std::string& text) {
+    static const std::regex form(R"((\d{1,9})/(\d{1,9}))");
+    std::smatch m;
+    if (!std::regex_match(text, m, form) || std::stoull(m[2]) == 0 || std::stoull(m[1]) >= std::stoull(m[2]))
+        throw Error("--chunk", "'" + text + "' is not K/N", "accepted: K/N with 0 <= K < N, e.g. 0/4");
+    return {std::stoull(m[1]), std::stoull(m[2])};
+}
+
+void merge(const std::vector<std::string>& partNames, const std::filesystem::path& out) {
+    std::vector<voxel::FaceCacheFile> parts;
+    std::vector<std::filesystem::path> paths;
+    for (const std::string& p : partNames) parts.push_back(voxel::loadFaceCache(p)), paths.emplace_back(p);
+    const voxel::FaceCacheFile whole = voxel::mergeFaceCaches(std::move(parts), paths);
+    voxel::saveFaceCache(whole, out);
+    std::printf("wrote %s (%zu parts, %llu faces)\n", out.c_str(), paths.size(), (unsigned long long)whole.totalFaces);
+}
+
+}  // namespace
+
+void addBakeCommand(CLI::App& app) {
+    struct Args {
+        std::string world, output, chunk;
+        std::vector<std::string> merge;
+        uint32_t rays = 256, sunRays = 16, texels = 2;
+        AoFlags ao;
+    };
+    auto args = std::make_shared<Args>();
+    CLI::App* cmd = app.add_subcommand("bake", "Converge the AO, sky light and sun cached on every exposed voxel face");
+    cmd->add_option("world", args->world, "World .json or .vdb");
+    cmd->add_option("-o,--output", args->output, "Output face cache (.gfc)")->required();
+    cmd->add_option("--chunk", args->chunk, "Bake only part K of N (K/N, from 0), for a farm");
+    cmd->add_option("--merge", args->merge, "Join these parts (bake --chunk) into one cache")->expected(1, -1);
+    cmd->add_option("--rays", args->rays, "Cosine-weighted rays per texel (AO and sky)")
+        ->capture_default_str()->check(CLI::Range(1u, 1u << 20));
+    cmd->add_option("--sun-rays", args->sunRays, "Rays per texel over the sun's disc (one for a point sun)")
+        ->capture_default_str()->check(CLI::Range(1u, 1u << 16));
+    cmd->add_option("--texels", args->texels, "Texels per face side (k x k per face)")
+        ->capture_default_str()->check(CLI::Range(1u, 16u));
+    cmd->add_option("--radius", args->ao.set.radius, "AO radius R in world units (default: the world's)");
+    cmd->callback([args] {
+        const std::filesystem::path out = args->output;
+        if (out.extension() != ".gfc") throw Error(out.string(), "output must end in .gfc", "a Grotto face cache");
+        requireOutputPath(out);
+        if (!args->merge.empty()) {
+            if (!args->world.empty() || !args->chunk.empty())
+                throw Error("--merge", "joins parts alone", "give no WORLD and no --chunk with it");
+            merge(args->merge, out);
+            return;
+        }
+        if (args->world.empty()) throw Error("bake", "a WORLD is required", "or --merge PART...");
+        const voxel::World world = voxel::World::load(args->world);
+        const double radius = double(resolveAo(world, args->ao).estimator.radius);
+        const voxel::BrickTable table(world);
+        const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
+        uint64_t first = 0, count = faces.size();
+        if (!args->chunk.empty()) {
+            const auto [k, n] = parseChunk(args->chunk);
+            first = faces.size() * k / n, count = faces.size() * (k + 1) / n - first;
+        }
+        voxel::FaceCacheFile cache{.key = voxel::faceCacheKey(world, radius, args->texels),
+                                   .totalFaces = faces.size(), .firstFace = first};
+        cache.texels.resize(count * args->texels * args->texels);
+        const voxel::Lighting& light = world.desc().lighting;
+        const voxel::FaceBakeSettings settings{.radius = radius, .texelsPerSide = args->texels, .rays = args->rays,
+                                               .sunRays = args->sunRays, .sunDirection = glm::dvec3(light.sunDirection),
+                                               .sunAngleDegrees = double(light.sunAngle)};
+        // A hundred steps, each a run of faces on every core.
+        const int steps = int(std::min<uint64_t>(100, std::max<uint64_t>(count, 1)));
+        Progress progress(steps, stderr);
+        const auto start = std::chrono::steady_clock::now();
+        const uint64_t perFace = uint64_t(args->texels) * args->texels;
+        for (int s = 0; s < steps; ++s) {
+            const uint64_t a = count * s / steps, b = count * (s + 1) / steps;
+            voxel::bakeFaces(table, world, std::span(faces).subspan(first + a, b - a), settings,
+                             std::span(cache.texels).subspan(a * perFace, (b - a) * perFace));
+            progress.step(std::to_string(b) + " of " + std::to_string(count) + " faces");
+        }
+        progress.finish();
+        voxel::saveFaceCache(cache, out);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::printf("wrote %s (faces %llu to %llu of %llu, %u x %u texels each, %u rays a texel, %.1f s)\n", out.c_str(),
+                    (unsigned long long)first, (unsigned long long)(first + count), (unsigned long long)faces.size(),
+                    args->texels, args->texels, args->rays, seconds);
+    });
+}
+
+}  // namespace grotto::app

@@ -1,0 +1,96 @@
+// grotto bake: a farm's parts (--chunk K/N) joined with --merge are byte for byte
+// the one-machine bake; bad parts and bad files are refused with one line naming
+// the file and what is wrong, and nothing written.
+#include "tests/cli_fixture.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <iterator>
+
+namespace grotto::test {
+namespace {
+
+std::string bytes(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
+
+class Bake : public CliErrors {
+protected:
+    void SetUp() override {
+        CliErrors::SetUp();
+        pillars_ = dir_ / "pillars.vdb";  // a floor with pillars and a roof over part of it
+        writeSolid(pillars_, 12, 6, [](int x, int y, int z) {
+            return y == 0 || (x % 4 == 1 && z % 4 == 1) || (y == 5 && x < 6);
+        });
+    }
+    std::string bake(const fs::path& world, const fs::path& out, const std::string& more = "") {
+        return "bake " + world.string() + " -o " + out.string() + " --rays 16 --sun-rays 2 " + more;
+    }
+    fs::path pillars_;
+};
+
+TEST_F(Bake, PartsJoinedInAnyOrderAreTheWholeBakeByteForByte) {
+    const fs::path whole = dir_ / "whole.gfc";
+    ASSERT_EQ(runGrotto(bake(pillars_, whole)).exitCode, 0);
+    std::string parts;
+    for (int k = 0; k < 3; ++k) {
+        const fs::path part = dir_ / ("part" + std::to_string(k) + ".gfc");
+        const RunResult r = runGrotto(bake(pillars_, part, "--chunk " + std::to_string(k) + "/3"));
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        parts = part.string() + " " + parts;  // reversed: the order given does not matter
+    }
+    const fs::path merged = dir_ / "merged.gfc";
+    const RunResult r = runGrotto("bake --merge " + parts + "-o " + merged.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::string a = bytes(whole), b = bytes(merged);
+    EXPECT_GT(a.size(), 88u + 100u * 4u * 24u);  // a header and hundreds of faces of 2 x 2 texels
+    EXPECT_TRUE(a == b);
+}
+
+TEST_F(Bake, BadArgumentsPartsAndFilesAreRefused) {
+    const fs::path out = dir_ / "out.gfc";
+    expectRefused(bake(pillars_, out, "--chunk 3/3"), "--chunk", out);
+    expectRefused(bake(pillars_, dir_ / "out.bin"), "out.bin", dir_ / "out.bin");
+    std::vector<fs::path> parts;
+    for (int k = 0; k < 3; ++k) {
+        parts.push_back(dir_ / ("p" + std::to_string(k) + ".gfc"));
+        ASSERT_EQ(runGrotto(bake(pillars_, parts.back(), "--chunk " + std::to_string(k) + "/3")).exitCode, 0);
+    }
+    const std::string p0 = parts[0].string(), p1 = parts[1].string(), p2 = parts[2].string();
+    expectRefused("bake --merge " + p0 + " " + p2 + " -o " + out.string(), "p2.gfc", out);  // a gap
+    expectRefused("bake --merge " + p0 + " " + p1 + " -o " + out.string(), "missing", out);
+    expectRefused("bake --merge " + p0 + " " + p0 + " " + p1 + " " + p2 + " -o " + out.string(), "overlap", out);
+    const fs::path other = dir_ / "other.gfc";  // another world's part 1
+    ASSERT_EQ(runGrotto(bake(good_, other, "--chunk 1/3")).exitCode, 0);
+    expectRefused("bake --merge " + p0 + " " + other.string() + " " + p2 + " -o " + out.string(), "other.gfc", out);
+
+    // Damaged files: each refused naming the file and the field.
+    const std::string good = bytes(parts[1]);
+    auto damaged = [&](const std::string& name, const std::string& content, const std::string& field) {
+        const fs::path p = dir_ / name;
+        std::ofstream(p, std::ios::binary) << content;
+        expectRefused("bake --merge " + p0 + " " + p.string() + " " + p2 + " -o " + out.string(), field, out);
+        EXPECT_NE(expectRefused("bake --merge " + p.string() + " -o " + out.string(), name, out).err.find(field),
+                  std::string::npos);
+    };
+    damaged("short.gfc", good.substr(0, 40), "header");
+    damaged("truncated.gfc", good.substr(0, good.size() - 5), "texels");
+    damaged("longer.gfc", good + "x", "texels");
+    std::string magic = good;
+    magic[0] = 'X';
+    damaged("magic.gfc", magic, "magic");
+    std::string version = good;
+    version[8] = 9;
+    damaged("version.gfc", version, "version");
+    std::string huge = good;  // a face count that would need exabytes
+    for (int i = 0; i < 8; ++i) huge[80 + i] = char(0x7f);
+    damaged("huge.gfc", huge, "faces");
+    std::string counts = good;  // a texel with more open rays than rays
+    counts[88 + 4] = char(0xff);
+    damaged("counts.gfc", counts, "texel 0");
+}
+
+}  // namespace
+}  // namespace grotto::test
