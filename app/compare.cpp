@@ -10,15 +10,46 @@
 #include "grotto/error.h"
 #include "engine/lab/reference_view.h"
 #include "engine/frame/render_memory.h"
+#include "voxel/face_cache_file.h"
+#include "voxel/face_cache_lookup.h"
 
 #include <algorithm>
 #include <cstdio>
 
 namespace grotto::app {
+namespace {
+
+// The baked cache's AO at the view's surface points (as FaceCacheLookup reads it)
+// against the reference.
+void compareBake(const std::filesystem::path& file, const voxel::World& world, const Camera& camera, vk::Context& ctx,
+                 double radius, const ReferenceView& ref) {
+    const voxel::FaceCacheFile cache = voxel::loadFaceCache(file);
+    const uint32_t k = cache.key.texelsPerSide;
+    const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(world);
+    voxel::requireMatchingBake(cache, voxel::faceCacheKey(world, radius, k), faces.size(), file);
+    const voxel::FaceCacheLookup lookup(faces, cache.texels, k);
+    const SurfacePoints sp = viewSurfacePoints(world, camera, ctx);
+    std::vector<float> ao(ref.ao.size(), 1.0f);
+    uint32_t fewest = UINT32_MAX;
+    for (size_t i = 0; i < sp.points.size(); ++i) {
+        const glm::dvec3 n = sp.normals[i];
+        const int axis = std::abs(n.x) > 0.5 ? 0 : std::abs(n.y) > 0.5 ? 1 : 2;
+        const uint8_t dir = uint8_t(2 * axis + (n[axis] < 0.0 ? 1 : 0));
+        const voxel::CachedLight l = lookup.at((sp.points[i] - world.origin()) / world.voxelSize(), dir);
+        ao[sp.pixels[i]] = float(l.ao);
+        fewest = std::min(fewest, l.samples);
+    }
+    const AoError e = aoError(ao, ref.ao, ref.surface);
+    std::printf("%s: baked face cache %s (%u x %u texels a face, at least %u rays a texel), reference R %g\n",
+                world.desc().source.stem().c_str(), file.c_str(), k, k, fewest, radius);
+    std::printf("pixels %zu  mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f\n", e.pixels, e.mae, e.rmse, e.psnr, e.bias);
+}
+
+}  // namespace
 
 void addCompareCommand(CLI::App& app) {
     struct Args {
-        std::string world, camera, size = "640x360";
+        std::string world, camera, size = "640x360", bake;
         int64_t spp = 1024;
         int frames = 5, warmup = 2;
         AoFlags ao;
@@ -33,6 +64,7 @@ void addCompareCommand(CLI::App& app) {
     cmd->add_option("--frames", args->frames, "Frames timed after warm-up (at least 32 are rendered while the temporal pass is on)")
         ->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--warmup", args->warmup, "Frames not timed")->capture_default_str()->check(CLI::Range(0, 1000));
+    cmd->add_option("--bake", args->bake, "Measure this baked face cache (grotto bake) read at the view's points instead");
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -53,6 +85,12 @@ void addCompareCommand(CLI::App& app) {
         requireSurface(ref, world, args->camera);
         double maxError = 0.0;
         for (float e : ref.stderror) maxError = std::max(maxError, double(e));
+        if (!args->bake.empty()) {
+            compareBake(args->bake, world, camera, ctx, radius, ref);
+            session.reset();
+            requireNoValidationMessages(ctx);
+            return;
+        }
         // As `tradeoff` does: a temporal history gets static frames enough to fill.
         const int frames = std::max(args->warmup + args->frames, ao.chain.temporalHistory > 0 ? 32 : 0);
         const AoMeasurement m = measureAo(ctx, *session, camera, ao, cullingOptions(detail), ref, frames, args->warmup);

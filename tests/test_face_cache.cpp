@@ -5,6 +5,7 @@
 #include "grotto/error.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
+#include "voxel/face_cache_lookup.h"
 #include "voxel/reference_ao.h"
 
 #include <gtest/gtest.h>
@@ -190,6 +191,38 @@ TEST(FaceCache, ABakeSplitIntoPartsEqualsOneBake) {
         ASSERT_EQ(twice[k].open, whole[k].open);
         ASSERT_EQ(twice[k].sunOpen, whole[k].sunOpen);
         ASSERT_NEAR(twice[k].skyZenith, whole[k].skyZenith, 1e-4);
+    }
+}
+
+// Reading at a point blends the four nearest texel centres bilinearly across
+// coplanar exposed faces: a field linear over a floor comes back exactly, away
+// from the floor's rim; at a convex edge the missing neighbours drop out.
+TEST(FaceCache, LookupBlendsTexelsAcrossCoplanarFaces) {
+    const World floor = denseWorld({8, 2, 8}, [](glm::ivec3 v) { return v.y == 0; });
+    const std::vector<ExposedFace> faces = exposedFaces(floor);
+    for (uint32_t k : {1u, 2u, 3u}) {
+        std::vector<FaceTexel> texels(faces.size() * k * k);
+        auto field = [](glm::dvec3 p) { return 0.1 + 0.05 * p.x + 0.03 * p.z; };  // below 1 everywhere here
+        for (size_t f = 0; f < faces.size(); ++f)
+            for (uint32_t j = 0; j < k; ++j)
+                for (uint32_t i = 0; i < k; ++i) {
+                    FaceTexel& t = texels[(f * k + j) * k + i];
+                    t.samples = 1u << 20;
+                    t.open = uint32_t(std::lround(field(texelPoint(faces[f], k, i, j)) * t.samples));
+                    t.sunSamples = 1, t.sunOpen = 1;
+                }
+        const FaceCacheLookup lookup(faces, texels, k);
+        std::mt19937 rng(k);
+        std::uniform_real_distribution<double> inner(1.0, 7.0);
+        for (int n = 0; n < 200; ++n) {
+            const glm::dvec3 p(inner(rng), 1.0, inner(rng));
+            EXPECT_NEAR(lookup.at(p, 2).ao, field(p), 2e-6) << "k " << k;
+        }
+        // At the rim the nearest centres are the face's own: the field at the edge texels.
+        const CachedLight corner = lookup.at({0.0, 1.0, 0.0}, 2);
+        EXPECT_NEAR(corner.ao, field(texelPoint({{0, 0, 0}, 2}, k, 0, 0)), 2e-6);
+        EXPECT_EQ(corner.samples, 1u << 20);
+        EXPECT_EQ(lookup.at({3.5, 5.0, 3.5}, 2).samples, 0u);  // a plane with no exposed face: nothing
     }
 }
 

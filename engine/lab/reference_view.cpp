@@ -52,6 +52,23 @@ std::string cacheKey(const voxel::World& world, const Camera& c, double radius, 
 
 void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, double radius, uint32_t spp,
            vk::Context& ctx, std::span<const voxel::PosedWorld> objects) {
+    const SurfacePoints sp = viewSurfacePoints(world, camera, ctx, objects);
+    const auto start = std::chrono::steady_clock::now();
+    const voxel::ReferenceAo ref =
+        voxel::referenceAo(world, objects, sp.points, sp.normals, {.radius = radius, .spp = spp});
+    r.traceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.rays = ref.rays;
+    for (size_t k = 0; k < sp.pixels.size(); ++k) {
+        r.ao[sp.pixels[k]] = ref.visibility[k];
+        r.stderror[sp.pixels[k]] = ref.stderror[k];
+        r.surface[sp.pixels[k]] = 1;
+    }
+}
+
+}  // namespace
+
+SurfacePoints viewSurfacePoints(const voxel::World& world, const Camera& camera, vk::Context& ctx,
+                                std::span<const voxel::PosedWorld> objects) {
     AoOptions off;
     off.enabled = false;  // only the G-buffer is needed
     off.estimator = estimatorPreset("high", 1.0);
@@ -73,20 +90,8 @@ void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, do
         renderer.render(camera);
         frame = renderer.readback(camera, true);
     }
-    const SurfacePoints sp = surfacePoints(frame, camera, world, objects);
-    const auto start = std::chrono::steady_clock::now();
-    const voxel::ReferenceAo ref =
-        voxel::referenceAo(world, objects, sp.points, sp.normals, {.radius = radius, .spp = spp});
-    r.traceSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    r.rays = ref.rays;
-    for (size_t k = 0; k < sp.pixels.size(); ++k) {
-        r.ao[sp.pixels[k]] = ref.visibility[k];
-        r.stderror[sp.pixels[k]] = ref.stderror[k];
-        r.surface[sp.pixels[k]] = 1;
-    }
+    return surfacePoints(frame, camera, world, objects);
 }
-
-}  // namespace
 
 ReferenceView referenceView(const voxel::World& world, const Camera& camera, double radius, uint32_t spp,
                             vk::Context* ctx, std::span<const voxel::PosedWorld> objects) {

@@ -4,6 +4,7 @@
 // through the on-disk cache. `grotto reference` writes it to an EXR; `grotto
 // tradeoff` and the tests measure methods against it.
 #include "engine/camera.h"
+#include "engine/lab/surface_points.h"
 #include "engine/vk/context.h"
 #include "voxel/reference_ao.h"
 #include "voxel/world.h"
@@ -13,6 +14,11 @@
 #include <vector>
 
 namespace grotto {
+
+// The surface points and normals of a view of the exact voxels (a G-buffer drawn
+// on `ctx` without levels of detail), with `objects` at their poses.
+SurfacePoints viewSurfacePoints(const voxel::World& world, const Camera& camera, vk::Context& ctx,
+                                std::span<const voxel::PosedWorld> objects = {});
 
 struct ReferenceView {
     std::vector<float> ao, stderror;  // per pixel, row 0 on top; sky: V 1, error 0
