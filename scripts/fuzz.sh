@@ -1,14 +1,14 @@
 #!/usr/bin/env bash
-# Fuzzes the world JSON, camera-path JSON and .vdb readers with libFuzzer, one
+# Fuzzes the world JSON, camera-path JSON, .vdb and baked face cache (.gfc) readers with libFuzzer, one
 # target after another, SECONDS each (default 600), and prints each one's
 # executions, speed and crashes. Not part of CI. Corpora grow in out/fuzz/TARGET/corpus
 # (git-ignored) from run to run; crash, leak, timeout and out-of-memory inputs are
 # written beside them. Reproduce one: build-fuzz/fuzz/fuzz_TARGET FILE
-#   scripts/fuzz.sh [SECONDS] [TARGET...]     TARGET: world_json path_json vdb
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     TARGET: world_json path_json vdb face_cache
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
-targets=(world_json path_json vdb)
+targets=(world_json path_json vdb face_cache)
 [ $# -gt 1 ] && targets=("${@:2}")
 
 # Fuzzing only: clang, its libFuzzer runtime, and jq to cut inline paths out of the worlds.
@@ -30,6 +30,7 @@ seed_dir() {  # the shipped inputs each target starts from
                 done
             done ;;
         vdb) cp worlds/*.vdb "$dir"/ && build-fuzz/fuzz/fuzz_vdb_seeds "$dir" ;;
+        face_cache) build-fuzz/fuzz/fuzz_face_cache_seeds "$dir" ;;
     esac
     echo "$dir"
 }
@@ -45,7 +46,7 @@ for t in "${targets[@]}"; do
     mkdir -p "$out/corpus"
     seeds=$(seed_dir "$t")
     dict=() supp=
-    [ "$t" != vdb ] && dict=(-dict=fuzz/json.dict)
+    case $t in world_json | path_json) dict=(-dict=fuzz/json.dict) ;; esac
     [ "$t" = vdb ] && supp=suppressions=fuzz/lsan.supp  # OpenVDB's own leaks on damaged files
     echo "== fuzz_$t for ${seconds}s (log: $out/log.txt)"
     # Fork mode: a finding is saved and fuzzing goes on for the whole time (a

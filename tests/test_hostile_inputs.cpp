@@ -91,6 +91,34 @@ TEST_F(HostileInputs, RandomBytesAfterARealHeader) {
     }
 }
 
+// A baked face cache (grotto bake) cut at many offsets is refused; one with a
+// byte changed anywhere is refused or, where the change leaves every count and
+// size consistent, accepted: never a crash, never more than the caps.
+TEST_F(HostileInputs, DamagedFaceCaches) {
+    const fs::path good = dir_ / "good.gfc";
+    ASSERT_EQ(runGrotto("bake " + good_.string() + " -o " + good.string() + " --rays 4 --sun-rays 1").exitCode, 0);
+    const std::string real = bytesOf(good);
+    const fs::path out = dir_ / "joined.gfc";
+    for (size_t cut : {size_t(0), size_t(1), size_t(8), size_t(40), size_t(87), size_t(88), size_t(100), real.size() - 1})
+        expectCommandRefusedWithinCaps("bake --merge " + writeBytes("cut" + std::to_string(cut) + ".gfc", real.substr(0, cut)).string() +
+                                           " -o " + out.string(),
+                                       "cut", out);
+    std::mt19937 rng(3);
+    for (int n = 0; n < 14; ++n) {
+        std::string bytes = real;
+        const size_t at = n < 7 ? size_t(n) * 13 : 88 + rng() % (real.size() - 88);  // header, then texels
+        bytes[at] = char(bytes[at] ^ (1 << (rng() % 8)));
+        const fs::path flipped = writeBytes("flip" + std::to_string(n) + ".gfc", bytes);
+        const test::RunResult r = runGrotto("bake --merge " + flipped.string() + " -o " + out.string(), "", kCaps);
+        EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 2) << r.err;
+        if (r.exitCode == 2) {
+            EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+            EXPECT_NE(r.err.find("flip"), std::string::npos) << r.err;
+        }
+        fs::remove(out);
+    }
+}
+
 TEST_F(HostileInputs, ExtremeTransforms) {
     using openvdb::math::Transform;
     expectRefusedWithinCaps(oneVoxelGrid("tiny.vdb", openvdb::Coord(0), Transform::createLinearTransform(5e-5)),
