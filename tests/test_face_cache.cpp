@@ -5,7 +5,21 @@
 #include "grotto/error.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
+#include "voxel/face_cache_layout.h"
 #include "voxel/face_cache_lookup.h"
+
+// The GPU's read of the cache, compiled as C++ over the laid-out arrays.
+namespace grotto::gpu {
+namespace {
+thread_local const voxel::FaceCacheArrays* gpuTwin = nullptr;
+}
+inline glm::uvec4 faceCacheBrickEntry(uint32_t slot) { return gpuTwin->bricks[slot]; }
+inline uint32_t faceCacheRecordWord(uint32_t word) { return gpuTwin->records[word]; }
+inline uint32_t faceCacheTexelWord(uint32_t texel) { return gpuTwin->texels[texel]; }
+inline uint32_t faceCacheHashMask() { return gpuTwin->hashMask(); }
+inline uint32_t faceCacheK() { return gpuTwin->texelsPerSide; }
+}  // namespace grotto::gpu
+#include "shaders/shared/face_cache.h"
 #include "voxel/reference_ao.h"
 
 #include <gtest/gtest.h>
@@ -223,6 +237,60 @@ TEST(FaceCache, LookupBlendsTexelsAcrossCoplanarFaces) {
         EXPECT_NEAR(corner.ao, field(texelPoint({{0, 0, 0}, 2}, k, 0, 0)), 2e-6);
         EXPECT_EQ(corner.samples, 1u << 20);
         EXPECT_EQ(lookup.at({3.5, 5.0, 3.5}, 2).samples, 0u);  // a plane with no exposed face: nothing
+    }
+}
+
+// The arrays the GPU reads, read by the shader's own code: every exposed face is
+// found at its place and no other face is; at random points on face planes the
+// read equals the CPU lookup up to the texels' 8-bit quantisation.
+TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
+    std::mt19937 rng(9);
+    std::bernoulli_distribution fill(0.3);
+    std::vector<bool> cells(20 * 20 * 20);
+    for (size_t k = 0; k < cells.size(); ++k) cells[k] = fill(rng);
+    const World w = denseWorld({20, 20, 20}, [&](glm::ivec3 v) { return cells[(size_t(v.z) * 20 + v.y) * 20 + v.x]; });
+    const std::vector<ExposedFace> faces = exposedFaces(w);
+    for (uint32_t k : {1u, 2u}) {
+        const std::vector<FaceTexel> texels = bake(w, faces, {.texelsPerSide = k, .rays = 16, .sunRays = 1});
+        const FaceCacheArrays arrays = layFaceCache(faces, texels, k);
+        gpu::gpuTwin = &arrays;
+        const FaceCacheLookup lookup(faces, texels, k);
+        std::vector<int> seen(faces.size(), 0);
+        for (int z = -1; z <= 20; ++z)
+            for (int y = -1; y <= 20; ++y)
+                for (int x = -1; x <= 20; ++x)
+                    for (uint32_t d = 0; d < 6; ++d) {
+                        const int g = gpu::faceCacheFace({x, y, z}, d);
+                        const int64_t c = lookup.find({{x, y, z}, uint8_t(d)});
+                        ASSERT_EQ(g >= 0, c >= 0) << x << " " << y << " " << z << " dir " << d;
+                        if (g < 0) continue;
+                        ASSERT_LT(size_t(g), faces.size());
+                        ++seen[size_t(g)];
+                        // The GPU's texels of that face are the CPU's face's, packed.
+                        for (uint32_t t = 0; t < k * k; ++t)
+                            ASSERT_EQ(arrays.texels[size_t(g) * k * k + t], packFaceTexel(texels[size_t(c) * k * k + t]));
+                    }
+        EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; })) << "each face at one index";
+        std::uniform_real_distribution<double> along(0.0, 20.0);
+        size_t read = 0;
+        for (int n = 0; n < 4000; ++n) {
+            const ExposedFace& f = faces[rng() % faces.size()];
+            glm::dvec3 p = texelPoint(f, 1, 0, 0);
+            const int ua = int(gpu::faceUAxis(f.dir)), va = int(gpu::faceVAxis(f.dir));
+            p[ua] = f.cell[ua] + along(rng) / 20.0, p[va] = f.cell[va] + along(rng) / 20.0;
+            const glm::ivec3 origin(2, -3, 5);  // camera-relative: whole voxels taken out
+            bool found = false;
+            const glm::vec4 g = gpu::faceCacheAt(glm::vec3(p - glm::dvec3(origin)), origin, f.dir, found);
+            const CachedLight c = lookup.at(p, f.dir);
+            ASSERT_TRUE(found);
+            EXPECT_NEAR(g.x, c.ao, 0.6 / 255 + 1e-5);
+            EXPECT_NEAR(g.y, c.sun, 0.6 / 255 + 1e-5);
+            EXPECT_NEAR(g.z, c.skyHorizon, 0.6 / 255 + 1e-5);
+            EXPECT_NEAR(g.w, c.skyZenith, 0.6 / 255 + 1e-5);
+            ++read;
+        }
+        EXPECT_EQ(read, 4000u);
+        gpu::gpuTwin = nullptr;
     }
 }
 

@@ -1,0 +1,31 @@
+#pragma once
+// The face cache laid out as the GPU reads it (shaders/shared/face_cache.h): a
+// hash table of the bricks with exposed faces, a record of masks and bases per
+// brick, and one packed uint per texel.
+#include "voxel/face_cache.h"
+
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace grotto::voxel {
+
+struct FaceCacheArrays {
+    std::vector<glm::uvec4> bricks;  // power-of-two size, at most half full
+    std::vector<uint32_t> records;   // GROTTO_FACE_RECORD_WORDS per brick
+    std::vector<uint32_t> texels;    // packed, faces in record order
+    uint32_t texelsPerSide = 0;
+    uint32_t hashMask() const { return uint32_t(bricks.size() - 1); }
+    size_t bytes() const { return bricks.size() * 16 + records.size() * 4 + texels.size() * 4; }
+};
+
+// AO, sun, horizon and zenith weights in [0, 1] as one uint of four 8-bit unorms.
+uint32_t packFaceTexel(const FaceTexel& t);
+
+// `faces` as exposedFaces lists them, `texels` k x k per face in that order.
+FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
+                             uint32_t texelsPerSide);
+
+}  // namespace grotto::voxel
