@@ -44,7 +44,7 @@ void addBakeCommand(CLI::App& app) {
     struct Args {
         std::string world, output, chunk;
         std::vector<std::string> merge;
-        uint32_t rays = 256, sunRays = 16, texels = 2;
+        uint32_t rays = 64, sunRays = 16, texels = 3;
         AoFlags ao;
     };
     auto args = std::make_shared<Args>();

@@ -11,6 +11,8 @@
 #include "engine/lab/reference_view.h"
 #include "engine/frame/render_memory.h"
 #include "voxel/face_cache_file.h"
+#include "voxel/brick_table.h"
+#include "voxel/face_bake.h"
 #include "voxel/face_cache_lookup.h"
 
 #include <algorithm>
@@ -20,9 +22,11 @@ namespace grotto::app {
 namespace {
 
 // The baked cache's AO at the view's surface points (as FaceCacheLookup reads it)
-// against the reference.
+// against the reference, and its sky light against `skySpp` rays of the same
+// definition traced from the points themselves (the world's sky colours; PSNR
+// over the three channels).
 void compareBake(const std::filesystem::path& file, const voxel::World& world, const Camera& camera, vk::Context& ctx,
-                 double radius, const ReferenceView& ref) {
+                 double radius, const ReferenceView& ref, uint32_t skySpp) {
     const voxel::FaceCacheFile cache = voxel::loadFaceCache(file);
     const uint32_t k = cache.key.texelsPerSide;
     const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(world);
@@ -30,19 +34,41 @@ void compareBake(const std::filesystem::path& file, const voxel::World& world, c
     const voxel::FaceCacheLookup lookup(faces, cache.texels, k);
     const SurfacePoints sp = viewSurfacePoints(world, camera, ctx);
     std::vector<float> ao(ref.ao.size(), 1.0f);
+    std::vector<glm::dvec3> points(sp.points.size());
+    std::vector<uint8_t> dirs(sp.points.size());
+    std::vector<voxel::CachedLight> read(sp.points.size());
     uint32_t fewest = UINT32_MAX;
     for (size_t i = 0; i < sp.points.size(); ++i) {
         const glm::dvec3 n = sp.normals[i];
         const int axis = std::abs(n.x) > 0.5 ? 0 : std::abs(n.y) > 0.5 ? 1 : 2;
-        const uint8_t dir = uint8_t(2 * axis + (n[axis] < 0.0 ? 1 : 0));
-        const voxel::CachedLight l = lookup.at((sp.points[i] - world.origin()) / world.voxelSize(), dir);
-        ao[sp.pixels[i]] = float(l.ao);
-        fewest = std::min(fewest, l.samples);
+        dirs[i] = uint8_t(2 * axis + (n[axis] < 0.0 ? 1 : 0));
+        points[i] = (sp.points[i] - world.origin()) / world.voxelSize();
+        read[i] = lookup.at(points[i], dirs[i]);
+        ao[sp.pixels[i]] = float(read[i].ao);
+        fewest = std::min(fewest, read[i].samples);
     }
     const AoError e = aoError(ao, ref.ao, ref.surface);
+    // Sky light: both as colours, three channels per pixel side by side.
+    const voxel::Lighting& light = world.desc().lighting;
+    const std::vector<voxel::FaceTexel> sky = voxel::tracePoints(
+        voxel::BrickTable(world), world, points, dirs,
+        {.radius = radius, .rays = skySpp, .sunRays = 1, .sunDirection = glm::dvec3(light.sunDirection)}, 0x736b79);
+    std::vector<float> cached(3 * ao.size(), 0.0f), traced(3 * ao.size(), 0.0f);
+    std::vector<uint8_t> mask(3 * ao.size(), 0);
+    for (size_t i = 0; i < sp.points.size(); ++i) {
+        const glm::vec3 a = light.skyHorizon * float(read[i].skyHorizon) + light.skyZenith * float(read[i].skyZenith);
+        const glm::vec3 b = (light.skyHorizon * sky[i].skyHorizon + light.skyZenith * sky[i].skyZenith) / float(skySpp);
+        for (int c = 0; c < 3; ++c) {
+            cached[3 * sp.pixels[i] + c] = a[c], traced[3 * sp.pixels[i] + c] = b[c];
+            mask[3 * sp.pixels[i] + c] = 1;
+        }
+    }
+    const AoError se = aoError(cached, traced, mask);
     std::printf("%s: baked face cache %s (%u x %u texels a face, at least %u rays a texel), reference R %g\n",
                 world.desc().source.stem().c_str(), file.c_str(), k, k, fewest, radius);
     std::printf("pixels %zu  mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f\n", e.pixels, e.mae, e.rmse, e.psnr, e.bias);
+    std::printf("sky light against %u rays from each point: mae %.5f  rmse %.5f  psnr %.2f dB  bias %+.4f\n", skySpp,
+                se.mae, se.rmse, se.psnr, se.bias);
 }
 
 }  // namespace
@@ -51,6 +77,7 @@ void addCompareCommand(CLI::App& app) {
     struct Args {
         std::string world, camera, size = "640x360", bake;
         int64_t spp = 1024;
+        uint32_t skySpp = 1024;
         int frames = 5, warmup = 2;
         AoFlags ao;
     };
@@ -65,6 +92,8 @@ void addCompareCommand(CLI::App& app) {
         ->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--warmup", args->warmup, "Frames not timed")->capture_default_str()->check(CLI::Range(0, 1000));
     cmd->add_option("--bake", args->bake, "Measure this baked face cache (grotto bake) read at the view's points instead");
+    cmd->add_option("--sky-spp", args->skySpp, "With --bake: rays per point of the sky light's reference")
+        ->capture_default_str()->check(CLI::Range(1u, 1u << 20));
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -86,7 +115,7 @@ void addCompareCommand(CLI::App& app) {
         double maxError = 0.0;
         for (float e : ref.stderror) maxError = std::max(maxError, double(e));
         if (!args->bake.empty()) {
-            compareBake(args->bake, world, camera, ctx, radius, ref);
+            compareBake(args->bake, world, camera, ctx, radius, ref, args->skySpp);
             session.reset();
             requireNoValidationMessages(ctx);
             return;

@@ -66,65 +66,94 @@ uint64_t texelSeed(const ExposedFace& f, uint32_t i, uint32_t j) {
     return splitmix64(h ^ (uint64_t(f.dir) << 32 | uint64_t(i) << 16 | j));
 }
 
+// One texel's (or point's) rays, for a bake's settings over one world.
+class TexelTracer {
+public:
+    TexelTracer(const BrickTable& table, const World& world, const FaceBakeSettings& s)
+        : table_(table), s_(s), tAo_(s.radius / world.voxelSize()), sun_(glm::normalize(s.sunDirection)),
+          pointSun_(!(s.sunAngleDegrees > 0.0)), sunRays_(pointSun_ ? std::min(s.sunRays, 1u) : s.sunRays),
+          cosHalf_(std::cos(0.5 * s.sunAngleDegrees * std::numbers::pi / 180.0)) {
+        if (!(s.radius > 0.0 && std::isfinite(s.radius)))
+            throw Error("radius", std::to_string(s.radius) + " is out of range", "accepted: > 0 world units");
+        const IndexBox bounds = world.bounds();
+        lo_ = glm::dvec3(bounds.min), hi_ = glm::dvec3(bounds.max) + 1.0;
+        tangents(sun_, s1_, s2_);
+    }
+
+    // Adds the settings' rays to `t` from p (voxel units, on a face plane) with the
+    // axis normal n, its sequences turned by the hash h.
+    void trace(FaceTexel& t, glm::dvec3 p, glm::dvec3 n, uint64_t h) const {
+        glm::dvec3 t1, t2;
+        tangents(n, t1, t2);
+        p += n * s_.epsilon;
+        const glm::dvec2 shift(unit(h), unit(splitmix64(h)));
+        double horizon = 0.0, zenith = 0.0;
+        for (uint32_t ray = 0; ray < s_.rays; ++ray) {
+            const glm::dvec3 l = cosineDirection(r2(uint64_t(t.samples) + ray, shift));
+            const glm::dvec3 d = t1 * l.x + t2 * l.y + n * l.z;
+            if (table_.hitWithin(p, d, tAo_)) continue;  // within R: neither AO nor sky
+            ++t.open;
+            if (!leaves(p, d)) continue;
+            const SkyWeights w = skyWeights(d.y);
+            horizon += w.horizon, zenith += w.zenith;
+        }
+        t.samples += s_.rays;
+        t.skyHorizon += float(horizon), t.skyZenith += float(zenith);
+        const glm::dvec2 sunShift(unit(splitmix64(h ^ 1)), unit(splitmix64(h ^ 2)));
+        for (uint32_t ray = 0; ray < sunRays_; ++ray) {
+            glm::dvec3 d = sun_;
+            if (!pointSun_) {
+                const glm::dvec3 c = coneDirection(r2(uint64_t(t.sunSamples) + ray, sunShift), cosHalf_);
+                d = s1_ * c.x + s2_ * c.y + sun_ * c.z;
+            }
+            if (glm::dot(d, n) > 0.0 && leaves(p, d)) ++t.sunOpen;
+        }
+        t.sunSamples += sunRays_;
+    }
+
+private:
+    // Does a ray from p along d leave the world without entering a solid voxel?
+    bool leaves(glm::dvec3 p, glm::dvec3 d) const { return !table_.hitWithin(p, d, exitDistance(p, d, lo_, hi_)); }
+
+    const BrickTable& table_;
+    const FaceBakeSettings& s_;
+    double tAo_;
+    glm::dvec3 sun_, s1_, s2_, lo_, hi_;
+    bool pointSun_;
+    uint32_t sunRays_;
+    double cosHalf_;
+};
+
 }  // namespace
 
 void bakeFaces(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
                const FaceBakeSettings& s, std::span<FaceTexel> texels) {
-    if (!(s.radius > 0.0 && std::isfinite(s.radius)))
-        throw Error("radius", std::to_string(s.radius) + " is out of range", "accepted: > 0 world units");
     if (s.texelsPerSide == 0) throw Error("texels per side", "0", "accepted: 1 or more");
+    const TexelTracer tracer(table, world, s);
     const uint32_t k = s.texelsPerSide, perFace = k * k;
     if (texels.size() != faces.size() * perFace)
         throw Error::internal("bakeFaces", "texels and faces differ in count");
-    const double tAo = s.radius / world.voxelSize();
-    const IndexBox bounds = world.bounds();
-    const glm::dvec3 lo(bounds.min), hi(glm::dvec3(bounds.max) + 1.0);
-    const glm::dvec3 sun = glm::normalize(s.sunDirection);
-    const bool pointSun = !(s.sunAngleDegrees > 0.0);
-    const uint32_t sunRays = pointSun ? std::min(s.sunRays, 1u) : s.sunRays;
-    const double cosHalf = std::cos(0.5 * s.sunAngleDegrees * std::numbers::pi / 180.0);
-    glm::dvec3 s1, s2;
-    tangents(sun, s1, s2);
-    // Does a ray from p along d leave the world without entering a solid voxel?
-    auto leaves = [&](glm::dvec3 p, glm::dvec3 d) { return !table.hitWithin(p, d, exitDistance(p, d, lo, hi)); };
-
     tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t f = r.begin(); f < r.end(); ++f) {
             const ExposedFace& face = faces[f];
-            const glm::dvec3 n = faceNormal(face.dir);
-            glm::dvec3 t1, t2;
-            tangents(n, t1, t2);
             for (uint32_t j = 0; j < k; ++j)
-                for (uint32_t i = 0; i < k; ++i) {
-                    FaceTexel& t = texels[f * perFace + j * k + i];
-                    const glm::dvec3 p = texelPoint(face, k, i, j) + n * s.epsilon;
-                    const uint64_t h = texelSeed(face, i, j);
-                    const glm::dvec2 shift(unit(h), unit(splitmix64(h)));
-                    double horizon = 0.0, zenith = 0.0;
-                    for (uint32_t ray = 0; ray < s.rays; ++ray) {
-                        const glm::dvec3 l = cosineDirection(r2(uint64_t(t.samples) + ray, shift));
-                        const glm::dvec3 d = t1 * l.x + t2 * l.y + n * l.z;
-                        if (table.hitWithin(p, d, tAo)) continue;  // within R: neither AO nor sky
-                        ++t.open;
-                        if (!leaves(p, d)) continue;
-                        const SkyWeights w = skyWeights(d.y);
-                        horizon += w.horizon, zenith += w.zenith;
-                    }
-                    t.samples += s.rays;
-                    t.skyHorizon += float(horizon), t.skyZenith += float(zenith);
-                    const glm::dvec2 sunShift(unit(splitmix64(h ^ 1)), unit(splitmix64(h ^ 2)));
-                    for (uint32_t ray = 0; ray < sunRays; ++ray) {
-                        glm::dvec3 d = sun;
-                        if (!pointSun) {
-                            const glm::dvec3 c = coneDirection(r2(uint64_t(t.sunSamples) + ray, sunShift), cosHalf);
-                            d = s1 * c.x + s2 * c.y + sun * c.z;
-                        }
-                        if (glm::dot(d, n) > 0.0 && leaves(p, d)) ++t.sunOpen;
-                    }
-                    t.sunSamples += sunRays;
-                }
+                for (uint32_t i = 0; i < k; ++i)
+                    tracer.trace(texels[f * perFace + j * k + i], texelPoint(face, k, i, j), faceNormal(face.dir),
+                                 texelSeed(face, i, j));
         }
     });
+}
+
+std::vector<FaceTexel> tracePoints(const BrickTable& table, const World& world, std::span<const glm::dvec3> points,
+                                   std::span<const uint8_t> dirs, const FaceBakeSettings& s, uint64_t seed) {
+    if (points.size() != dirs.size()) throw Error::internal("tracePoints", "points and directions differ in count");
+    const TexelTracer tracer(table, world, s);
+    std::vector<FaceTexel> out(points.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, points.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t k = r.begin(); k < r.end(); ++k)
+            tracer.trace(out[k], points[k], faceNormal(dirs[k]), splitmix64(seed ^ splitmix64(k)));
+    });
+    return out;
 }
 
 }  // namespace grotto::voxel

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <span>
+#include <vector>
 
 namespace grotto::voxel {
 
@@ -29,5 +30,11 @@ struct FaceBakeSettings {
 // k 0 or a texel span of the wrong size.
 void bakeFaces(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
                const FaceBakeSettings& settings, std::span<FaceTexel> texels);
+
+// The same rays from arbitrary points on face planes (voxel index units) looking
+// `dirs`, each turned by a hash of `seed` and its index: a reference for what the
+// cache reads between its texels. Throws as bakeFaces.
+std::vector<FaceTexel> tracePoints(const BrickTable& table, const World& world, std::span<const glm::dvec3> points,
+                                   std::span<const uint8_t> dirs, const FaceBakeSettings& settings, uint64_t seed);
 
 }  // namespace grotto::voxel
