@@ -2,8 +2,9 @@
 // grotto bake --merge PART... -o FILE
 // Converges the face cache (voxel/face_cache.h) of every exposed face on every
 // core, with progress and an ETA, and writes it tied to the world and settings
-// (voxel/face_cache_file.h). --chunk bakes the K-th of N equal runs of faces, for
-// a farm; --merge joins the parts into the file one machine's bake writes.
+// (voxel/face_cache_file.h). --chunk K/N bakes the K-th of N equal runs of faces
+// (1 <= K <= N, as flythrough counts chunks), for a farm; --merge joins the parts
+// into the file one machine's bake writes.
 #include "app/commands.h"
 #include "app/options.h"
 #include "app/progress.h"
@@ -20,12 +21,12 @@
 namespace grotto::app {
 namespace {
 
-// "K/N" with 0 <= K < N.
+// "K/N" with 1 <= K <= N, as flythrough --chunk counts.
 std::pair<uint64_t, uint64_t> parseChunk(const std::string& text) {
     static const std::regex form(R"((\d{1,9})/(\d{1,9}))");
     std::smatch m;
-    if (!std::regex_match(text, m, form) || std::stoull(m[2]) == 0 || std::stoull(m[1]) >= std::stoull(m[2]))
-        throw Error("--chunk", "'" + text + "' is not K/N", "accepted: K/N with 0 <= K < N, e.g. 0/4");
+    if (!std::regex_match(text, m, form) || std::stoull(m[1]) == 0 || std::stoull(m[1]) > std::stoull(m[2]))
+        throw Error("--chunk", "'" + text + "' is not K/N", "accepted: K/N with 1 <= K <= N, e.g. 3/8");
     return {std::stoull(m[1]), std::stoull(m[2])};
 }
 
@@ -51,7 +52,7 @@ void addBakeCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("bake", "Converge the AO, sky light and sun cached on every exposed voxel face");
     cmd->add_option("world", args->world, "World .json or .vdb");
     cmd->add_option("-o,--output", args->output, "Output face cache (.gfc)")->required();
-    cmd->add_option("--chunk", args->chunk, "Bake only part K of N (K/N, from 0), for a farm");
+    cmd->add_option("--chunk", args->chunk, "Bake only the K-th of N equal runs of faces (K/N, 1 <= K <= N), for a farm");
     cmd->add_option("--merge", args->merge, "Join these parts (bake --chunk) into one cache")->expected(1, -1);
     cmd->add_option("--rays", args->rays, "Cosine-weighted rays per texel (AO and sky)")
         ->capture_default_str()->check(CLI::Range(1u, 1u << 20));
@@ -78,7 +79,7 @@ void addBakeCommand(CLI::App& app) {
         uint64_t first = 0, count = faces.size();
         if (!args->chunk.empty()) {
             const auto [k, n] = parseChunk(args->chunk);
-            first = faces.size() * k / n, count = faces.size() * (k + 1) / n - first;
+            first = faces.size() * (k - 1) / n, count = faces.size() * k / n - first;
         }
         voxel::FaceCacheFile cache{.key = voxel::faceCacheKey(world, radius, args->texels),
                                    .totalFaces = faces.size(), .firstFace = first};

@@ -35,7 +35,7 @@ TEST_F(Bake, PartsJoinedInAnyOrderAreTheWholeBakeByteForByte) {
     const fs::path whole = dir_ / "whole.gfc";
     ASSERT_EQ(runGrotto(bake(pillars_, whole)).exitCode, 0);
     std::string parts;
-    for (int k = 0; k < 3; ++k) {
+    for (int k = 1; k <= 3; ++k) {
         const fs::path part = dir_ / ("part" + std::to_string(k) + ".gfc");
         const RunResult r = runGrotto(bake(pillars_, part, "--chunk " + std::to_string(k) + "/3"));
         ASSERT_EQ(r.exitCode, 0) << r.err;
@@ -51,11 +51,12 @@ TEST_F(Bake, PartsJoinedInAnyOrderAreTheWholeBakeByteForByte) {
 
 TEST_F(Bake, BadArgumentsPartsAndFilesAreRefused) {
     const fs::path out = dir_ / "out.gfc";
-    expectRefused(bake(pillars_, out, "--chunk 3/3"), "--chunk", out);
+    expectRefused(bake(pillars_, out, "--chunk 4/3"), "--chunk", out);
+    expectRefused(bake(pillars_, out, "--chunk 0/3"), "--chunk", out);
     expectRefused(bake(pillars_, dir_ / "out.bin"), "out.bin", dir_ / "out.bin");
     std::vector<fs::path> parts;
-    for (int k = 0; k < 3; ++k) {
-        parts.push_back(dir_ / ("p" + std::to_string(k) + ".gfc"));
+    for (int k = 1; k <= 3; ++k) {
+        parts.push_back(dir_ / ("p" + std::to_string(k - 1) + ".gfc"));
         ASSERT_EQ(runGrotto(bake(pillars_, parts.back(), "--chunk " + std::to_string(k) + "/3")).exitCode, 0);
     }
     const std::string p0 = parts[0].string(), p1 = parts[1].string(), p2 = parts[2].string();
@@ -63,7 +64,7 @@ TEST_F(Bake, BadArgumentsPartsAndFilesAreRefused) {
     expectRefused("bake --merge " + p0 + " " + p1 + " -o " + out.string(), "missing", out);
     expectRefused("bake --merge " + p0 + " " + p0 + " " + p1 + " " + p2 + " -o " + out.string(), "overlap", out);
     const fs::path other = dir_ / "other.gfc";  // another world's part 1
-    ASSERT_EQ(runGrotto(bake(good_, other, "--chunk 1/3")).exitCode, 0);
+    ASSERT_EQ(runGrotto(bake(good_, other, "--chunk 2/3")).exitCode, 0);
     expectRefused("bake --merge " + p0 + " " + other.string() + " " + p2 + " -o " + out.string(), "other.gfc", out);
 
     // Damaged files: each refused naming the file and the field.

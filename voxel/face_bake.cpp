@@ -2,6 +2,7 @@
 
 #include "grotto/error.h"
 #include "voxel/brick_table.h"
+#include "voxel/ray_sampling.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -17,16 +18,8 @@ namespace grotto::voxel {
 
 namespace {
 
-uint64_t splitmix64(uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
-double unit(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }  // [0, 1)
-
-// Point n of the R2 sequence (Roberts 2018), turned by (shift, turn): a
-// cosine-weighted direction about +z, and a uniform one in a cone about +z.
+// Point n of the R2 sequence (Roberts 2018), shifted (Cranley-Patterson); as a
+// cosine-weighted direction about +z, or a uniform one in a cone about +z.
 constexpr double kPlastic = 1.32471795724474602596;
 glm::dvec2 r2(uint64_t n, glm::dvec2 shift) {
     return {std::fmod(0.5 + double(n) / kPlastic + shift.x, 1.0),
@@ -42,12 +35,6 @@ glm::dvec3 coneDirection(glm::dvec2 u, double cosHalf) {
     return {r * std::cos(phi), r * std::sin(phi), z};
 }
 
-// Two unit tangents completing n (Duff et al. 2017).
-void tangents(glm::dvec3 n, glm::dvec3& t1, glm::dvec3& t2) {
-    const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), b = n.x * n.y * a;
-    t1 = {1.0 + s * n.x * n.x * a, s * b, -s * n.x};
-    t2 = {b, s + n.y * n.y * a, -n.y};
-}
 
 // Where a ray from p along d leaves the box [lo, hi) (voxel units); 0 when it
 // starts outside and never enters.
@@ -86,7 +73,7 @@ public:
         glm::dvec3 t1, t2;
         tangents(n, t1, t2);
         p += n * s_.epsilon;
-        const glm::dvec2 shift(unit(h), unit(splitmix64(h)));
+        const glm::dvec2 shift(unitInterval(h), unitInterval(splitmix64(h)));
         double horizon = 0.0, zenith = 0.0;
         for (uint32_t ray = 0; ray < s_.rays; ++ray) {
             const glm::dvec3 l = cosineDirection(r2(uint64_t(t.samples) + ray, shift));
@@ -99,7 +86,7 @@ public:
         }
         t.samples += s_.rays;
         t.skyHorizon += float(horizon), t.skyZenith += float(zenith);
-        const glm::dvec2 sunShift(unit(splitmix64(h ^ 1)), unit(splitmix64(h ^ 2)));
+        const glm::dvec2 sunShift(unitInterval(splitmix64(h ^ 1)), unitInterval(splitmix64(h ^ 2)));
         for (uint32_t ray = 0; ray < sunRays_; ++ray) {
             glm::dvec3 d = sun_;
             if (!pointSun_) {

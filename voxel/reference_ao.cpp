@@ -5,6 +5,7 @@
 
 #include "grotto/error.h"
 #include "voxel/brick_table.h"
+#include "voxel/ray_sampling.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -20,14 +21,6 @@ namespace grotto::voxel {
 
 namespace {
 
-uint64_t splitmix64(uint64_t x) {
-    x += 0x9e3779b97f4a7c15ull;
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-}
-double unit(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }  // [0, 1)
-
 // The first N points of the R2 sequence (Roberts 2018), as the cosine-weighted
 // radius-squared u and the azimuth's cosine and sine.
 struct Directions {
@@ -42,12 +35,6 @@ struct Directions {
     }
 };
 
-// Two unit tangents completing n (Duff et al. 2017, branchless).
-void tangents(glm::dvec3 n, glm::dvec3& t1, glm::dvec3& t2) {
-    const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), b = n.x * n.y * a;
-    t1 = {1.0 + s * n.x * n.x * a, s * b, -s * n.x};
-    t2 = {b, s + n.y * n.y * a, -n.y};
-}
 
 // An object's voxels as a ray sees them: its brick table, the pose that places
 // it, and a bounding sphere (world units) to skip it for points out of reach.
@@ -118,7 +105,7 @@ ReferenceAo referenceAo(const BrickTable& table, const World& world, std::span<c
             tangents(n, t1, t2);
             // The per-point shift: u moves along [0, 1), the azimuth turns by an angle.
             const uint64_t h = splitmix64(s.seed ^ splitmix64(k));
-            const double shift = unit(h), turn = 2.0 * std::numbers::pi * unit(splitmix64(h));
+            const double shift = unitInterval(h), turn = 2.0 * std::numbers::pi * unitInterval(splitmix64(h));
             const double ct = std::cos(turn), st = std::sin(turn);
             uint32_t open = 0;
             for (uint32_t i = 0; i < s.spp; ++i) {

@@ -1,0 +1,34 @@
+#pragma once
+// A baked face cache on the GPU: the three arrays of shaders/shared/face_cache.h
+// in storage buffers (voxel/face_cache_layout.h lays them out), and what a pass
+// that reads it binds after its own inputs (shaders/face_cache.glsl).
+#include "engine/vk/pipeline.h"
+#include "engine/vk/resources.h"
+#include "voxel/face_cache_layout.h"
+
+#include <vector>
+
+namespace grotto {
+
+class GpuFaceCache {
+public:
+    GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& arrays);
+    ~GpuFaceCache();
+    GpuFaceCache(const GpuFaceCache&) = delete;
+    GpuFaceCache& operator=(const GpuFaceCache&) = delete;
+
+    uint32_t hashMask() const { return hashMask_; }
+    uint32_t texelsPerSide() const { return texelsPerSide_; }
+    size_t gpuBytes() const { return size_t(bricks_.size + records_.size + texels_.size); }
+
+    // Appends the three buffers' bindings (bricks, records, texels) to a pass's own.
+    static std::vector<VkDescriptorType> withBindings(std::vector<VkDescriptorType> own);
+    std::vector<vk::Binding> withBindings(std::vector<vk::Binding> own) const;
+
+private:
+    vk::Context& ctx_;
+    vk::Buffer bricks_, records_, texels_;
+    uint32_t hashMask_, texelsPerSide_;
+};
+
+}  // namespace grotto

@@ -1,0 +1,12 @@
+// The face cache's three buffers at GROTTO_FACE_CACHE_BINDING and the two after
+// it (engine/scene/face_cache_gpu.h binds them), read through
+// shared/face_cache.h. The includer defines GROTTO_FACE_CACHE_BINDING and the
+// functions faceCacheHashMask() and faceCacheK() before including this.
+layout(set = 0, binding = GROTTO_FACE_CACHE_BINDING, std430) readonly buffer FaceBricks { uvec4 faceBricks[]; };
+layout(set = 0, binding = GROTTO_FACE_CACHE_BINDING + 1, std430) readonly buffer FaceRecords { uint faceRecords[]; };
+layout(set = 0, binding = GROTTO_FACE_CACHE_BINDING + 2, std430) readonly buffer FaceTexels { uint faceTexels[]; };
+
+uvec4 faceCacheBrickEntry(uint slot) { return faceBricks[slot]; }
+uint faceCacheRecordWord(uint word) { return faceRecords[word]; }
+uint faceCacheTexelWord(uint texel) { return faceTexels[texel]; }
+#include "shared/face_cache.h"

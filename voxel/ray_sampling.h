@@ -1,0 +1,27 @@
+#pragma once
+// What every CPU ray set of ours is drawn with: a 64-bit mixer for per-point
+// seeds, its bits as a double in [0, 1), and two tangents completing a normal.
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <cstdint>
+
+namespace grotto::voxel {
+
+inline uint64_t splitmix64(uint64_t x) {
+    x += 0x9e3779b97f4a7c15ull;
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+}
+
+inline double unitInterval(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
+
+// Two unit tangents completing the unit normal n (Duff et al. 2017, branchless).
+inline void tangents(glm::dvec3 n, glm::dvec3& t1, glm::dvec3& t2) {
+    const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), b = n.x * n.y * a;
+    t1 = {1.0 + s * n.x * n.x * a, s * b, -s * n.x};
+    t2 = {b, s + n.y * n.y * a, -n.y};
+}
+
+}  // namespace grotto::voxel
