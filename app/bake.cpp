@@ -45,7 +45,7 @@ void addBakeCommand(CLI::App& app) {
     struct Args {
         std::string world, output, chunk;
         std::vector<std::string> merge;
-        uint32_t rays = 64, sunRays = 16, texels = 3;
+        uint32_t rays = voxel::kDefaultBakeRays, sunRays = voxel::kDefaultBakeSunRays, texels = voxel::kDefaultBakeTexels;
         AoFlags ao;
     };
     auto args = std::make_shared<Args>();

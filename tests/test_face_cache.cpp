@@ -253,6 +253,7 @@ TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
     for (uint32_t k : {1u, 2u}) {
         const std::vector<FaceTexel> texels = bake(w, faces, {.texelsPerSide = k, .rays = 16, .sunRays = 1});
         const FaceCacheArrays arrays = layFaceCache(faces, texels, k);
+        EXPECT_EQ(faceCacheGpuBytes(faces, k), arrays.bytes());
         gpu::gpuTwin = &arrays;
         const FaceCacheLookup lookup(faces, texels, k);
         std::vector<int> seen(faces.size(), 0);

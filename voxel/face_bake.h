@@ -14,11 +14,15 @@
 
 namespace grotto::voxel {
 
+// `grotto bake`'s defaults: on caves, 3 x 3 texels of 64 rays measured best for
+// their cost (docs/face-cache.md).
+inline constexpr uint32_t kDefaultBakeTexels = 3, kDefaultBakeRays = 64, kDefaultBakeSunRays = 16;
+
 struct FaceBakeSettings {
-    double radius = 4.0;             // AO's R, world units (> 0)
-    uint32_t texelsPerSide = 2;      // k: k x k texels per face
-    uint32_t rays = 256;             // cosine-weighted rays per texel per call (AO and sky)
-    uint32_t sunRays = 16;           // rays per texel per call over the sun's disc (one for a point sun)
+    double radius = 4.0;                         // AO's R, world units (> 0)
+    uint32_t texelsPerSide = kDefaultBakeTexels; // k: k x k texels per face
+    uint32_t rays = kDefaultBakeRays;            // cosine-weighted rays per texel per call (AO and sky)
+    uint32_t sunRays = kDefaultBakeSunRays;      // rays per texel per call over the sun's disc (one for a point sun)
     glm::dvec3 sunDirection{0.0, 1.0, 0.0};  // toward the sun, unit length
     double sunAngleDegrees = 0.0;    // the disc's angular diameter; 0: a point
     double epsilon = 1e-4;           // rays leave this far (voxels) in front of the face

@@ -28,6 +28,16 @@ uint32_t packFaceTexel(const FaceTexel& t) {
     return unorm8(t.ao()) | unorm8(t.sun()) << 8 | unorm8(t.skyHorizon / n) << 16 | unorm8(t.skyZenith / n) << 24;
 }
 
+size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide) {
+    std::vector<glm::ivec3> bricks;
+    bricks.reserve(faces.size());
+    for (const ExposedFace& f : faces) bricks.push_back(f.cell >> 3);
+    std::sort(bricks.begin(), bricks.end(), BrickLess{});
+    bricks.erase(std::unique(bricks.begin(), bricks.end()), bricks.end());
+    const size_t slots = std::bit_ceil(std::max<size_t>(2 * bricks.size(), 2));
+    return slots * 16 + bricks.size() * GROTTO_FACE_RECORD_WORDS * 4 + faces.size() * texelsPerSide * texelsPerSide * 4;
+}
+
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
                              uint32_t texelsPerSide) {
     const uint32_t perFace = texelsPerSide * texelsPerSide;

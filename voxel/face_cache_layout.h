@@ -28,4 +28,8 @@ uint32_t packFaceTexel(const FaceTexel& t);
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
                              uint32_t texelsPerSide);
 
+// What layFaceCache's arrays for `faces` at k texels a side take, without laying
+// them out (for `info` and `bench`).
+size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide);
+
 }  // namespace grotto::voxel
