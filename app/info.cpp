@@ -3,8 +3,6 @@
 #include "app/commands.h"
 #include "common/printable.h"
 #include "engine/scene/scene.h"
-#include "voxel/face_bake.h"
-#include "voxel/face_cache_layout.h"
 #include "voxel/live_mesh.h"
 #include "voxel/object_worlds.h"
 #include "voxel/world.h"
@@ -72,13 +70,6 @@ void addInfoCommand(CLI::App& app) {
         std::printf("quads          %zu (coarser levels of detail: %zu more)\n", quads, coarse);
         std::printf("host bytes     %zu (grid as loaded: %zu)\n", host, s.sourceGridBytes);
         std::printf("gpu bytes      %zu\n", gpu);
-        {  // what a bake at the default k would add (docs/face-cache.md)
-            const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(w);
-            const size_t bytes = voxel::faceCacheGpuBytes(faces, voxel::kDefaultBakeTexels);
-            std::printf("face cache     %zu exposed faces; baked at %u x %u texels, %zu bytes on the GPU (%.1f a face)\n",
-                        faces.size(), voxel::kDefaultBakeTexels, voxel::kDefaultBakeTexels, bytes,
-                        faces.empty() ? 0.0 : double(bytes) / double(faces.size()));
-        }
         if (b.empty())
             std::printf("bounds         empty\n");
         else
