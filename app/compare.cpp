@@ -29,7 +29,8 @@ void compareBake(const std::filesystem::path& file, const voxel::World& world, c
                  double radius, const ReferenceView& ref, uint32_t skySpp) {
     const voxel::FaceCacheFile cache = voxel::loadFaceCache(file);
     const uint32_t k = cache.key.texelsPerSide;
-    const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(world);
+    const voxel::BrickTable table(world);
+    const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
     voxel::requireMatchingBake(cache, voxel::faceCacheKey(world, radius, k), faces.size(), file);
     const voxel::FaceCacheLookup lookup(faces, cache.texels, k);
     const SurfacePoints sp = viewSurfacePoints(world, camera, ctx);
@@ -51,7 +52,7 @@ void compareBake(const std::filesystem::path& file, const voxel::World& world, c
     // Sky light: both as colours, three channels per pixel side by side.
     const voxel::Lighting& light = world.desc().lighting;
     const std::vector<voxel::FaceTexel> sky = voxel::tracePoints(
-        voxel::BrickTable(world), world, points, dirs,
+        table, world, points, dirs,
         {.radius = radius, .rays = skySpp, .sunRays = 1, .sunDirection = glm::dvec3(light.sunDirection)}, 0x736b79);
     std::vector<float> cached(3 * ao.size(), 0.0f), traced(3 * ao.size(), 0.0f);
     std::vector<uint8_t> mask(3 * ao.size(), 0);

@@ -45,6 +45,14 @@ World denseWorld(glm::ivec3 size, const std::function<bool(glm::ivec3)>& solid) 
     return World::fromDense(size, m.data(), 1.0, glm::dvec3(0.0));
 }
 
+// A cube of `side` voxels, each solid with probability `density`, drawn from `rng`.
+World randomWorld(int side, double density, std::mt19937& rng) {
+    std::bernoulli_distribution fill(density);
+    std::vector<bool> cells(size_t(side) * side * side);
+    for (size_t k = 0; k < cells.size(); ++k) cells[k] = fill(rng);
+    return denseWorld({side, side, side}, [&](glm::ivec3 v) { return cells[(size_t(v.z) * side + v.y) * side + v.x]; });
+}
+
 std::vector<FaceTexel> bake(const World& w, std::span<const ExposedFace> faces, const FaceBakeSettings& s) {
     std::vector<FaceTexel> t(faces.size() * s.texelsPerSide * s.texelsPerSide);
     bakeFaces(BrickTable(w), w, faces, s, t);
@@ -158,10 +166,7 @@ TEST(FaceCache, AClosedRoomIsDarkInsideAndItsAoIsTheReferences) {
 // A point sun's visibility is one ray, World::raycast's answer from the texel.
 TEST(FaceCache, PointSunVisibilityIsTheRaycastsAnswer) {
     std::mt19937 rng(11);
-    std::bernoulli_distribution fill(0.18);
-    std::vector<bool> cells(20 * 20 * 20);
-    for (size_t k = 0; k < cells.size(); ++k) cells[k] = fill(rng);
-    const World w = denseWorld({20, 20, 20}, [&](glm::ivec3 v) { return cells[(size_t(v.z) * 20 + v.y) * 20 + v.x]; });
+    const World w = randomWorld(20, 0.18, rng);
     const std::vector<ExposedFace> faces = exposedFaces(w);
     const glm::dvec3 sun = glm::normalize(glm::dvec3(0.45, 0.8, 0.3));
     FaceBakeSettings s{.texelsPerSide = 1, .rays = 4, .sunDirection = sun};
@@ -182,10 +187,7 @@ TEST(FaceCache, PointSunVisibilityIsTheRaycastsAnswer) {
 // rays added in two calls give the same counts as one bake.
 TEST(FaceCache, ABakeSplitIntoPartsEqualsOneBake) {
     std::mt19937 rng(5);
-    std::bernoulli_distribution fill(0.25);
-    std::vector<bool> cells(16 * 16 * 16);
-    for (size_t k = 0; k < cells.size(); ++k) cells[k] = fill(rng);
-    const World w = denseWorld({16, 16, 16}, [&](glm::ivec3 v) { return cells[(size_t(v.z) * 16 + v.y) * 16 + v.x]; });
+    const World w = randomWorld(16, 0.25, rng);
     const std::vector<ExposedFace> faces = exposedFaces(w);
     FaceBakeSettings s{.texelsPerSide = 2, .rays = 64, .sunRays = 4, .sunAngleDegrees = 2.0};
     const std::vector<FaceTexel> whole = bake(w, faces, s);
@@ -245,10 +247,7 @@ TEST(FaceCache, LookupBlendsTexelsAcrossCoplanarFaces) {
 // read equals the CPU lookup up to the texels' 8-bit quantisation.
 TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
     std::mt19937 rng(9);
-    std::bernoulli_distribution fill(0.3);
-    std::vector<bool> cells(20 * 20 * 20);
-    for (size_t k = 0; k < cells.size(); ++k) cells[k] = fill(rng);
-    const World w = denseWorld({20, 20, 20}, [&](glm::ivec3 v) { return cells[(size_t(v.z) * 20 + v.y) * 20 + v.x]; });
+    const World w = randomWorld(20, 0.3, rng);
     const std::vector<ExposedFace> faces = exposedFaces(w);
     for (uint32_t k : {1u, 2u}) {
         const std::vector<FaceTexel> texels = bake(w, faces, {.texelsPerSide = k, .rays = 16, .sunRays = 1});
