@@ -83,6 +83,7 @@ void addBenchCommand(CLI::App& app) {
         // With levels of detail and the occupancy rays need, and the objects.
         std::optional<RenderSession> session;
         session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
+        prepareFaceCache(*session, args->ao);
         GpuScene& scene = session->scene().gpu();
         {
             Renderer& renderer = session->renderer();

@@ -197,6 +197,7 @@ void run(const Args& a) {
     const voxel::CameraDesc lens = world.camera("", size.aspect());
     std::optional<RenderSession> session;
     session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
+    prepareFaceCache(*session, a.ao);
     session->playPath(desc, lens);
     session->startPathAt(double(start - 1) / a.fps);
     {

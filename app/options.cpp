@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -103,6 +104,7 @@ void addAoFlags(CLI::App* cmd, AoFlags& f) {
                               [](auto) {}},
                    s.desc);
     });
+    cmd->add_option("--bake", f.bake, "Face cache from grotto bake of this world (implies --ao cache)");
     addDetailFlags(cmd, f);
 }
 
@@ -139,6 +141,12 @@ nlohmann::json detailJson(const voxel::Detail& d) {
 
 voxel::AoDesc aoDescWithFlags(const voxel::AoDesc& world, const AoFlags& f) {
     voxel::AoDesc d = world;
+    if (!f.bake.empty()) {  // the cache's file: its method
+        if (!f.set.method.empty() && f.set.method != "cache")
+            throw Error("--bake", "is the face cache --ao cache reads, not --ao " + f.set.method + "'s",
+                        "drop --ao " + f.set.method + " or --bake");
+        d.method = "cache";
+    }
     if (!f.set.method.empty()) d.method = f.set.method;
     if (!f.set.quality.empty()) {
         d.quality = f.set.quality;
@@ -164,6 +172,19 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
     });
     if (shaped) o.quality = "custom";
     return o;
+}
+
+void prepareFaceCache(RenderSession& session, const AoFlags& flags) {
+    if (!flags.bake.empty()) {
+        session.loadFaceCache(flags.bake);
+        return;
+    }
+    if (!faceCached(session.ao())) return;
+    std::fprintf(stderr, "baking the face cache (no --bake given; grotto bake writes one for every run)...\n");
+    const auto start = std::chrono::steady_clock::now();
+    session.bakeFaceCache();
+    std::fprintf(stderr, "baked %zu faces in %.1f s\n", session.scene().faceCache()->faces().size(),
+                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 nlohmann::json aoSettingsJson(const AoOptions& ao) {

@@ -3,6 +3,7 @@
 #include "engine/ao_settings.h"
 #include "engine/camera_path.h"
 #include "engine/frame/chunk_culling.h"
+#include "engine/session.h"
 #include "engine/vk/context.h"
 #include "voxel/world.h"
 
@@ -56,6 +57,7 @@ voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::strin
 // the world's values.
 struct AoFlags {
     voxel::AoDesc set{.method = {}, .quality = {}, .thickness = {}};  // the AO settings given; choices empty when not
+    std::string bake;  // --bake: a face cache from grotto bake (implies --ao cache)
     nlohmann::ordered_json detail = nlohmann::ordered_json::object();  // the "detail" block's fields given
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);
@@ -69,6 +71,11 @@ voxel::AoDesc aoDescWithFlags(const voxel::AoDesc& world, const AoFlags& flags);
 
 // Preset, world file, then flags; throws grotto::Error (input) for nonsense.
 AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
+
+// --ao cache's light for the session's world: the --bake file (refused, naming the
+// file and field, when it is not this world's or these settings'), or with no
+// --bake a bake made here on every core, announced on stderr. Nothing for other methods.
+void prepareFaceCache(RenderSession& session, const AoFlags& flags);
 
 // The world file's "detail" block, then --lod-bias and --occlusion-culling.
 voxel::Detail resolveDetail(const voxel::World& world, const AoFlags& flags);

@@ -23,11 +23,12 @@ namespace {
 // for more than one frame without a temporal pass is refused: it would render
 // the same single-frame estimate, whatever the flag says.
 uint32_t framesToAccumulate(const std::optional<int>& requested, const AoFlags& flags, AoOptions& ao) {
-    const bool temporal = ao.enabled && ao.chain.temporalHistory > 0;
+    const bool temporal = aoChain(ao) && ao.chain.temporalHistory > 0;
     if (!requested) return temporal ? ao.chain.temporalHistory : 1;
     const uint32_t frames = uint32_t(*requested);
     if (frames > 1 && !temporal) {
         const std::string off = !ao.enabled                  ? "AO is off"
+                                : faceCached(ao)             ? "--ao cache is converged on the faces already"
                                 : flags.set.temporalHistory ? "--temporal 0 turns the temporal pass off"
                                                              : "the world's ao.temporal_history is 0";
         throw Error("--accumulate", std::to_string(frames) + " frames have nothing to average: " + off,
@@ -85,6 +86,7 @@ void addRenderCommand(CLI::App& app) {
         const voxel::Detail detail = resolveDetail(world, args->ao);
         {
             RenderSession session(ctx, std::move(world), ao, detail, size.width, size.height);
+            prepareFaceCache(session, args->ao);
             session.setTime(args->time);  // the objects, held for every frame
             Renderer& renderer = session.renderer();
             for (uint32_t i = 0; i < frames; ++i) renderer.render(camera, i);

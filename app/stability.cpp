@@ -118,6 +118,7 @@ void addStabilityCommand(CLI::App& app) {
         const voxel::Detail detail = resolveDetail(world, args->ao);
         std::optional<RenderSession> session;
         session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
+        prepareFaceCache(*session, args->ao);
         session->playPath(pathDesc, lens);
         session->startPathAt(double(first - 1) / args->fps);
         const StabilityFigures m =

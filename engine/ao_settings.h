@@ -15,24 +15,30 @@ namespace grotto {
 // traces exact rays through the world's voxels (the reference's definition, a
 // few rays a frame); hybrid adds such rays to GTAO's horizons; VBAO keeps GTAO's
 // slices but as bitmasks of 32 sectors, so an occluder hides only the sectors
-// between its front and its back (docs/vbao.md). SSAO and HBAO are
+// between its front and its back (docs/vbao.md). Cache is no chain at all: the
+// composite reads AO, sky light and sun visibility converged on the voxel faces
+// (docs/face-cache.md) at each full-resolution pixel. SSAO and HBAO are
 // baselines for measuring GTAO against (docs/tradeoff.md). Each replaces only the
 // main pass, writing the same image, so depth prefilter, denoise, temporal and
 // upsample are shared.
-enum class AoMethod { Gtao, Voxel, Hybrid, Ssao, Hbao, Vbao };
+enum class AoMethod { Gtao, Voxel, Hybrid, Ssao, Hbao, Vbao, Cache };
 
 struct AoOptions {
     bool enabled = true;               // false for --ao off (no AO chain at all)
-    AoMethod method = AoMethod::Gtao;  // --ao gtao | voxel | hybrid | ssao | hbao | vbao
+    AoMethod method = AoMethod::Gtao;  // --ao gtao | voxel | hybrid | ssao | hbao | vbao | cache
     std::string quality = "high";      // low, medium, high, ultra or custom
     voxel::EstimatorSettings estimator;
     voxel::ChainSettings chain;
 };
 
-// "gtao", "voxel", "hybrid", "ssao", "hbao", "vbao" (the timestamp names the main pass by too).
+// "gtao", "voxel", "hybrid", "ssao", "hbao", "vbao", "cache" (the timestamp names the main pass by too).
 const char* aoMethodName(AoMethod method);
 // Throws grotto::Error (input) naming `where` for anything but those.
 AoMethod parseAoMethod(const std::string& name, const std::string& where);
+// Is there a screen-space AO chain (estimator, denoise, temporal) at AO resolution?
+inline bool aoChain(const AoOptions& ao) { return ao.enabled && ao.method != AoMethod::Cache; }
+// Does the composite read the face cache (voxel/face_cache.h)?
+inline bool faceCached(const AoOptions& ao) { return ao.enabled && ao.method == AoMethod::Cache; }
 // Does the method trace rays through the world's voxels (and so need its occupancy)?
 inline bool tracesVoxels(AoMethod m) { return m == AoMethod::Voxel || m == AoMethod::Hybrid; }
 // Does VBAO read its occluders' thickness from the voxels (a traced thickness

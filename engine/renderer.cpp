@@ -44,18 +44,29 @@ void Renderer::createPasses() {
         gbufferPass_ = std::make_unique<GBufferPass>(
             ctx, motion() ? GBufferMode::Motion : objects_ ? GBufferMode::Objects : GBufferMode::World);
     if (!hizPass_) hizPass_ = std::make_unique<HizPass>(ctx);
-    if (!compositePass_)
-        compositePass_ = std::make_unique<CompositePass>(ctx, ao_.enabled, shadows(), bentNormals(ao_, lighting_));
+    if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, compositeShape());
     if (displayOn_ && !displayPass_) displayPass_ = std::make_unique<DisplayPass>(ctx);
     if (normalsOn_ && !normalsPass_) normalsPass_ = std::make_unique<NormalsPass>(ctx);
-    if (shadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows());
-    if (!ao_.enabled) return;
+    if (tracedShadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows());
+    if (!aoChain(ao_)) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx, voxelThickness(ao_));
     if (!estimatorPass_) estimatorPass_ = std::make_unique<EstimatorPass>(ctx, ao_, bentNormals(ao_, lighting_));
     if (!denoisePass_) denoisePass_ = std::make_unique<DenoisePass>(ctx);
     if (!upsamplePass_) upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
     if (temporal() && !temporalPass_)
         temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.chain.denoisePasses, objects_ != nullptr, motion());
+}
+
+bool Renderer::cachedSun() const {
+    if (!faceCached(ao_) || !scene_.faceCache) return false;
+    const GpuFaceCache::Sun& baked = scene_.faceCache->sun();
+    return glm::length(glm::normalize(baked.direction) - glm::normalize(lighting_.sunDirection)) < 1e-6f &&
+           baked.angleDegrees == lighting_.sunAngle;
+}
+
+CompositeShape Renderer::compositeShape() const {
+    return {.withAo = ao_.enabled, .withShadow = tracedShadows(), .withBentNormals = bentNormals(ao_, lighting_),
+            .faceCache = faceCached(ao_), .cachedSun = shadows() && cachedSun()};
 }
 
 FrameShape Renderer::shapeFor(uint32_t width, uint32_t height, const AoOptions& ao,
@@ -116,6 +127,7 @@ void Renderer::release() {
     displayPass_.reset();
     normalsPass_.reset();
     shadowPass_.reset();
+    faceCacheAovPass_.reset();
     targets_.release();
 }
 
@@ -127,10 +139,14 @@ void Renderer::resize(uint32_t width, uint32_t height) {
 }
 
 void Renderer::setLighting(const voxel::Lighting& lighting) {
-    const bool hadShadows = shadows(), wasSoft = softShadows();
+    const bool hadShadows = shadows(), wasSoft = softShadows(), wasTraced = tracedShadows();
+    const CompositeShape wasComposite = compositeShape();
     const voxel::Lighting old = std::exchange(lighting_, lighting);
     const bool sameAmbient = old.ambientFrom == lighting_.ambientFrom;
-    if (hadShadows == shadows() && wasSoft == softShadows() && sameAmbient) {  // uniforms only
+    const CompositeShape composite = compositeShape();
+    const bool sameComposite = wasComposite.withShadow == composite.withShadow && wasComposite.cachedSun == composite.cachedSun;
+    if (hadShadows == shadows() && wasSoft == softShadows() && wasTraced == tracedShadows() && sameAmbient &&
+        sameComposite) {  // uniforms only
         if (old.sunDirection != lighting_.sunDirection || old.sunAngle != lighting_.sunAngle) shadowCamera_.reset();
         return;
     }
@@ -143,6 +159,7 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
     finishFrames();  // before their passes go
     compositePass_.reset();
     shadowPass_.reset();
+    faceCacheAovPass_.reset();
     if (!sameAmbient) estimatorPass_.reset();  // VBAO's bent normals follow the ambient's source
     bentPass_.reset();
     createPasses();
@@ -151,9 +168,12 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
 }
 
 void Renderer::requireOccupancy(const AoOptions& ao) const {
-    if ((ao.enabled && tracesVoxels(ao.method) || voxelThickness(ao)) && !scene_.occupancy)
+    if ((ao.enabled && tracesVoxels(ao.method) || voxelThickness(ao) || faceCached(ao)) && !scene_.occupancy)
         throw Error("AO settings", std::string("--ao ") + aoMethodName(ao.method) + " traces the world's voxels",
                     "upload the scene from its world (uploadScene(ctx, world)), not from a mesh alone");
+    if (faceCached(ao) && !scene_.faceCache)
+        throw Error("AO settings", "--ao cache reads the light cached on the world's faces, and there is none",
+                    "load a bake of the world (--bake FILE from grotto bake) or bake it first");
 }
 
 void Renderer::setAo(const AoOptions& ao) {
@@ -165,12 +185,13 @@ void Renderer::setAo(const AoOptions& ao) {
     const AoOptions old = std::exchange(ao_, ao);
     const bool wasTemporal = old.enabled && old.chain.temporalHistory > 0;
     // What each pass and target is made from (its shader's specialisation, its size).
-    const bool chain = old.enabled != ao_.enabled;
+    const bool chain = old.enabled != ao_.enabled || faceCached(old) != faceCached(ao_);
     const bool estimator = old.method != ao_.method || old.estimator.ssaoSamples != ao_.estimator.ssaoSamples ||
                            differIn(old, ao_, voxel::kEstimatorPipeline);  // its loop shape: the settings table's column
     const bool denoise = old.chain.denoisePasses != ao_.chain.denoisePasses;
     const bool bent = bentNormals(old, lighting_) != bentNormals(ao_, lighting_);
-    if (chain || bent) compositePass_.reset();
+    if (chain || bent) compositePass_.reset(), faceCacheAovPass_.reset();
+    if (chain) shadowPass_.reset();  // the cache may give the sun's shadows
     if (chain || estimator || bent) estimatorPass_.reset();
     bentPass_.reset();
     if (voxelThickness(old) != voxelThickness(ao_)) prefilterPass_.reset();
@@ -178,7 +199,7 @@ void Renderer::setAo(const AoOptions& ao) {
     // Moving objects get motion vectors only with the temporal pass: its G-buffer pass and target follow it.
     const bool motionChanged = objects_ && objects_->moving && wasTemporal != temporal();
     if (motionChanged) gbufferPass_.reset();
-    if (!ao_.enabled) {
+    if (!aoChain(ao_)) {
         prefilterPass_.reset();
         denoisePass_.reset();
         upsamplePass_.reset();
@@ -189,7 +210,7 @@ void Renderer::setAo(const AoOptions& ao) {
 }
 
 TargetRef Renderer::aoOutput() const {
-    if (!ao_.enabled) return TargetId::AoRaw;  // the 1x1 placeholder the composite binds
+    if (!aoChain(ao_)) return TargetId::AoRaw;  // the 1x1 placeholder the composite binds
     return temporal() ? TargetRef{TargetId::AoHistory, historyIndex_} : denoisedTarget(ao_.chain.denoisePasses);
 }
 
@@ -250,7 +271,7 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
     scene_.recordUploads(cmd, s.staging);  // edits since the last frame, with their barrier to vertex input
     FrameStats stats = inFlight ? recordGBufferInFlight(cmd, camera) : recordGBuffer(cmd, camera);
     stats.passMs = std::move(unread);
-    if (shadows()) {
+    if (tracedShadows()) {
         const uint32_t history = shadowHistoryIndex_;
         if (softShadows()) shadowHistoryIndex_ = 1 - shadowHistoryIndex_;  // reads the last, writes the other
         pass(cmd, shadowPass_->declare(history), [&] {
@@ -259,11 +280,13 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
                                 &image({TargetId::ShadowHistory, shadowHistoryIndex_}));
         });
     }
-    if (ao_.enabled) recordAo(cmd);
+    if (aoChain(ao_)) recordAo(cmd);
     pass(cmd, CompositePass::declare(aoOutput()), [&] {
-        compositePass_->record(cmd, targets_.gbuffer(), image(aoOutput()), image(TargetId::Color), s.frame,
-                               scene_.palette, s.aoConstants, s.objectUniforms, image(TargetId::Shadow),
-                               image(TargetId::AoBentNormal));
+        compositePass_->record(cmd, targets_.gbuffer(), image(TargetId::Color),
+                               {.aoHalf = image(aoOutput()), .frame = s.frame, .palette = scene_.palette,
+                                .gtaoConstants = s.aoConstants, .objectUniforms = s.objectUniforms,
+                                .shadow = image(TargetId::Shadow), .bentNormals = image(TargetId::AoBentNormal),
+                                .traceConstants = &s.traceConstants, .faceCache = scene_.faceCache.get()});
     });
     if (displayOn_)
         pass(cmd, DisplayPass::declare(), [&] {
@@ -403,7 +426,7 @@ void Renderer::objectRemoved(size_t index) {
 
 void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {
     copy.begin({.width = width(), .height = height(), .half = targets_.ao().half,
-                .scale = ao_.chain.fullResolution ? 1u : 2u, .ao = ao_.enabled, .toneMap = toneMapCurve(lighting_.toneMap),
+                .scale = ao_.chain.fullResolution ? 1u : 2u, .ao = ao_.enabled, .chain = aoChain(ao_), .toneMap = toneMapCurve(lighting_.toneMap),
                 .camera = camera, .poses = poses_, .albedo = scene_.albedo});
     auto copyPart = [&](FrameCopy::Part part, TargetRef target, uint32_t bytesPerPixel) {
         const vk::Image& from = image(target);
@@ -411,13 +434,27 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
         vk::recordImageCopy(cmd, from, targets_.layout(target), bytesPerPixel, copy.reserve(part, bytes), 0);
     };
     copyPart(FrameCopy::Color, TargetId::Color, 16);
+    if (copy.aovs() && faceCached(ao_)) {
+        // The cache's AO and sun at each pixel, as the composite read them.
+        if (!aoAov_) {
+            aoAov_ = true;
+            targets_.update(wantedShape());
+        }
+        if (!faceCacheAovPass_)
+            faceCacheAovPass_ = std::make_unique<FaceCacheAovPass>(ctx_, compositeShape().cachedSun, tracedShadows());
+        pass(cmd, FaceCacheAovPass::declare(), [&] {
+            faceCacheAovPass_->record(cmd, targets_.gbuffer(), slot().frame, slot().traceConstants, *scene_.faceCache,
+                                      image(TargetId::AoFull), image(TargetId::Shadow));
+        });
+    }
     if (copy.aovs()) {
         if (shadows()) copyPart(FrameCopy::Shadow, TargetId::Shadow, 4);
         copyPart(FrameCopy::Depth, TargetId::Depth, 4);
         copyPart(FrameCopy::Surface, TargetId::Surface, 2);
         if (motion()) copyPart(FrameCopy::Motion, TargetId::Motion, 16);
     }
-    if (copy.aovs() && ao_.enabled) {
+    if (copy.aovs() && faceCached(ao_)) copyPart(FrameCopy::AoFull, TargetId::AoFull, 4);
+    if (copy.aovs() && aoChain(ao_)) {
         // What the frame computed on the way without storing: the full-res AO (the
         // composite upsamples for itself) and, when the temporal pass blurs for
         // itself, the spatial AO. The same shaders on the same inputs give the same values.

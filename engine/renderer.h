@@ -17,6 +17,7 @@
 #include "engine/passes/normals_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/passes/estimator_pass.h"
+#include "engine/passes/face_cache_aov_pass.h"
 #include "engine/passes/hiz_pass.h"
 #include "engine/passes/shadow_pass.h"
 #include "engine/passes/temporal_pass.h"
@@ -171,11 +172,17 @@ private:
     void recordAo(VkCommandBuffer cmd);
     // The last frame's images into `copy`, after everything recorded before.
     void recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera);
-    bool temporal() const { return ao_.enabled && ao_.chain.temporalHistory > 0; }
+    bool temporal() const { return aoChain(ao_) && ao_.chain.temporalHistory > 0; }
     // Sun shadows need the scene's occupancy; a scene uploaded from a mesh alone has none.
     bool shadows() const { return lighting_.sunShadows && scene_.occupancy; }
+    // The face cache's sun visibility is the frame's: its sun is the lighting's.
+    bool cachedSun() const;
+    // The shadow pass runs: sun shadows the face cache does not give (objects'
+    // surfaces, a sun moved since the bake).
+    bool tracedShadows() const { return shadows() && (!cachedSun() || objects_); }
+    CompositeShape compositeShape() const;
     // A sun of finite size: jittered rays accumulated in a history (shadow_pass.h).
-    bool softShadows() const { return shadows() && lighting_.sunAngle > 0.0f; }
+    bool softShadows() const { return tracedShadows() && lighting_.sunAngle > 0.0f; }
     // VBAO finds bent normals in every frame: the sky's ambient is lit around them.
     static bool bentNormals(const AoOptions& ao, const voxel::Lighting& lighting) {
         return ao.enabled && ao.method == AoMethod::Vbao && lighting.ambientFrom == voxel::AmbientSource::Sky;
@@ -229,6 +236,7 @@ private:
     std::unique_ptr<DisplayPass> displayPass_;
     std::unique_ptr<NormalsPass> normalsPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
+    std::unique_ptr<FaceCacheAovPass> faceCacheAovPass_;  // --ao cache's AOVs, for read-backs
     // The two frames in flight: each frame takes the other slot than the last.
     std::array<std::unique_ptr<FrameSlot>, 2> slots_;
     uint32_t slotIndex_ = 1;

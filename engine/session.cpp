@@ -16,8 +16,16 @@ RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptio
     setTime(0.0);
 }
 
+// --ao cache without a cache of the session's radius: baked here first.
+void RenderSession::requireFaceCache(const AoOptions& ao) {
+    const LiveFaceCache* cache = scene_->faceCache();
+    if (faceCached(ao) && (!cache || cache->settings().radius != double(ao.estimator.radius)))
+        scene_->bakeFaceCache(worldBakeSettings(world(), ao.estimator.radius));
+}
+
 Renderer& RenderSession::renderer() {
     if (!renderer_) {
+        requireFaceCache(ao_);
         renderer_ = std::make_unique<Renderer>(ctx_, scene_->gpu(), lighting_, ao_, width_, height_, objects_.get());
         renderer_->setCulling(culling_);
         if (objects_) renderer_->setObjectPoses(poses_);
@@ -38,8 +46,11 @@ void RenderSession::setLighting(const voxel::Lighting& lighting) {
 }
 
 void RenderSession::setAo(const AoOptions& ao) {
+    if (renderer_) {
+        requireFaceCache(ao);
+        renderer_->setAo(ao);
+    }
     ao_ = ao;
-    if (renderer_) renderer_->setAo(ao);
 }
 
 void RenderSession::setCulling(const CullingOptions& culling) {

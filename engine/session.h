@@ -9,6 +9,7 @@
 #include "engine/scene/scene_objects.h"
 #include "voxel/reference_ao.h"
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <span>
@@ -32,7 +33,9 @@ public:
 
     LiveScene& scene() { return *scene_; }
     const voxel::World& world() const { return scene_->world(); }
-    // Made on first use (a command that renders with renderers of its own never makes it).
+    // Made on first use (a command that renders with renderers of its own never
+    // makes it). With --ao cache and no cache of the AO radius loaded, the world
+    // is baked first (bakeFaceCache), as setAo does.
     Renderer& renderer();
     const SceneObjects* objects() const { return objects_.get(); }
     std::span<const voxel::World> objectWorlds() const { return objectWorlds_; }
@@ -44,6 +47,12 @@ public:
     void resize(uint32_t width, uint32_t height);
     const voxel::Lighting& lighting() const { return lighting_; }
     const AoOptions& ao() const { return ao_; }
+    // --ao cache's light on the world's faces, before the first frame: a bake of
+    // this world with the session's AO radius (`grotto bake`), refused with
+    // grotto::Error (input) naming the file and field when it is not one; or baked
+    // here on every core with grotto bake's defaults.
+    void loadFaceCache(const std::filesystem::path& bake) { scene_->loadFaceCache(bake, ao_.estimator.radius); }
+    void bakeFaceCache() { scene_->bakeFaceCache(worldBakeSettings(world(), ao_.estimator.radius)); }
 
     // The objects at their keys' poses `seconds` into the world's time, for the
     // frames that follow (at time 0 until then), or at poses of the caller's.
@@ -101,6 +110,8 @@ public:
     PathFrame pathFrame(double time, uint32_t width, uint32_t height);
 
 private:
+    void requireFaceCache(const AoOptions& ao);
+
     vk::Context& ctx_;
     std::vector<voxel::World> objectWorlds_;
     std::unique_ptr<SceneObjects> objects_;

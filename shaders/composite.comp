@@ -5,6 +5,12 @@
 // With AO, one invocation per AO pixel shades its block of full-res pixels and
 // upsamples the AO for them on the way (upsample.glsl): a separate upsample pass
 // would store full-res AO only to load it again here.
+// Built a second time as composite_cache.comp (GROTTO_FACE_CACHE) for --ao cache:
+// one invocation per pixel, and a world surface's AO, sky light and sun come from
+// the face cache at its exact point (face_cache_surface.glsl). The sky light there
+// is the sky seen through the world, occlusion at every distance included; the AO
+// adds only the light bounced between nearby surfaces (the multi-bounce fit over
+// the AO), so a closed room gets no sky and open ground today's light.
 #include "shared/frame.h"
 #include "shared/gtao.h"
 #include "shared/objects.h"
@@ -13,6 +19,7 @@
 layout(constant_id = 0) const bool withAo = true;  // false: one invocation per pixel, no AO bound
 layout(constant_id = 3) const bool withShadow = true;  // false: the sun reaches everything, no shadow bound
 layout(constant_id = 4) const bool withBentNormals = false;  // VBAO's bent normals light the sky's ambient
+layout(constant_id = 5) const bool cachedSun = false;  // cache: world surfaces take the cache's sun visibility
 // The group's side, set by CompositePass: lavapipe runs 16x16 groups of single
 // pixels faster, 8x8 groups of 2x2 blocks (docs/benchmarks.md).
 layout(local_size_x_id = 1, local_size_y_id = 2) in;
@@ -26,6 +33,15 @@ layout(set = 0, binding = 6) uniform sampler2D depthBuffer;             // full-
 layout(set = 0, binding = 7, std140) uniform Objects { ObjectUniforms objects; };  // object faces' normals
 layout(set = 0, binding = 8, r32f) uniform readonly image2D shadowImage;  // full res: 1 = sunlit (shadow.comp)
 layout(set = 0, binding = 9, rgba16f) uniform readonly image2D bentNormals;  // AO res, world space (vbao)
+#ifdef GROTTO_FACE_CACHE
+#include "shared/trace.h"
+layout(set = 0, binding = 10, std430) readonly buffer Trace { TraceConstants trace; };
+uint faceCacheHashMask() { return frame.faceCache.x; }
+uint faceCacheK() { return frame.faceCache.y; }
+#define GROTTO_FACE_CACHE_BINDING 11
+#include "face_cache.glsl"
+#include "face_cache_surface.glsl"
+#endif
 
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
 uint gtaoSurface(ivec2 pixel) { return 0u; }
@@ -65,17 +81,29 @@ vec3 ambientLight(vec3 normal, ivec2 aoPixel) {
 // image is: display.comp, the image writers; shared/tone_map.h).
 vec3 exposed(vec3 radiance) { return radiance * frame.exposure.x; }
 
-vec3 shade(uint surface, float ao, float sunReach, ivec2 aoPixel) {
+// The surface's normal: its face's axis, or an object's face turned with it.
+vec3 surfaceNormal(uint surface) {
+    if (surfaceObject(surface) != 0u) return objects.worldNormals[surfaceKey(surface) - 1u].xyz;
     uint face = surfaceFace(surface);
     vec3 normal = vec3(0.0);
     normal[faceAxis(face)] = facePositive(face) ? 1.0 : -1.0;
-    if (surfaceObject(surface) != 0u)  // an object's face, turned with it
-        normal = objects.worldNormals[surfaceKey(surface) - 1u].xyz;
+    return normal;
+}
+
+// `ambient`: the light reaching the surface before AO; `aoShare`: the part of the
+// AO already in it (1 where none is, the face cache's AO where its sky light is).
+vec3 shadeWith(uint surface, vec3 normal, float ao, float sunReach, vec3 ambient, float aoShare) {
     float cosSun = dot(normal, frame.sunDirection.xyz);
     vec4 material = albedo[surfaceMaterial(surface) - 1u];  // rgb albedo, a: material AO
     vec3 base = material.rgb;
     float visibility = min(mix(1.0, ao, frame.aoStrength.x), material.a);
-    return base * (frame.sunRadiance.rgb * (max(cosSun, 0.0) * sunReach) + ambientLight(normal, aoPixel) * multiBounce(visibility, base));
+    vec3 bounced = multiBounce(visibility, base) / max(mix(1.0, aoShare, frame.aoStrength.x), 1.0 / 255.0);
+    return base * (frame.sunRadiance.rgb * (max(cosSun, 0.0) * sunReach) + ambient * bounced);
+}
+
+vec3 shade(uint surface, float ao, float sunReach, ivec2 aoPixel) {
+    vec3 normal = surfaceNormal(surface);
+    return shadeWith(surface, normal, ao, sunReach, ambientLight(normal, aoPixel), 1.0);
 }
 
 float sunlit(ivec2 q) { return withShadow ? imageLoad(shadowImage, q).r : 1.0; }
@@ -89,8 +117,33 @@ void compositePixel(AoBlock block, ivec2 h, ivec2 offset) {
     imageStore(outColor, q, vec4(exposed(color), 1.0));
 }
 
+#ifdef GROTTO_FACE_CACHE
+// A world surface's light from the cache: its AO, its sun visibility (while the
+// cache's sun is the frame's) and, with the sky's ambient, the sky light it holds,
+// blended toward the open sky as the AO strength falls. An object's surface, or a
+// face the cache lacks, is lit as without AO.
+vec3 shadeCached(ivec2 q, uint surface) {
+    vec3 normal = surfaceNormal(surface);
+    vec3 open = ambientLight(normal, q);
+    if (surfaceObject(surface) != 0u) return shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
+    bool found;
+    vec4 c = cachedLightAt(q, surfaceFace(surface), found);  // AO, sun, horizon and zenith weights
+    if (!found) return shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
+    float sunReach = cachedSun ? c.y : sunlit(q);
+    if (frame.ambient.w < 0.5) return shadeWith(surface, normal, c.x, sunReach, open, 1.0);
+    vec3 seen = frame.ambient.rgb * (c.z * frame.skyHorizon.rgb + c.w * frame.skyZenith.rgb);
+    return shadeWith(surface, normal, c.x, sunReach, mix(open, seen, frame.aoStrength.x), c.x);
+}
+#endif
+
 void main() {
     ivec2 h = ivec2(gl_GlobalInvocationID.xy);
+#ifdef GROTTO_FACE_CACHE
+    if (any(greaterThanEqual(uvec2(h), frame.size))) return;
+    uint cachedSurface = texelFetch(surfaceTex, h, 0).r;
+    imageStore(outColor, h, vec4(exposed(cachedSurface == 0u ? sky(h) : shadeCached(h, cachedSurface)), 1.0));
+    return;
+#endif
     if (!withAo) {
         if (any(greaterThanEqual(uvec2(h), frame.size))) return;
         uint surface = texelFetch(surfaceTex, h, 0).r;

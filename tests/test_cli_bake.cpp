@@ -1,6 +1,7 @@
 // grotto bake: a farm's parts (--chunk K/N) joined with --merge are byte for byte
 // the one-machine bake; bad parts and bad files are refused with one line naming
-// the file and what is wrong, and nothing written.
+// the file and what is wrong, and nothing written. render --bake reads a bake of
+// its world and refuses another's, another radius's, a part and another --ao.
 #include "tests/cli_fixture.h"
 
 #include <gtest/gtest.h>
@@ -91,6 +92,27 @@ TEST_F(Bake, BadArgumentsPartsAndFilesAreRefused) {
     std::string counts = good;  // a texel with more open rays than rays
     counts[88 + 4] = char(0xff);
     damaged("counts.gfc", counts, "texel 0");
+}
+
+TEST_F(Bake, RenderReadsItsWorldsBakeAndRefusesAnyOther) {
+    const fs::path bakeFile = dir_ / "pillars.gfc", part = dir_ / "part.gfc", png = dir_ / "out.png";
+    ASSERT_EQ(runGrotto(bake(pillars_, bakeFile)).exitCode, 0);
+    ASSERT_EQ(runGrotto(bake(pillars_, part, "--chunk 1/2")).exitCode, 0);
+    const std::string render = "render " + pillars_.string() + " --size 48x32 -o " + png.string() + " --bake ";
+    const RunResult ok = runGrotto(render + bakeFile.string());
+    ASSERT_EQ(ok.exitCode, 0) << ok.err;
+    EXPECT_NE(ok.out.find("1 frame,"), std::string::npos) << ok.out;  // converged already: nothing to accumulate
+    ASSERT_TRUE(fs::exists(png));
+    fs::remove(png);
+    const fs::path moved = dir_ / "moved.vdb";  // one pillar more
+    writeSolid(moved, 12, 6, [](int x, int y, int z) {
+        return y == 0 || (x % 4 == 1 && z % 4 == 1) || (y == 5 && x < 6) || (x == 10 && z == 10);
+    });
+    expectRefused("render " + moved.string() + " --size 48x32 -o " + png.string() + " --bake " + bakeFile.string(),
+                  "pillars.gfc: baked for other voxels", png);
+    expectRefused(render + bakeFile.string() + " --radius 2", "AO radius", png);
+    expectRefused(render + part.string(), "a part of a bake", png);
+    expectRefused(render + bakeFile.string() + " --ao gtao", "--bake", png);
 }
 
 }  // namespace

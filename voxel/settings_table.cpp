@@ -13,7 +13,7 @@ namespace {
 
 using T = SettingType;
 
-constexpr std::string_view kMethods[] = {"gtao", "voxel", "hybrid", "ssao", "hbao", "vbao", "off"};
+constexpr std::string_view kMethods[] = {"gtao", "voxel", "hybrid", "ssao", "hbao", "vbao", "cache", "off"};
 constexpr auto kQualities = [] {
     std::array<std::string_view, std::size(kAoPresets)> names;
     for (size_t i = 0; i < names.size(); ++i) names[i] = kAoPresets[i].name;
@@ -69,7 +69,8 @@ const Setting kSettings[] = {
     // AO.
     {.key = "ao.method", .flag = "--ao", .type = T::Choice, .desc = &AoDesc::method,
      .help = "Ambient occlusion (voxel: exact rays through the voxels; hybrid: GTAO plus voxel rays; "
-             "vbao: GTAO's slices as sector bitmasks, occluders of finite thickness; ssao, hbao: baselines)",
+             "vbao: GTAO's slices as sector bitmasks, occluders of finite thickness; cache: AO, sky light and sun "
+             "cached on the voxel faces, from grotto bake or baked at load; ssao, hbao: baselines)",
      .manifest = "method", .invalidates = kWholeChain, .choices = kMethods},
     {.key = "ao.quality", .flag = "--quality", .type = T::Choice, .desc = &AoDesc::quality,
      .help = "Preset of the loop shape (SSAO: 8, 16, 32, 64 samples; custom: high's, for --slices, --steps, "

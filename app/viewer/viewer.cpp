@@ -45,6 +45,7 @@ Viewer::Viewer(const ViewOptions& o)
     renderSize_ = scaled(window_.framebufferSize());
     session_ = std::make_unique<RenderSession>(ctx_, std::move(loaded_), ao, desc_.detail, renderSize_.width,
                                                renderSize_.height);
+    app::prepareFaceCache(*session_, o.ao);
     renderer().setDisplayImage(true);  // the final view: the colour through the tone map
     const voxel::World& world = session_->world();
     presenter_ = std::make_unique<Presenter>(ctx_, window_.framebufferSize(), o.vsync);

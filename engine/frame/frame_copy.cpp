@@ -86,6 +86,11 @@ FrameImages FrameCopy::decode() const {
         return f;
     }
     f.ao = part(AoFull);
+    if (!l.chain) {  // the face cache's AO: full resolution, no chain behind it
+        f.aoRaw = f.aoSpatial = f.aoTemporal = f.ao;
+        f.aoHistory = f.edges = std::vector<float>(n, 1.0f);
+        return f;
+    }
     const std::vector<float> raw = part(Raw);
     const std::vector<float> spatial = part(Spatial);
     f.aoRawHalf.resize(raw.size() / 2);

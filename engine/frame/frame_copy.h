@@ -36,6 +36,7 @@ public:
         VkExtent2D half{};   // the AO images' size
         uint32_t scale = 2;  // full size over AO size
         bool ao = false;
+        bool chain = false;  // an AO chain's images (else, with AO, the face cache's full-res AO alone)
         uint32_t toneMap = GROTTO_TONE_MAP_FILMIC;  // FrameImages::toneMap
         std::optional<Camera> camera;
         std::vector<voxel::ObjectPose> poses;

@@ -13,7 +13,7 @@ constexpr VkImageLayout kGeneral = VK_IMAGE_LAYOUT_GENERAL, kEachFrame = VK_IMAG
 constexpr VkFormat kRgba32f = VK_FORMAT_R32G32B32A32_SFLOAT, kR32f = VK_FORMAT_R32_SFLOAT;
 
 bool always(const FrameShape&) { return true; }
-bool aoOn(const FrameShape& s) { return s.ao.enabled; }
+bool chainOn(const FrameShape& s) { return aoChain(s.ao); }
 
 // Colour, display and the G-buffer are read by a game too (include/grotto/grotto.h):
 // sampled, and transfer sources for a window's blit and the read-backs. The AO
@@ -34,7 +34,7 @@ constexpr TargetRow kRows[] = {
      [](const FrameShape& s) { return s.shadows; }, true, 1, kGeneral},
     {TargetId::ShadowHistory, kRgba32f, TargetSize::Frame, kStorage,
      [](const FrameShape& s) { return s.shadows && s.softShadows; }, false, 2, kGeneral},
-    {TargetId::AoDepthAtlas, kR32f, TargetSize::DepthAtlas, kStorage | kRead, aoOn, false, 1, kGeneral},
+    {TargetId::AoDepthAtlas, kR32f, TargetSize::DepthAtlas, kStorage | kRead, chainOn, false, 1, kGeneral},
     // VBAO binds it whatever its thickness mode; only the voxels mode fills it.
     {TargetId::AoThickness, kR32f, TargetSize::DepthAtlas, kStorage,
      [](const FrameShape& s) { return voxelThickness(s.ao); }, true, 1, kGeneral},
@@ -42,17 +42,17 @@ constexpr TargetRow kRows[] = {
     // composite binds it (a placeholder) with every method.
     {TargetId::AoBentNormal, VK_FORMAT_R16G16B16A16_SFLOAT, TargetSize::Ao, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
      [](const FrameShape& s) { return s.ao.enabled && s.ao.method == AoMethod::Vbao; }, true, 1, kGeneral},
-    {TargetId::AoRaw, kRgba32f, TargetSize::Ao, kStorage | kRead, aoOn, true, 1, kGeneral},
+    {TargetId::AoRaw, kRgba32f, TargetSize::Ao, kStorage | kRead, chainOn, true, 1, kGeneral},
     // One denoise pass needs one target (with the temporal pass, only for the
     // AO_spatial AOV), more ping-pong between two.
     {TargetId::AoSpatial0, kRgba32f, TargetSize::Ao, kStorage | kRead,
-     [](const FrameShape& s) { return s.ao.enabled && s.ao.chain.denoisePasses >= 1; }, false, 1, kGeneral},
+     [](const FrameShape& s) { return aoChain(s.ao) && s.ao.chain.denoisePasses >= 1; }, false, 1, kGeneral},
     {TargetId::AoSpatial1, kRgba32f, TargetSize::Ao, kStorage | kRead,
-     [](const FrameShape& s) { return s.ao.enabled && s.ao.chain.denoisePasses >= 2; }, false, 1, kGeneral},
+     [](const FrameShape& s) { return aoChain(s.ao) && s.ao.chain.denoisePasses >= 2; }, false, 1, kGeneral},
     {TargetId::AoHistory, kRgba32f, TargetSize::Ao, kStorage | kRead, [](const FrameShape& s) { return s.temporal(); },
      false, 2, kGeneral},
-    // Frames do not store the upsampled AO (the composite upsamples for itself):
-    // only a read-back with AOVs makes it.
+    // Frames do not store the upsampled AO (the composite upsamples for itself) or
+    // the face cache's AO: only a read-back with AOVs makes it.
     {TargetId::AoFull, kR32f, TargetSize::Frame, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
      [](const FrameShape& s) { return s.ao.enabled && s.aoAov; }, false, 1, kGeneral},
 };
@@ -122,7 +122,7 @@ bool FrameTargets::update(const FrameShape& shape) {
             if (extent.width != 0) image = vk::createImage(ctx_, extent, row.format, row.usage);
         }
     }
-    ao_.half = shape.ao.enabled ? shape.aoExtent() : VkExtent2D{};
+    ao_.half = aoChain(shape.ao) ? shape.aoExtent() : VkExtent2D{};
     shape_ = shape;
     return changed;
 }

@@ -28,7 +28,7 @@ struct FrameShape {
     bool normals = false;        // the world-space normals image (Renderer::setNormalsImage)
     bool aoAov = false;          // the full-resolution AO a read-back with AOVs upsamples into
 
-    bool temporal() const { return ao.enabled && ao.chain.temporalHistory > 0; }
+    bool temporal() const { return aoChain(ao) && ao.chain.temporalHistory > 0; }
     bool motion() const { return movingObjects && temporal(); }
     VkExtent2D frame() const { return {width, height}; }
     VkExtent2D aoExtent() const;  // the AO chain's resolution: the frame's, or half of it rounded up

@@ -14,9 +14,10 @@ namespace grotto {
 
 void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
     FrameSlot& s = slot();
-    const gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
+    gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
+    if (scene_.faceCache) uniforms.faceCache = {scene_.faceCache->hashMask(), scene_.faceCache->texelsPerSide()};
     std::memcpy(s.frame.mapped(), &uniforms, sizeof uniforms);
-    if (ao_.enabled) {
+    if (aoChain(ao_)) {
         const uint32_t scale = ao_.chain.fullResolution ? 1 : 2;
         gpu::GtaoConstants constants = gtaoConstants(camera, gpuSettings(ao_), frameIndex, scale);
         if (objects_) normalTable(constants.viewNormals, glm::transpose(camera.basis), poses_);

@@ -1,5 +1,6 @@
 #include "engine/passes/composite_pass.h"
 
+#include "grotto/error.h"
 #include "shaders/shared/frame.h"
 
 namespace grotto {
@@ -7,33 +8,44 @@ namespace grotto {
 namespace {
 // Threads per group side, measured on lavapipe: with AO each thread shades a 2x2
 // block, and smaller groups of them run faster.
-uint32_t group(bool withAo) { return withAo ? 8u : 16u; }
+uint32_t group(const CompositeShape& s) { return s.withAo && !s.faceCache ? 8u : 16u; }
+
+std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
+    std::vector<VkDescriptorType> b = {
+        VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+        VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+        VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+        VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+        VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
+    if (!s.faceCache) return b;
+    b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);  // the trace constants
+    return GpuFaceCache::withBindings(std::move(b));
+}
 }  // namespace
 
-CompositePass::CompositePass(vk::Context& ctx, bool withAo, bool withShadow, bool withBentNormals)
+CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
     : ctx_(ctx),
-      withAo_(withAo),
-      pass_(ctx, "composite.comp",
-            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-             VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-             VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-             VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-            0, {withAo ? 1u : 0u, group(withAo), group(withAo), withShadow ? 1u : 0u, withBentNormals ? 1u : 0u}) {}
+      shape_(shape),
+      pass_(ctx, shape.faceCache ? "composite_cache.comp" : "composite.comp", bindings(shape), 0,
+            {shape.withAo && !shape.faceCache ? 1u : 0u, group(shape), group(shape), shape.withShadow ? 1u : 0u,
+             shape.withBentNormals ? 1u : 0u, shape.cachedSun ? 1u : 0u}) {}
 
-void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& aoHalf,
-                           const vk::Image& color, const vk::Buffer& frame, const vk::Buffer& palette,
-                           const vk::Buffer& gtaoConstants, const vk::Buffer& objectUniforms,
-                           const vk::Image& shadow, const vk::Image& bentNormals) {
+void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& color, const Inputs& in) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    pass_.dispatch(cmd,
-                   {vk::uniformBuffer(frame.buffer), vk::uniformBuffer(palette.buffer),
-                    vk::sampledImage(ctx_.pointSampler, g.surface.view, ro), vk::storageImage(color.view),
-                    vk::uniformBuffer(gtaoConstants.buffer), vk::storageImage(aoHalf.view),
-                    vk::sampledImage(ctx_.pointSampler, g.depth.view, ro), vk::uniformBuffer(objectUniforms.buffer),
-                    vk::storageImage(shadow.view), vk::storageImage(bentNormals.view)},
-                   withAo_ ? aoHalf.extent : color.extent,  // with AO, one thread per AO pixel
-                   group(withAo_));
+    std::vector<vk::Binding> b = {
+        vk::uniformBuffer(in.frame.buffer),          vk::uniformBuffer(in.palette.buffer),
+        vk::sampledImage(ctx_.pointSampler, g.surface.view, ro), vk::storageImage(color.view),
+        vk::uniformBuffer(in.gtaoConstants.buffer),  vk::storageImage(in.aoHalf.view),
+        vk::sampledImage(ctx_.pointSampler, g.depth.view, ro), vk::uniformBuffer(in.objectUniforms.buffer),
+        vk::storageImage(in.shadow.view),            vk::storageImage(in.bentNormals.view)};
+    const bool perAoPixel = shape_.withAo && !shape_.faceCache;  // one thread per AO pixel
+    if (shape_.faceCache) {
+        if (!in.faceCache || !in.traceConstants)
+            throw Error::internal("CompositePass", "the face cache's composite without the cache");
+        b.push_back(vk::storageBuffer(in.traceConstants->buffer));
+        b = in.faceCache->withBindings(std::move(b));
+    }
+    pass_.dispatch(cmd, b, perAoPixel ? in.aoHalf.extent : color.extent, group(shape_));
 }
 
 }  // namespace grotto

@@ -6,16 +6,27 @@
 // albedo), and the sky, times the exposure. No history. Object faces are lit with
 // their turned normals (the objects' uniforms, shaders/shared/objects.h). The
 // ambient is a constant or the sky's light (shared/sky.h), around VBAO's bent
-// normals where the frame has them.
+// normals where the frame has them. With the face cache (--ao cache) there is no
+// AO chain: world surfaces take AO, sky light and, while its sun is the frame's,
+// sun visibility from the cache at each pixel's point (composite_cache.comp).
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
+#include "engine/scene/face_cache_gpu.h"
 
 namespace grotto {
 
+struct CompositeShape {
+    bool withAo = true;            // an AO chain's output to upsample
+    bool withShadow = false;       // the shadow pass's image
+    bool withBentNormals = false;  // VBAO's bent normals light the sky's ambient
+    bool faceCache = false;        // --ao cache: the face cache instead of an AO chain
+    bool cachedSun = false;        // with it: world surfaces take the cache's sun visibility
+};
+
 class CompositePass {
 public:
-    CompositePass(vk::Context& ctx, bool withAo, bool withShadow, bool withBentNormals);
+    CompositePass(vk::Context& ctx, const CompositeShape& shape);
     // `ao`: the AO chain's output (or its 1x1 placeholder without AO).
     static PassDecl declare(TargetRef ao) {
         return {"composite", {{TargetId::Surface, Access::Sampled}, {TargetId::Color, Access::Write}, {ao, Access::Read},
@@ -24,13 +35,23 @@ public:
     }
     // Without AO, `aoHalf` and `gtaoConstants` are placeholders the shader ignores;
     // without shadows, so is `shadow`; without bent normals, so is `bentNormals`.
-    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& aoHalf, const vk::Image& color,
-                const vk::Buffer& frame, const vk::Buffer& palette, const vk::Buffer& gtaoConstants,
-                const vk::Buffer& objectUniforms, const vk::Image& shadow, const vk::Image& bentNormals);
+    // With the face cache, `faceCache` and the trace constants (the camera's voxel).
+    struct Inputs {
+        const vk::Image& aoHalf;
+        const vk::Buffer& frame;
+        const vk::Buffer& palette;
+        const vk::Buffer& gtaoConstants;
+        const vk::Buffer& objectUniforms;
+        const vk::Image& shadow;
+        const vk::Image& bentNormals;
+        const vk::Buffer* traceConstants = nullptr;
+        const GpuFaceCache* faceCache = nullptr;
+    };
+    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& color, const Inputs& in);
 
 private:
     vk::Context& ctx_;
-    bool withAo_;
+    CompositeShape shape_;
     ComputePass pass_;
 };
 

@@ -6,8 +6,8 @@ namespace {
 constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
 }
 
-GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a)
-    : ctx_(ctx), hashMask_(a.hashMask()), texelsPerSide_(a.texelsPerSide) {
+GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Sun sun)
+    : ctx_(ctx), hashMask_(a.hashMask()), texelsPerSide_(a.texelsPerSide), sun_(sun) {
     // Empty arrays (a world with no faces) still bind: one zero word each.
     const uint32_t zero[4] = {};
     auto upload = [&](const void* data, size_t bytes) {

@@ -10,15 +10,23 @@
 
 namespace grotto {
 
+// The sun a cache's sun visibility was traced for.
+struct FaceCacheSun {
+    glm::vec3 direction{0.0f, 1.0f, 0.0f};
+    float angleDegrees = 0.0f;
+};
+
 class GpuFaceCache {
 public:
-    GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& arrays);
+    using Sun = FaceCacheSun;
+    GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& arrays, Sun sun = {});
     ~GpuFaceCache();
     GpuFaceCache(const GpuFaceCache&) = delete;
     GpuFaceCache& operator=(const GpuFaceCache&) = delete;
 
     uint32_t hashMask() const { return hashMask_; }
     uint32_t texelsPerSide() const { return texelsPerSide_; }
+    const Sun& sun() const { return sun_; }
     size_t gpuBytes() const { return size_t(bricks_.size + records_.size + texels_.size); }
 
     // Appends the three buffers' bindings (bricks, records, texels) to a pass's own.
@@ -29,6 +37,7 @@ private:
     vk::Context& ctx_;
     vk::Buffer bricks_, records_, texels_;
     uint32_t hashMask_, texelsPerSide_;
+    Sun sun_;
 };
 
 }  // namespace grotto

@@ -26,6 +26,18 @@ const voxel::BrickTable& LiveScene::bricks() {
     return *bricks_;
 }
 
+void LiveScene::loadFaceCache(const std::filesystem::path& bake, double radius) {
+    LiveFaceCache loaded = LiveFaceCache::load(*gpu_, bricks(), world_, radius, bake);
+    faceCache_.reset();
+    faceCache_.emplace(std::move(loaded));
+}
+
+void LiveScene::bakeFaceCache(const voxel::FaceBakeSettings& settings) {
+    LiveFaceCache baked = LiveFaceCache::bake(*gpu_, bricks(), world_, settings);
+    faceCache_.reset();
+    faceCache_.emplace(std::move(baked));
+}
+
 void LiveScene::changed(const voxel::EditResult& result) {
     if (result.voxels.empty()) return;
     std::vector<voxel::MeshChunkQuads> replaced;
@@ -37,6 +49,7 @@ void LiveScene::changed(const voxel::EditResult& result) {
     gpu_->updateChunks(replaced, removed);
     gpu_->occupancy->update(world_, result.voxels, gpu_->uploads);
     if (bricks_) bricks_->update(world_, result.voxels);
+    if (faceCache_) faceCache_->edited(bricks(), world_, result.voxels);
 }
 
 }  // namespace grotto

@@ -3,11 +3,13 @@
 // re-meshes only the chunks it touched and stages only their quads, which the
 // renderer copies into the existing buffers at the start of its next frame. The
 // brick table the reference traces is updated the same way, once it exists.
+#include "engine/scene/live_face_cache.h"
 #include "engine/scene/scene.h"
 #include "voxel/brick_table.h"
 #include "voxel/live_mesh.h"
 #include "voxel/world.h"
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -27,6 +29,13 @@ public:
     // Built on first use (the reference needs it; rendering does not), then kept up to date.
     const voxel::BrickTable& bricks();
 
+    // --ao cache's light on the faces (live_face_cache.h), kept in step with
+    // edits: a bake of this world with AO radius `radius` (world units), refused
+    // with grotto::Error (input) when it is not one, or a bake made here.
+    void loadFaceCache(const std::filesystem::path& bake, double radius);
+    void bakeFaceCache(const voxel::FaceBakeSettings& settings);
+    const LiveFaceCache* faceCache() const { return faceCache_ ? &*faceCache_ : nullptr; }
+
 private:
     void changed(const voxel::EditResult& result);
 
@@ -34,6 +43,7 @@ private:
     voxel::LiveMesh mesh_;
     std::unique_ptr<GpuScene> gpu_;
     std::optional<voxel::BrickTable> bricks_;
+    std::optional<LiveFaceCache> faceCache_;
 };
 
 }  // namespace grotto

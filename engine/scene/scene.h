@@ -1,6 +1,7 @@
 #pragma once
 // The GPU copy of a voxel world: quads, chunk table and material palette.
 // scene.cpp is the one bridge between voxel/ and engine/vk/.
+#include "engine/scene/face_cache_gpu.h"
 #include "engine/scene/occupancy.h"
 #include "engine/scene/quad_slots.h"
 #include "engine/scene/staged_uploads.h"
@@ -72,6 +73,9 @@ struct GpuScene {
     // The solid voxels for rays (sun shadows, voxel-traced AO); null for a scene
     // uploaded from a mesh alone, which renders without them.
     std::unique_ptr<GpuOccupancy> occupancy;
+    // --ao cache's light on the exposed faces; null until a bake is loaded or made
+    // (engine/scene/live_face_cache.h keeps it in step with edits).
+    std::unique_ptr<GpuFaceCache> faceCache;
 
     // Replaces the quads of `replaced` chunks (new ones are added; one without
     // quads is removed) and removes the chunks at `removed` (voxel indices of their
@@ -89,7 +93,7 @@ struct GpuScene {
 
     size_t gpuBytes() const {
         return size_t(vertices.size + indices.size + palette.size) +
-               (occupancy ? occupancy->gpuBytes() : 0);
+               (occupancy ? occupancy->gpuBytes() : 0) + (faceCache ? faceCache->gpuBytes() : 0);
     }
     size_t hostBytes() const;
 };

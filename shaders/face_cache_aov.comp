@@ -1,0 +1,38 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// --ao cache's AOVs for a read-back: the face cache's AO at each full-res pixel
+// (1 for the sky, objects and faces it lacks) and, while its sun is the frame's,
+// its sun visibility into the shadow image: over the world pixels it has where
+// the shadow pass ran (which the other pixels keep), 1 on the others where it did
+// not. Exactly what the composite (composite_cache.comp) lit each pixel with.
+#include "shared/frame.h"
+#include "shared/objects.h"
+#include "shared/quad.h"
+
+layout(constant_id = 0) const bool cachedSun = false;
+layout(constant_id = 1) const bool tracedShadows = false;
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(set = 0, binding = 0, std140) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1) uniform usampler2D surfaceTex;
+layout(set = 0, binding = 2) uniform sampler2D depthBuffer;
+layout(set = 0, binding = 3, r32f) uniform writeonly image2D aoOut;
+layout(set = 0, binding = 4, r32f) uniform writeonly image2D sunOut;  // 1x1 without sun shadows
+#include "shared/trace.h"
+layout(set = 0, binding = 5, std430) readonly buffer Trace { TraceConstants trace; };
+uint faceCacheHashMask() { return frame.faceCache.x; }
+uint faceCacheK() { return frame.faceCache.y; }
+#define GROTTO_FACE_CACHE_BINDING 6
+#include "face_cache.glsl"
+#include "face_cache_surface.glsl"
+
+void main() {
+    ivec2 q = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(uvec2(q), frame.size))) return;
+    uint surface = texelFetch(surfaceTex, q, 0).r;
+    vec4 c = vec4(1.0);
+    bool found = false;
+    if (surface != 0u && surfaceObject(surface) == 0u) c = cachedLightAt(q, surfaceFace(surface), found);
+    imageStore(aoOut, q, vec4(c.x));
+    if (cachedSun && (found || !tracedShadows) && all(lessThan(q, imageSize(sunOut))))
+        imageStore(sunOut, q, vec4(found ? c.y : 1.0));
+}

@@ -1,0 +1,114 @@
+// --ao cache in the renderer (composite_cache.comp, face_cache_aov.comp), with
+// validation on:
+//  - every pixel of a world far from the origin reads the cache at its own exact
+//    surface point: the AO and sun AOVs equal the CPU's FaceCacheLookup there;
+//  - with the sky's ambient, a closed room gets no light at all, a room with a
+//    window some, and open ground the sky's light; today's screen-space AO lights
+//    the closed room like the ground.
+#include "engine/lab/surface_points.h"
+#include "engine/renderer.h"
+#include "engine/scene/live_scene.h"
+#include "tests/gpu_fixture.h"
+#include "tests/scenes.h"
+#include "voxel/face_cache_lookup.h"
+
+#include <cmath>
+
+namespace grotto {
+namespace {
+
+using FaceCacheRender = test::GpuTest;
+
+AoOptions cacheAo(const voxel::World& world, double radius) {
+    AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), "test");
+    ao.method = AoMethod::Cache;
+    ao.estimator.radius = float(radius);
+    return ao;
+}
+
+TEST_F(FaceCacheRender, EveryPixelReadsTheCacheAtItsOwnPoint) {
+    // A floor with pillars and a roof over part of it, half-voxel cells, far from the origin.
+    const voxel::World world = test::makeVoxelWorld(
+        {-6, 0, -6}, {17, 9, 17},
+        [](int x, int y, int z) { return y == 0 || ((x + 8) % 5 == 1 && (z + 8) % 4 == 1) || (y == 6 && x < 4); }, 0.5,
+        glm::dvec3(-3000.25, 7.0, 1234.0));
+    LiveScene scene(ctx(), voxel::World(world));
+    voxel::FaceBakeSettings settings = worldBakeSettings(world, 1.5, 3);
+    settings.rays = 16, settings.sunRays = 2;
+    scene.bakeFaceCache(settings);
+    voxel::Lighting lighting = world.desc().lighting;
+    lighting.ambientFrom = voxel::AmbientSource::Sky;
+    Renderer renderer(ctx(), scene.gpu(), lighting, cacheAo(world, 1.5), 96, 72);
+    const glm::dvec3 o = world.origin();
+    const Camera camera =
+        makeCamera(test::lookAt(o + glm::dvec3(-2.0, 7.5, -3.0), o + glm::dvec3(6.0, 0.0, 5.0), 70.0), 96, 72);
+    renderer.render(camera);
+    const FrameImages f = renderer.readback(camera, true);
+
+    const LiveFaceCache& cache = *scene.faceCache();
+    const voxel::FaceCacheLookup lookup(cache.faces(), cache.texels(), 3);
+    const SurfacePoints sp = surfacePoints(f, camera, world.voxelSize(), o);
+    ASSERT_GT(sp.points.size(), f.ao.size() / 2);
+    size_t off = 0, occluded = 0, shadowed = 0;
+    for (size_t i = 0; i < sp.points.size(); ++i) {
+        const glm::dvec3 n = sp.normals[i];
+        const int axis = std::abs(n.x) > 0.5 ? 0 : std::abs(n.y) > 0.5 ? 1 : 2;
+        const uint8_t dir = uint8_t(2 * axis + (n[axis] < 0.0 ? 1 : 0));
+        const voxel::CachedLight c = lookup.at((sp.points[i] - o) / world.voxelSize(), dir);
+        ASSERT_GT(c.samples, 0u) << "pixel " << sp.pixels[i] << ": a face the cache lacks";
+        const uint32_t p = sp.pixels[i];
+        const double tolerance = 0.6 / 255.0 + 1e-4;  // the texels' 8 bits
+        if (std::abs(f.ao[p] - c.ao) > tolerance || std::abs(f.shadow[p] - c.sun) > tolerance) ++off;
+        occluded += c.ao < 0.8;
+        shadowed += c.sun < 0.5;
+    }
+    // Pixels on a face's very edge may take the neighbour's plane in one and not the other.
+    EXPECT_LE(off, sp.points.size() / 200) << off << " of " << sp.points.size() << " pixels read other light";
+    EXPECT_GT(occluded, sp.points.size() / 20);
+    EXPECT_GT(shadowed, sp.points.size() / 20);
+}
+
+// Ground, a closed house and a house with a window toward the sky, seen from
+// inside each and from outside: the mean colour of what each camera sees.
+TEST_F(FaceCacheRender, AClosedRoomGetsNoSkyAndARoomWithAWindowSome) {
+    auto house = [](int x, int y, int z, int x0, bool window) {
+        const bool in = x >= x0 && x <= x0 + 8 && y >= 1 && y <= 7 && z >= 0 && z <= 8;
+        const bool inside = x > x0 && x < x0 + 8 && y > 1 && y < 7 && z > 0 && z < 8;
+        const bool hole = window && y == 7 && x >= x0 + 3 && x <= x0 + 5 && z >= 3 && z <= 5;
+        return in && !inside && !hole;
+    };
+    const voxel::World world = test::makeVoxelWorld({-10, 0, -10}, {40, 8, 20}, [&](int x, int y, int z) {
+        return y == 0 || house(x, y, z, 0, false) || house(x, y, z, 16, true);
+    });
+    LiveScene scene(ctx(), voxel::World(world));
+    voxel::FaceBakeSettings settings = worldBakeSettings(world, 4.0, 2);
+    settings.rays = 64;
+    scene.bakeFaceCache(settings);
+    voxel::Lighting lighting = world.desc().lighting;
+    lighting.ambientFrom = voxel::AmbientSource::Sky;
+    const glm::dvec3 o = world.origin();
+    auto meanColour = [&](const AoOptions& ao, glm::dvec3 eye, glm::dvec3 target) {
+        Renderer renderer(ctx(), scene.gpu(), lighting, ao, 48, 36);
+        const Camera camera = makeCamera(test::lookAt(o + eye, o + target, 80.0), 48, 36);
+        renderer.render(camera);
+        const FrameImages f = renderer.readback(camera, false);
+        double sum = 0.0;
+        for (size_t i = 0; i < f.color.size(); i += 4) sum += f.color[i] + f.color[i + 1] + f.color[i + 2];
+        return sum / double(f.color.size() / 4);
+    };
+    AoOptions gtao = aoOptionsFor(world.desc().ao, 1.0, "test");
+    const AoOptions cache = cacheAo(world, 4.0);
+    // Looking down at open ground, at the floor of each room from under its ceiling.
+    const double ground = meanColour(cache, {30.0, 12.0, 14.0}, {30.5, 0.0, 16.0});
+    const double closed = meanColour(cache, {4.5, 6.0, 4.5}, {4.6, 1.0, 4.0});
+    const double window = meanColour(cache, {20.5, 6.0, 4.5}, {20.6, 1.0, 4.0});
+    const double closedGtao = meanColour(gtao, {4.5, 6.0, 4.5}, {4.6, 1.0, 4.0});
+    EXPECT_GT(ground, 0.2);
+    EXPECT_EQ(closed, 0.0);  // no ray leaves the room: no sky, no sun
+    EXPECT_GT(window, 0.02 * ground);
+    EXPECT_LT(window, 0.6 * ground);
+    EXPECT_GT(closedGtao, 0.2 * ground);  // screen-space AO: lit like outdoors
+}
+
+}  // namespace
+}  // namespace grotto

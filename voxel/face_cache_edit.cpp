@@ -1,0 +1,96 @@
+#include "voxel/face_cache_edit.h"
+
+#include "voxel/brick_table.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace grotto::voxel {
+namespace {
+
+// Does the ray p + t d (t >= 0) meet the box [lo, hi]?
+bool rayMeetsBox(glm::dvec3 p, glm::dvec3 d, glm::dvec3 lo, glm::dvec3 hi) {
+    double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+    for (int a = 0; a < 3; ++a) {
+        if (std::abs(d[a]) < 1e-12) {
+            if (p[a] < lo[a] || p[a] > hi[a]) return false;
+            continue;
+        }
+        double ta = (lo[a] - p[a]) / d[a], tb = (hi[a] - p[a]) / d[a];
+        if (ta > tb) std::swap(ta, tb);
+        t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+        if (t0 > t1) return false;
+    }
+    return true;
+}
+
+double distanceToBox(glm::dvec3 p, glm::dvec3 lo, glm::dvec3 hi) {
+    const glm::dvec3 d = glm::max(glm::max(lo - p, p - hi), glm::dvec3(0.0));
+    return std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+}
+
+}  // namespace
+
+StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed, const FaceBakeSettings& s,
+                          double voxelSize) {
+    StaleParts stale;
+    if (changed.empty()) return stale;
+    const glm::dvec3 lo(changed.min), hi(glm::dvec3(changed.max) + 1.0);
+    const double slack = 1e-3 + s.epsilon;  // rays start a hair in front of the face
+    stale.ao = distanceToBox(point, lo, hi) <= s.radius / voxelSize + slack;
+
+    const glm::dvec3 sun = glm::normalize(s.sunDirection);
+    const glm::dvec3 centre = 0.5 * (lo + hi);
+    const double reach = glm::length(hi - lo) * 0.5 + glm::length(centre - point);  // farther than any box point
+    const double spread = std::tan(glm::radians(0.5 * s.sunAngleDegrees)) * reach + slack;
+    stale.sun = rayMeetsBox(point, sun, lo - spread, hi + spread);
+
+    glm::dvec3 normal(0.0);
+    normal[dir >> 1] = (dir & 1) == 0 ? 1.0 : -1.0;
+    const double r = glm::length(hi - lo) * 0.5, d = glm::length(centre - point);
+    if (glm::dot(centre - point, normal) > -r) {  // some of the box in front of the face
+        const bool near = d <= r || (r * r) / (d * d) > kSkyStaleShare;
+        stale.skyNear = near;
+        stale.skyFar = !near;
+    }
+    return stale;
+}
+
+void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox& changed,
+                                      const FaceBakeSettings& s, std::vector<ExposedFace>& faces,
+                                      std::vector<FaceTexel>& texels, CacheEditStats* stats) {
+    const uint32_t k = s.texelsPerSide, perFace = k * k;
+    std::vector<ExposedFace> now = exposedFaces(table, world);
+    std::vector<FaceTexel> carried(now.size() * perFace);
+    std::vector<uint32_t> retrace;
+    uint64_t far = 0;
+    for (size_t f = 0; f < now.size(); ++f) {
+        const auto it = std::lower_bound(faces.begin(), faces.end(), now[f]);
+        const bool existed = it != faces.end() && *it == now[f];
+        StaleParts worst;
+        for (uint32_t j = 0; j < k && existed; ++j)
+            for (uint32_t i = 0; i < k; ++i) {
+                const StaleParts p = staleAfterEdit(texelPoint(now[f], k, i, j), now[f].dir, changed, s, world.voxelSize());
+                worst.ao |= p.ao, worst.sun |= p.sun, worst.skyNear |= p.skyNear, worst.skyFar |= p.skyFar;
+            }
+        if (!existed || worst.now()) {
+            retrace.push_back(uint32_t(f));
+            continue;
+        }
+        if (worst.skyFar) ++far;
+        const size_t old = size_t(it - faces.begin());
+        std::copy_n(texels.begin() + ptrdiff_t(old * perFace), perFace, carried.begin() + ptrdiff_t(f * perFace));
+    }
+    std::vector<ExposedFace> redo(retrace.size());
+    for (size_t n = 0; n < retrace.size(); ++n) redo[n] = now[retrace[n]];
+    std::vector<FaceTexel> traced(redo.size() * perFace);
+    bakeFaces(table, world, redo, s, traced);
+    for (size_t n = 0; n < retrace.size(); ++n)
+        std::copy_n(traced.begin() + ptrdiff_t(n * perFace), perFace, carried.begin() + ptrdiff_t(size_t(retrace[n]) * perFace));
+    if (stats) *stats = {.traced = retrace.size(), .carried = now.size() - retrace.size(), .skyFar = far};
+    faces = std::move(now);
+    texels = std::move(carried);
+}
+
+}  // namespace grotto::voxel

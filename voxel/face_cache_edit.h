@@ -1,0 +1,57 @@
+#pragma once
+// What an edit of the world leaves stale in the face cache (voxel/face_cache.h),
+// and the cache brought up to date after one. A texel's rays are a fixed
+// sequence of its face and place (voxel/face_bake.h), so re-tracing a texel from
+// nothing gives, bit for bit, the parts the edit could not reach: only texels
+// with a stale part are traced again, and whole.
+#include "voxel/face_bake.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace grotto::voxel {
+
+// The share of a texel's cosine-weighted sky an edit must be able to cover for
+// the texel's sky light to be traced again at once; an edit farther away changes
+// it by at most this much, and it is refreshed later (LiveFaceCache).
+inline constexpr double kSkyStaleShare = 1.0 / 32.0;
+
+struct StaleParts {
+    bool ao = false;
+    bool sun = false;
+    bool skyNear = false;  // the sky light, at once
+    bool skyFar = false;   // the sky light, off by at most kSkyStaleShare until refreshed
+    bool now() const { return ao || sun || skyNear; }
+};
+
+// The rule, for a texel at `point` (voxel index units) on a face looking `dir`
+// and an edit of the voxels in `changed` (inclusive), with rays as `settings`
+// trace them (radius in world units, hence `voxelSize`):
+//  - AO: its rays end R voxels out: stale when the edited box grown by R holds the point;
+//  - sun: stale when a ray toward some point of the sun's disc can cross the box:
+//    the ray toward the disc's centre passes within the box grown by the disc's
+//    spread over the distance;
+//  - sky: its rays run on through the world, so any edit in front of the face can
+//    reach it: near when the sphere around the box covers more than kSkyStaleShare
+//    of its cosine-weighted hemisphere (a sphere of radius r at distance d covers
+//    at most (r / d)^2), far otherwise.
+StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed, const FaceBakeSettings& settings,
+                          double voxelSize);
+
+// The cache of a world after an edit of `changed`: `faces` and `texels` as they
+// were before, replaced by the world's exposed faces now, each texel carried over
+// unless the edit reaches it now (staleAfterEdit), new and reached faces traced
+// afresh.
+struct CacheEditStats {
+    uint64_t traced = 0;   // faces traced again or anew
+    uint64_t carried = 0;  // faces carried over untouched
+    uint64_t skyFar = 0;   // of those, faces whose sky light the edit may change by at most kSkyStaleShare
+};
+void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox& changed,
+                                      const FaceBakeSettings& settings, std::vector<ExposedFace>& faces,
+                                      std::vector<FaceTexel>& texels, CacheEditStats* stats = nullptr);
+
+}  // namespace grotto::voxel
