@@ -70,4 +70,11 @@ glm::dvec3 Camera::pointAt(double px, double py, double viewDepth) const {
     return position + dir * (viewDepth / glm::dot(dir, -basis[2]));
 }
 
+CameraVoxel cameraVoxel(const Camera& camera, double voxelSize, glm::dvec3 worldOrigin) {
+    const double limit = double(voxel::kMaxVoxelIndex) * 1.5;
+    const glm::dvec3 index = glm::clamp((camera.position - worldOrigin) / voxelSize, -limit, limit);
+    const glm::dvec3 cell = glm::floor(index);
+    return {glm::ivec3(cell), glm::vec3(index - cell)};
+}
+
 }  // namespace grotto

@@ -36,6 +36,15 @@ struct Camera {
 };
 
 Camera makeCamera(const voxel::CameraDesc& desc, uint32_t width, uint32_t height);
+
+// The voxel holding the camera (index space) and the camera's place in it, in
+// voxels, split in double so that what the GPU adds to them stays exact far from
+// the origin. A camera beyond the index range is clamped to its edge.
+struct CameraVoxel {
+    glm::ivec3 cell{0};
+    glm::vec3 fraction{0.0f};
+};
+CameraVoxel cameraVoxel(const Camera& camera, double voxelSize, glm::dvec3 worldOrigin);
 // The world's camera `name` (its default one when empty: voxel::World::camera) for
 // an image of width x height.
 Camera worldCamera(const voxel::World& world, const std::string& name, uint32_t width, uint32_t height);

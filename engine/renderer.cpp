@@ -286,7 +286,7 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
                                {.aoHalf = image(aoOutput()), .frame = s.frame, .palette = scene_.palette,
                                 .gtaoConstants = s.aoConstants, .objectUniforms = s.objectUniforms,
                                 .shadow = image(TargetId::Shadow), .bentNormals = image(TargetId::AoBentNormal),
-                                .traceConstants = &s.traceConstants, .faceCache = scene_.faceCache.get()});
+                                .faceCache = scene_.faceCache.get()});
     });
     if (displayOn_)
         pass(cmd, DisplayPass::declare(), [&] {
@@ -443,7 +443,7 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
         if (!faceCacheAovPass_)
             faceCacheAovPass_ = std::make_unique<FaceCacheAovPass>(ctx_, compositeShape().cachedSun, tracedShadows());
         pass(cmd, FaceCacheAovPass::declare(), [&] {
-            faceCacheAovPass_->record(cmd, targets_.gbuffer(), slot().frame, slot().traceConstants, *scene_.faceCache,
+            faceCacheAovPass_->record(cmd, targets_.gbuffer(), slot().frame, *scene_.faceCache,
                                       image(TargetId::AoFull), image(TargetId::Shadow));
         });
     }

@@ -34,11 +34,9 @@ layout(set = 0, binding = 7, std140) uniform Objects { ObjectUniforms objects; }
 layout(set = 0, binding = 8, r32f) uniform readonly image2D shadowImage;  // full res: 1 = sunlit (shadow.comp)
 layout(set = 0, binding = 9, rgba16f) uniform readonly image2D bentNormals;  // AO res, world space (vbao)
 #ifdef GROTTO_FACE_CACHE
-#include "shared/trace.h"
-layout(set = 0, binding = 10, std430) readonly buffer Trace { TraceConstants trace; };
 uint faceCacheHashMask() { return frame.faceCache.x; }
 uint faceCacheK() { return frame.faceCache.y; }
-#define GROTTO_FACE_CACHE_BINDING 11
+#define GROTTO_FACE_CACHE_BINDING 10
 #include "face_cache.glsl"
 #include "face_cache_surface.glsl"
 #endif

@@ -17,11 +17,9 @@ layout(set = 0, binding = 1) uniform usampler2D surfaceTex;
 layout(set = 0, binding = 2) uniform sampler2D depthBuffer;
 layout(set = 0, binding = 3, r32f) uniform writeonly image2D aoOut;
 layout(set = 0, binding = 4, r32f) uniform writeonly image2D sunOut;  // 1x1 without sun shadows
-#include "shared/trace.h"
-layout(set = 0, binding = 5, std430) readonly buffer Trace { TraceConstants trace; };
 uint faceCacheHashMask() { return frame.faceCache.x; }
 uint faceCacheK() { return frame.faceCache.y; }
-#define GROTTO_FACE_CACHE_BINDING 6
+#define GROTTO_FACE_CACHE_BINDING 5
 #include "face_cache.glsl"
 #include "face_cache_surface.glsl"
 

@@ -32,6 +32,8 @@ gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l,
     u.aoStrength = glm::vec4(ao.enabled ? ao.chain.strength : 0.0f, 0.0f, 0.0f, 0.0f);
     u.exposure = glm::vec4(l.exposure, 0.0f, 0.0f, 0.0f);
     u.size = {camera.width, camera.height};
+    const glm::dmat4 p = camera.projection();
+    u.depthAB = glm::vec4(float(p[2][2]), float(p[3][2]), 0.0f, 0.0f);
     return u;
 }
 

@@ -15,7 +15,12 @@ namespace grotto {
 void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
     FrameSlot& s = slot();
     gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
-    if (scene_.faceCache) uniforms.faceCache = {scene_.faceCache->hashMask(), scene_.faceCache->texelsPerSide()};
+    if (scene_.faceCache) {
+        uniforms.faceCache = {scene_.faceCache->hashMask(), scene_.faceCache->texelsPerSide()};
+        const CameraVoxel v = cameraVoxel(camera, scene_.voxelSize, scene_.worldOrigin);
+        uniforms.cameraCell = glm::ivec4(v.cell, 0);
+        uniforms.cameraFraction = glm::vec4(v.fraction, float(1.0 / scene_.voxelSize));
+    }
     std::memcpy(s.frame.mapped(), &uniforms, sizeof uniforms);
     if (aoChain(ao_)) {
         const uint32_t scale = ao_.chain.fullResolution ? 1 : 2;

@@ -17,9 +17,7 @@ std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    if (!s.faceCache) return b;
-    b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);  // the trace constants
-    return GpuFaceCache::withBindings(std::move(b));
+    return s.faceCache ? GpuFaceCache::withBindings(std::move(b)) : b;
 }
 }  // namespace
 
@@ -40,9 +38,7 @@ void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const v
         vk::storageImage(in.shadow.view),            vk::storageImage(in.bentNormals.view)};
     const bool perAoPixel = shape_.withAo && !shape_.faceCache;  // one thread per AO pixel
     if (shape_.faceCache) {
-        if (!in.faceCache || !in.traceConstants)
-            throw Error::internal("CompositePass", "the face cache's composite without the cache");
-        b.push_back(vk::storageBuffer(in.traceConstants->buffer));
+        if (!in.faceCache) throw Error::internal("CompositePass", "the face cache's composite without the cache");
         b = in.faceCache->withBindings(std::move(b));
     }
     pass_.dispatch(cmd, b, perAoPixel ? in.aoHalf.extent : color.extent, group(shape_));

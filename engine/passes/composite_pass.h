@@ -35,7 +35,7 @@ public:
     }
     // Without AO, `aoHalf` and `gtaoConstants` are placeholders the shader ignores;
     // without shadows, so is `shadow`; without bent normals, so is `bentNormals`.
-    // With the face cache, `faceCache` and the trace constants (the camera's voxel).
+    // With the face cache, `faceCache`.
     struct Inputs {
         const vk::Image& aoHalf;
         const vk::Buffer& frame;
@@ -44,7 +44,6 @@ public:
         const vk::Buffer& objectUniforms;
         const vk::Image& shadow;
         const vk::Image& bentNormals;
-        const vk::Buffer* traceConstants = nullptr;
         const GpuFaceCache* faceCache = nullptr;
     };
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& color, const Inputs& in);

@@ -3,8 +3,7 @@
 // AO at each full-res pixel into the full-res AO image and, while its sun is the
 // frame's, its sun visibility into the shadow image: over the world pixels it
 // holds when the shadow pass ran (`tracedShadows`), over every pixel else. Reads the
-// G-buffer's depth and surface ids, the frame uniforms, the trace constants and
-// the cache.
+// G-buffer's depth and surface ids, the frame uniforms and the cache.
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
@@ -20,8 +19,8 @@ public:
         return {nullptr, {{TargetId::Surface, Access::Sampled}, {TargetId::Depth, Access::Sampled},
                           {TargetId::AoFull, Access::Write}, {TargetId::Shadow, Access::Write}}};
     }
-    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& frame,
-                const vk::Buffer& traceConstants, const GpuFaceCache& cache, const vk::Image& ao, const vk::Image& sun);
+    void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& frame, const GpuFaceCache& cache,
+                const vk::Image& ao, const vk::Image& sun);
 
 private:
     vk::Context& ctx_;

@@ -26,12 +26,9 @@ gpu::TraceConstants traceConstants(const Camera& camera, const GpuOccupancy& occ
     const glm::dmat4 p = camera.projection();
     t.depthAB = glm::vec4(float(p[2][2]), float(p[3][2]), 0.0f, 0.0f);
     for (int k = 0; k < 3; ++k) t.viewToWorld[k] = glm::vec4(glm::vec3(camera.basis[k]), 0.0f);
-    // A camera beyond the index range is clamped to its edge: rays from there miss everything.
-    const double limit = double(voxel::kMaxVoxelIndex) * 1.5;
-    const glm::dvec3 index = glm::clamp((camera.position - worldOrigin) / voxelSize, -limit, limit);
-    const glm::dvec3 cell = glm::floor(index);
-    t.cameraCell = glm::ivec4(glm::ivec3(cell), 0);
-    t.cameraFraction = glm::vec4(glm::vec3(index - cell), float(1.0 / voxelSize));
+    const CameraVoxel v = cameraVoxel(camera, voxelSize, worldOrigin);  // beyond the index range: rays miss everything
+    t.cameraCell = glm::ivec4(v.cell, 0);
+    t.cameraFraction = glm::vec4(v.fraction, float(1.0 / voxelSize));
     const voxel::IndexBox& b = occupancy.bounds();
     t.boundsLo = glm::ivec4(b.min, 0);
     t.boundsHi = glm::ivec4(b.max, b.empty() ? 1 : 0);

@@ -49,10 +49,9 @@ GROTTO_FUNCTION uint faceCacheRecord(ivec3 brick) {
     return 0u;
 }
 
-// The index of the exposed face of `cell` looking `dir`, or -1 when it is not one.
-GROTTO_FUNCTION int faceCacheFace(ivec3 cell, uint dir) {
-    ivec3 brick = ivec3(cell.x >> 3, cell.y >> 3, cell.z >> 3);
-    uint record = faceCacheRecord(brick);
+// The index of the exposed face of `cell` looking `dir` in brick record `record`
+// (faceCacheRecord's), or -1 when it is not one.
+GROTTO_FUNCTION int faceCacheFaceIn(uint record, ivec3 cell, uint dir) {
     if (record == 0u) return -1;
     uint base = (record - 1u) * GROTTO_FACE_RECORD_WORDS;
     uint bit = occupancyBit(cell.x, cell.y, cell.z);
@@ -63,6 +62,14 @@ GROTTO_FUNCTION int faceCacheFace(ivec3 cell, uint dir) {
     for (uint w = 0u; w < (bit >> 5u); ++w) index += uint(bitCount(faceCacheRecordWord(base + dir * 16u + w)));
     return int(index);
 }
+
+// The index of the exposed face of `cell` looking `dir`, or -1 when it is not one.
+GROTTO_FUNCTION int faceCacheFace(ivec3 cell, uint dir) {
+    return faceCacheFaceIn(faceCacheRecord(ivec3(cell.x >> 3, cell.y >> 3, cell.z >> 3)), cell, dir);
+}
+
+// Floor division by k > 0.
+GROTTO_FUNCTION int faceCacheFloorDiv(int i, int k) { return i >= 0 ? i / k : -((-i + k - 1) / k); }
 
 GROTTO_FUNCTION vec4 faceCacheUnpack(uint packed) {
     return vec4(float(packed & 255u), float((packed >> 8u) & 255u), float((packed >> 16u) & 255u),
@@ -75,7 +82,7 @@ GROTTO_FUNCTION vec4 faceCacheUnpack(uint packed) {
 // the four nearest texel centres bilinearly, across coplanar exposed faces,
 // reweighted where some are missing. `found`: false where none is.
 GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool) found) {
-    uint k = faceCacheK();
+    int k = int(faceCacheK());
     uint axis = faceAxis(dir), ua = faceUAxis(dir), va = faceVAxis(dir);
     int plane = int(floor(p[axis] + 0.5f)) + origin[axis];
     ivec3 cell = origin;
@@ -83,21 +90,40 @@ GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool
     float su = p[ua] * float(k) - 0.5f, sv = p[va] * float(k) - 0.5f;
     float fu = floor(su), fv = floor(sv);
     float wu = su - fu, wv = sv - fv;
+    // The four centres' texel columns and rows, and the faces they lie on: one to
+    // four, most often one or two, each looked up once (and its brick once).
+    int I0 = int(fu) + origin[ua] * k, J0 = int(fv) + origin[va] * k;
+    int cu0 = faceCacheFloorDiv(I0, k), cu1 = faceCacheFloorDiv(I0 + 1, k);
+    int cv0 = faceCacheFloorDiv(J0, k), cv1 = faceCacheFloorDiv(J0 + 1, k);
+    ivec3 q = cell;
+    q[ua] = cu0;
+    q[va] = cv0;
+    ivec3 brick = ivec3(q.x >> 3, q.y >> 3, q.z >> 3);
+    uint record = faceCacheRecord(brick);
+    int faces[4];
+    faces[0] = faceCacheFaceIn(record, q, dir);
+    for (int c = 1; c < 4; ++c) {
+        int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
+        if (cu == cu0 && cv == cv0) { faces[c] = faces[0]; continue; }
+        if (c == 3 && cu1 == cu0) { faces[3] = faces[2]; continue; }
+        if (c == 3 && cv1 == cv0) { faces[3] = faces[1]; continue; }
+        q[ua] = cu;
+        q[va] = cv;
+        ivec3 b = ivec3(q.x >> 3, q.y >> 3, q.z >> 3);
+        if (b.x != brick.x || b.y != brick.y || b.z != brick.z) {
+            brick = b;
+            record = faceCacheRecord(brick);
+        }
+        faces[c] = faceCacheFaceIn(record, q, dir);
+    }
     vec4 sum = vec4(0.0f);
     float weight = 0.0f;
     for (int c = 0; c < 4; ++c) {
-        int I = int(fu) + (c & 1) + origin[ua] * int(k), J = int(fv) + (c >> 1) + origin[va] * int(k);
         float w = ((c & 1) != 0 ? wu : 1.0f - wu) * ((c >> 1) != 0 ? wv : 1.0f - wv);
-        if (w <= 0.0f) continue;
-        // Floor division: texel I lies on the face of cell floor(I / k).
-        int cu = I >= 0 ? I / int(k) : -((-I + int(k) - 1) / int(k));
-        int cv = J >= 0 ? J / int(k) : -((-J + int(k) - 1) / int(k));
-        ivec3 q = cell;
-        q[ua] = cu;
-        q[va] = cv;
-        int face = faceCacheFace(q, dir);
-        if (face < 0) continue;
-        uint texel = uint(face) * k * k + uint(J - cv * int(k)) * k + uint(I - cu * int(k));
+        if (w <= 0.0f || faces[c] < 0) continue;
+        int I = I0 + (c & 1), J = J0 + (c >> 1);
+        int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
+        uint texel = uint(faces[c]) * uint(k * k) + uint(J - cv * k) * uint(k) + uint(I - cu * k);
         sum += w * faceCacheUnpack(faceCacheTexelWord(texel));
         weight += w;
     }

@@ -24,8 +24,13 @@ struct FrameUniforms {
     uvec2 size;          // full-resolution width, height
     uvec2 faceCache;     // --ao cache: the face cache's hash mask and texels per face side (shared/face_cache.h)
     vec4 skyLight[GROTTO_SKY_LIGHT_ROWS];  // rgb: the sky's light on a surface facing height -1 + k / 4
+    // Where a pixel's surface is, in voxels (--ao cache): rayOrigin's ray times the
+    // view depth, from the camera's place in its voxel.
+    vec4 depthAB;        // x, y: view depth = y / (depth buffer value + x)
+    ivec4 cameraCell;    // xyz: the voxel holding the camera (index space)
+    vec4 cameraFraction; // xyz: the camera within that voxel, in voxels; w: 1 / voxel size
 };
-GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16 + 16 * GROTTO_SKY_LIGHT_ROWS);
+GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16 + 16 * GROTTO_SKY_LIGHT_ROWS + 3 * 16);
 
 // G-buffer push constants: one chunk's corner in whole voxels from the camera's
 // voxel, and the camera's place in that voxel. A vertex's position is computed from
