@@ -1,8 +1,12 @@
 // The game-facing engine (<grotto/grotto.h>), headless with the validation layer on.
+#include "engine/ao_settings.h"
 #include "engine/camera.h"
 #include "engine/lab/reference_view.h"
 #include "tests/display_checks.h"
 #include "tests/test_util.h"
+#include "voxel/brick_table.h"
+#include "voxel/face_bake.h"
+#include "voxel/face_cache_file.h"
 
 #include <grotto/grotto.h>
 
@@ -147,6 +151,51 @@ TEST(EngineApi, ReferenceCacheTellsAnEditedWorldFromItsFile) {
     EXPECT_NE(dug.ao, file.ao) << "the hole is in view";
     EXPECT_TRUE(referenceView(world, camera, 4.0, 16).cacheHit);
     unsetenv("GROTTO_CACHE_DIR");
+}
+
+// ao.method "cache" reads a bake loaded with loadBake: AO per pixel, on after an
+// edit, validation silent; a bake of other voxels is refused naming the file.
+TEST(EngineApi, LoadsAWorldsBakeAndRefusesAnotherWorlds) {
+    const test::ScratchDir dir;
+    const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
+    const double radius = aoOptionsFor(world.desc().ao, world.voxelSize(), "test").estimator.radius;
+    auto writeBake = [&](const voxel::World& w, const std::filesystem::path& file) {
+        const voxel::BrickTable table(w);
+        const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, w);
+        voxel::FaceCacheFile cache{.key = voxel::faceCacheKey(w, radius, 2), .totalFaces = faces.size()};
+        cache.texels.resize(faces.size() * 4);
+        voxel::bakeFaces(table, w, faces,
+                         {.radius = radius, .texelsPerSide = 2, .rays = 8, .sunRays = 1,
+                          .sunDirection = glm::dvec3(w.desc().lighting.sunDirection)},
+                         cache.texels);
+        voxel::saveFaceCache(cache, file);
+    };
+    writeBake(world, dir.path / "rooms.gfc");
+    voxel::World dug = voxel::World::load(test::worldsDir() / "rooms.json");
+    dug.apply(kDig);
+    writeBake(dug, dir.path / "dug.gfc");
+
+    Engine engine({.width = 48, .height = 32, .validation = true});
+    engine.loadWorld(test::worldsDir() / "rooms.json");
+    engine.setCamera(kView);
+    try {
+        engine.loadBake(dir.path / "dug.gfc");
+        ADD_FAILURE() << "another world's bake was loaded";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("dug.gfc"), std::string::npos) << e.what();
+    }
+    engine.loadBake(dir.path / "rooms.gfc");
+    engine.setAo({.method = "cache"});
+    const RenderedFrame frame = engine.render();
+    EXPECT_EQ(frame.ao.extent.width, 1u) << "the AO lives on the faces";
+    Pixels p = engine.readPixels();
+    size_t occluded = 0;
+    for (float a : p.ao) occluded += a < 0.7f;
+    EXPECT_GT(occluded, p.ao.size() / 50);
+    engine.edit(kDig);  // the cache follows the edit
+    p = renderOnce(engine);
+    EXPECT_EQ(p.ao.size(), 48u * 32u);
+    EXPECT_EQ(engine.validationMessages(), 0);
 }
 
 TEST(EngineApi, MisuseIsRefusedWithAClearError) {

@@ -250,6 +250,11 @@ void Engine::setAo(const AoDesc& desc) {
 
 AoDesc Engine::ao() const { return impl_->aoDesc; }
 
+void Engine::loadBake(const std::filesystem::path& file) {
+    impl_->requireWorld("loadBake");
+    impl_->session->loadFaceCache(file);
+}
+
 void Engine::resize(uint32_t width, uint32_t height) {
     requireSize(width, height);
     impl_->width = width;

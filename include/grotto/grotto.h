@@ -159,6 +159,13 @@ public:
     void setLighting(const Lighting& lighting);  // throws Error for values out of range
     Lighting lighting() const;
     void setAo(const AoDesc& ao);  // the world file's "ao" block; throws Error for bad values
+    // The light cached on the world's faces for ao.method "cache" (docs/face-cache.md):
+    // a bake of this world from `grotto bake`, at the AO radius set now. Throws
+    // Error naming the file and the field when it is not this world's bake or
+    // not these settings'. Without one, "cache" bakes the world on every core first.
+    // With "cache" the AO lives on the faces: readPixels() has it per pixel, and
+    // RenderedFrame::ao is a 1x1 placeholder.
+    void loadBake(const std::filesystem::path& file);
     AoDesc ao() const;
     void resize(uint32_t width, uint32_t height);
     void cut();  // a camera cut: the next frame starts without temporal history
