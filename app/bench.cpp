@@ -106,6 +106,8 @@ void addBenchCommand(CLI::App& app) {
         }
         const size_t hostBytes = stats.hostBytes + scene.hostBytes();
         const size_t gpuBytes = scene.gpuBytes();
+        const size_t cacheBytes = scene.faceCache ? scene.faceCache->gpuBytes() : 0;  // within gpuBytes
+        const size_t cachedFaces = session->scene().faceCache() ? session->scene().faceCache()->faces().size() : 0;
         // After the frames and the memory figures, so both see the scene as uploaded.
         std::optional<SceneUpdateCost> update;
         if (busiest) update = measureSceneUpdate(scene, *busiest, 50);
@@ -120,6 +122,7 @@ void addBenchCommand(CLI::App& app) {
             {"frame_gpu_ms_median", median(frameGpuMs)}, {"frame_wall_ms_median", median(wallMs)},
             {"memory", {{"grid_memusage_bytes", stats.sourceGridBytes}, {"host_bytes", hostBytes},
                         {"gpu_scene_bytes", gpuBytes}, {"gpu_target_bytes", targetBytes},
+                        {"gpu_face_cache_bytes", cacheBytes}, {"face_cache_faces", cachedFaces},
                         {"world_to_grid_ratio", double(hostBytes + gpuBytes) / double(std::max<size_t>(1, stats.sourceGridBytes))}}}};
         std::printf("%s on %s, %ux%u, median of %d frames after %d warm-up\n", args->world.c_str(),
                     ctx.deviceName().c_str(), size.width, size.height, args->frames, args->warmup);
@@ -147,6 +150,9 @@ void addBenchCommand(CLI::App& app) {
         std::printf("  memory: grid memUsage %zu B; world host %zu B + GPU %zu B = %.2fx; targets %zu B\n",
                     stats.sourceGridBytes, hostBytes, gpuBytes,
                     j["memory"]["world_to_grid_ratio"].get<double>(), targetBytes);
+        if (cachedFaces)
+            std::printf("  face cache: %zu B GPU (in the world's) for %zu exposed faces, %.1f B a face\n", cacheBytes,
+                        cachedFaces, double(cacheBytes) / double(cachedFaces));
         if (edits) {
             printEditFigures(*edits);
             j["edits"] = editFiguresJson(*edits);

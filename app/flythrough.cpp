@@ -187,7 +187,8 @@ void run(const Args& a) {
     // shrinks by (n-1)/n a frame (n = the history length, 16), so measured at
     // four times n the split frames are within 1/255 of the whole run's
     // (twice n: 3/255); docs/paths.md.
-    const int warmup = a.warmup.value_or(4 * int(ao.chain.temporalHistory));
+    // The face cache has no history: a chunk needs no warm-up.
+    const int warmup = a.warmup.value_or(aoChain(ao) ? 4 * int(ao.chain.temporalHistory) : 0);
     const int first = video ? range.first : missing.front(), end = video ? range.last : missing.back();
     const int start = std::max(1, first - warmup);
     std::optional<StatsRecorder> stats;  // this run's frame entries
@@ -262,7 +263,8 @@ void addFlythroughCommand(CLI::App& app) {
                     "K/N: the K-th of N equal contiguous parts of the path's frames (a render farm's task K of N)");
     cmd->add_option("--warmup", args->warmup,
                     "Frames rendered but not written before the first one written; the default (four times the "
-                    "temporal history, 64) keeps a split run within 2/255 of the whole run")
+                    "temporal history, 64; 0 with --ao cache, which keeps none) keeps a split run within 2/255 of "
+                    "the whole run")
         ->check(CLI::Range(0, 10000));
     cmd->add_option("--format", args->format, "png, or exr with AOVs")->capture_default_str()->check(CLI::IsMember({"png", "exr"}));
     cmd->add_option("-o,--output", args->output, "Output directory (required unless --video)");

@@ -138,6 +138,30 @@ TEST_F(FlythroughChunks, ConcurrentChunksMatchASingleRun) {
     std::printf("[ measured ] 3 concurrent chunks against one run: largest difference %d/255\n", worst);
 }
 
+// With a bake (--ao cache) there is no history: chunks render no warm-up frames
+// and are the single run bit for bit.
+TEST_F(FlythroughChunks, BakedChunksNeedNoWarmUpAndAreOneRunExactly) {
+    const fs::path bake = dir_ / "fly.gfc", whole = dir_ / "whole";
+    ASSERT_EQ(runGrotto("bake " + world_.string() + " -o " + bake.string() + " --rays 8 --sun-rays 1").exitCode, 0);
+    const std::string base = "flythrough " + world_.string() + " --path p --size 16x8 --fps 8 --bake " + bake.string() + " ";
+    const test::RunResult single = runGrotto(base + "-o " + whole.string());
+    ASSERT_EQ(single.exitCode, 0) << single.err;
+    for (int k = 1; k <= 3; ++k) {
+        const test::RunResult r = runGrotto(base + "--chunk " + std::to_string(k) + "/3 -o " + seq().string());
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+    }
+    const nlohmann::json s = stats();
+    ASSERT_EQ(s["frames"].size(), 9u);
+    for (const nlohmann::json& f : s["frames"]) {
+        EXPECT_TRUE(f["written"].get<bool>()) << "frame " << f["frame"] << " rendered as warm-up";
+        char name[32];
+        std::snprintf(name, sizeof name, "frame.%04d.png", f["frame"].get<int>());
+        const std::vector<uint8_t> a = test::readPixels8(whole / name), b = test::readPixels8(seq() / name);
+        ASSERT_FALSE(a.empty()) << name;
+        EXPECT_TRUE(a == b) << name;
+    }
+}
+
 // kill -9 and the same command again: the frames the killed run wrote end up
 // marked written in stats.json (docs/farm.md's completion check), every frame is
 // there, and nothing the killed run was writing is left behind.
