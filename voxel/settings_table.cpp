@@ -242,6 +242,8 @@ void resetPresetShaped(AoDesc& ao) {
 }
 
 bool usedBy(const Setting& s, std::string_view method) {
+    if (method == "cache" && s.key.substr(0, 3) == "ao.")
+        return s.key == "ao.method" || s.key == "ao.radius" || s.key == "ao.strength";
     if (s.tracingOnly) return method == "voxel" || method == "hybrid";
     if (s.vbaoOnly) return method == "vbao";
     return true;
