@@ -4,6 +4,7 @@
 
 #include "app/options.h"
 #include "voxel/brick_table.h"
+#include "voxel/face_cache_layout.h"
 #include "voxel/live_mesh.h"
 
 #include <nlohmann/json.hpp>
@@ -73,6 +74,26 @@ EditBenchFigures benchEdits(const voxel::World& source, const EditBenchOptions& 
     }
     f.sphereCarveMs = median(ms);
 
+    // The same carve with the face cache kept up to date (its texels' values do
+    // not change the cost: unbaked ones will do).
+    const voxel::FaceBakeSettings bake{.radius = kDefaultRadiusVoxels * source.voxelSize(),
+                                       .sunDirection = glm::dvec3(source.desc().lighting.sunDirection),
+                                       .sunAngleDegrees = double(source.desc().lighting.sunAngle)};
+    const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(live.table, live.world);
+    ms.clear();
+    for (int i = 0; i < 3; ++i) {
+        std::vector<voxel::ExposedFace> now = faces;
+        std::vector<voxel::FaceTexel> texels(now.size() * bake.texelsPerSide * bake.texelsPerSide);
+        const auto t = Clock::now();
+        voxel::EditResult r;
+        live.timedEdit(voxel::Edit::carveSphere(centre, 8.0 * source.voxelSize()), &r);
+        voxel::updateAfterEdit(live.table, live.world, r.voxels, bake, now, texels, &f.cacheEdit);
+        const voxel::FaceCacheArrays arrays = voxel::layFaceCache(now, texels, bake.texelsPerSide);
+        ms.push_back(msSince(t));
+        live.undo();
+    }
+    f.cacheEditMs = median(ms);
+
     // Random single voxels within the bounds, each toggled (so none is a no-op).
     const voxel::IndexBox b = source.bounds();
     std::mt19937 rng(o.seed);
@@ -105,6 +126,10 @@ void printEditFigures(const EditBenchFigures& f) {
     std::printf("    voxel set    %8.3f ms at (%d, %d, %d)\n", f.voxelEditMs, f.voxel.x, f.voxel.y, f.voxel.z);
     std::printf("    sphere carve %8.3f ms, radius 8 voxels there, %llu voxels changed\n", f.sphereCarveMs,
                 (unsigned long long)f.sphereVoxels);
+    std::printf("    face cache   %8.3f ms after that carve: %llu faces traced again, %llu carried (%llu with sky "
+                "light left for later)\n",
+                f.cacheEditMs, (unsigned long long)f.cacheEdit.traced, (unsigned long long)f.cacheEdit.carried,
+                (unsigned long long)f.cacheEdit.skyFar);
     std::printf("    random voxel %8.3f ms each over %d edits; re-meshing the whole world instead: %.3f ms each "
                 "(%d edits), %.0fx\n",
                 f.randomEditMs, f.randomEdits, f.fullRemeshMs, f.fullRemeshEdits, f.remeshRatio);
@@ -115,6 +140,8 @@ nlohmann::json editFiguresJson(const EditBenchFigures& f) {
             {"voxel_edit_ms_median", f.voxelEditMs},
             {"sphere_carve_ms_median", f.sphereCarveMs},
             {"sphere_carve_voxels", f.sphereVoxels},
+            {"face_cache_edit_ms", f.cacheEditMs},
+            {"face_cache_faces_traced", f.cacheEdit.traced},
             {"random_edits", f.randomEdits},
             {"random_edit_ms_median", f.randomEditMs},
             {"full_remesh_edits", f.fullRemeshEdits},

@@ -2,6 +2,7 @@
 // `grotto bench --edits`: the CPU cost of live edits on a loaded world (the
 // edit itself, the chunks it re-meshes, the brick table it updates), against
 // re-meshing the whole world after every edit.
+#include "voxel/face_cache_edit.h"
 #include "voxel/world.h"
 
 #include <nlohmann/json_fwd.hpp>
@@ -22,6 +23,10 @@ struct EditBenchFigures {
     double voxelEditMs = 0;        // setting that voxel (solid and empty in turn)
     double sphereCarveMs = 0;      // carving a sphere of radius 8 voxels around it
     uint64_t sphereVoxels = 0;     // voxels that carve changed
+    // The face cache after that carve (voxel::updateAfterEdit at the default bake
+    // settings, then laid out for the GPU), and what it traced and carried.
+    double cacheEditMs = 0;
+    voxel::CacheEditStats cacheEdit;
     int randomEdits = 0;
     double randomEditMs = 0;       // a random single-voxel edit, incremental
     int fullRemeshEdits = 0;
