@@ -152,7 +152,7 @@ struct Mean {
 
 StabilityFigures runStability(vk::Context& ctx, RenderSession& session, const AoOptions& ao, const StabilityRunOptions& o) {
     const int first = o.first;
-    const uint32_t scale = ao.chain.fullResolution ? 1 : 2;
+    const uint32_t scale = ao.chain.fullResolution || faceCached(ao) ? 1 : 2;  // the face cache's AO is per pixel
     const double tolerance = 0.5 * session.world().voxelSize();
     LiveScene& live = session.scene();
     std::vector<EditEvent> events;
