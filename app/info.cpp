@@ -3,6 +3,8 @@
 #include "app/commands.h"
 #include "common/printable.h"
 #include "engine/scene/scene.h"
+#include "voxel/face_bake.h"
+#include "voxel/face_cache_layout.h"
 #include "voxel/live_mesh.h"
 #include "voxel/object_worlds.h"
 #include "voxel/world.h"
@@ -70,6 +72,13 @@ void addInfoCommand(CLI::App& app) {
         std::printf("quads          %zu (coarser levels of detail: %zu more)\n", quads, coarse);
         std::printf("host bytes     %zu (grid as loaded: %zu)\n", host, s.sourceGridBytes);
         std::printf("gpu bytes      %zu\n", gpu);
+        {  // what a bake at the default k adds (--ao cache, docs/face-cache.md)
+            const voxel::ExposedFaceCount faces = voxel::countExposedFaces(w);
+            const size_t bytes = voxel::faceCacheGpuBytes(faces, voxel::kDefaultBakeTexels);
+            std::printf("face cache     %llu exposed faces; baked at %u x %u texels, %zu bytes on the GPU (%.1f a face)\n",
+                        (unsigned long long)faces.faces, voxel::kDefaultBakeTexels, voxel::kDefaultBakeTexels, bytes,
+                        faces.faces ? double(bytes) / double(faces.faces) : 0.0);
+        }
         if (b.empty())
             std::printf("bounds         empty\n");
         else

@@ -377,5 +377,27 @@ TEST(FaceCache, AnEditRetracesWhatItCanReachAndTouchesNothingElse) {
     EXPECT_LT(farError / double(far), kSkyStaleShare);
 }
 
+// The row-at-a-time count equals the listed faces, and the bricks holding them,
+// on random worlds with solid bricks at negative indices and across brick borders.
+TEST(FaceCache, CountingEqualsListing) {
+    std::mt19937 rng(33);
+    for (double density : {0.05, 0.3, 0.7, 1.0}) {
+        World w = randomWorld(21, density, rng);
+        w.apply(Edit::fillBox({{-9, -3, -17}, {-2, 4, -5}}, 1));
+        w.apply(Edit::carveBox({{-5, 0, -9}, {-4, 1, -8}}));
+        const std::vector<ExposedFace> faces = exposedFaces(w);
+        std::vector<glm::ivec3> bricks;
+        for (const ExposedFace& f : faces) bricks.push_back(f.cell >> 3);
+        std::sort(bricks.begin(), bricks.end(), [](glm::ivec3 a, glm::ivec3 b) {
+            return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+        });
+        bricks.erase(std::unique(bricks.begin(), bricks.end()), bricks.end());
+        const ExposedFaceCount count = countExposedFaces(w);
+        EXPECT_EQ(count.faces, faces.size()) << "density " << density;
+        EXPECT_EQ(count.bricks, bricks.size()) << "density " << density;
+        EXPECT_EQ(faceCacheGpuBytes(count, 3), faceCacheGpuBytes(faces, 3));
+    }
+}
+
 }  // namespace
 }  // namespace grotto::voxel

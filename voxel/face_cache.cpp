@@ -4,7 +4,9 @@
 #include "voxel/brick_table.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <unordered_map>
 
 namespace grotto::voxel {
 
@@ -35,6 +37,46 @@ std::vector<ExposedFace> exposedFaces(const BrickTable& table, const World& worl
     // Bricks come in the grid's order: sort into the documented one.
     std::sort(faces.begin(), faces.end());  // bricks come in the grid's order
     return faces;
+}
+
+ExposedFaceCount countExposedFaces(const World& world) {
+    // A brick's word x holds its voxels (x, y, z) at bit y * 8 + z, as in the grid.
+    struct KeyHash {
+        size_t operator()(glm::ivec3 b) const {
+            return size_t(uint32_t(b.x)) * 0x9E3779B97F4A7C15ull ^ size_t(uint32_t(b.y)) * 0xC2B2AE3D27D4EB4Full ^
+                   size_t(uint32_t(b.z)) * 0x165667B19E3779F9ull;
+        }
+    };
+    const std::vector<Brick>& bricks = world.bricks();
+    std::unordered_map<glm::ivec3, const uint64_t*, KeyHash> byKey;
+    byKey.reserve(bricks.size());
+    for (const Brick& b : bricks) byKey[b.origin >> 3] = b.occupancy;
+    static constexpr uint64_t kEmpty[8] = {};
+    auto words = [&](glm::ivec3 key) {
+        const auto it = byKey.find(key);
+        return it == byKey.end() ? kEmpty : it->second;
+    };
+    constexpr uint64_t kLowZ = 0x0101010101010101ull, kHighZ = kLowZ << 7;
+    ExposedFaceCount count;
+    for (const Brick& b : bricks) {
+        const glm::ivec3 key = b.origin >> 3;
+        const uint64_t* m = b.occupancy;
+        const uint64_t *px = words(key + glm::ivec3(1, 0, 0)), *nx = words(key - glm::ivec3(1, 0, 0));
+        const uint64_t *py = words(key + glm::ivec3(0, 1, 0)), *ny = words(key - glm::ivec3(0, 1, 0));
+        const uint64_t *pz = words(key + glm::ivec3(0, 0, 1)), *nz = words(key - glm::ivec3(0, 0, 1));
+        uint64_t faces = 0;
+        for (int x = 0; x < 8; ++x) {
+            // Each neighbour's solidity moved onto the voxel it borders.
+            const uint64_t right = x < 7 ? m[x + 1] : px[0], left = x > 0 ? m[x - 1] : nx[7];
+            const uint64_t up = (m[x] >> 8) | (py[x] << 56), down = (m[x] << 8) | (ny[x] >> 56);
+            const uint64_t front = ((m[x] >> 1) & ~kHighZ) | ((pz[x] & kLowZ) << 7);
+            const uint64_t back = ((m[x] << 1) & ~kLowZ) | ((nz[x] & kHighZ) >> 7);
+            for (uint64_t open : {right, left, up, down, front, back}) faces += uint64_t(std::popcount(m[x] & ~open));
+        }
+        count.faces += faces;
+        count.bricks += faces > 0;
+    }
+    return count;
 }
 
 SkyWeights skyWeights(double up) {

@@ -41,6 +41,14 @@ inline bool operator<(const ExposedFace& a, const ExposedFace& b) {
 std::vector<ExposedFace> exposedFaces(const World& world);
 std::vector<ExposedFace> exposedFaces(const BrickTable& table, const World& world);
 
+// How many there are, and how many 8^3 bricks hold one, without listing them:
+// whole rows of voxels at a time (for `info`).
+struct ExposedFaceCount {
+    uint64_t faces = 0;
+    uint64_t bricks = 0;
+};
+ExposedFaceCount countExposedFaces(const World& world);
+
 // A texel's sums. Sky light from them: horizon * skyHorizon / samples +
 // zenith * skyZenith / samples (irradiance over pi: an open floor under a uniform
 // sky of radiance L gets L).

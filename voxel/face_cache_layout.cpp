@@ -34,8 +34,12 @@ size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerS
     for (const ExposedFace& f : faces) bricks.push_back(f.cell >> 3);
     std::sort(bricks.begin(), bricks.end(), BrickLess{});
     bricks.erase(std::unique(bricks.begin(), bricks.end()), bricks.end());
-    const size_t slots = std::bit_ceil(std::max<size_t>(2 * bricks.size(), 2));
-    return slots * 16 + bricks.size() * GROTTO_FACE_RECORD_WORDS * 4 + faces.size() * texelsPerSide * texelsPerSide * 4;
+    return faceCacheGpuBytes(ExposedFaceCount{faces.size(), bricks.size()}, texelsPerSide);
+}
+
+size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide) {
+    const size_t slots = std::bit_ceil(std::max<size_t>(2 * count.bricks, 2));
+    return slots * 16 + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + count.faces * texelsPerSide * texelsPerSide * 4;
 }
 
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,

@@ -31,5 +31,6 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
 // What layFaceCache's arrays for `faces` at k texels a side take, without laying
 // them out (for `info` and `bench`).
 size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide);
+size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide);
 
 }  // namespace grotto::voxel
