@@ -65,7 +65,7 @@ bool Renderer::cachedSun() const {
 }
 
 CompositeShape Renderer::compositeShape() const {
-    return {.withAo = ao_.enabled, .withShadow = tracedShadows(), .withBentNormals = bentNormals(ao_, lighting_),
+    return {.withAo = aoChain(ao_), .withShadow = tracedShadows(), .withBentNormals = bentNormals(ao_, lighting_),
             .faceCache = faceCached(ao_), .cachedSun = shadows() && cachedSun()};
 }
 
@@ -139,14 +139,11 @@ void Renderer::resize(uint32_t width, uint32_t height) {
 }
 
 void Renderer::setLighting(const voxel::Lighting& lighting) {
-    const bool hadShadows = shadows(), wasSoft = softShadows(), wasTraced = tracedShadows();
-    const CompositeShape wasComposite = compositeShape();
+    const bool hadShadows = shadows(), wasSoft = softShadows();
+    const CompositeShape wasComposite = compositeShape();  // with the shadow pass's presence
     const voxel::Lighting old = std::exchange(lighting_, lighting);
     const bool sameAmbient = old.ambientFrom == lighting_.ambientFrom;
-    const CompositeShape composite = compositeShape();
-    const bool sameComposite = wasComposite.withShadow == composite.withShadow && wasComposite.cachedSun == composite.cachedSun;
-    if (hadShadows == shadows() && wasSoft == softShadows() && wasTraced == tracedShadows() && sameAmbient &&
-        sameComposite) {  // uniforms only
+    if (hadShadows == shadows() && wasSoft == softShadows() && sameAmbient && wasComposite == compositeShape()) {  // uniforms only
         if (old.sunDirection != lighting_.sunDirection || old.sunAngle != lighting_.sunAngle) shadowCamera_.reset();
         return;
     }
@@ -190,7 +187,10 @@ void Renderer::setAo(const AoOptions& ao) {
                            differIn(old, ao_, voxel::kEstimatorPipeline);  // its loop shape: the settings table's column
     const bool denoise = old.chain.denoisePasses != ao_.chain.denoisePasses;
     const bool bent = bentNormals(old, lighting_) != bentNormals(ao_, lighting_);
-    if (chain || bent) compositePass_.reset(), faceCacheAovPass_.reset();
+    if (chain || bent) {
+        compositePass_.reset();
+        faceCacheAovPass_.reset();
+    }
     if (chain) shadowPass_.reset();  // the cache may give the sun's shadows
     if (chain || estimator || bent) estimatorPass_.reset();
     bentPass_.reset();

@@ -8,7 +8,7 @@ namespace grotto {
 namespace {
 // Threads per group side, measured on lavapipe: with AO each thread shades a 2x2
 // block, and smaller groups of them run faster.
-uint32_t group(const CompositeShape& s) { return s.withAo && !s.faceCache ? 8u : 16u; }
+uint32_t group(const CompositeShape& s) { return s.withAo ? 8u : 16u; }
 
 std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
     std::vector<VkDescriptorType> b = {
@@ -25,7 +25,7 @@ CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
     : ctx_(ctx),
       shape_(shape),
       pass_(ctx, shape.faceCache ? "composite_cache.comp" : "composite.comp", bindings(shape), 0,
-            {shape.withAo && !shape.faceCache ? 1u : 0u, group(shape), group(shape), shape.withShadow ? 1u : 0u,
+            {shape.withAo ? 1u : 0u, group(shape), group(shape), shape.withShadow ? 1u : 0u,
              shape.withBentNormals ? 1u : 0u, shape.cachedSun ? 1u : 0u}) {}
 
 void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& color, const Inputs& in) {
@@ -36,12 +36,11 @@ void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const v
         vk::uniformBuffer(in.gtaoConstants.buffer),  vk::storageImage(in.aoHalf.view),
         vk::sampledImage(ctx_.pointSampler, g.depth.view, ro), vk::uniformBuffer(in.objectUniforms.buffer),
         vk::storageImage(in.shadow.view),            vk::storageImage(in.bentNormals.view)};
-    const bool perAoPixel = shape_.withAo && !shape_.faceCache;  // one thread per AO pixel
     if (shape_.faceCache) {
         if (!in.faceCache) throw Error::internal("CompositePass", "the face cache's composite without the cache");
         b = in.faceCache->withBindings(std::move(b));
     }
-    pass_.dispatch(cmd, b, perAoPixel ? in.aoHalf.extent : color.extent, group(shape_));
+    pass_.dispatch(cmd, b, shape_.withAo ? in.aoHalf.extent : color.extent, group(shape_));  // with AO, per AO pixel
 }
 
 }  // namespace grotto

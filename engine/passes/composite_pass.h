@@ -17,11 +17,12 @@
 namespace grotto {
 
 struct CompositeShape {
-    bool withAo = true;            // an AO chain's output to upsample
+    bool withAo = true;            // an AO chain's output to upsample (never with the face cache)
     bool withShadow = false;       // the shadow pass's image
     bool withBentNormals = false;  // VBAO's bent normals light the sky's ambient
     bool faceCache = false;        // --ao cache: the face cache instead of an AO chain
     bool cachedSun = false;        // with it: world surfaces take the cache's sun visibility
+    bool operator==(const CompositeShape&) const = default;
 };
 
 class CompositePass {

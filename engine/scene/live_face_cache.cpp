@@ -41,7 +41,7 @@ LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& tabl
 }
 
 void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed) {
-    voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, &lastEdit_);
+    voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_);
     upload();
 }
 

@@ -34,7 +34,6 @@ public:
     // listed again, the texels the edit reaches traced again, the rest carried
     // over (voxel::updateAfterEdit), and the GPU copy replaced.
     void edited(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed);
-    const voxel::CacheEditStats& lastEdit() const { return lastEdit_; }
 
     const voxel::FaceBakeSettings& settings() const { return settings_; }
     std::span<const voxel::ExposedFace> faces() const { return faces_; }
@@ -47,7 +46,6 @@ private:
     std::vector<voxel::ExposedFace> faces_;
     std::vector<voxel::FaceTexel> texels_;
     voxel::FaceBakeSettings settings_;
-    voxel::CacheEditStats lastEdit_;
 };
 
 // The settings a bake of `world` with AO radius `radius` (world units) and k

@@ -27,15 +27,11 @@ const voxel::BrickTable& LiveScene::bricks() {
 }
 
 void LiveScene::loadFaceCache(const std::filesystem::path& bake, double radius) {
-    LiveFaceCache loaded = LiveFaceCache::load(*gpu_, bricks(), world_, radius, bake);
-    faceCache_.reset();
-    faceCache_.emplace(std::move(loaded));
+    faceCache_.emplace(LiveFaceCache::load(*gpu_, bricks(), world_, radius, bake));  // the old one kept if it throws
 }
 
 void LiveScene::bakeFaceCache(const voxel::FaceBakeSettings& settings) {
-    LiveFaceCache baked = LiveFaceCache::bake(*gpu_, bricks(), world_, settings);
-    faceCache_.reset();
-    faceCache_.emplace(std::move(baked));
+    faceCache_.emplace(LiveFaceCache::bake(*gpu_, bricks(), world_, settings));
 }
 
 void LiveScene::changed(const voxel::EditResult& result) {
