@@ -47,7 +47,7 @@ void Renderer::createPasses() {
     if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, compositeShape());
     if (displayOn_ && !displayPass_) displayPass_ = std::make_unique<DisplayPass>(ctx);
     if (normalsOn_ && !normalsPass_) normalsPass_ = std::make_unique<NormalsPass>(ctx);
-    if (tracedShadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows());
+    if (tracedShadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows(), compositeShape().cachedSun);
     if (!aoChain(ao_)) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx, voxelThickness(ao_));
     if (!estimatorPass_) estimatorPass_ = std::make_unique<EstimatorPass>(ctx, ao_, bentNormals(ao_, lighting_));
@@ -129,6 +129,7 @@ void Renderer::release() {
     shadowPass_.reset();
     faceCacheAovPass_.reset();
     targets_.release();
+    vk::destroy(ctx_, objectGrids_.buffer);
 }
 
 void Renderer::resize(uint32_t width, uint32_t height) {
@@ -248,7 +249,17 @@ FrameStats Renderer::submit(const Camera& camera, uint32_t frameIndex, const Fra
 }
 
 // The frame, top to bottom; each pass's barriers follow from what it declares.
+void Renderer::refreshObjectGrids() {
+    const uint64_t version = objects_ ? objects_->gridsVersion : 0;
+    if (objectGrids_.buffer.buffer && version == objectGridsVersion_) return;
+    finishFrames();  // no frame in flight may read the grids replaced
+    vk::destroy(ctx_, objectGrids_.buffer);
+    objectGrids_ = uploadObjectGrids(ctx_, objects_ ? std::span<const ObjectGrid>(objects_->grids) : std::span<const ObjectGrid>());
+    objectGridsVersion_ = version;
+}
+
 FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, FrameCopy* copy, bool inFlight) {
+    if (tracedShadows() || (aoChain(ao_) && tracesVoxels(ao_.method))) refreshObjectGrids();
     slotIndex_ = 1 - slotIndex_;
     FrameSlot& s = slot();
     waitFor(s.done);  // the frame two before: its slot's buffers are the CPU's again
@@ -276,7 +287,7 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
         if (softShadows()) shadowHistoryIndex_ = 1 - shadowHistoryIndex_;  // reads the last, writes the other
         pass(cmd, shadowPass_->declare(history), [&] {
             shadowPass_->record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::Shadow), s.traceConstants,
-                                *scene_.occupancy, &image({TargetId::ShadowHistory, history}),
+                                *scene_.occupancy, objectGrids_.buffer, &image({TargetId::ShadowHistory, history}),
                                 &image({TargetId::ShadowHistory, shadowHistoryIndex_}));
         });
     }
@@ -385,7 +396,7 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     });
     pass(cmd, estimatorPass_->declare(), [&] {
         estimatorPass_->record(cmd, image(TargetId::Surface), ao, slot().aoConstants, slot().traceConstants,
-                               scene_.occupancy.get());
+                               scene_.occupancy.get(), &objectGrids_.buffer);
     });
     // With the temporal pass, the final blur is part of it.
     const uint32_t passes = ao_.chain.denoisePasses, blurs = temporal() && passes > 0 ? passes - 1 : passes;
@@ -470,7 +481,7 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
             untimed.timestamp = nullptr;  // not the frame's cost
             pass(cmd, untimed, [&] {
                 bentPass_->record(cmd, image(TargetId::Surface), targets_.ao(), slot().aoConstants,
-                                  slot().traceConstants, scene_.occupancy.get());
+                                  slot().traceConstants, scene_.occupancy.get(), &objectGrids_.buffer);
             });
         }
         const uint32_t passes = ao_.chain.denoisePasses;

@@ -188,6 +188,8 @@ private:
         return ao.enabled && ao.method == AoMethod::Vbao && lighting.ambientFrom == voxel::AmbientSource::Sky;
     }
     void writeTraceConstants(const Camera& camera, uint32_t frameIndex);
+    // Uploads the objects' grids for rays again when they changed (or were never uploaded).
+    void refreshObjectGrids();
     // Ends the command buffer and submits it after `waits`, signalling the timeline's next value.
     void submitCommands(VkCommandBuffer cmd, std::span<const FrameWait> waits = {});
     void waitFor(uint64_t timelineValue);
@@ -215,6 +217,8 @@ private:
     std::vector<voxel::ObjectPose> poses_, lastPoses_;
     std::optional<Camera> lastCamera_;
     std::vector<const GpuScene*> objectScenes_;
+    GpuObjectGrids objectGrids_;      // the objects' voxels for rays, as of objectGridsVersion_
+    uint64_t objectGridsVersion_ = 0;
     bool motion() const { return objects_ && objects_->moving && temporal(); }
     // Temporal state: which history image holds the last output, and the camera
     // and frame index it was rendered with (none after a cut).

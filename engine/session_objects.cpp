@@ -28,6 +28,8 @@ void RenderSession::addObject(voxel::World world, voxel::ObjectDesc desc) {
     if (desc.keys.empty()) desc.keys.emplace_back();
     objects_->scenes.push_back(uploadScene(ctx_, world.mesh(), world.desc()));
     objects_->descs.push_back(desc);
+    objects_->grids.push_back(objectGrid(world));
+    ++objects_->gridsVersion;
     objectWorlds_.push_back(std::move(world));
     poses_.push_back(voxel::objectPose(desc, 0.0));
     if (renderer_) renderer_->objectAdded(poses_.back());
@@ -41,6 +43,8 @@ void RenderSession::removeObject(size_t index) {
     if (renderer_) renderer_->objectRemoved(index);
     objects_->scenes.erase(objects_->scenes.begin() + ptrdiff_t(index));
     objects_->descs.erase(objects_->descs.begin() + ptrdiff_t(index));
+    objects_->grids.erase(objects_->grids.begin() + ptrdiff_t(index));
+    ++objects_->gridsVersion;
     objectWorlds_.erase(objectWorlds_.begin() + ptrdiff_t(index));
     poses_.erase(poses_.begin() + ptrdiff_t(index));
 }

@@ -8,3 +8,4 @@ grotto=${GROTTO:-build/grotto}
 "$grotto" mkworld thin   -o worlds/thin.vdb   --seed 1
 "$grotto" mkworld city   -o worlds/city.vdb   --seed 1
 "$grotto" mkworld sphere -o worlds/sphere.vdb --seed 1
+"$grotto" mkworld houses -o worlds/houses.vdb --seed 1

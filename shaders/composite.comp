@@ -117,7 +117,7 @@ void compositePixel(AoBlock block, ivec2 h, ivec2 offset) {
 
 #ifdef GROTTO_FACE_CACHE
 // A world surface's light from the cache: its AO, its sun visibility (while the
-// cache's sun is the frame's) and, with the sky's ambient, the sky light it holds,
+// cache's sun is the frame's, times the objects' shadow where the shadow pass ran) and, with the sky's ambient, the sky light it holds,
 // blended toward the open sky as the AO strength falls. An object's surface, or a
 // face the cache lacks, is lit as without AO.
 vec3 shadeCached(ivec2 q, uint surface) {
@@ -127,7 +127,7 @@ vec3 shadeCached(ivec2 q, uint surface) {
     bool found;
     vec4 c = cachedLightAt(q, surfaceFace(surface), found);  // AO, sun, horizon and zenith weights
     if (!found) return shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
-    float sunReach = cachedSun ? c.y : sunlit(q);
+    float sunReach = cachedSun ? c.y * sunlit(q) : sunlit(q);  // with the cache's sun, the shadow pass holds the objects' alone
     if (frame.ambient.w < 0.5) return shadeWith(surface, normal, c.x, sunReach, open, 1.0);
     vec3 seen = frame.ambient.rgb * (c.z * frame.skyHorizon.rgb + c.w * frame.skyZenith.rgb);
     return shadeWith(surface, normal, c.x, sunReach, mix(open, seen, frame.aoStrength.x), c.x);

@@ -2,9 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // --ao cache's AOVs for a read-back: the face cache's AO at each full-res pixel
 // (1 for the sky, objects and faces it lacks) and, while its sun is the frame's,
-// its sun visibility into the shadow image: over the world pixels it has where
-// the shadow pass ran (which the other pixels keep), 1 on the others where it did
-// not. Exactly what the composite (composite_cache.comp) lit each pixel with.
+// its sun visibility into the shadow image: over the world pixels it has, times
+// the objects' shadow there where the shadow pass ran (which the other pixels
+// keep), 1 on the others where it did not. Exactly what the composite (composite_cache.comp) lit each pixel with.
 #include "shared/frame.h"
 #include "shared/objects.h"
 #include "shared/quad.h"
@@ -16,7 +16,7 @@ layout(set = 0, binding = 0, std140) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1) uniform usampler2D surfaceTex;
 layout(set = 0, binding = 2) uniform sampler2D depthBuffer;
 layout(set = 0, binding = 3, r32f) uniform writeonly image2D aoOut;
-layout(set = 0, binding = 4, r32f) uniform writeonly image2D sunOut;  // 1x1 without sun shadows
+layout(set = 0, binding = 4, r32f) uniform image2D sunOut;  // 1x1 without sun shadows; the objects' shadow with
 uint faceCacheHashMask() { return frame.faceCache.x; }
 uint faceCacheK() { return frame.faceCache.y; }
 #define GROTTO_FACE_CACHE_BINDING 5
@@ -32,5 +32,5 @@ void main() {
     if (surface != 0u && surfaceObject(surface) == 0u) c = cachedLightAt(q, surfaceFace(surface), found);
     imageStore(aoOut, q, vec4(c.x));
     if (cachedSun && (found || !tracedShadows) && all(lessThan(q, imageSize(sunOut))))
-        imageStore(sunOut, q, vec4(found ? c.y : 1.0));
+        imageStore(sunOut, q, vec4(found ? c.y * (tracedShadows ? imageLoad(sunOut, q).r : 1.0) : 1.0));
 }

@@ -13,11 +13,16 @@
 // frames as the AO does. The history is carried to each pixel from where its
 // surface point was in the history's view, from the pixels there that saw the same
 // face on the same plane; without one the pixel starts afresh.
+//
+// Objects' voxels block the rays as the world's do. With the face cache's sun
+// (objectsOnlyOnWorld), a world surface's rays test the objects alone: the cache
+// holds the world's own shadow, which the composite multiplies by this.
 #include "shared/noise.h"
 #include "shared/objects.h"
 #include "shared/quad.h"
 #include "shared/trace.h"
 
+layout(constant_id = 0) const bool objectsOnlyOnWorld = false;
 layout(local_size_x = GROTTO_TRACE_GROUP, local_size_y = GROTTO_TRACE_GROUP) in;
 layout(set = 0, binding = 0) uniform sampler2D depthBuffer;   // full-res D32, reverse-Z
 layout(set = 0, binding = 1) uniform usampler2D surfaceTex;   // full-res surface ids
@@ -31,6 +36,7 @@ layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D historyOut;
 #else
 #define GROTTO_TRACE_BINDING 4
 #endif
+#define GROTTO_TRACE_OBJECTS
 #include "trace.glsl"
 
 void store(ivec2 q, float lit, float frames, float depth, uint key) {
@@ -116,7 +122,9 @@ void main() {
     float lit = 0.0;
     if (dot(normal, sun) > 0.0) {
         VoxelRayStart start = traceStart(position, world ? surfaceFace(surface) : 6u, normal);
-        lit = traceHit(start, sun, kVoxelRayNever, !world).t >= 0.0 ? 0.0 : 1.0;
+        bool blocked = world && objectsOnlyOnWorld ? traceObjects(start, sun, kVoxelRayNever) >= 0.0
+                                                   : traceHit(start, sun, kVoxelRayNever, !world).t >= 0.0;
+        lit = blocked ? 0.0 : 1.0;
     }
     float frames = 1.0;
 #ifdef GROTTO_SOFT_SUN

@@ -1,6 +1,8 @@
 // Exact rays through the world's solid voxels (layout: shared/trace.h). The
 // includer defines GROTTO_TRACE_BINDING: the trace constants sit at that binding,
-// the tiles, bricks and masks buffers at the next three.
+// the tiles, bricks and masks buffers at the next three. With GROTTO_TRACE_OBJECTS
+// the objects' grids follow at the fourth, and traceHit and traceShortRay stop at
+// objects' voxels too.
 #include "shared/trace.h"
 
 // A storage buffer, not a uniform block: lavapipe (Mesa 22) inlines uniform values
@@ -10,6 +12,9 @@ layout(set = 0, binding = GROTTO_TRACE_BINDING, std430) readonly buffer Trace { 
 layout(set = 0, binding = GROTTO_TRACE_BINDING + 1, std430) readonly buffer Tiles { ivec4 tiles[]; };
 layout(set = 0, binding = GROTTO_TRACE_BINDING + 2, std430) readonly buffer Bricks { uint brickSlots[]; };
 layout(set = 0, binding = GROTTO_TRACE_BINDING + 3, std430) readonly buffer Masks { uint masks[]; };
+#ifdef GROTTO_TRACE_OBJECTS
+layout(set = 0, binding = GROTTO_TRACE_BINDING + 4, std430) readonly buffer ObjectGrids { uint objectBits[]; };
+#endif
 
 // The slot + 1 of a tile, 0 when it holds no solid voxel.
 uint traceTile(ivec3 tile) {
@@ -48,6 +53,53 @@ int voxelRayBlock(ivec3 voxel) {
 }
 
 #include "shared/voxel_ray.h"
+
+#ifdef GROTTO_TRACE_OBJECTS
+// Where a ray from grid point g along gd (cells per unit of t) first enters a solid
+// cell of a grid of `size` cells whose bits start at word `first`, within tMax; -1
+// for none. A plain DDA: objects are small.
+float objectGridHit(vec3 g, vec3 gd, ivec3 size, uint first, float tMax) {
+    vec3 dir = mix(gd, vec3(1e-30), equal(gd, vec3(0.0)));
+    vec3 inv = 1.0 / dir;
+    vec3 t0 = -g * inv, t1 = (vec3(size) - g) * inv;
+    vec3 tNear = min(t0, t1), tFar = max(t0, t1);
+    float enter = max(max(tNear.x, tNear.y), max(tNear.z, 0.0));
+    float leave = min(min(tFar.x, tFar.y), min(tFar.z, tMax));
+    if (enter > leave) return -1.0;
+    bvec3 up = greaterThan(dir, vec3(0.0));
+    ivec3 stepI = mix(ivec3(-1), ivec3(1), up);
+    ivec3 cell = clamp(ivec3(floor(g + gd * enter)), ivec3(0), size - 1);
+    vec3 next = (vec3(cell) + mix(vec3(0.0), vec3(1.0), up) - g) * inv;  // t of the next cell boundary per axis
+    vec3 across = abs(inv);
+    float t = enter;
+    for (int i = 0; i < 3 * 4096; ++i) {
+        uint bit = uint((cell.x * size.y + cell.y) * size.z + cell.z);
+        if (((objectBits[first + (bit >> 5u)] >> (bit & 31u)) & 1u) != 0u) return t;
+        t = min(next.x, min(next.y, next.z));
+        if (t > leave) return -1.0;
+        int axis = next.x == t ? 0 : next.y == t ? 1 : 2;
+        cell[axis] += stepI[axis];
+        next[axis] += across[axis];
+        if (cell[axis] < 0 || cell[axis] >= size[axis]) return -1.0;
+    }
+    return -1.0;
+}
+
+// Where a ray from `start` along the unit direction d (world voxels) first enters an
+// object's solid voxel within tMax voxels; -1 for none.
+float traceObjects(VoxelRayStart start, vec3 d, float tMax) {
+    vec4 p = vec4(vec3(start.voxel - trace.cameraCell.xyz) + start.fraction, 1.0);
+    float nearest = -1.0;
+    for (int k = 0; k < trace.objectCount.x; ++k) {
+        vec4 r0 = trace.objects[k].fromWorld[0], r1 = trace.objects[k].fromWorld[1], r2 = trace.objects[k].fromWorld[2];
+        ivec4 size = trace.objects[k].size;
+        float t = objectGridHit(vec3(dot(r0, p), dot(r1, p), dot(r2, p)), vec3(dot(r0.xyz, d), dot(r1.xyz, d), dot(r2.xyz, d)),
+                                size.xyz, uint(size.w), nearest >= 0.0 ? nearest : tMax);
+        if (t >= 0.0) nearest = t;
+    }
+    return nearest;
+}
+#endif
 
 // From a camera-relative view-space position. A world face (0..5: +X -X +Y -Y +Z -Z)
 // puts the point on its voxel plane, trace.normalOffset in front of it, as the
@@ -101,19 +153,25 @@ float traceThickness(vec3 viewPosition, uint face, float maxT) {
 // of the face); from an object's face it counts as open, as the reference's rule
 // has it.
 VoxelRayHit traceHit(VoxelRayStart start, vec3 d, float tMax, bool openStart) {
-    if (trace.boundsHi.w != 0) {
-        VoxelRayHit none;
-        none.t = -1.0;
-        none.voxel = start.voxel;
-        none.face = -1;
-        return none;
+    VoxelRayHit hit;
+    hit.t = -1.0;
+    hit.voxel = start.voxel;
+    hit.face = -1;
+    if (trace.boundsHi.w == 0) hit = voxelRay(start, d, tMax, trace.boundsLo.xyz, trace.boundsHi.xyz, openStart, 16384);
+#ifdef GROTTO_TRACE_OBJECTS
+    float object = traceObjects(start, d, hit.t >= 0.0 ? hit.t : tMax);
+    if (object >= 0.0) {  // an object's voxel, nearer: no world voxel or face to name
+        hit.t = object;
+        hit.face = -1;
     }
-    return voxelRay(start, d, tMax, trace.boundsLo.xyz, trace.boundsHi.xyz, openStart, 16384);
+#endif
+    return hit;
 }
 
-// traceRay for short rays (AO's few voxels): an incremental DDA, one compare and
-// one add per voxel, with no skipping of empty bricks, which short rays rarely cross.
-float traceShortRay(VoxelRayStart start, vec3 d, float tMax) {
+// traceHit's distance for short rays (AO's few voxels) through the world's voxels:
+// an incremental DDA, one compare and one add per voxel, with no skipping of empty
+// bricks, which short rays rarely cross.
+float traceShortWorldRay(VoxelRayStart start, vec3 d, float tMax) {
     vec3 dir = mix(d, vec3(1e-30), equal(d, vec3(0.0)));
     vec3 invAbs = 1.0 / abs(dir);
     bvec3 up = greaterThan(dir, vec3(0.0));
@@ -140,4 +198,14 @@ float traceShortRay(VoxelRayStart start, vec3 d, float tMax) {
         if (((masks[brick * 16u + (bit >> 5u)] >> (bit & 31u)) & 1u) != 0u) return entered;
     }
     return -1.0;
+}
+
+// traceShortWorldRay, and the objects' voxels where the pass sees them.
+float traceShortRay(VoxelRayStart start, vec3 d, float tMax) {
+    float t = traceShortWorldRay(start, d, tMax);
+#ifdef GROTTO_TRACE_OBJECTS
+    float object = traceObjects(start, d, t >= 0.0 ? t : tMax);
+    if (object >= 0.0) t = object;
+#endif
+    return t;
 }

@@ -25,6 +25,7 @@ layout(constant_id = 3) const uint specRays = 6u;
 
 #include "ao_estimator.glsl"
 #define GROTTO_TRACE_BINDING 4
+#define GROTTO_TRACE_OBJECTS  // objects block the rays as the world does
 #include "trace.glsl"
 
 // The share of rays from the pixel's surface point that stay open within the radius.

@@ -28,4 +28,13 @@ voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov) {
     return c;
 }
 
+voxel::World floorWorld(const std::function<bool(int, int, int)>& extra) {
+    return makeVoxelWorld({-24, -1, -24}, {24, 8, 24},
+                          [&](int x, int y, int z) { return y == -1 || (extra && extra(x, y, z)); });
+}
+
+voxel::World boxWorld(glm::ivec3 size) {
+    return makeVoxelWorld({0, 0, 0}, size - 1, [](int, int, int) { return true; });
+}
+
 }  // namespace grotto::test

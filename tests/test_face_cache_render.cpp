@@ -4,12 +4,16 @@
 //    surface point: the AO and sun AOVs equal the CPU's FaceCacheLookup there;
 //  - with the sky's ambient, a closed room gets no light at all, a room with a
 //    window some, and open ground the sky's light; today's screen-space AO lights
-//    the closed room like the ground.
+//    the closed room like the ground;
+//  - the shipped houses world: its closed room is dark, and its door object,
+//    closed, keeps the sun out of its room (the objects' shadow over the cache's).
 #include "engine/lab/surface_points.h"
 #include "engine/renderer.h"
 #include "engine/scene/live_scene.h"
+#include "engine/session.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
+#include "tests/test_util.h"
 #include "voxel/face_cache_lookup.h"
 
 #include <cmath>
@@ -108,6 +112,46 @@ TEST_F(FaceCacheRender, AClosedRoomGetsNoSkyAndARoomWithAWindowSome) {
     EXPECT_GT(window, 0.02 * ground);
     EXPECT_LT(window, 0.6 * ground);
     EXPECT_GT(closedGtao, 0.2 * ground);  // screen-space AO: lit like outdoors
+}
+
+TEST_F(FaceCacheRender, TheHousesWorldsClosedRoomIsDarkAndItsDoorKeepsTheSunOut) {
+    const voxel::World world = voxel::World::load(test::worldsDir() / "houses.json");
+    AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), "houses.json");
+    ASSERT_EQ(ao.method, AoMethod::Cache) << "the world asks for the cache";
+    const uint32_t w = 64, h = 48;
+    RenderSession session(ctx(), voxel::World(world), ao, voxel::Detail{}, w, h);
+    session.bakeFaceCache();
+    auto view = [&](const std::string& name, double time) {
+        session.setTime(time);
+        const Camera camera = makeCamera(world.camera(name, double(w) / h), w, h);
+        session.renderer().render(camera);
+        return session.renderer().readback(camera, true);
+    };
+    auto meanColour = [](const FrameImages& f) {
+        double sum = 0.0;
+        for (size_t i = 0; i < f.color.size(); i += 4) sum += f.color[i] + f.color[i + 1] + f.color[i + 2];
+        return sum / double(f.color.size() / 4);
+    };
+    auto sunlitWorldPixels = [](const FrameImages& f) {
+        size_t n = 0;
+        for (size_t i = 0; i < f.shadow.size(); ++i) n += f.surfaceIds[i] != 0 && gpu::surfaceObject(f.surfaceIds[i]) == 0 && f.shadow[i] > 0.5f;
+        return n;
+    };
+    // The ambient light alone: no sun.
+    voxel::Lighting lighting = world.desc().lighting;
+    lighting.sunIntensity = 0.0f;
+    session.setLighting(lighting);
+    const double ground = meanColour(view("ground", 0.0)), closed = meanColour(view("closed", 0.0)),
+                 window = meanColour(view("window", 0.0));
+    EXPECT_GT(ground, 0.2);
+    EXPECT_LT(closed, 0.05 * ground);
+    EXPECT_GT(window, closed + 0.01 * ground) << "sky through the window";  // 2.3% measured: a dark room, one window
+    // The sun on the floor inside the door's room: none with the door shut (time 0),
+    // a patch through the doorway with it open (time 1.5).
+    session.setLighting(world.desc().lighting);
+    const size_t shut = sunlitWorldPixels(view("door", 0.0)), open = sunlitWorldPixels(view("door", 1.5));
+    EXPECT_EQ(shut, 0u) << "the door casts the sun's shadow over the cached sun";
+    EXPECT_GT(open, size_t(w * h / 200)) << "the sun through the open doorway";
 }
 
 }  // namespace

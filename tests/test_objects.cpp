@@ -16,17 +16,6 @@ namespace {
 
 using Objects = test::GpuTest;
 
-// A floor whose top is the plane y = -0.5 (plus `extra` voxels baked in).
-voxel::World floorWorld(const std::function<bool(int, int, int)>& extra = {}) {
-    return test::makeVoxelWorld({-24, -1, -24}, {24, 8, 24},
-                                [&](int x, int y, int z) { return y == -1 || (extra && extra(x, y, z)); });
-}
-
-// A box of voxels [0, size) as an object's grid (local units = voxels).
-voxel::World boxWorld(glm::ivec3 size) {
-    return test::makeVoxelWorld({0, 0, 0}, size - 1, [](int, int, int) { return true; });
-}
-
 voxel::ObjectDesc movingDesc(glm::dvec3 pivot) {
     voxel::ObjectDesc d;
     d.pivot = pivot;
@@ -62,9 +51,9 @@ struct MotionCase {
 // reprojection of its surface point: an object's point carried by its two poses,
 // a world point by the cameras alone.
 void checkMotion(vk::Context& ctx, const MotionCase& m) {
-    const voxel::World world = floorWorld();
+    const voxel::World world = test::floorWorld();
     std::vector<voxel::World> boxes;
-    boxes.push_back(boxWorld({4, 3, 5}));
+    boxes.push_back(test::boxWorld({4, 3, 5}));
     voxel::WorldDesc desc = world.desc();
     desc.objects = {movingDesc(m.now.pivot)};
     auto scene = uploadScene(ctx, world.mesh(), world.desc());
@@ -175,9 +164,9 @@ TEST_F(Objects, TurnedObjectCastsAndReceivesAoLikeWorldVoxels) {
     const Camera cam = camera({9, 10, 12}, {1, 0, 0}, 160, 120);
     // A 4x2x6 box as an object turned 90 degrees about +Y is the 6x2x4 box baked
     // into the world at x 0..5, z -3..0: (x, y, z) -> (z, y, -x).
-    const voxel::World floor = floorWorld();
-    const voxel::World baked = floorWorld([](int x, int y, int z) { return x >= 0 && x <= 5 && y >= 0 && y <= 1 && z >= -3 && z <= 0; });
-    const voxel::World box = boxWorld({4, 2, 6});
+    const voxel::World floor = test::floorWorld();
+    const voxel::World baked = test::floorWorld([](int x, int y, int z) { return x >= 0 && x <= 5 && y >= 0 && y <= 1 && z >= -3 && z <= 0; });
+    const voxel::World box = test::boxWorld({4, 2, 6});
     const voxel::ObjectPose turned{glm::dvec3(0.0), glm::angleAxis(glm::radians(90.0), glm::dvec3(0, 1, 0)), glm::dvec3(0.0)};
     const AoRun world = renderAo(ctx(), baked, nullptr, {}, cam);
     const AoRun object = renderAo(ctx(), floor, &box, turned, cam);

@@ -27,7 +27,7 @@ std::vector<VkDescriptorType> bindingTypes(AoMethod method) {
         own.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the thickness atlas
         own.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the bent normals
     }
-    return tracesVoxels(method) ? withTraceBindings(own) : own;
+    return tracesVoxels(method) ? withTraceBindings(own, true) : own;  // the rays see objects
 }
 
 }  // namespace
@@ -49,7 +49,7 @@ PassDecl EstimatorPass::declare() const {
 }
 
 void EstimatorPass::record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants,
-                      const vk::Buffer& traceConstants, const GpuOccupancy* occupancy) {
+                      const vk::Buffer& traceConstants, const GpuOccupancy* occupancy, const vk::Buffer* objectGrids) {
     std::vector<vk::Binding> own = {
         vk::uniformBuffer(constants.buffer), vk::storageImage(ao.depthAtlas.view),
         vk::sampledImage(ctx_.pointSampler, surface.view, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL),
@@ -58,7 +58,7 @@ void EstimatorPass::record(VkCommandBuffer cmd, const vk::Image& surface, const 
         own.push_back(vk::storageImage(ao.thickness.view));
         own.push_back(vk::storageImage(ao.bentNormal.view));
     }
-    pass_.dispatch(cmd, traces_ ? withTraceBindings(std::move(own), traceConstants, *occupancy) : own, ao.half,
+    pass_.dispatch(cmd, traces_ ? withTraceBindings(std::move(own), traceConstants, *occupancy, objectGrids) : own, ao.half,
                    GROTTO_GTAO_GROUP);
 }
 

@@ -22,9 +22,9 @@ public:
     EstimatorPass(vk::Context& ctx, const AoOptions& ao, bool bentNormals = false);
     // Timed under the method's name (aoMethodName).
     PassDecl declare() const;
-    // `traceConstants` and `occupancy` only for the methods that trace voxels.
+    // `traceConstants`, `occupancy` and `objectGrids` only for the methods that trace voxels.
     void record(VkCommandBuffer cmd, const vk::Image& surface, const AoTargets& ao, const vk::Buffer& constants,
-                const vk::Buffer& traceConstants, const GpuOccupancy* occupancy);
+                const vk::Buffer& traceConstants, const GpuOccupancy* occupancy, const vk::Buffer* objectGrids);
 
 private:
     vk::Context& ctx_;

@@ -5,15 +5,16 @@
 
 namespace grotto {
 
-std::vector<VkDescriptorType> withTraceBindings(std::vector<VkDescriptorType> own) {
-    own.insert(own.end(), 4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+std::vector<VkDescriptorType> withTraceBindings(std::vector<VkDescriptorType> own, bool objects) {
+    own.insert(own.end(), objects ? 5 : 4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     return own;
 }
 
 std::vector<vk::Binding> withTraceBindings(std::vector<vk::Binding> own, const vk::Buffer& constants,
-                                           const GpuOccupancy& occupancy) {
+                                           const GpuOccupancy& occupancy, const vk::Buffer* objectGrids) {
     own.insert(own.end(), {vk::storageBuffer(constants.buffer), vk::storageBuffer(occupancy.tiles().buffer),
                            vk::storageBuffer(occupancy.bricks().buffer), vk::storageBuffer(occupancy.masks().buffer)});
+    if (objectGrids) own.push_back(vk::storageBuffer(objectGrids->buffer));
     return own;
 }
 

@@ -19,6 +19,7 @@ std::unique_ptr<SceneObjects> uploadObjects(vk::Context& ctx, std::span<const vo
     objects->descs = desc.objects;
     for (size_t k = 0; k < worlds.size(); ++k) {
         objects->scenes.push_back(uploadScene(ctx, worlds[k].mesh(), desc));
+        objects->grids.push_back(objectGrid(worlds[k]));
         objects->moving |= desc.objects[k].moves();
     }
     return objects;

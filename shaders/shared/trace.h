@@ -15,6 +15,7 @@
 #ifndef GROTTO_SHARED_TRACE_H
 #define GROTTO_SHARED_TRACE_H
 #include "common.h"
+#include "objects.h"
 
 GROTTO_NAMESPACE_BEGIN
 
@@ -30,6 +31,16 @@ GROTTO_INLINE uint occupancyBrickEntry(int bx, int by, int bz) {
 GROTTO_INLINE uint occupancyBit(int x, int y, int z) {
     return (uint(x & 7) << 6) | (uint(y & 7) << 3) | uint(z & 7);
 }
+
+// An object for rays (engine/scene/object_grids.h): its solid voxels are a dense
+// grid of bits, cell (x, y, z) at bit (x * size.y + y) * size.z + z from the grid's
+// first bit, and this frame's pose maps the rays' camera-relative world voxels
+// into the grid's cells.
+struct ObjectTrace {
+    vec4 fromWorld[3];  // rows: cell = fromWorld * (voxels from the camera voxel's corner, 1)
+    ivec4 size;         // xyz: cells per axis; w: the grid's first word in the object grids buffer
+};
+GROTTO_STATIC_ASSERT(sizeof(ObjectTrace) == 64);
 
 struct TraceConstants {
     vec4 ndcToViewMul_Add;   // view xy = ((full-res pixel + 0.5) * mul + add) * view depth
@@ -52,8 +63,12 @@ struct TraceConstants {
     uint frameIndex;                // turns the directions' noise per frame
     uint shadowHistory;             // the history's length cap, in frames
     uint shadowReset;               // bit 0: no usable history; bit 1: objects move (their pixels restart)
+    // Objects block sun rays and voxel AO rays (passes built with GROTTO_TRACE_OBJECTS).
+    ivec4 objectCount;              // x: the entries of `objects` in use
+    ObjectTrace objects[GROTTO_MAX_OBJECTS];
 };
-GROTTO_STATIC_ASSERT(sizeof(TraceConstants) == 2 * 16 + 3 * 16 + 5 * 16 + 16 + 64 + 16 + 16);
+GROTTO_STATIC_ASSERT(sizeof(TraceConstants) ==
+                     2 * 16 + 3 * 16 + 5 * 16 + 16 + 64 + 16 + 16 + 16 + 64 * GROTTO_MAX_OBJECTS);
 
 GROTTO_NAMESPACE_END
 #endif

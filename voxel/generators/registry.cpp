@@ -17,6 +17,7 @@ openvdb::GridBase::Ptr generateThin(const GeneratorOptions& options);
 openvdb::GridBase::Ptr generateCity(const GeneratorOptions& options);
 openvdb::GridBase::Ptr generateSphere(const GeneratorOptions& options);
 openvdb::GridBase::Ptr generateMesh(const GeneratorOptions& options);
+openvdb::GridBase::Ptr generateHouses(const GeneratorOptions& options);
 
 namespace {
 
@@ -48,6 +49,10 @@ GeneratedSize sphereSize(int S) {  // a ball of diameter S, its surface in a ban
     const double r = S / 2.0;
     return {ball(r + kDiagonal), ball(r + 3 + kDiagonal) - ball(r - 3 - kDiagonal), kValueLeafBytes};
 }
+GeneratedSize housesSize(int S) {  // a ground slab, three houses of 12 x 9 x 12 voxels: 3^3 bricks each at most
+    const double B = across(S);
+    return {B * B + 3 * 27, B * B + 3 * 27, kValueLeafBytes};
+}
 GeneratedSize meshSize(int S) {  // whatever the mesh, within a cube of S
     const double B = across(S);
     return {B * B * B, B * B * B, kValueLeafBytes};
@@ -70,6 +75,7 @@ const std::vector<Kind>& kinds() {
         {"city", 1024, 4096, "material", generateCity, citySize},
         {"sphere", 64, 4096, "surface", generateSphere, sphereSize},
         {"mesh", 128, 1024, "surface", generateMesh, meshSize},
+        {"houses", 64, 4096, "material", generateHouses, housesSize},
     };
     return table;
 }

@@ -1,0 +1,70 @@
+#include "engine/scene/object_grids.h"
+
+#include "grotto/error.h"
+#include "voxel/world.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+
+namespace grotto {
+
+ObjectGrid objectGrid(const voxel::World& object) {
+    ObjectGrid g;
+    g.voxelSize = object.voxelSize();
+    g.origin = object.origin();
+    const IndexBox b = object.bounds();
+    if (b.empty()) return g;
+    g.lo = b.min;
+    g.size = b.max - b.min + 1;
+    const uint64_t cells = uint64_t(g.size.x) * uint64_t(g.size.y) * uint64_t(g.size.z);
+    if (cells > (uint64_t(1) << 31))
+        throw Error::internal("objectGrid", "an object's bounds hold more than 2^31 voxels");
+    g.bits.assign(size_t((cells + 31) / 32), 0u);
+    for (const voxel::Brick& brick : object.bricks())
+        for (int x = 0; x < 8; ++x)
+            for (int y = 0; y < 8; ++y)
+                for (int z = 0; z < 8; ++z) {
+                    if (!((brick.occupancy[x] >> (y * 8 + z)) & 1u)) continue;
+                    const glm::ivec3 c = brick.origin + glm::ivec3(x, y, z) - g.lo;
+                    const uint64_t bit = (uint64_t(c.x) * uint64_t(g.size.y) + uint64_t(c.y)) * uint64_t(g.size.z) + uint64_t(c.z);
+                    g.bits[size_t(bit >> 5)] |= 1u << (bit & 31u);
+                }
+    return g;
+}
+
+GpuObjectGrids uploadObjectGrids(vk::Context& ctx, std::span<const ObjectGrid> grids) {
+    GpuObjectGrids out;
+    std::vector<uint32_t> words;
+    for (const ObjectGrid& g : grids) {
+        out.first.push_back(uint32_t(words.size()));
+        words.insert(words.end(), g.bits.begin(), g.bits.end());
+    }
+    if (words.empty()) words.push_back(0u);
+    out.buffer = vk::uploadBuffer(ctx, words.data(), words.size() * sizeof(uint32_t), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+    return out;
+}
+
+void setObjectTraces(gpu::TraceConstants& t, std::span<const ObjectGrid> grids, std::span<const uint32_t> first,
+                     std::span<const voxel::ObjectPose> poses, double voxelSize, glm::dvec3 worldOrigin) {
+    const size_t n = std::min({grids.size(), first.size(), poses.size(), size_t(GROTTO_MAX_OBJECTS)});
+    // The rays' points are voxels from the camera voxel's corner, in the world's voxels.
+    const glm::dvec3 corner = worldOrigin + glm::dvec3(t.cameraCell) * voxelSize;
+    int used = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const ObjectGrid& g = grids[k];
+        if (g.bits.empty()) continue;
+        const voxel::ObjectPose& pose = poses[k];
+        // cell = (toLocal(corner + p * voxelSize) - origin) / objectVoxel - lo
+        const glm::dmat3 toLocal = glm::mat3_cast(glm::conjugate(pose.rotation));
+        const glm::dmat3 a = toLocal * (voxelSize / g.voxelSize);
+        const glm::dvec3 b = (pose.toLocal(corner) - g.origin) / g.voxelSize - glm::dvec3(g.lo);
+        gpu::ObjectTrace& o = t.objects[used++];
+        for (int row = 0; row < 3; ++row)
+            o.fromWorld[row] = glm::vec4(float(a[0][row]), float(a[1][row]), float(a[2][row]), float(b[row]));
+        o.size = glm::ivec4(g.size, int(first[k]));
+    }
+    t.objectCount = glm::ivec4(used, 0, 0, 0);
+}
+
+}  // namespace grotto

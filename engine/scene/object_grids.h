@@ -1,0 +1,43 @@
+#pragma once
+// Objects' solid voxels for rays: each object's as a dense grid of bits over its
+// bounds (objects are small), all in one storage buffer, and each frame the map
+// from the rays' camera-relative world voxels into every grid at the object's
+// pose (shaders/shared/trace.h's ObjectTrace). Sun rays and voxel AO rays stop at
+// objects' voxels through them.
+#include "engine/vk/resources.h"
+#include "shaders/shared/trace.h"
+#include "voxel/object_pose.h"
+
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace grotto {
+namespace voxel { class World; }
+
+struct ObjectGrid {
+    glm::ivec3 lo{0};          // the voxel index of cell (0, 0, 0)
+    glm::ivec3 size{0};        // cells per axis
+    double voxelSize = 1.0;    // the object's own, world units
+    glm::dvec3 origin{0.0};    // object-local world position of voxel corner (0, 0, 0)
+    std::vector<uint32_t> bits;  // cell (x, y, z) at bit (x * size.y + y) * size.z + z
+};
+
+ObjectGrid objectGrid(const voxel::World& object);
+
+// The grids one after another in a storage buffer (one zero word when there are
+// none, so the binding always has a buffer); first[k] is grid k's first word.
+struct GpuObjectGrids {
+    vk::Buffer buffer;
+    std::vector<uint32_t> first;
+};
+GpuObjectGrids uploadObjectGrids(vk::Context& ctx, std::span<const ObjectGrid> grids);
+
+// Fills t.objectCount and t.objects for objects at `poses`, from t.cameraCell (set
+// first, by traceConstants) and the world's voxel size and origin.
+void setObjectTraces(gpu::TraceConstants& t, std::span<const ObjectGrid> grids, std::span<const uint32_t> first,
+                     std::span<const voxel::ObjectPose> poses, double voxelSize, glm::dvec3 worldOrigin);
+
+}  // namespace grotto
