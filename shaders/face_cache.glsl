@@ -8,5 +8,5 @@ layout(set = 0, binding = GROTTO_FACE_CACHE_BINDING + 2, std430) readonly buffer
 
 uvec4 faceCacheBrickEntry(uint slot) { return faceBricks[slot]; }
 uint faceCacheRecordWord(uint word) { return faceRecords[word]; }
-uint faceCacheTexelWord(uint texel) { return faceTexels[texel]; }
+uint faceCacheTexelWord(uint word) { return faceTexels[word]; }
 #include "shared/face_cache.h"

@@ -12,7 +12,9 @@
 // result is averaged into a full-res history, so the penumbra converges over the
 // frames as the AO does. The history is carried to each pixel from where its
 // surface point was in the history's view, from the pixels there that saw the same
-// face on the same plane; without one the pixel starts afresh.
+// face on the same plane; without one the pixel starts afresh. While objects move,
+// their own pixels start afresh every frame, and so do those whose rays toward the
+// sun's disc pass near an object, so a moving shadow leaves no trail.
 //
 // Objects' voxels block the rays as the world's do. With the face cache's sun
 // (objectsOnlyOnWorld), a world surface's rays test the objects alone: the cache
@@ -66,8 +68,8 @@ vec2 pixelOf(vec3 v, vec4 m) { return (v.xy / -v.z - m.zw) / m.xy - 0.5; }
 // surface point was, each only if it saw the same face on the same plane: the
 // nearest pixel alone would, under sub-pixel motion, keep handing each pixel its
 // own history and smear the penumbra along the motion.
-vec2 history(ivec2 q, vec3 position, vec3 worldNormal, uint key, bool object) {
-    if ((trace.shadowReset & 1u) != 0u || (object && (trace.shadowReset & 2u) != 0u)) return vec2(0.0);
+vec2 history(ivec2 q, vec3 position, vec3 worldNormal, uint key, bool nearObject) {
+    if ((trace.shadowReset & 1u) != 0u || (nearObject && (trace.shadowReset & 2u) != 0u)) return vec2(0.0);
     vec3 previous = (trace.currentToPrevious * vec4(position, 1.0)).xyz;
     float previousDepth = -previous.z;
     if (previousDepth <= 0.0) return vec2(0.0);
@@ -120,15 +122,17 @@ void main() {
     sun = coneDirection(sun, trace.sunCosRadius, gtaoNoise(uvec2(q), trace.frameIndex));
 #endif
     float lit = 0.0;
+    VoxelRayStart start = traceStart(position, world ? surfaceFace(surface) : 6u, normal);
     if (dot(normal, sun) > 0.0) {
-        VoxelRayStart start = traceStart(position, world ? surfaceFace(surface) : 6u, normal);
         bool blocked = world && objectsOnlyOnWorld ? traceObjects(start, sun, kVoxelRayNever) >= 0.0
                                                    : traceHit(start, sun, kVoxelRayNever, !world).t >= 0.0;
         lit = blocked ? 0.0 : 1.0;
     }
     float frames = 1.0;
 #ifdef GROTTO_SOFT_SUN
-    vec2 h = history(q, position, normal, key, !world);
+    // Moving objects' pixels restart, and so do the pixels whose sun the objects may shade.
+    bool restart = !world || traceNearObjects(start, trace.sunDirection.xyz, sqrt(1.0 / (trace.sunCosRadius * trace.sunCosRadius) - 1.0));
+    vec2 h = history(q, position, normal, key, restart);
     if (h.y > 0.0) {
         frames = min(h.y + 1.0, float(max(trace.shadowHistory, 1u)));
         lit = mix(h.x, lit, 1.0 / frames);

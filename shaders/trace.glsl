@@ -99,6 +99,34 @@ float traceObjects(VoxelRayStart start, vec3 d, float tMax) {
     }
     return nearest;
 }
+
+// Does the ray from p (voxels from the camera voxel's corner, w 1) along d, or any
+// ray within a cone of half-angle atan(tanSpread) around it, pass within a cell of
+// the grid of `size` cells that the rows r map p into? A slab test against the
+// grid grown by a cell plus the cone's width at the grid's centre.
+bool objectGridNear(vec4 p, vec3 d, vec4 r0, vec4 r1, vec4 r2, vec3 size, float tanSpread) {
+    vec3 g = vec3(dot(r0, p), dot(r1, p), dot(r2, p)), gd = vec3(dot(r0.xyz, d), dot(r1.xyz, d), dot(r2.xyz, d));
+    float grow = 1.0 + length(0.5 * size - g) * tanSpread;
+    vec3 inv = 1.0 / mix(gd, vec3(1e-30), equal(gd, vec3(0.0)));
+    vec3 t0 = (vec3(-grow) - g) * inv, t1 = (size + grow - g) * inv;
+    vec3 tNear = min(t0, t1), tFar = max(t0, t1);
+    return max(max(tNear.x, tNear.y), max(tNear.z, 0.0)) <= min(min(tFar.x, tFar.y), tFar.z);
+}
+
+// Do rays from `start` in that cone around d pass near an object, at its pose in
+// this frame or the one before: where a moving object's shadow is or was.
+bool traceNearObjects(VoxelRayStart start, vec3 d, float tanSpread) {
+    vec4 p = vec4(vec3(start.voxel - trace.cameraCell.xyz) + start.fraction, 1.0);
+    for (int k = 0; k < trace.objectCount.x; ++k) {
+        vec3 size = vec3(trace.objects[k].size.xyz);
+        if (objectGridNear(p, d, trace.objects[k].fromWorld[0], trace.objects[k].fromWorld[1], trace.objects[k].fromWorld[2],
+                           size, tanSpread) ||
+            objectGridNear(p, d, trace.objects[k].previousFromWorld[0], trace.objects[k].previousFromWorld[1],
+                           trace.objects[k].previousFromWorld[2], size, tanSpread))
+            return true;
+    }
+    return false;
+}
 #endif
 
 // From a camera-relative view-space position. A world face (0..5: +X -X +Y -Y +Z -Z)

@@ -17,7 +17,7 @@ thread_local const voxel::FaceCacheArrays* gpuTwin = nullptr;
 }
 inline glm::uvec4 faceCacheBrickEntry(uint32_t slot) { return gpuTwin->bricks[slot]; }
 inline uint32_t faceCacheRecordWord(uint32_t word) { return gpuTwin->records[word]; }
-inline uint32_t faceCacheTexelWord(uint32_t texel) { return gpuTwin->texels[texel]; }
+inline uint32_t faceCacheTexelWord(uint32_t word) { return gpuTwin->texels[word]; }
 inline uint32_t faceCacheHashMask() { return gpuTwin->hashMask(); }
 inline uint32_t faceCacheK() { return gpuTwin->texelsPerSide; }
 }  // namespace grotto::gpu
@@ -270,7 +270,7 @@ TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
                         ++seen[size_t(g)];
                         // The GPU's texels of that face are the CPU's face's, packed.
                         for (uint32_t t = 0; t < k * k; ++t)
-                            ASSERT_EQ(arrays.texels[size_t(g) * k * k + t], packFaceTexel(texels[size_t(c) * k * k + t]));
+                            ASSERT_EQ(gpu::faceCacheTexel(uint32_t(g) * k * k + t), packFaceTexel(texels[size_t(c) * k * k + t]));
                     }
         EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; })) << "each face at one index";
         std::uniform_real_distribution<double> along(0.0, 20.0);
@@ -285,10 +285,10 @@ TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
             const glm::vec4 g = gpu::faceCacheAt(glm::vec3(p - glm::dvec3(origin)), origin, f.dir, found);
             const CachedLight c = lookup.at(p, f.dir);
             ASSERT_TRUE(found);
-            EXPECT_NEAR(g.x, c.ao, 0.6 / 255 + 1e-5);
-            EXPECT_NEAR(g.y, c.sun, 0.6 / 255 + 1e-5);
-            EXPECT_NEAR(g.z, c.skyHorizon, 0.6 / 255 + 1e-5);
-            EXPECT_NEAR(g.w, c.skyZenith, 0.6 / 255 + 1e-5);
+            EXPECT_NEAR(g.x, c.ao, 0.6 * kFaceTexelStep[0] + 1e-5);
+            EXPECT_NEAR(g.y, c.sun, 0.6 * kFaceTexelStep[1] + 1e-5);
+            EXPECT_NEAR(g.z, c.skyHorizon, 0.6 * kFaceTexelStep[2] + 1e-5);
+            EXPECT_NEAR(g.w, c.skyZenith, 0.6 * kFaceTexelStep[3] + 1e-5);
             ++read;
         }
         EXPECT_EQ(read, 4000u);

@@ -7,6 +7,7 @@
 #include "tests/gpu_fixture.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
+#include "voxel/face_cache_layout.h"
 #include "voxel/face_cache_lookup.h"
 
 #include <cstring>
@@ -77,11 +78,11 @@ TEST_F(FaceCacheGpu, ReadsAsTheCpuLookup) {
             ASSERT_EQ(r[2 * i + 1].x > 0.5f, cpuFound) << "query " << i;
             if (!cpuFound) continue;
             ++found;
-            const float q = 0.6f / 255.0f + 2e-5f;
-            ASSERT_NEAR(r[2 * i].x, e.ao, q) << i;
-            ASSERT_NEAR(r[2 * i].y, e.sun, q) << i;
-            ASSERT_NEAR(r[2 * i].z, e.skyHorizon, q) << i;
-            ASSERT_NEAR(r[2 * i].w, e.skyZenith, q) << i;
+            using voxel::kFaceTexelStep;
+            ASSERT_NEAR(r[2 * i].x, e.ao, 0.6 * kFaceTexelStep[0] + 2e-5) << i;
+            ASSERT_NEAR(r[2 * i].y, e.sun, 0.6 * kFaceTexelStep[1] + 2e-5) << i;
+            ASSERT_NEAR(r[2 * i].z, e.skyHorizon, 0.6 * kFaceTexelStep[2] + 2e-5) << i;
+            ASSERT_NEAR(r[2 * i].w, e.skyZenith, 0.6 * kFaceTexelStep[3] + 2e-5) << i;
         }
         EXPECT_GT(found, queries.size() / 2);  // both answers occur
         EXPECT_LT(found, queries.size());

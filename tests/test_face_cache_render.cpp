@@ -14,6 +14,7 @@
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 #include "tests/test_util.h"
+#include "voxel/face_cache_layout.h"
 #include "voxel/face_cache_lookup.h"
 
 #include <cmath>
@@ -61,8 +62,10 @@ TEST_F(FaceCacheRender, EveryPixelReadsTheCacheAtItsOwnPoint) {
         const voxel::CachedLight c = lookup.at((sp.points[i] - o) / world.voxelSize(), dir);
         ASSERT_GT(c.samples, 0u) << "pixel " << sp.pixels[i] << ": a face the cache lacks";
         const uint32_t p = sp.pixels[i];
-        const double tolerance = 0.6 / 255.0 + 1e-4;  // the texels' 8 bits
-        if (std::abs(f.ao[p] - c.ao) > tolerance || std::abs(f.shadow[p] - c.sun) > tolerance) ++off;
+        // The texels' packed steps (AO 8 bits, sun 5).
+        if (std::abs(f.ao[p] - c.ao) > 0.6 * voxel::kFaceTexelStep[0] + 1e-4 ||
+            std::abs(f.shadow[p] - c.sun) > 0.6 * voxel::kFaceTexelStep[1] + 1e-4)
+            ++off;
         occluded += c.ao < 0.8;
         shadowed += c.sun < 0.5;
     }

@@ -4,7 +4,8 @@
 //    box's (each traced in its own space), with the AO chain's traced shadows and
 //    with --ao cache, whose world surfaces multiply the cached sun by the objects';
 //  - voxel AO under an object equals voxel AO under the same voxels baked into the
-//    world, so the rays see the object as they see the world.
+//    world, so the rays see the object as they see the world;
+//  - under a soft sun, a moving object's shadow leaves no trail in the history.
 #include "engine/lab/surface_points.h"
 #include "engine/renderer.h"
 #include "engine/scene/live_scene.h"
@@ -145,6 +146,46 @@ TEST_F(ObjectShadows, VoxelAoRaysSeeAnObjectAsTheWorldsOwnVoxels) {
     ASSERT_GT(n, size_t(w * h / 2));
     EXPECT_LT(differ / double(n), 1e-3) << "the object's voxels and the world's occlude alike";
     EXPECT_GT(darkened / double(n), 0.01) << "the object darkens the floor around it";
+}
+
+TEST_F(ObjectShadows, AMovingObjectsSoftShadowLeavesNoTrail) {
+    const voxel::World world = test::floorWorld();
+    const voxel::World box = test::boxWorld({3, 5, 4});
+    auto scene = uploadScene(ctx(), world);
+    const voxel::ObjectPose here = kTurned, there{kTurned.position + glm::dvec3(-14.0, 0.0, 12.0), kTurned.rotation, kTurned.pivot};
+    voxel::WorldDesc desc = world.desc();
+    desc.objects.resize(1);
+    desc.objects[0].pivot = here.pivot;
+    desc.objects[0].keys = {{0.0, here.position, here.rotation}, {1.0, there.position, there.rotation}};  // it moves
+    std::vector<voxel::World> boxes;
+    boxes.push_back(voxel::World(box));
+    const auto objects = uploadObjects(ctx(), boxes, desc);
+    voxel::Lighting lighting = world.desc().lighting;
+    lighting.sunAngle = 4.0f;
+    const uint32_t w = 96, h = 72;
+    const Camera camera = makeCamera(test::lookAt({-11.0, 14.0, -9.0}, {3.0, 0.0, 3.0}, 60.0), w, h);
+    Renderer renderer(ctx(), *scene, lighting, AoOptions{}, w, h, objects.get());
+    renderer.setObjectPoses(std::vector<voxel::ObjectPose>{here});
+    for (uint32_t frame = 1; frame <= 12; ++frame) renderer.render(camera, frame);
+    const FrameImages before = renderer.readback(camera, true);
+    renderer.setObjectPoses(std::vector<voxel::ObjectPose>{there});
+    renderer.render(camera, 13);
+    const FrameImages after = renderer.readback(camera, true);
+    // Floor pixels deep in the shadow before, that the box does not shade from where it went.
+    const voxel::PosedWorld posed{&box, there};
+    const SurfacePoints sp = surfacePoints(after, camera, world, std::span<const voxel::PosedWorld>(&posed, 1));
+    const glm::dvec3 sun = glm::normalize(glm::dvec3(lighting.sunDirection));
+    double sum = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < sp.points.size(); ++i) {
+        const uint32_t p = sp.pixels[i];
+        if (gpu::surfaceObject(after.surfaceIds[p]) != 0 || before.shadow[p] > 0.05f) continue;
+        if (sunBlocked(world, box, there, sp.points[i], sp.normals[i], sun)) continue;
+        sum += after.shadow[p];
+        ++n;
+    }
+    ASSERT_GT(n, 100u) << "pixels the box left";
+    EXPECT_GT(sum / double(n), 0.95) << "the shadow where the box was fades at once, not over the history";
 }
 
 }  // namespace

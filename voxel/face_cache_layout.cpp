@@ -13,7 +13,14 @@ namespace grotto::voxel {
 
 namespace {
 
-uint32_t unorm8(double v) { return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
+uint32_t unorm(double v, uint32_t bits) {
+    const double top = double((1u << bits) - 1u);
+    return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * top));
+}
+
+// The bricks' hash table: a power of two, at most three quarters full, so a probe
+// for a brick that is absent ends after a few slots.
+size_t hashSlots(size_t bricks) { return std::bit_ceil(std::max<size_t>((4 * bricks + 2) / 3, 2)); }
 
 struct BrickLess {
     bool operator()(const glm::ivec3& a, const glm::ivec3& b) const {
@@ -25,7 +32,7 @@ struct BrickLess {
 
 uint32_t packFaceTexel(const FaceTexel& t) {
     const double n = t.samples ? double(t.samples) : 1.0;
-    return unorm8(t.ao()) | unorm8(t.sun()) << 8 | unorm8(t.skyHorizon / n) << 16 | unorm8(t.skyZenith / n) << 24;
+    return unorm(t.ao(), 8) | unorm(t.sun(), 5) << 8 | unorm(t.skyHorizon / n, 5) << 13 | unorm(t.skyZenith / n, 6) << 18;
 }
 
 size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide) {
@@ -38,8 +45,9 @@ size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerS
 }
 
 size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide) {
-    const size_t slots = std::bit_ceil(std::max<size_t>(2 * count.bricks, 2));
-    return slots * 16 + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + count.faces * texelsPerSide * texelsPerSide * 4;
+    const size_t slots = hashSlots(count.bricks);
+    const size_t texelWords = (count.faces * texelsPerSide * texelsPerSide * GROTTO_FACE_TEXEL_BYTES + 3) / 4;
+    return slots * 16 + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + texelWords * 4;
 }
 
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
@@ -54,9 +62,14 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
     }
     FaceCacheArrays out;
     out.texelsPerSide = texelsPerSide;
-    out.bricks.assign(std::bit_ceil(std::max<size_t>(2 * bricks.size(), 2)), glm::uvec4(0));
+    out.bricks.assign(hashSlots(bricks.size()), glm::uvec4(0));
     out.records.reserve(bricks.size() * GROTTO_FACE_RECORD_WORDS);
-    out.texels.reserve(texels.size());
+    out.texels.assign((texels.size() * GROTTO_FACE_TEXEL_BYTES + 3) / 4, 0u);
+    size_t byte = 0;  // where the next texel goes
+    auto append = [&](uint32_t bits) {
+        for (uint32_t b = 0; b < GROTTO_FACE_TEXEL_BYTES; ++b, ++byte)
+            out.texels[byte >> 2] |= ((bits >> (8 * b)) & 255u) << (8 * (byte & 3));
+    };
     uint32_t record = 0, next = 0;
     for (auto& [brick, entries] : bricks) {
         std::sort(entries.begin(), entries.end(),
@@ -67,7 +80,7 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
             entries.begin(), entries.end(), [d](const Entry& e) { return e.dir < d; }));
         for (const Entry& e : entries) {
             out.records[base + e.dir * 16 + (e.bit >> 5)] |= 1u << (e.bit & 31u);
-            for (uint32_t t = 0; t < perFace; ++t) out.texels.push_back(packFaceTexel(texels[size_t(e.face) * perFace + t]));
+            for (uint32_t t = 0; t < perFace; ++t) append(packFaceTexel(texels[size_t(e.face) * perFace + t]));
         }
         next += uint32_t(entries.size());
         uint32_t slot = gpu::occupancyHash(brick.x, brick.y, brick.z) & out.hashMask();

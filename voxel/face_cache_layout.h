@@ -1,7 +1,7 @@
 #pragma once
 // The face cache laid out as the GPU reads it (shaders/shared/face_cache.h): a
 // hash table of the bricks with exposed faces, a record of masks and bases per
-// brick, and one packed uint per texel.
+// brick, and 3 packed bytes per texel.
 #include "voxel/face_cache.h"
 
 #include <glm/vec4.hpp>
@@ -13,16 +13,20 @@
 namespace grotto::voxel {
 
 struct FaceCacheArrays {
-    std::vector<glm::uvec4> bricks;  // power-of-two size, at most half full
+    std::vector<glm::uvec4> bricks;  // power-of-two size, at most three quarters full
     std::vector<uint32_t> records;   // GROTTO_FACE_RECORD_WORDS per brick
-    std::vector<uint32_t> texels;    // packed, faces in record order
+    std::vector<uint32_t> texels;    // 3 bytes a texel one after another, faces in record order
     uint32_t texelsPerSide = 0;
     uint32_t hashMask() const { return uint32_t(bricks.size() - 1); }
     size_t bytes() const { return bricks.size() * 16 + records.size() * 4 + texels.size() * 4; }
 };
 
-// AO, sun, horizon and zenith weights in [0, 1] as one uint of four 8-bit unorms.
+// AO, sun, horizon and zenith weights in [0, 1] as 24 bits: unorms of 8, 5, 5 and
+// 6 bits from bit 0 up (shaders/shared/face_cache.h).
 uint32_t packFaceTexel(const FaceTexel& t);
+// The step between packed values of each part (AO, sun, horizon, zenith): what the
+// GPU's read of a texel may be off by is half of it.
+inline constexpr double kFaceTexelStep[4] = {1.0 / 255, 1.0 / 31, 1.0 / 31, 1.0 / 63};
 
 // `faces` as exposedFaces lists them, `texels` k x k per face in that order.
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,

@@ -54,7 +54,9 @@ void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
     const double radius = ao_.enabled ? ao_.estimator.radius : 1.0;
     gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy, scene_.voxelSize, scene_.worldOrigin,
                                            lighting_.sunDirection, ao_.estimator.rays, radius);
-    if (objects_) setObjectTraces(t, objects_->grids, objectGrids_.first, poses_, scene_.voxelSize, scene_.worldOrigin);
+    if (objects_)
+        setObjectTraces(t, objects_->grids, objectGrids_.first, poses_, lastCamera_ ? lastPoses_ : poses_, scene_.voxelSize,
+                        scene_.worldOrigin);
     t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
     t.frameIndex = frameIndex;
     if (softShadows()) {

@@ -45,8 +45,21 @@ GpuObjectGrids uploadObjectGrids(vk::Context& ctx, std::span<const ObjectGrid> g
     return out;
 }
 
+namespace {
+
+// The rows mapping the rays' points (world voxels from `corner`) into grid g's
+// cells at `pose`: cell = (toLocal(corner + p * voxelSize) - origin) / objectVoxel - lo.
+void gridRows(glm::vec4 rows[3], const ObjectGrid& g, const voxel::ObjectPose& pose, glm::dvec3 corner, double voxelSize) {
+    const glm::dmat3 a = glm::mat3_cast(glm::conjugate(pose.rotation)) * (voxelSize / g.voxelSize);
+    const glm::dvec3 b = (pose.toLocal(corner) - g.origin) / g.voxelSize - glm::dvec3(g.lo);
+    for (int row = 0; row < 3; ++row) rows[row] = glm::vec4(float(a[0][row]), float(a[1][row]), float(a[2][row]), float(b[row]));
+}
+
+}  // namespace
+
 void setObjectTraces(gpu::TraceConstants& t, std::span<const ObjectGrid> grids, std::span<const uint32_t> first,
-                     std::span<const voxel::ObjectPose> poses, double voxelSize, glm::dvec3 worldOrigin) {
+                     std::span<const voxel::ObjectPose> poses, std::span<const voxel::ObjectPose> previous,
+                     double voxelSize, glm::dvec3 worldOrigin) {
     const size_t n = std::min({grids.size(), first.size(), poses.size(), size_t(GROTTO_MAX_OBJECTS)});
     // The rays' points are voxels from the camera voxel's corner, in the world's voxels.
     const glm::dvec3 corner = worldOrigin + glm::dvec3(t.cameraCell) * voxelSize;
@@ -54,14 +67,9 @@ void setObjectTraces(gpu::TraceConstants& t, std::span<const ObjectGrid> grids, 
     for (size_t k = 0; k < n; ++k) {
         const ObjectGrid& g = grids[k];
         if (g.bits.empty()) continue;
-        const voxel::ObjectPose& pose = poses[k];
-        // cell = (toLocal(corner + p * voxelSize) - origin) / objectVoxel - lo
-        const glm::dmat3 toLocal = glm::mat3_cast(glm::conjugate(pose.rotation));
-        const glm::dmat3 a = toLocal * (voxelSize / g.voxelSize);
-        const glm::dvec3 b = (pose.toLocal(corner) - g.origin) / g.voxelSize - glm::dvec3(g.lo);
         gpu::ObjectTrace& o = t.objects[used++];
-        for (int row = 0; row < 3; ++row)
-            o.fromWorld[row] = glm::vec4(float(a[0][row]), float(a[1][row]), float(a[2][row]), float(b[row]));
+        gridRows(o.fromWorld, g, poses[k], corner, voxelSize);
+        gridRows(o.previousFromWorld, g, k < previous.size() ? previous[k] : poses[k], corner, voxelSize);
         o.size = glm::ivec4(g.size, int(first[k]));
     }
     t.objectCount = glm::ivec4(used, 0, 0, 0);

@@ -35,9 +35,11 @@ struct GpuObjectGrids {
 };
 GpuObjectGrids uploadObjectGrids(vk::Context& ctx, std::span<const ObjectGrid> grids);
 
-// Fills t.objectCount and t.objects for objects at `poses`, from t.cameraCell (set
-// first, by traceConstants) and the world's voxel size and origin.
+// Fills t.objectCount and t.objects for objects at `poses` (and `previous`, their
+// poses in the frame before), from t.cameraCell (set first, by traceConstants) and
+// the world's voxel size and origin.
 void setObjectTraces(gpu::TraceConstants& t, std::span<const ObjectGrid> grids, std::span<const uint32_t> first,
-                     std::span<const voxel::ObjectPose> poses, double voxelSize, glm::dvec3 worldOrigin);
+                     std::span<const voxel::ObjectPose> poses, std::span<const voxel::ObjectPose> previous,
+                     double voxelSize, glm::dvec3 worldOrigin);
 
 }  // namespace grotto

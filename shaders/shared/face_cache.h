@@ -8,11 +8,13 @@
 //            occupancyBit(voxel) set where that voxel's face looking d is exposed),
 //            then 6 bases: the index of the direction's first face;
 //   texels:  k x k per face (faces in record, direction, bit order; texel j * k + i),
-//            one uint each: AO, sun visibility, and the horizon and zenith sky
-//            weights per ray, 8-bit unorm from the low byte up.
+//            3 bytes each, packed one after another into uints (texel t at bytes
+//            3t .. 3t + 2, little-endian): from bit 0 up, AO as an 8-bit unorm,
+//            sun visibility as 5 bits, and the horizon and zenith sky weights per
+//            ray as 5 and 6 bits (zenith light is most of an open floor's).
 // The includer defines, before including it (or GROTTO_FACE_CACHE_LAYOUT_ONLY):
 //   uvec4 faceCacheBrickEntry(uint slot); uint faceCacheRecordWord(uint word);
-//   uint faceCacheTexelWord(uint texel); uint faceCacheHashMask(); uint faceCacheK();
+//   uint faceCacheTexelWord(uint word); uint faceCacheHashMask(); uint faceCacheK();
 #ifndef GROTTO_SHARED_FACE_CACHE_H
 #define GROTTO_SHARED_FACE_CACHE_H
 #include "common.h"
@@ -36,6 +38,7 @@ using std::floor;
 #endif
 
 #define GROTTO_FACE_RECORD_WORDS 102u  // 6 x 16 mask words, then 6 bases
+#define GROTTO_FACE_TEXEL_BYTES 3u
 #ifndef GROTTO_FACE_CACHE_LAYOUT_ONLY  // the layout's builder needs the constants alone
 
 // The record of the brick holding `cell`, + 1; 0 when it has no exposed face.
@@ -71,9 +74,17 @@ GROTTO_FUNCTION int faceCacheFace(ivec3 cell, uint dir) {
 // Floor division by k > 0.
 GROTTO_FUNCTION int faceCacheFloorDiv(int i, int k) { return i >= 0 ? i / k : -((-i + k - 1) / k); }
 
-GROTTO_FUNCTION vec4 faceCacheUnpack(uint packed) {
-    return vec4(float(packed & 255u), float((packed >> 8u) & 255u), float((packed >> 16u) & 255u),
-                float(packed >> 24u)) / 255.0f;
+// Texel `texel`'s 24 bits.
+GROTTO_FUNCTION uint faceCacheTexel(uint texel) {
+    uint byte = GROTTO_FACE_TEXEL_BYTES * texel, shift = (byte & 3u) * 8u;
+    uint bits = faceCacheTexelWord(byte >> 2u) >> shift;
+    if (shift > 8u) bits |= faceCacheTexelWord((byte >> 2u) + 1u) << (32u - shift);
+    return bits & 0xFFFFFFu;
+}
+
+GROTTO_FUNCTION vec4 faceCacheUnpack(uint bits) {
+    return vec4(float(bits & 255u) / 255.0f, float((bits >> 8u) & 31u) / 31.0f, float((bits >> 13u) & 31u) / 31.0f,
+                float(bits >> 18u) / 63.0f);
 }
 
 // AO, sun visibility and the two sky weights at point `p` (voxel index units,
@@ -124,7 +135,7 @@ GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool
         int I = I0 + (c & 1), J = J0 + (c >> 1);
         int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
         uint texel = uint(faces[c]) * uint(k * k) + uint(J - cv * k) * uint(k) + uint(I - cu * k);
-        sum += w * faceCacheUnpack(faceCacheTexelWord(texel));
+        sum += w * faceCacheUnpack(faceCacheTexel(texel));
         weight += w;
     }
     found = weight > 0.0f;

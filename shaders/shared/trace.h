@@ -37,10 +37,11 @@ GROTTO_INLINE uint occupancyBit(int x, int y, int z) {
 // first bit, and this frame's pose maps the rays' camera-relative world voxels
 // into the grid's cells.
 struct ObjectTrace {
-    vec4 fromWorld[3];  // rows: cell = fromWorld * (voxels from the camera voxel's corner, 1)
-    ivec4 size;         // xyz: cells per axis; w: the grid's first word in the object grids buffer
+    vec4 fromWorld[3];          // rows: cell = fromWorld * (voxels from the camera voxel's corner, 1)
+    vec4 previousFromWorld[3];  // the same at the object's pose in the frame before
+    ivec4 size;                 // xyz: cells per axis; w: the grid's first word in the object grids buffer
 };
-GROTTO_STATIC_ASSERT(sizeof(ObjectTrace) == 64);
+GROTTO_STATIC_ASSERT(sizeof(ObjectTrace) == 112);
 
 struct TraceConstants {
     vec4 ndcToViewMul_Add;   // view xy = ((full-res pixel + 0.5) * mul + add) * view depth
@@ -68,7 +69,7 @@ struct TraceConstants {
     ObjectTrace objects[GROTTO_MAX_OBJECTS];
 };
 GROTTO_STATIC_ASSERT(sizeof(TraceConstants) ==
-                     2 * 16 + 3 * 16 + 5 * 16 + 16 + 64 + 16 + 16 + 16 + 64 * GROTTO_MAX_OBJECTS);
+                     2 * 16 + 3 * 16 + 5 * 16 + 16 + 64 + 16 + 16 + 16 + 112 * GROTTO_MAX_OBJECTS);
 
 GROTTO_NAMESPACE_END
 #endif
