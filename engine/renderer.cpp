@@ -249,15 +249,6 @@ FrameStats Renderer::submit(const Camera& camera, uint32_t frameIndex, const Fra
 }
 
 // The frame, top to bottom; each pass's barriers follow from what it declares.
-void Renderer::refreshObjectGrids() {
-    const uint64_t version = objects_ ? objects_->gridsVersion : 0;
-    if (objectGrids_.buffer.buffer && version == objectGridsVersion_) return;
-    finishFrames();  // no frame in flight may read the grids replaced
-    vk::destroy(ctx_, objectGrids_.buffer);
-    objectGrids_ = uploadObjectGrids(ctx_, objects_ ? std::span<const ObjectGrid>(objects_->grids) : std::span<const ObjectGrid>());
-    objectGridsVersion_ = version;
-}
-
 FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, FrameCopy* copy, bool inFlight) {
     if (tracedShadows() || (aoChain(ao_) && tracesVoxels(ao_.method))) refreshObjectGrids();
     slotIndex_ = 1 - slotIndex_;

@@ -49,6 +49,15 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
     }
 }
 
+void Renderer::refreshObjectGrids() {
+    const uint64_t version = objects_ ? objects_->gridsVersion : 0;
+    if (objectGrids_.buffer.buffer && version == objectGridsVersion_) return;
+    finishFrames();  // no frame in flight may read the grids replaced
+    vk::destroy(ctx_, objectGrids_.buffer);
+    objectGrids_ = uploadObjectGrids(ctx_, objects_ ? std::span<const ObjectGrid>(objects_->grids) : std::span<const ObjectGrid>());
+    objectGridsVersion_ = version;
+}
+
 void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
     if (!scene_.occupancy) return;
     const double radius = ao_.enabled ? ao_.estimator.radius : 1.0;
