@@ -17,24 +17,27 @@
 namespace grotto::app {
 namespace {
 
-// Frames to accumulate: --accumulate, else the temporal history (a converged
-// still), else 1 where there is no temporal pass to average in. The history is
-// raised to --accumulate where that is longer, so every frame counts. Asking
-// for more than one frame without a temporal pass is refused: it would render
-// the same single-frame estimate, whatever the flag says.
-uint32_t framesToAccumulate(const std::optional<int>& requested, const AoFlags& flags, AoOptions& ao) {
+// Frames to accumulate: --accumulate, else the history (a converged still) of
+// the temporal pass or, with --ao cache, of the objects' light (16 frames unless
+// set), else 1 where there is nothing to average in. The history is raised to
+// --accumulate where that is longer, so every frame counts. Asking for more than
+// one frame without one is refused: it would render the same single-frame
+// estimate, whatever the flag says.
+uint32_t framesToAccumulate(const std::optional<int>& requested, const AoFlags& flags, AoOptions& ao, bool objects) {
     const bool temporal = aoChain(ao) && ao.chain.temporalHistory > 0;
-    if (!requested) return temporal ? ao.chain.temporalHistory : 1;
+    const bool objectLight = faceCached(ao) && objects;
+    if (!requested)
+        return temporal ? ao.chain.temporalHistory : objectLight ? std::max(ao.chain.temporalHistory, kDefaultTemporalHistory) : 1;
     const uint32_t frames = uint32_t(*requested);
-    if (frames > 1 && !temporal) {
+    if (frames > 1 && !temporal && !objectLight) {
         const std::string off = !ao.enabled                  ? "AO is off"
-                                : faceCached(ao)             ? "--ao cache is converged on the faces already"
+                                : faceCached(ao)             ? "--ao cache is converged on the faces already and the world has no objects"
                                 : flags.set.temporalHistory ? "--temporal 0 turns the temporal pass off"
                                                              : "the world's ao.temporal_history is 0";
         throw Error("--accumulate", std::to_string(frames) + " frames have nothing to average: " + off,
                     "accepted without the temporal pass: 1, or leave --accumulate out");
     }
-    if (temporal) ao.chain.temporalHistory = std::max(ao.chain.temporalHistory, frames);
+    if (temporal || objectLight) ao.chain.temporalHistory = std::max(ao.chain.temporalHistory, frames);
     return frames;
 }
 
@@ -62,9 +65,9 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("--time", args->time, "Seconds: where the world's objects are (their keys)")
         ->capture_default_str()->check(finiteRange(0.0, 1e9));
     cmd->add_option("--accumulate", args->accumulate,
-                    "Frames of the still camera the temporal pass averages, 1 to 64 (default: the AO's temporal "
-                    "history, 16 unless set, for converged AO; 1: the single-frame estimate; without a temporal "
-                    "pass, 1 frame)")
+                    "Frames of the still camera the temporal pass (or with --ao cache, objects' light) averages, "
+                    "1 to 64 (default: the AO's temporal history, 16 unless set, for converged AO; 1: the "
+                    "single-frame estimate; with neither, 1 frame)")
         ->check(wholeRange(1, 64));
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
@@ -79,7 +82,7 @@ void addRenderCommand(CLI::App& app) {
         voxel::World world = voxel::World::load(args->world);
         const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         AoOptions ao = resolveAo(world, args->ao);
-        const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao);
+        const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao, !world.desc().objects.empty());
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
         requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");

@@ -1,14 +1,14 @@
 // The whole frame on one screen (recordFrame): G-buffer (with occlusion culling, its
-// Hi-Z and, in render(), a mid-frame submit), sun shadows, then with AO the depth
-// prefilter, the estimator, spatial denoise and temporal accumulation at AO
-// resolution, then the composite (which upsamples the AO itself), the display image
-// and the read-backs. Each pass declares what it reads and writes; the barriers
-// follow from that. render() waits for its frame; submit() keeps two in flight.
+// Hi-Z and, in render(), a mid-frame submit), sun shadows, with the face cache the
+// objects' light, then with AO the depth prefilter, the estimator, spatial denoise
+// and temporal accumulation at AO resolution, then the composite (which upsamples
+// the AO itself), the display image and the read-backs (frame/renderer_copy.cpp).
+// Each pass declares what it reads and writes; the barriers follow from that.
+// render() waits for its frame; submit() keeps two in flight.
 #include "engine/renderer.h"
 
 #include "grotto/error.h"
 #include "engine/frame/render_memory.h"
-#include "engine/vk/readback.h"
 #include "voxel/settings_table.h"
 
 #include <chrono>
@@ -48,6 +48,7 @@ void Renderer::createPasses() {
     if (displayOn_ && !displayPass_) displayPass_ = std::make_unique<DisplayPass>(ctx);
     if (normalsOn_ && !normalsPass_) normalsPass_ = std::make_unique<NormalsPass>(ctx);
     if (tracedShadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows(), compositeShape().cachedSun);
+    if (objectLight() && !objectLightPass_) objectLightPass_ = std::make_unique<ObjectLightPass>(ctx);
     if (!aoChain(ao_)) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx, voxelThickness(ao_));
     if (!estimatorPass_) estimatorPass_ = std::make_unique<EstimatorPass>(ctx, ao_, bentNormals(ao_, lighting_));
@@ -66,14 +67,15 @@ bool Renderer::cachedSun() const {
 
 CompositeShape Renderer::compositeShape() const {
     return {.withAo = aoChain(ao_), .withShadow = tracedShadows(), .withBentNormals = bentNormals(ao_, lighting_),
-            .faceCache = faceCached(ao_), .cachedSun = shadows() && cachedSun()};
+            .faceCache = faceCached(ao_), .cachedSun = shadows() && cachedSun(), .objectLight = objectLight()};
 }
 
 FrameShape Renderer::shapeFor(uint32_t width, uint32_t height, const AoOptions& ao,
                              const voxel::Lighting& lighting) const {
     const bool shadows = lighting.sunShadows && scene_.occupancy;
     return {.width = width, .height = height, .ao = ao, .shadows = shadows,
-            .softShadows = shadows && lighting.sunAngle > 0.0f, .movingObjects = objects_ && objects_->moving,
+            .softShadows = shadows && lighting.sunAngle > 0.0f, .objectLight = faceCached(ao) && objects_,
+            .movingObjects = objects_ && objects_->moving,
             .display = displayOn_, .normals = normalsOn_, .aoAov = aoAov_};
 }
 
@@ -82,7 +84,7 @@ void Renderer::updateTargets(const FrameShape& shape) {
     finishFrames();  // no GPU work of ours may use the targets freed
     if (!targets_.update(shape)) return;
     historyIndex_ = 0;
-    shadowCamera_.reset();
+    surfaceCamera_.reset();
 }
 
 void Renderer::setDisplayImage(bool on) { setGameImage(displayOn_, on, "display image"); }
@@ -127,6 +129,7 @@ void Renderer::release() {
     displayPass_.reset();
     normalsPass_.reset();
     shadowPass_.reset();
+    objectLightPass_.reset();
     faceCacheAovPass_.reset();
     targets_.release();
     vk::destroy(ctx_, objectGrids_.buffer);
@@ -145,7 +148,7 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
     const voxel::Lighting old = std::exchange(lighting_, lighting);
     const bool sameAmbient = old.ambientFrom == lighting_.ambientFrom;
     if (hadShadows == shadows() && wasSoft == softShadows() && sameAmbient && wasComposite == compositeShape()) {  // uniforms only
-        if (old.sunDirection != lighting_.sunDirection || old.sunAngle != lighting_.sunAngle) shadowCamera_.reset();
+        if (old.sunDirection != lighting_.sunDirection || old.sunAngle != lighting_.sunAngle) surfaceCamera_.reset();
         return;
     }
     try {  // a soft sun's history may not fit
@@ -192,7 +195,10 @@ void Renderer::setAo(const AoOptions& ao) {
         compositePass_.reset();
         faceCacheAovPass_.reset();
     }
-    if (chain) shadowPass_.reset();  // the cache may give the sun's shadows
+    if (chain) {
+        shadowPass_.reset();  // the cache may give the sun's shadows
+        objectLightPass_.reset();
+    }
     if (chain || estimator || bent) estimatorPass_.reset();
     bentPass_.reset();
     if (voxelThickness(old) != voxelThickness(ao_)) prefilterPass_.reset();
@@ -250,7 +256,7 @@ FrameStats Renderer::submit(const Camera& camera, uint32_t frameIndex, const Fra
 
 // The frame, top to bottom; each pass's barriers follow from what it declares.
 FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, FrameCopy* copy, bool inFlight) {
-    if (tracedShadows() || (aoChain(ao_) && tracesVoxels(ao_.method))) refreshObjectGrids();
+    if (tracedShadows() || objectLight() || (aoChain(ao_) && tracesVoxels(ao_.method))) refreshObjectGrids();
     slotIndex_ = 1 - slotIndex_;
     FrameSlot& s = slot();
     waitFor(s.done);  // the frame two before: its slot's buffers are the CPU's again
@@ -273,22 +279,28 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
     scene_.recordUploads(cmd, s.staging);  // edits since the last frame, with their barrier to vertex input
     FrameStats stats = inFlight ? recordGBufferInFlight(cmd, camera) : recordGBuffer(cmd, camera);
     stats.passMs = std::move(unread);
-    if (tracedShadows()) {
-        const uint32_t history = shadowHistoryIndex_;
-        if (softShadows()) shadowHistoryIndex_ = 1 - shadowHistoryIndex_;  // reads the last, writes the other
+    const uint32_t history = surfaceHistoryIndex_;
+    if (softShadows() || objectLight()) surfaceHistoryIndex_ = 1 - surfaceHistoryIndex_;  // reads the last, writes the other
+    if (tracedShadows())
         pass(cmd, shadowPass_->declare(history), [&] {
             shadowPass_->record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::Shadow), s.traceConstants,
                                 *scene_.occupancy, objectGrids_.buffer, &image({TargetId::ShadowHistory, history}),
-                                &image({TargetId::ShadowHistory, shadowHistoryIndex_}));
+                                &image({TargetId::ShadowHistory, surfaceHistoryIndex_}));
         });
-    }
+    if (objectLight())
+        pass(cmd, ObjectLightPass::declare(history), [&] {
+            objectLightPass_->record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::ObjectLight),
+                                     image({TargetId::ObjectLightHistory, history}),
+                                     image({TargetId::ObjectLightHistory, surfaceHistoryIndex_}), s.traceConstants,
+                                     *scene_.occupancy, objectGrids_.buffer);
+        });
     if (aoChain(ao_)) recordAo(cmd);
     pass(cmd, CompositePass::declare(aoOutput()), [&] {
         compositePass_->record(cmd, targets_.gbuffer(), image(TargetId::Color),
                                {.aoHalf = image(aoOutput()), .frame = s.frame, .palette = scene_.palette,
                                 .gtaoConstants = s.aoConstants, .objectUniforms = s.objectUniforms,
                                 .shadow = image(TargetId::Shadow), .bentNormals = image(TargetId::AoBentNormal),
-                                .faceCache = scene_.faceCache.get()});
+                                .faceCache = scene_.faceCache.get(), .objectLight = &image(TargetId::ObjectLight)});
     });
     if (displayOn_)
         pass(cmd, DisplayPass::declare(), [&] {
@@ -424,79 +436,6 @@ void Renderer::objectRemoved(size_t index) {
     objectScenes_.erase(objectScenes_.begin() + ptrdiff_t(index));
     poses_.erase(poses_.begin() + ptrdiff_t(index));
     if (index < lastPoses_.size()) lastPoses_.erase(lastPoses_.begin() + ptrdiff_t(index));
-}
-
-void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {
-    copy.begin({.width = width(), .height = height(), .half = targets_.ao().half,
-                .scale = ao_.chain.fullResolution ? 1u : 2u, .ao = ao_.enabled, .chain = aoChain(ao_), .toneMap = toneMapCurve(lighting_.toneMap),
-                .camera = camera, .poses = poses_, .albedo = scene_.albedo});
-    auto copyPart = [&](FrameCopy::Part part, TargetRef target, uint32_t bytesPerPixel) {
-        const vk::Image& from = image(target);
-        const VkDeviceSize bytes = VkDeviceSize(from.extent.width) * from.extent.height * bytesPerPixel;
-        vk::recordImageCopy(cmd, from, targets_.layout(target), bytesPerPixel, copy.reserve(part, bytes), 0);
-    };
-    copyPart(FrameCopy::Color, TargetId::Color, 16);
-    if (copy.aovs() && faceCached(ao_)) {
-        // The cache's AO and sun at each pixel, as the composite read them.
-        if (!aoAov_) {
-            aoAov_ = true;
-            targets_.update(wantedShape());
-        }
-        if (!faceCacheAovPass_)
-            faceCacheAovPass_ = std::make_unique<FaceCacheAovPass>(ctx_, compositeShape().cachedSun, tracedShadows());
-        pass(cmd, FaceCacheAovPass::declare(), [&] {
-            faceCacheAovPass_->record(cmd, targets_.gbuffer(), slot().frame, *scene_.faceCache,
-                                      image(TargetId::AoFull), image(TargetId::Shadow));
-        });
-    }
-    if (copy.aovs()) {
-        if (shadows()) copyPart(FrameCopy::Shadow, TargetId::Shadow, 4);
-        copyPart(FrameCopy::Depth, TargetId::Depth, 4);
-        copyPart(FrameCopy::Surface, TargetId::Surface, 2);
-        if (motion()) copyPart(FrameCopy::Motion, TargetId::Motion, 16);
-    }
-    if (copy.aovs() && faceCached(ao_)) copyPart(FrameCopy::AoFull, TargetId::AoFull, 4);
-    if (copy.aovs() && aoChain(ao_)) {
-        // What the frame computed on the way without storing: the full-res AO (the
-        // composite upsamples for itself) and, when the temporal pass blurs for
-        // itself, the spatial AO. The same shaders on the same inputs give the same values.
-        if (!aoAov_) {  // its target is made on first use: frames do not store it
-            aoAov_ = true;
-            targets_.update(wantedShape());
-        }
-        // VBAO's bent normals, where the frame did not find them: its estimator again
-        // with them (the same kernel on the same inputs and noise).
-        if (ao_.method == AoMethod::Vbao && !bentNormals(ao_, lighting_)) {
-            if (!bentPass_) bentPass_ = std::make_unique<EstimatorPass>(ctx_, ao_, true);
-            PassDecl untimed = bentPass_->declare();
-            untimed.timestamp = nullptr;  // not the frame's cost
-            pass(cmd, untimed, [&] {
-                bentPass_->record(cmd, image(TargetId::Surface), targets_.ao(), slot().aoConstants,
-                                  slot().traceConstants, scene_.occupancy.get(), &objectGrids_.buffer);
-            });
-        }
-        const uint32_t passes = ao_.chain.denoisePasses;
-        if (temporal() && passes > 0)
-            pass(cmd, DenoisePass::declare(passes - 1),
-                 [&] { denoisePass_->record(cmd, targets_.ao(), passes, passes - 1, slot().aoConstants); });
-        pass(cmd, UpsamplePass::declare(aoOutput()), [&] {
-            upsamplePass_->record(cmd, image(TargetId::Depth), image(TargetId::Surface), image(aoOutput()),
-                                  image(TargetId::AoFull), slot().aoConstants);
-        });
-        copyPart(FrameCopy::AoFull, TargetId::AoFull, 4);
-        copyPart(FrameCopy::Raw, TargetId::AoRaw, 16);
-        if (ao_.method == AoMethod::Vbao) copyPart(FrameCopy::BentNormal, TargetId::AoBentNormal, 8);
-        copyPart(FrameCopy::Spatial, denoisedTarget(passes), 16);
-        if (temporal()) copyPart(FrameCopy::History, aoOutput(), 16);
-    }
-    vk::recordHostRead(cmd);
-}
-
-FrameImages Renderer::readback(const Camera& camera, bool aovs) {
-    finishFrames();
-    FrameCopy copy(ctx_, aovs);
-    ctx_.submitAndWait([&](VkCommandBuffer cmd) { recordCopy(cmd, copy, camera); });
-    return copy.decode();
 }
 
 }  // namespace grotto

@@ -19,6 +19,7 @@
 #include "engine/passes/estimator_pass.h"
 #include "engine/passes/face_cache_aov_pass.h"
 #include "engine/passes/hiz_pass.h"
+#include "engine/passes/object_light_pass.h"
 #include "engine/passes/shadow_pass.h"
 #include "engine/passes/temporal_pass.h"
 #include "engine/passes/upsample_pass.h"
@@ -99,7 +100,7 @@ public:
     // A camera cut: the next frame starts without history.
     void resetHistory() {
         previousCamera_.reset();
-        shadowCamera_.reset();
+        surfaceCamera_.reset();
         culling_.reset();
     }
     // Levels of detail and occlusion culling for the G-buffer (chunk_culling.h);
@@ -183,6 +184,8 @@ private:
     CompositeShape compositeShape() const;
     // A sun of finite size: jittered rays accumulated in a history (shadow_pass.h).
     bool softShadows() const { return tracedShadows() && lighting_.sunAngle > 0.0f; }
+    // Objects' AO and sky light over the face cache (object_light_pass.h).
+    bool objectLight() const { return faceCached(ao_) && objects_; }
     // VBAO finds bent normals in every frame: the sky's ambient is lit around them.
     static bool bentNormals(const AoOptions& ao, const voxel::Lighting& lighting) {
         return ao.enabled && ao.method == AoMethod::Vbao && lighting.ambientFrom == voxel::AmbientSource::Sky;
@@ -206,11 +209,12 @@ private:
     bool displayOn_ = false;
     bool normalsOn_ = false;
     bool aoAov_ = false;  // a read-back asked for the AO AOVs: their full-res target is kept from then on
-    // A soft sun's history: which image holds the last, and the camera and frame
-    // index of its last frame (none: the next frame starts afresh).
-    uint32_t shadowHistoryIndex_ = 0;
-    std::optional<Camera> shadowCamera_;
-    uint32_t shadowFrame_ = 0;
+    // The full-res histories of a soft sun and of objects' light over the face
+    // cache: which image holds the last, and the camera and frame index of their
+    // last frame (none: the next frame starts afresh).
+    uint32_t surfaceHistoryIndex_ = 0;
+    std::optional<Camera> surfaceCamera_;
+    uint32_t surfaceFrame_ = 0;
     // Objects: their poses now and at the last frame rendered (with its camera),
     // and their normal tables (bound to the composite in every world).
     const SceneObjects* objects_ = nullptr;
@@ -240,6 +244,7 @@ private:
     std::unique_ptr<DisplayPass> displayPass_;
     std::unique_ptr<NormalsPass> normalsPass_;
     std::unique_ptr<ShadowPass> shadowPass_;
+    std::unique_ptr<ObjectLightPass> objectLightPass_;
     std::unique_ptr<FaceCacheAovPass> faceCacheAovPass_;  // --ao cache's AOVs, for read-backs
     // The two frames in flight: each frame takes the other slot than the last.
     std::array<std::unique_ptr<FrameSlot>, 2> slots_;

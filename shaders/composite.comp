@@ -20,6 +20,7 @@ layout(constant_id = 0) const bool withAo = true;  // false: one invocation per 
 layout(constant_id = 3) const bool withShadow = true;  // false: the sun reaches everything, no shadow bound
 layout(constant_id = 4) const bool withBentNormals = false;  // VBAO's bent normals light the sky's ambient
 layout(constant_id = 5) const bool cachedSun = false;  // cache: world surfaces take the cache's sun visibility
+layout(constant_id = 6) const bool objectLight = false;  // cache: objects' AO and sky light (object_light.comp)
 // The group's side, set by CompositePass: lavapipe runs 16x16 groups of single
 // pixels faster, 8x8 groups of 2x2 blocks (docs/benchmarks.md).
 layout(local_size_x_id = 1, local_size_y_id = 2) in;
@@ -36,7 +37,10 @@ layout(set = 0, binding = 9, rgba16f) uniform readonly image2D bentNormals;  // 
 #ifdef GROTTO_FACE_CACHE
 uint faceCacheHashMask() { return frame.faceCache.x; }
 uint faceCacheK() { return frame.faceCache.y; }
-#define GROTTO_FACE_CACHE_BINDING 10
+// AO and the sky's horizon and zenith weights: those objects take from a world
+// surface, an object's own on its faces.
+layout(set = 0, binding = 10, rgba16f) uniform readonly image2D objectLightImage;
+#define GROTTO_FACE_CACHE_BINDING 11
 #include "face_cache.glsl"
 #include "face_cache_surface.glsl"
 #endif
@@ -116,21 +120,31 @@ void compositePixel(AoBlock block, ivec2 h, ivec2 offset) {
 }
 
 #ifdef GROTTO_FACE_CACHE
+// The light on a surface of AO `ao` that sees the sky through the sky colours'
+// weights `sky` (horizon, zenith), blended toward the open sky as the AO strength falls.
+vec3 shadeSeen(uint surface, vec3 normal, float ao, vec2 sky, float sunReach, vec3 open) {
+    if (frame.ambient.w < 0.5) return shadeWith(surface, normal, ao, sunReach, open, 1.0);
+    vec3 seen = frame.ambient.rgb * (sky.x * frame.skyHorizon.rgb + sky.y * frame.skyZenith.rgb);
+    return shadeWith(surface, normal, ao, sunReach, mix(open, seen, frame.aoStrength.x), ao);
+}
+
 // A world surface's light from the cache: its AO, its sun visibility (while the
-// cache's sun is the frame's, times the objects' shadow where the shadow pass ran) and, with the sky's ambient, the sky light it holds,
-// blended toward the open sky as the AO strength falls. An object's surface, or a
-// face the cache lacks, is lit as without AO.
+// cache's sun is the frame's, times the objects' shadow where the shadow pass ran)
+// and, with the sky's ambient, the sky light it holds, each less what objects take.
+// An object's surface takes its own from the object light pass; one without it, or
+// a face the cache lacks, is lit as without AO.
 vec3 shadeCached(ivec2 q, uint surface) {
     vec3 normal = surfaceNormal(surface);
     vec3 open = ambientLight(normal, q);
-    if (surfaceObject(surface) != 0u) return shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
+    vec4 objectPart = objectLight ? imageLoad(objectLightImage, q) : vec4(0.0);
+    if (surfaceObject(surface) != 0u)
+        return objectLight ? shadeSeen(surface, normal, objectPart.x, objectPart.yz, sunlit(q), open)
+                           : shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
     bool found;
     vec4 c = cachedLightAt(q, surfaceFace(surface), found);  // AO, sun, horizon and zenith weights
     if (!found) return shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
     float sunReach = cachedSun ? c.y * sunlit(q) : sunlit(q);  // with the cache's sun, the shadow pass holds the objects' alone
-    if (frame.ambient.w < 0.5) return shadeWith(surface, normal, c.x, sunReach, open, 1.0);
-    vec3 seen = frame.ambient.rgb * (c.z * frame.skyHorizon.rgb + c.w * frame.skyZenith.rgb);
-    return shadeWith(surface, normal, c.x, sunReach, mix(open, seen, frame.aoStrength.x), c.x);
+    return shadeSeen(surface, normal, max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)), sunReach, open);
 }
 #endif
 

@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// --ao cache's AOVs for a read-back: the face cache's AO at each full-res pixel
-// (1 for the sky, objects and faces it lacks) and, while its sun is the frame's,
+// --ao cache's AOVs for a read-back: the face cache's AO at each full-res pixel,
+// less what objects take (1 for the sky and faces it lacks; an object's own on its
+// faces with the object light pass, else 1) and, while its sun is the frame's,
 // its sun visibility into the shadow image: over the world pixels it has, times
 // the objects' shadow there where the shadow pass ran (which the other pixels
 // keep), 1 on the others where it did not. Exactly what the composite (composite_cache.comp) lit each pixel with.
@@ -11,6 +12,7 @@
 
 layout(constant_id = 0) const bool cachedSun = false;
 layout(constant_id = 1) const bool tracedShadows = false;
+layout(constant_id = 2) const bool objectLight = false;
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(set = 0, binding = 0, std140) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1) uniform usampler2D surfaceTex;
@@ -19,7 +21,8 @@ layout(set = 0, binding = 3, r32f) uniform writeonly image2D aoOut;
 layout(set = 0, binding = 4, r32f) uniform image2D sunOut;  // 1x1 without sun shadows; the objects' shadow with
 uint faceCacheHashMask() { return frame.faceCache.x; }
 uint faceCacheK() { return frame.faceCache.y; }
-#define GROTTO_FACE_CACHE_BINDING 5
+layout(set = 0, binding = 5, rgba16f) uniform readonly image2D objectLightImage;  // object_light.comp's
+#define GROTTO_FACE_CACHE_BINDING 6
 #include "face_cache.glsl"
 #include "face_cache_surface.glsl"
 
@@ -29,8 +32,11 @@ void main() {
     uint surface = texelFetch(surfaceTex, q, 0).r;
     vec4 c = vec4(1.0);
     bool found = false;
+    float objectPart = objectLight && surface != 0u ? imageLoad(objectLightImage, q).x : 0.0;
     if (surface != 0u && surfaceObject(surface) == 0u) c = cachedLightAt(q, surfaceFace(surface), found);
-    imageStore(aoOut, q, vec4(c.x));
+    float ao = found ? max(c.x - objectPart, 0.0) : c.x;
+    if (objectLight && surface != 0u && surfaceObject(surface) != 0u) ao = objectPart;
+    imageStore(aoOut, q, vec4(ao));
     if (cachedSun && (found || !tracedShadows) && all(lessThan(q, imageSize(sunOut))))
         imageStore(sunOut, q, vec4(found ? c.y * (tracedShadows ? imageLoad(sunOut, q).r : 1.0) : 1.0));
 }

@@ -40,6 +40,7 @@ layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D historyOut;
 #endif
 #define GROTTO_TRACE_OBJECTS
 #include "trace.glsl"
+#include "surface_point.glsl"
 
 void store(ivec2 q, float lit, float frames, float depth, uint key) {
     imageStore(shadowOut, q, vec4(lit));
@@ -59,42 +60,14 @@ vec3 coneDirection(vec3 axis, float cosRadius, vec2 u) {
     return normalize(axis * cosT + (t * cos(phi) + b * sin(phi)) * sinT);
 }
 
-// The history pixel's full-res position of a view-space point under a camera's
-// ndcToViewMul_Add.
-vec2 pixelOf(vec3 v, vec4 m) { return (v.xy / -v.z - m.zw) / m.xy - 0.5; }
-
-// The pixel's accumulated visibility and its history length, or (0, 0) without a
-// usable history. Bilinear between the four history pixels around where the
-// surface point was, each only if it saw the same face on the same plane: the
-// nearest pixel alone would, under sub-pixel motion, keep handing each pixel its
-// own history and smear the penumbra along the motion.
-vec2 history(ivec2 q, vec3 position, vec3 worldNormal, uint key, bool nearObject) {
-    if ((trace.shadowReset & 1u) != 0u || (nearObject && (trace.shadowReset & 2u) != 0u)) return vec2(0.0);
-    vec3 previous = (trace.currentToPrevious * vec4(position, 1.0)).xyz;
-    float previousDepth = -previous.z;
-    if (previousDepth <= 0.0) return vec2(0.0);
-    // The motion as a difference of two identical computations: a still camera maps
-    // every pixel exactly onto itself.
-    vec4 m = trace.previousNdcToViewMul_Add;
-    vec2 uv = vec2(q) + (pixelOf(previous, m) - pixelOf(position, trace.ndcToViewMul_Add));
-    vec3 viewNormal = vec3(dot(trace.viewToWorld[0].xyz, worldNormal), dot(trace.viewToWorld[1].xyz, worldNormal),
-                           dot(trace.viewToWorld[2].xyz, worldNormal));
-    vec3 previousNormal = mat3(trace.currentToPrevious) * viewNormal;
-    vec2 base = floor(uv), f = uv - base;
-    uvec2 size = uvec2(imageSize(historyIn));
-    vec3 sum = vec3(0.0);  // weighted visibility, length, weight
-    for (int j = 0; j < 2; ++j)
-        for (int i = 0; i < 2; ++i) {
-            ivec2 t = ivec2(base) + ivec2(i, j);
-            float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
-            if (w <= 0.0 || any(greaterThanEqual(uvec2(t), size))) continue;
-            vec4 h = imageLoad(historyIn, t);
-            vec3 tap = vec3(((vec2(t) + 0.5) * m.xy + m.zw) * h.z, -h.z);
-            if (uint(h.w) != key || abs(dot(tap - previous, previousNormal)) > 1e-3 * previousDepth) continue;
-            sum += vec3(h.x, h.y, 1.0) * w;
-        }
-    return sum.z > 1e-3 ? sum.xy / sum.z : vec2(0.0);
+ivec2 historySize() { return imageSize(historyIn); }
+vec4 historyTap(ivec2 t, out float depth, out uint key) {
+    vec4 h = imageLoad(historyIn, t);
+    depth = h.z;
+    key = uint(h.w);
+    return h;
 }
+#include "surface_history.glsl"
 #endif
 
 void main() {
@@ -108,21 +81,14 @@ void main() {
     }
     vec3 sun = trace.sunDirection.xyz;
     uint key = surfaceKey(surface);
-    vec3 normal = objects.worldNormals[key - 1u].xyz;
+    vec3 normal = surfaceWorldNormal(surface);
     bool world = surfaceObject(surface) == 0u;
-    if (world) {  // an axis: exact
-        uint face = surfaceFace(surface);
-        normal = vec3(0.0);
-        normal[faceAxis(face)] = facePositive(face) ? 1.0 : -1.0;
-    }
-    float z = trace.depthAB.y / (texelFetch(depthBuffer, q, 0).r + trace.depthAB.x);
-    vec2 m = (vec2(q) + 0.5) * trace.ndcToViewMul_Add.xy + trace.ndcToViewMul_Add.zw;
-    vec3 position = vec3(m * z, -z);
+    vec3 position = surfaceViewPosition(q);
 #ifdef GROTTO_SOFT_SUN
     sun = coneDirection(sun, trace.sunCosRadius, gtaoNoise(uvec2(q), trace.frameIndex));
 #endif
     float lit = 0.0;
-    VoxelRayStart start = traceStart(position, world ? surfaceFace(surface) : 6u, normal);
+    VoxelRayStart start = surfaceRayStart(position, surface, normal);
     if (dot(normal, sun) > 0.0) {
         bool blocked = world && objectsOnlyOnWorld ? traceObjects(start, sun, kVoxelRayNever) >= 0.0
                                                    : traceHit(start, sun, kVoxelRayNever, !world).t >= 0.0;
@@ -131,12 +97,16 @@ void main() {
     float frames = 1.0;
 #ifdef GROTTO_SOFT_SUN
     // Moving objects' pixels restart, and so do the pixels whose sun the objects may shade.
-    bool restart = !world || traceNearObjects(start, trace.sunDirection.xyz, sqrt(1.0 / (trace.sunCosRadius * trace.sunCosRadius) - 1.0));
-    vec2 h = history(q, position, normal, key, restart);
-    if (h.y > 0.0) {
+    bool restart = (trace.shadowReset & 1u) != 0u ||
+                   ((trace.shadowReset & 2u) != 0u &&
+                    (!world || traceNearObjects(start, trace.sunDirection.xyz,
+                                                sqrt(1.0 / (trace.sunCosRadius * trace.sunCosRadius) - 1.0))));
+    bool found = false;
+    vec4 h = restart ? vec4(0.0) : surfaceHistory(q, position, normal, key, found);
+    if (found && h.y > 0.0) {
         frames = min(h.y + 1.0, float(max(trace.shadowHistory, 1u)));
         lit = mix(h.x, lit, 1.0 / frames);
     }
 #endif
-    store(q, lit, frames, z, key);
+    store(q, lit, frames, -position.z, key);
 }

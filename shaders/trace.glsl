@@ -127,6 +127,17 @@ bool traceNearObjects(VoxelRayStart start, vec3 d, float tanSpread) {
     }
     return false;
 }
+
+// The sphere (centre xyz, radius w, in the rays' space: voxels from the camera
+// voxel's corner) around the grid of `size` cells that the rows map into. The rows
+// are a turn times the scale s from world voxels to the object's, so their
+// transpose over s^2 maps back.
+vec4 objectGridSphere(vec4 r0, vec4 r1, vec4 r2, vec3 size) {
+    float s2 = dot(r0.xyz, r0.xyz);
+    vec3 g = 0.5 * size;
+    vec3 centre = (r0.xyz * (g.x - r0.w) + r1.xyz * (g.y - r1.w) + r2.xyz * (g.z - r2.w)) / s2;
+    return vec4(centre, 0.5 * length(size) * inversesqrt(s2));
+}
 #endif
 
 // From a camera-relative view-space position. A world face (0..5: +X -X +Y -Y +Z -Z)
@@ -175,17 +186,23 @@ float traceThickness(vec3 viewPosition, uint face, float maxT) {
     return voxels / trace.cameraFraction.w;
 }
 
-// The solid voxel a ray from `start` along the unit direction d enters within tMax
-// voxels (t -1: none): the exact traversal (shared/voxel_ray.h), within the world's
-// bounds. From a world face the start voxel is tested (it is the open one in front
-// of the face); from an object's face it counts as open, as the reference's rule
-// has it.
-VoxelRayHit traceHit(VoxelRayStart start, vec3 d, float tMax, bool openStart) {
+// The solid world voxel a ray from `start` along the unit direction d enters within
+// tMax voxels (t -1: none): the exact traversal (shared/voxel_ray.h), within the
+// world's bounds. From a world face the start voxel is tested (it is the open one in
+// front of the face); from an object's face it counts as open, as the reference's
+// rule has it.
+VoxelRayHit traceWorldHit(VoxelRayStart start, vec3 d, float tMax, bool openStart) {
     VoxelRayHit hit;
     hit.t = -1.0;
     hit.voxel = start.voxel;
     hit.face = -1;
     if (trace.boundsHi.w == 0) hit = voxelRay(start, d, tMax, trace.boundsLo.xyz, trace.boundsHi.xyz, openStart, 16384);
+    return hit;
+}
+
+// traceWorldHit, and the objects' voxels where the pass sees them.
+VoxelRayHit traceHit(VoxelRayStart start, vec3 d, float tMax, bool openStart) {
+    VoxelRayHit hit = traceWorldHit(start, d, tMax, openStart);
 #ifdef GROTTO_TRACE_OBJECTS
     float object = traceObjects(start, d, hit.t >= 0.0 ? hit.t : tMax);
     if (object >= 0.0) {  // an object's voxel, nearer: no world voxel or face to name
@@ -236,4 +253,15 @@ float traceShortRay(VoxelRayStart start, vec3 d, float tMax) {
     if (object >= 0.0) t = object;
 #endif
     return t;
+}
+
+// Ray i of a cosine-weighted set about the unit normal n: the R2 point i, offset by
+// the pixel's and frame's noise, uniform on the disk and lifted onto the hemisphere.
+vec3 traceCosineRay(vec3 n, vec2 noise, uint i) {
+    vec3 helper = abs(n.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
+    vec3 tangent = normalize(cross(helper, n));
+    vec3 bitangent = cross(n, tangent);
+    float u = fract(noise.x + float(i) * 0.7548776662), a = fract(noise.y + float(i) * 0.5698402910);
+    float r = sqrt(u), phi = a * 6.28318530718;
+    return tangent * (r * cos(phi)) + bitangent * (r * sin(phi)) + n * sqrt(max(1.0 - u, 0.0));
 }

@@ -40,18 +40,10 @@ float voxelVisibility(ivec2 pixel, float z) {
         normal[faceAxis(face)] = facePositive(face) ? 1.0 : -1.0;
     }
     VoxelRayStart start = traceStart(gtaoViewPosition(vec2(pixel), z), face, normal);
-    vec3 helper = abs(normal.x) < 0.9 ? vec3(1.0, 0.0, 0.0) : vec3(0.0, 1.0, 0.0);
-    vec3 tangent = normalize(cross(helper, normal));
-    vec3 bitangent = cross(normal, tangent);
     vec2 noise = gtaoNoise(uvec2(pixel), gtao.frameIndex);
     uint open = 0u;
-    for (uint i = 0u; i < specRays; ++i) {
-        // Cosine-weighted (uniform on the disk, lifted) from the R2 point i, offset per pixel and frame.
-        float u = fract(noise.x + float(i) * 0.7548776662), a = fract(noise.y + float(i) * 0.5698402910);
-        float r = sqrt(u), phi = a * 6.28318530718;
-        vec3 dir = tangent * (r * cos(phi)) + bitangent * (r * sin(phi)) + normal * sqrt(max(1.0 - u, 0.0));
-        if (traceShortRay(start, dir, trace.radiusVoxels) < 0.0) ++open;
-    }
+    for (uint i = 0u; i < specRays; ++i)
+        if (traceShortRay(start, traceCosineRay(normal, noise, i), trace.radiusVoxels) < 0.0) ++open;
     return float(open) / float(specRays);
 }
 

@@ -34,6 +34,11 @@ constexpr TargetRow kRows[] = {
      [](const FrameShape& s) { return s.shadows; }, true, 1, kGeneral},
     {TargetId::ShadowHistory, kRgba32f, TargetSize::Frame, kStorage,
      [](const FrameShape& s) { return s.shadows && s.softShadows; }, false, 2, kGeneral},
+    // The composite with the face cache binds it (a placeholder) with or without objects.
+    {TargetId::ObjectLight, VK_FORMAT_R16G16B16A16_SFLOAT, TargetSize::Frame, kStorage,
+     [](const FrameShape& s) { return s.objectLight; }, true, 1, kGeneral},
+    {TargetId::ObjectLightHistory, VK_FORMAT_R32G32B32A32_UINT, TargetSize::Frame, kStorage,
+     [](const FrameShape& s) { return s.objectLight; }, false, 2, kGeneral},
     {TargetId::AoDepthAtlas, kR32f, TargetSize::DepthAtlas, kStorage | kRead, chainOn, false, 1, kGeneral},
     // VBAO binds it whatever its thickness mode; only the voxels mode fills it.
     {TargetId::AoThickness, kR32f, TargetSize::DepthAtlas, kStorage,
@@ -69,6 +74,7 @@ FrameShape worldFrameShape(const voxel::WorldDesc& desc, uint32_t width, uint32_
     s.shadows = desc.lighting.sunShadows;
     s.softShadows = desc.lighting.sunAngle > 0.0f;
     if (objects) s.movingObjects = std::any_of(desc.objects.begin(), desc.objects.end(), [](const auto& o) { return o.moves(); });
+    s.objectLight = objects && !desc.objects.empty() && faceCached(ao);
     return s;
 }
 
@@ -95,6 +101,8 @@ vk::Image& FrameTargets::slot(TargetRef target) {
     case TargetId::Normals: return normals_;
     case TargetId::Shadow: return shadow_;
     case TargetId::ShadowHistory: return shadowHistory_[copy];
+    case TargetId::ObjectLight: return objectLight_;
+    case TargetId::ObjectLightHistory: return objectLightHistory_[copy];
     case TargetId::AoDepthAtlas: return ao_.depthAtlas;
     case TargetId::AoThickness: return ao_.thickness;
     case TargetId::AoBentNormal: return ao_.bentNormal;

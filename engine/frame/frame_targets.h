@@ -23,6 +23,7 @@ struct FrameShape {
     AoOptions ao;
     bool shadows = false;        // sun shadows (the lighting asks for them and the scene has occupancy)
     bool softShadows = false;    // a sun of finite size: its shadow keeps a history
+    bool objectLight = false;    // --ao cache with objects: their AO and sky light per pixel, with a history
     bool movingObjects = false;  // with the temporal pass: motion vectors
     bool display = false;        // the tone-mapped display image (Renderer::setDisplayImage)
     bool normals = false;        // the world-space normals image (Renderer::setNormalsImage)
@@ -111,8 +112,8 @@ private:
     std::array<std::array<ImageState, 2>, kTargetCount> states_{};
     GBufferTargets gbuffer_;
     AoTargets ao_;
-    vk::Image color_, display_, normals_, shadow_;
-    std::array<vk::Image, 2> shadowHistory_;
+    vk::Image color_, display_, normals_, shadow_, objectLight_;
+    std::array<vk::Image, 2> shadowHistory_, objectLightHistory_;
 };
 
 }  // namespace grotto

@@ -9,7 +9,7 @@
 namespace grotto {
 
 enum class TargetId {
-    Depth, Surface, Motion, Color, Display, Normals, Shadow, ShadowHistory,
+    Depth, Surface, Motion, Color, Display, Normals, Shadow, ShadowHistory, ObjectLight, ObjectLightHistory,
     AoDepthAtlas, AoThickness, AoBentNormal, AoRaw, AoSpatial0, AoSpatial1, AoHistory, AoFull,
 };
 inline constexpr int kTargetCount = int(TargetId::AoFull) + 1;

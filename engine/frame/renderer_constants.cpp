@@ -68,17 +68,18 @@ void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
                         scene_.worldOrigin);
     t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
     t.frameIndex = frameIndex;
-    if (softShadows()) {
+    if (softShadows() || objectLight()) {
         // As the AO's history: consecutive frames only. An edit anywhere may move a
-        // shadow anywhere along the sun's rays, so it restarts the whole history.
-        if (frameIndex != shadowFrame_ + 1u || !invalidated_.boxes().empty()) shadowCamera_.reset();
-        const gpu::TemporalConstants r = temporalConstants(camera, shadowCamera_ ? &*shadowCamera_ : nullptr);
+        // shadow anywhere along the sun's rays (or change what an object hides), so
+        // it restarts the whole history.
+        if (frameIndex != surfaceFrame_ + 1u || !invalidated_.boxes().empty()) surfaceCamera_.reset();
+        const gpu::TemporalConstants r = temporalConstants(camera, surfaceCamera_ ? &*surfaceCamera_ : nullptr);
         t.currentToPrevious = r.currentToPrevious;
         t.previousNdcToViewMul_Add = r.previousNdcToViewMul_Add;
-        t.shadowHistory = temporal() ? ao_.chain.temporalHistory : kDefaultTemporalHistory;
+        t.shadowHistory = ao_.chain.temporalHistory > 0 ? ao_.chain.temporalHistory : kDefaultTemporalHistory;
         t.shadowReset = (r.reset != 0u ? 1u : 0u) | (objects_ && objects_->moving ? 2u : 0u);
-        shadowCamera_ = camera;
-        shadowFrame_ = frameIndex;
+        surfaceCamera_ = camera;
+        surfaceFrame_ = frameIndex;
     }
     std::memcpy(slot().traceConstants.mapped(), &t, sizeof t);
 }

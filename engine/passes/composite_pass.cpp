@@ -17,7 +17,9 @@ std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
         VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
-    return s.faceCache ? GpuFaceCache::withBindings(std::move(b)) : b;
+    if (!s.faceCache) return b;
+    b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the object light
+    return GpuFaceCache::withBindings(std::move(b));
 }
 }  // namespace
 
@@ -26,7 +28,7 @@ CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
       shape_(shape),
       pass_(ctx, shape.faceCache ? "composite_cache.comp" : "composite.comp", bindings(shape), 0,
             {shape.withAo ? 1u : 0u, group(shape), group(shape), shape.withShadow ? 1u : 0u,
-             shape.withBentNormals ? 1u : 0u, shape.cachedSun ? 1u : 0u}) {}
+             shape.withBentNormals ? 1u : 0u, shape.cachedSun ? 1u : 0u, shape.objectLight ? 1u : 0u}) {}
 
 void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& color, const Inputs& in) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
@@ -37,7 +39,9 @@ void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const v
         vk::sampledImage(ctx_.pointSampler, g.depth.view, ro), vk::uniformBuffer(in.objectUniforms.buffer),
         vk::storageImage(in.shadow.view),            vk::storageImage(in.bentNormals.view)};
     if (shape_.faceCache) {
-        if (!in.faceCache) throw Error::internal("CompositePass", "the face cache's composite without the cache");
+        if (!in.faceCache || !in.objectLight)
+            throw Error::internal("CompositePass", "the face cache's composite without the cache or the object light");
+        b.push_back(vk::storageImage(in.objectLight->view));
         b = in.faceCache->withBindings(std::move(b));
     }
     pass_.dispatch(cmd, b, shape_.withAo ? in.aoHalf.extent : color.extent, group(shape_));  // with AO, per AO pixel

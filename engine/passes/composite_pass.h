@@ -8,7 +8,8 @@
 // ambient is a constant or the sky's light (shared/sky.h), around VBAO's bent
 // normals where the frame has them. With the face cache (--ao cache) there is no
 // AO chain: world surfaces take AO, sky light and, while its sun is the frame's,
-// sun visibility from the cache at each pixel's point (composite_cache.comp).
+// sun visibility from the cache at each pixel's point (composite_cache.comp), less
+// what objects take, and objects' own from the object light pass.
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
@@ -22,6 +23,7 @@ struct CompositeShape {
     bool withBentNormals = false;  // VBAO's bent normals light the sky's ambient
     bool faceCache = false;        // --ao cache: the face cache instead of an AO chain
     bool cachedSun = false;        // with it: world surfaces take the cache's sun visibility
+    bool objectLight = false;      // with it: objects' AO and sky light from the object light pass
     bool operator==(const CompositeShape&) const = default;
 };
 
@@ -32,7 +34,7 @@ public:
     static PassDecl declare(TargetRef ao) {
         return {"composite", {{TargetId::Surface, Access::Sampled}, {TargetId::Color, Access::Write}, {ao, Access::Read},
                               {TargetId::Depth, Access::Sampled}, {TargetId::Shadow, Access::Read},
-                              {TargetId::AoBentNormal, Access::Read}}};
+                              {TargetId::AoBentNormal, Access::Read}, {TargetId::ObjectLight, Access::Read}}};
     }
     // Without AO, `aoHalf` and `gtaoConstants` are placeholders the shader ignores;
     // without shadows, so is `shadow`; without bent normals, so is `bentNormals`.
@@ -46,6 +48,7 @@ public:
         const vk::Image& shadow;
         const vk::Image& bentNormals;
         const GpuFaceCache* faceCache = nullptr;
+        const vk::Image* objectLight = nullptr;  // with the face cache: the object light pass's (or a placeholder)
     };
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& color, const Inputs& in);
 

@@ -2,8 +2,10 @@
 // --ao cache's AOVs, for a read-back only (face_cache_aov.comp): the face cache's
 // AO at each full-res pixel into the full-res AO image and, while its sun is the
 // frame's, its sun visibility into the shadow image: over the world pixels it
-// holds when the shadow pass ran (`tracedShadows`), over every pixel else. Reads the
-// G-buffer's depth and surface ids, the frame uniforms and the cache.
+// holds when the shadow pass ran (`tracedShadows`), over every pixel else. The AO
+// is less what objects take, and objects' own on their faces (`objectLight`: the
+// object light pass's image). Reads the G-buffer's depth and surface ids, the frame
+// uniforms and the cache.
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
@@ -13,14 +15,15 @@ namespace grotto {
 
 class FaceCacheAovPass {
 public:
-    FaceCacheAovPass(vk::Context& ctx, bool cachedSun, bool tracedShadows);
+    FaceCacheAovPass(vk::Context& ctx, bool cachedSun, bool tracedShadows, bool objectLight);
     // Untimed: a read-back's work, not the frame's.
     static PassDecl declare() {
         return {nullptr, {{TargetId::Surface, Access::Sampled}, {TargetId::Depth, Access::Sampled},
-                          {TargetId::AoFull, Access::Write}, {TargetId::Shadow, Access::Write}}};
+                          {TargetId::AoFull, Access::Write}, {TargetId::Shadow, Access::Write},
+                          {TargetId::ObjectLight, Access::Read}}};
     }
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& frame, const GpuFaceCache& cache,
-                const vk::Image& ao, const vk::Image& sun);
+                const vk::Image& ao, const vk::Image& sun, const vk::Image& objectLight);
 
 private:
     vk::Context& ctx_;

@@ -1,0 +1,191 @@
+// Objects' AO and sky light over the face cache (object_light.comp), with
+// validation on. The cache knows the static world alone; per-pixel rays add what
+// objects change:
+//  - a turned step over a floor: every pixel's AO, on the floor and on the step,
+//    against the CPU reference traced through the floor and the box; pixels beyond
+//    the AO radius of the step keep the cache's exactly;
+//  - a box on the grid lights the scene as the same voxels baked into the world:
+//    its AO and sky light, taken from the floor and its own;
+//  - a moving box's AO leaves no trail in the history.
+#include "engine/lab/surface_points.h"
+#include "engine/renderer.h"
+#include "engine/scene/live_scene.h"
+#include "engine/scene/scene_objects.h"
+#include "tests/gpu_fixture.h"
+#include "tests/scenes.h"
+#include "shaders/shared/objects.h"
+#include "voxel/reference_ao.h"
+
+#include <glm/gtc/quaternion.hpp>
+
+#include <cmath>
+
+namespace grotto {
+namespace {
+
+using ObjectLight = test::GpuTest;
+
+constexpr double kRadius = 2.0;
+constexpr uint32_t kW = 96, kH = 72;
+
+const voxel::ObjectPose kTurned{glm::dvec3(2.0, 3.5, 1.0),
+                                glm::angleAxis(glm::radians(35.0), glm::normalize(glm::dvec3(0.3, 1.0, 0.2))),
+                                glm::dvec3(1.5, 2.5, 2.0)};
+
+// The world with its face cache baked, and one box object whose keys are `poses`
+// (one per second).
+struct Scene {
+    Scene(vk::Context& ctx, const voxel::World& world, const voxel::World& box, std::span<const voxel::ObjectPose> poses)
+        : live(ctx, voxel::World(world)) {
+        voxel::FaceBakeSettings settings = worldBakeSettings(world, kRadius, 4);
+        settings.rays = 64;
+        live.bakeFaceCache(settings);
+        voxel::WorldDesc desc = world.desc();
+        desc.objects.resize(1);
+        desc.objects[0].pivot = poses[0].pivot;
+        for (size_t i = 0; i < poses.size(); ++i) desc.objects[0].keys.push_back({double(i), poses[i].position, poses[i].rotation});
+        boxes.push_back(voxel::World(box));
+        objects = uploadObjects(ctx, boxes, desc);
+    }
+    LiveScene live;
+    std::vector<voxel::World> boxes;
+    std::unique_ptr<SceneObjects> objects;
+};
+
+AoOptions cacheAo(const voxel::World& world) {
+    AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), "test");
+    ao.method = AoMethod::Cache;
+    ao.estimator.radius = float(kRadius);
+    return ao;
+}
+
+// The sky's ambient alone: no sun.
+voxel::Lighting skyOnly(const voxel::World& world) {
+    voxel::Lighting lighting = world.desc().lighting;
+    lighting.ambientFrom = voxel::AmbientSource::Sky;
+    lighting.sunIntensity = 0.0f;
+    lighting.sunShadows = false;
+    return lighting;
+}
+
+// Frames 0..frames-1 of a still camera, then the read-back with AOVs.
+FrameImages converged(Renderer& renderer, const Camera& camera, uint32_t frames) {
+    for (uint32_t i = 0; i < frames; ++i) renderer.render(camera, i);
+    return renderer.readback(camera, true);
+}
+
+TEST_F(ObjectLight, ATurnedStepsAoOnTheFloorAndOnItselfMatchesTheReference) {
+    const voxel::World world = test::floorWorld();
+    // A step: its inner corner shades itself.
+    const voxel::World step = test::makeVoxelWorld({0, 0, 0}, {4, 4, 3}, [](int x, int y, int) { return y < 2 || x >= 3; });
+    Scene scene(ctx(), world, step, std::span(&kTurned, 1));
+    Renderer renderer(ctx(), scene.live.gpu(), skyOnly(world), cacheAo(world), kW, kH, scene.objects.get());
+    renderer.setObjectPoses(std::vector<voxel::ObjectPose>{kTurned});
+    const Camera camera = makeCamera(test::lookAt({-7.0, 9.0, -6.0}, {2.0, 1.0, 2.0}, 60.0), kW, kH);
+    const FrameImages f = converged(renderer, camera, 16);
+    const voxel::PosedWorld posed{&step, kTurned};
+    const SurfacePoints sp = surfacePoints(f, camera, world, std::span(&posed, 1));
+    const voxel::ReferenceAo ref =
+        voxel::referenceAo(world, std::span(&posed, 1), sp.points, sp.normals, {.radius = kRadius, .spp = 1024});
+    // Beyond this distance from the step's centre no ray within R meets it.
+    const glm::dvec3 centre = kTurned.toWorld(step.origin() + glm::dvec3(2.5, 2.5, 2.0) * step.voxelSize());
+    const double beyond = kRadius + 0.5 * std::sqrt(5.0 * 5.0 + 5.0 * 5.0 + 4.0 * 4.0) + 0.5;
+    double floorSum = 0.0, floorAbs = 0.0, stepSum = 0.0, stepAbs = 0.0;
+    size_t floor = 0, onStep = 0, darkened = 0, far = 0, farOff = 0;
+    for (size_t i = 0; i < sp.points.size(); ++i) {
+        const uint32_t p = sp.pixels[i];
+        const double diff = double(f.ao[p]) - double(ref.visibility[i]);
+        const bool occluded = ref.visibility[i] < 0.98f;  // the statistics over pixels with something to find
+        if (gpu::surfaceObject(f.surfaceIds[p]) != 0) {
+            if (occluded) stepSum += diff, stepAbs += std::abs(diff), ++onStep;
+            continue;
+        }
+        if (sp.normals[i].y < 0.5) continue;  // the floor's top alone: its cached AO is 1
+        if (occluded) floorSum += diff, floorAbs += std::abs(diff), ++floor;
+        darkened += ref.visibility[i] < 0.9f;
+        if (glm::length(sp.points[i] - centre) > beyond) {
+            ++far;
+            farOff += f.ao[p] != 1.0f;
+        }
+    }
+    ASSERT_GT(onStep, 100u);
+    ASSERT_GT(darkened, 100u) << "the step darkens the floor under it";
+    ASSERT_GT(far, 1000u);
+    EXPECT_EQ(farOff, 0u) << "beyond R of the step the cache's AO stands exactly";
+    // Unbiased: 8 rays a frame over 16 frames (0.009 and 0.007 measured on average).
+    EXPECT_LT(std::abs(floorSum / double(floor)), 0.005) << "mean AO error on the floor";
+    EXPECT_LT(floorAbs / double(floor), 0.02);
+    EXPECT_LT(std::abs(stepSum / double(onStep)), 0.005) << "mean AO error on the step";
+    EXPECT_LT(stepAbs / double(onStep), 0.02);
+}
+
+TEST_F(ObjectLight, ABoxOnTheGridLightsTheSceneAsTheSameVoxelsInTheWorld) {
+    // A 4x3x5 box standing on the floor at x 0..3, z 0..4: an object, or baked into the world.
+    const voxel::World floor = test::floorWorld();
+    const voxel::World baked =
+        test::floorWorld([](int x, int y, int z) { return x >= 0 && x <= 3 && y >= 0 && y <= 2 && z >= 0 && z <= 4; });
+    const voxel::World box = test::boxWorld({4, 3, 5});
+    const voxel::ObjectPose onGrid{glm::dvec3(0.0), glm::dquat(1.0, 0.0, 0.0, 0.0), glm::dvec3(0.0)};  // local = world
+    const Camera camera = makeCamera(test::lookAt({-6.0, 8.0, -5.0}, {2.0, 0.0, 2.0}, 60.0), kW, kH);
+    Scene withObject(ctx(), floor, box, std::span(&onGrid, 1));
+    Renderer objectRenderer(ctx(), withObject.live.gpu(), skyOnly(floor), cacheAo(floor), kW, kH,
+                            withObject.objects.get());
+    objectRenderer.setObjectPoses(std::vector<voxel::ObjectPose>{onGrid});
+    const FrameImages a = converged(objectRenderer, camera, 16);
+    LiveScene bakedScene(ctx(), voxel::World(baked));
+    voxel::FaceBakeSettings settings = worldBakeSettings(baked, kRadius, 4);
+    settings.rays = 256;
+    bakedScene.bakeFaceCache(settings);
+    Renderer bakedRenderer(ctx(), bakedScene.gpu(), skyOnly(baked), cacheAo(baked), kW, kH);
+    const FrameImages b = converged(bakedRenderer, camera, 1);
+    LiveScene bareScene(ctx(), voxel::World(floor));
+    bareScene.bakeFaceCache(settings);
+    Renderer bareRenderer(ctx(), bareScene.gpu(), skyOnly(floor), cacheAo(floor), kW, kH);
+    const FrameImages bare = converged(bareRenderer, camera, 1);
+    double aoDiff = 0.0, colourDiff = 0.0, colour = 0.0, taken = 0.0;
+    size_t n = 0, objectPixels = 0;
+    for (size_t i = 0; i < a.ao.size(); ++i) {
+        if (b.surfaceIds[i] == 0 || a.surfaceIds[i] == 0) continue;
+        if ((b.surfaceIds[i] & 7u) != (a.surfaceIds[i] & 7u)) continue;  // the same face direction seen
+        objectPixels += gpu::surfaceObject(a.surfaceIds[i]) != 0;
+        aoDiff += double(a.ao[i]) - double(b.ao[i]);
+        for (int c = 0; c < 3; ++c) {
+            colourDiff += double(a.color[4 * i + c]) - double(b.color[4 * i + c]);
+            colour += double(b.color[4 * i + c]);
+            taken += double(bare.color[4 * i + c]) - double(a.color[4 * i + c]);
+        }
+        ++n;
+    }
+    ASSERT_GT(n, size_t(kW * kH / 2));
+    ASSERT_GT(objectPixels, 400u);
+    EXPECT_LT(std::abs(aoDiff / double(n)), 0.005) << "mean AO, object against baked voxels";
+    EXPECT_LT(std::abs(colourDiff / colour), 0.01) << "mean sky light, object against baked voxels";
+    EXPECT_GT(taken / colour, 0.03) << "the box takes sky light from the floor and its own faces see less";
+}
+
+TEST_F(ObjectLight, AMovingBoxsAoLeavesNoTrail) {
+    const voxel::World world = test::floorWorld();
+    const voxel::World box = test::boxWorld({3, 5, 4});
+    const voxel::ObjectPose there{kTurned.position + glm::dvec3(-14.0, 0.0, 12.0), kTurned.rotation, kTurned.pivot};
+    const voxel::ObjectPose keys[] = {kTurned, there};
+    Scene scene(ctx(), world, box, keys);
+    Renderer renderer(ctx(), scene.live.gpu(), skyOnly(world), cacheAo(world), kW, kH, scene.objects.get());
+    renderer.setObjectPoses(std::vector<voxel::ObjectPose>{kTurned});
+    const Camera camera = makeCamera(test::lookAt({-11.0, 14.0, -9.0}, {3.0, 0.0, 3.0}, 60.0), kW, kH);
+    const FrameImages before = converged(renderer, camera, 12);
+    renderer.setObjectPoses(std::vector<voxel::ObjectPose>{there});
+    renderer.render(camera, 12);
+    const FrameImages after = renderer.readback(camera, true);
+    size_t left = 0, trail = 0;
+    for (size_t i = 0; i < after.ao.size(); ++i) {
+        if (before.surfaceIds[i] == 0 || gpu::surfaceObject(before.surfaceIds[i]) != 0 || after.surfaceIds[i] != before.surfaceIds[i]) continue;
+        if (before.ao[i] > 0.9f) continue;  // darkened by the box before
+        ++left;
+        trail += after.ao[i] != 1.0f;  // the box is far now: nothing within R
+    }
+    ASSERT_GT(left, 50u) << "floor pixels the box darkened";
+    EXPECT_EQ(trail, 0u) << "the AO where the box was comes back at once, not over the history";
+}
+
+}  // namespace
+}  // namespace grotto
