@@ -86,10 +86,7 @@ vec3 exposed(vec3 radiance) { return radiance * frame.exposure.x; }
 // The surface's normal: its face's axis, or an object's face turned with it.
 vec3 surfaceNormal(uint surface) {
     if (surfaceObject(surface) != 0u) return objects.worldNormals[surfaceKey(surface) - 1u].xyz;
-    uint face = surfaceFace(surface);
-    vec3 normal = vec3(0.0);
-    normal[faceAxis(face)] = facePositive(face) ? 1.0 : -1.0;
-    return normal;
+    return faceAxisNormal(surfaceFace(surface));
 }
 
 // `ambient`: the light reaching the surface before AO; `aoShare`: the part of the
@@ -143,7 +140,8 @@ vec3 shadeCached(ivec2 q, uint surface) {
     bool found;
     vec4 c = cachedLightAt(q, surfaceFace(surface), found);  // AO, sun, horizon and zenith weights
     if (!found) return shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
-    float sunReach = cachedSun ? c.y * sunlit(q) : sunlit(q);  // with the cache's sun, the shadow pass holds the objects' alone
+    // With the cache's sun, the shadow pass holds the objects' alone.
+    float sunReach = cachedSun ? c.y * sunlit(q) : sunlit(q);
     return shadeSeen(surface, normal, max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)), sunReach, open);
 }
 #endif

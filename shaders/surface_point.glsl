@@ -5,17 +5,10 @@
 // A world face's axis exactly; an object's face turned with it.
 vec3 surfaceWorldNormal(uint surface) {
     if (surfaceObject(surface) != 0u) return objects.worldNormals[surfaceKey(surface) - 1u].xyz;
-    uint face = surfaceFace(surface);
-    vec3 normal = vec3(0.0);
-    normal[faceAxis(face)] = facePositive(face) ? 1.0 : -1.0;
-    return normal;
+    return faceAxisNormal(surfaceFace(surface));
 }
 
-vec3 surfaceViewPosition(ivec2 q) {
-    float z = trace.depthAB.y / (texelFetch(depthBuffer, q, 0).r + trace.depthAB.x);
-    vec2 m = (vec2(q) + 0.5) * trace.ndcToViewMul_Add.xy + trace.ndcToViewMul_Add.zw;
-    return vec3(m * z, -z);
-}
+vec3 surfaceViewPosition(ivec2 q) { return traceViewPosition(q, texelFetch(depthBuffer, q, 0).r); }
 
 // Where rays from the pixel's surface start (trace.glsl's traceStart).
 VoxelRayStart surfaceRayStart(vec3 position, uint surface, vec3 normal) {

@@ -140,6 +140,14 @@ vec4 objectGridSphere(vec4 r0, vec4 r1, vec4 r2, vec3 size) {
 }
 #endif
 
+// The camera-relative view-space point of full-res pixel q whose depth buffer
+// (D32, reverse-Z) holds `depth`.
+vec3 traceViewPosition(ivec2 q, float depth) {
+    float z = trace.depthAB.y / (depth + trace.depthAB.x);
+    vec2 m = (vec2(q) + 0.5) * trace.ndcToViewMul_Add.xy + trace.ndcToViewMul_Add.zw;
+    return vec3(m * z, -z);
+}
+
 // From a camera-relative view-space position. A world face (0..5: +X -X +Y -Y +Z -Z)
 // puts the point on its voxel plane, trace.normalOffset in front of it, as the
 // reference does, in the open voxel in front of the face (voxelRayOpenStart); for

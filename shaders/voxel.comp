@@ -36,8 +36,7 @@ float voxelVisibility(ivec2 pixel, float z) {
     uint face = 6u;
     if (surfaceObject(surface) == 0u) {  // a world face: its axis, exactly
         face = surfaceFace(surface);
-        normal = vec3(0.0);
-        normal[faceAxis(face)] = facePositive(face) ? 1.0 : -1.0;
+        normal = faceAxisNormal(face);
     }
     VoxelRayStart start = traceStart(gtaoViewPosition(vec2(pixel), z), face, normal);
     vec2 noise = gtaoNoise(uvec2(pixel), gtao.frameIndex);

@@ -28,6 +28,12 @@ GROTTO_INLINE uint quadHeight(uint bits) { return ((bits >> 20) & 31u) + 1u; }
 GROTTO_INLINE uint quadCoord(uint bits, uint axis) { return (bits >> (5u * axis)) & 31u; }
 GROTTO_INLINE uint faceAxis(uint face) { return face >> 1; }
 GROTTO_INLINE bool facePositive(uint face) { return (face & 1u) == 0u; }
+// The face's outward unit normal.
+GROTTO_FUNCTION vec3 faceAxisNormal(uint face) {
+    vec3 n = vec3(0.0f);
+    n[faceAxis(face)] = facePositive(face) ? 1.0f : -1.0f;
+    return n;
+}
 // U axis per face: +X:Y -X:Z +Y:Z -Y:X +Z:X -Z:Y; V axis: +X:Z -X:Y +Y:X -Y:Z +Z:Y -Z:X.
 GROTTO_INLINE uint faceUAxis(uint face) { return (0x100221u >> (4u * face)) & 15u; }
 GROTTO_INLINE uint faceVAxis(uint face) { return (0x012012u >> (4u * face)) & 15u; }
