@@ -15,7 +15,8 @@
 // the difference keeps the cache's meaning. The rays are averaged over the frames
 // in a full-res history reprojected as the soft sun's (surface_history.glsl). A
 // pixel in view of an object that moved since the last frame (at either pose)
-// starts afresh; one in view of none costs a test per object and writes 0.
+// starts afresh; one in view of none, or only of objects too far and small to
+// change its light by 1/512, costs a test per object and writes 0.
 // Writes RGBA16F: AO (taken, or the object's own), horizon and zenith weights.
 #include "shared/noise.h"
 #include "shared/objects.h"
@@ -63,6 +64,15 @@ bool rowsDiffer(vec4 a[3], vec4 b[3]) { return a[0] != b[0] || a[1] != b[1] || a
 // Is part of the sphere s in front of the plane through p with normal n?
 bool inView(vec4 s, vec3 p, vec3 n) { return dot(s.xyz - p, n) > -s.w; }
 
+// Can the sphere change the light at p by a visible amount? Within R of it the AO
+// may change by any amount; beyond, the sky light it takes is at most the
+// cosine-weighted share of the hemisphere it covers, below (r / d)^2, and under
+// 1/512 (a fifth of the cache's finest step) it is left out.
+bool matters(vec4 s, vec3 p) {
+    float d = length(s.xyz - p);
+    return d < trace.radiusVoxels + s.w || s.w * s.w * 512.0 > d * d;
+}
+
 void main() {
     ivec2 q = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(q, imageSize(lightOut)))) return;
@@ -82,12 +92,12 @@ void main() {
         vec3 size = vec3(trace.objects[k].size.xyz);
         vec4 now = objectGridSphere(trace.objects[k].fromWorld[0], trace.objects[k].fromWorld[1],
                                     trace.objects[k].fromWorld[2], size);
-        bool here = inView(now, p, normal);
+        bool here = inView(now, p, normal) && matters(now, p);
         seen = seen || here;
         if (rowsDiffer(trace.objects[k].fromWorld, trace.objects[k].previousFromWorld)) {
             vec4 before = objectGridSphere(trace.objects[k].previousFromWorld[0], trace.objects[k].previousFromWorld[1],
                                            trace.objects[k].previousFromWorld[2], size);
-            moved = moved || here || inView(before, p, normal);
+            moved = moved || here || (inView(before, p, normal) && matters(before, p));
         }
     }
     if (!seen) {  // no object changes this pixel's light: exactly none taken
