@@ -10,8 +10,10 @@
 #include "voxel/world.h"
 
 #include <atomic>
+#include <chrono>
 #include <map>
 #include <mutex>
+#include <thread>
 
 namespace grotto {
 namespace {
@@ -56,7 +58,8 @@ TEST_F(FrameWriterTest, EveryFrameReachesItsJob) {
 
 TEST_F(FrameWriterTest, FirstErrorReachesTheMainThreadAndStopsTheRest) {
     Rendering r(ctx());
-    std::atomic<int> ran{0}, after{0};
+    std::atomic<int> ran{0}, after{0}, afterCaught{0};
+    std::atomic<bool> thrown{false}, caughtHere{false};
     app::FrameWriter writer(ctx(), false, 2);
     std::string caught;
     try {
@@ -65,12 +68,22 @@ TEST_F(FrameWriterTest, FirstErrorReachesTheMainThreadAndStopsTheRest) {
             r.renderer->render(r.camera, uint32_t(i), &slot);
             writer.submit(slot, [&, i](const FrameImages&) {
                 ++ran;
-                if (i == 3) throw Error("frame.0003.png", "cannot be written: disk full");
+                if (caughtHere) ++afterCaught;
+                if (i == 3) {
+                    thrown = true;
+                    throw Error("frame.0003.png", "cannot be written: disk full");
+                }
+                // Later jobs wait for frame 3's to fail: on a busy machine its
+                // thread may be held up while the other runs frame after frame.
+                const auto start = std::chrono::steady_clock::now();
+                while (i > 3 && !thrown && std::chrono::steady_clock::now() - start < std::chrono::seconds(10))
+                    std::this_thread::yield();
                 if (i > 3) ++after;
             });
         }
         writer.finish();
     } catch (const Error& e) {
+        caughtHere = true;
         caught = e.what();
     }
     EXPECT_EQ(caught, "frame.0003.png: cannot be written: disk full");
@@ -78,6 +91,7 @@ TEST_F(FrameWriterTest, FirstErrorReachesTheMainThreadAndStopsTheRest) {
     // after, and the main thread stops at its next call.
     EXPECT_LT(ran.load(), 40) << "the run stopped at the error";
     EXPECT_LT(after.load(), 10);
+    EXPECT_EQ(afterCaught.load(), 0) << "no job starts once the main thread has the error";
 }
 
 }  // namespace
