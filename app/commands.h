@@ -17,5 +17,7 @@ void addTuneCommand(CLI::App& app);
 void addCompareCommand(CLI::App& app);
 void addViewCommand(CLI::App& app);
 void addBakeCommand(CLI::App& app);
+void addPathCommand(CLI::App& app);
+void addConvertCommand(CLI::App& app);
 
 }  // namespace grotto::app

@@ -1,7 +1,11 @@
-// grotto export-mesh WORLD -o FILE.ply: exactly the quads that are rasterised.
+// grotto export-mesh WORLD -o FILE.ply | FILE.glb | FILE.gltf: the world's surface
+// for other tools. PLY: exactly the quads that are rasterised. glTF: every exposed
+// face with its AO baked into the vertex colours (voxel/gltf/gltf_export.h).
 #include "app/commands.h"
+#include "app/options.h"
 #include "common/atomic_file.h"
 #include "grotto/error.h"
+#include "voxel/gltf/gltf_export.h"
 #include "voxel/ply_export.h"
 #include "voxel/world.h"
 
@@ -10,20 +14,53 @@
 namespace grotto::app {
 
 void addExportMeshCommand(CLI::App& app) {
-    struct Args { std::string world, output; bool faces = false; };
+    struct Args {
+        std::string world, output;
+        bool faces = false;
+        uint32_t rays = 256, texels = voxel::kDefaultBakeTexels, measure = 0;
+        AoFlags ao;
+    };
     auto args = std::make_shared<Args>();
-    CLI::App* cmd = app.add_subcommand("export-mesh", "Write the rasterised quads as a PLY in world units");
-    cmd->add_option("world", args->world, "World .json or .vdb")->required();
-    cmd->add_option("-o,--output", args->output, "Output .ply")->required();
-    cmd->add_flag("--no-greedy", args->faces, "One quad per exposed voxel face");
+    CLI::App* cmd = app.add_subcommand("export-mesh", "Write the world's surface as a PLY, or as glTF with its AO baked in");
+    cmd->add_option("world", args->world, "World .json, .vdb or .vox")->required();
+    cmd->add_option("-o,--output", args->output, "Output .ply, .glb or .gltf")->required();
+    cmd->add_flag("--no-greedy", args->faces, "PLY: one quad per exposed voxel face");
+    cmd->add_option("--rays", args->rays, "glTF: AO rays per face-cache texel")
+        ->capture_default_str()->check(CLI::Range(1u, 1u << 16));
+    cmd->add_option("--texels", args->texels, "glTF: face-cache texels per face side, read at the corners")
+        ->capture_default_str()->check(CLI::Range(1u, 16u));
+    cmd->add_option("--radius", args->ao.set.radius, "glTF: AO radius R in world units (default: the world's)");
+    cmd->add_option("--measure", args->measure,
+                    "glTF: also measure the vertex AO at this many random surface points against 4096-ray references")
+        ->check(CLI::Range(0u, 1000000u));
     cmd->callback([args] {
         const std::filesystem::path out = args->output;
-        if (out.extension() != ".ply") throw Error(out.string(), "output must end in .ply");
+        const std::string ext = out.extension().string();
+        if (ext != ".ply" && ext != ".glb" && ext != ".gltf")
+            throw Error(out.string(), "output must end in .ply, .glb or .gltf");
         requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
-        const voxel::Mesh mesh = world.mesh({.greedy = !args->faces});
-        voxel::writePly(mesh, out);
-        std::printf("wrote %s (%zu quads)\n", out.c_str(), mesh.quads.size());
+        if (ext == ".ply") {
+            const voxel::Mesh mesh = world.mesh({.greedy = !args->faces});
+            voxel::writePly(mesh, out);
+            std::printf("wrote %s (%zu quads)\n", out.c_str(), mesh.quads.size());
+            return;
+        }
+        const voxel::FaceBakeSettings bake{.radius = double(resolveAo(world, args->ao).estimator.radius),
+                                           .texelsPerSide = args->texels, .rays = args->rays, .sunRays = 1};
+        const voxel::AoMesh mesh = voxel::buildAoMesh(world, bake);
+        const uintmax_t bytes = voxel::writeGltfMesh(world, mesh, out);
+        size_t vertices = 0, triangles = 0;
+        for (const auto& p : mesh.primitives) vertices += p.positions.size(), triangles += p.indices.size() / 3;
+        std::printf("wrote %s (%zu faces, %zu vertices, %zu triangles, %zu materials, %.1f MiB, AO radius %g)\n",
+                    out.c_str(), mesh.faces.size(), vertices, triangles, mesh.primitives.size(), double(bytes) / (1 << 20),
+                    bake.radius);
+        if (args->measure) {
+            const voxel::AoMeshError e = voxel::measureAoMesh(world, mesh, bake, args->measure, 4096, 1);
+            std::printf("vertex AO at %zu random surface points against 4096-ray references: MAE %.4f, RMSE %.4f, "
+                        "bias %+.4f, max %.3f; the face cache's %u x %u texels there: MAE %.4f, RMSE %.4f\n",
+                        e.points, e.mae, e.rmse, e.bias, e.max, args->texels, args->texels, e.cacheMae, e.cacheRmse);
+        }
     });
 }
 

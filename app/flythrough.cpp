@@ -255,7 +255,7 @@ void addFlythroughCommand(CLI::App& app) {
     CLI::App* cmd = app.add_subcommand("flythrough", "Render a camera path to DIR/frame.NNNN.png and DIR/stats.json");
     args->cmd = cmd;
     cmd->add_option("world", args->world, "World .json or .vdb")->required();
-    cmd->add_option("--path", args->path, "Path named in the world file, or a path .json")->required();
+    addPathOptions(cmd, args->path);
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based, or N for the first N (default: the whole path)");

@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
     grotto::app::addCompareCommand(app);
     grotto::app::addViewCommand(app);
     grotto::app::addBakeCommand(app);
+    grotto::app::addPathCommand(app);
+    grotto::app::addConvertCommand(app);
     // Bare `grotto` is a usage error, but one worth the whole usage: on stdout,
     // with the usual one line on stderr.
     if (argc < 2) {

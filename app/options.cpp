@@ -3,6 +3,7 @@
 #include "grotto/error.h"
 #include "common/overloaded.h"
 #include "engine/scene/path_edits.h"
+#include "voxel/gltf/gltf_camera.h"
 #include "voxel/settings_table.h"
 
 #include <algorithm>
@@ -211,13 +212,17 @@ voxel::CameraPathDesc lookUpCameraPath(const voxel::World& world, const std::str
     if (auto it = paths.find(name); it != paths.end()) return it->second;
     std::string known;
     for (auto& [n, p] : paths) known += (known.empty() ? "" : ", ") + n;
-    const std::string hint = known.empty() ? "the world defines no paths; give --path FILE.json" : "paths: " + known;
-    if (std::filesystem::path(name).extension() == ".json") {
+    const std::string hint = known.empty() ? "the world defines no paths; give --path-file FILE.json or FILE.glb" : "paths: " + known;
+    const std::string ext = std::filesystem::path(name).extension().string();
+    if (ext == ".json" || ext == ".glb" || ext == ".gltf") {
+        auto load = [&](const std::filesystem::path& file) {
+            return ext == ".json" ? voxel::loadCameraPath(file) : voxel::importGltfCameraPath(file);
+        };
         // As given (relative to the current directory), else beside the world
         // file, where the shipped path files live.
         const std::filesystem::path beside = world.desc().source.parent_path() / name;
-        if (std::filesystem::exists(name)) return voxel::loadCameraPath(name);
-        if (std::filesystem::exists(beside)) return voxel::loadCameraPath(beside);
+        if (std::filesystem::exists(name)) return load(name);
+        if (std::filesystem::exists(beside)) return load(beside);
         throw Error(name, "no such path file in the current directory or beside " + world.desc().source.string(), hint);
     }
     throw Error(world.desc().source.string(), "has no path named '" + name + "'", hint);
@@ -229,6 +234,14 @@ voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::strin
     voxel::CameraPathDesc path = lookUpCameraPath(world, name);
     checkPathEdits(path, world);
     return path;
+}
+
+void addPathOptions(CLI::App* cmd, std::string& path) {
+    CLI::Option_group* group = cmd->add_option_group("path", "The camera path: one of");
+    group->add_option("--path", path, "Path named in the world file, or a path .json");
+    group->add_option("--path-file", path,
+                      "A path file: a path .json, or a glTF .glb/.gltf whose animated camera plays (docs/paths.md)");
+    group->require_option(1);
 }
 
 CLI::Validator finiteRange(double min, double max) {

@@ -47,10 +47,14 @@ inline constexpr int64_t kMaxPathFrames = 1'000'000;
 // path's duration when there would be more than kMaxPathFrames.
 int pathFrameCount(const CameraPath& path, int fps, const std::string& name);
 
-// A path named in the world file, or a path .json given directly, with its edits
-// checked against the world (checkPathEdits); throws grotto::Error (input)
-// listing the world's paths when there is no such one.
+// A path named in the world file, or a path file given directly (a path .json, or
+// a glTF .glb/.gltf whose animated camera becomes the path: voxel/gltf/gltf_camera.h),
+// with its edits checked against the world (checkPathEdits); throws grotto::Error
+// (input) listing the world's paths when there is no such one.
 voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name);
+
+// --path NAME and --path-file FILE, one of them required, both into `path`.
+void addPathOptions(CLI::App* cmd, std::string& path);
 
 // The AO flags every rendering subcommand takes, with the level-of-detail ones:
 // one per setting of voxel/settings_table.cpp that has a flag; unset ones keep

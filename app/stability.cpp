@@ -54,7 +54,7 @@ void addStabilityCommand(CLI::App& app) {
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("stability", "Measure flicker, error, ghosting and cost along a camera path");
     cmd->add_option("world", args->world, "World .json or .vdb")->required();
-    cmd->add_option("--path", args->path, "Path named in the world file, or a path .json")->required();
+    addPathOptions(cmd, args->path);
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--frames", args->frames,

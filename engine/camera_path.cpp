@@ -25,7 +25,7 @@ CameraPath::CameraPath(const voxel::CameraPathDesc& desc, const voxel::CameraDes
 }
 
 CameraPath::Shot::Shot(std::span<const voxel::PathKey> keys, const voxel::CameraPathDesc& desc, double defaultFov)
-    : constantSpeed_(desc.constantSpeed) {
+    : linear_(desc.interpolation == voxel::PathInterpolation::Linear), constantSpeed_(desc.constantSpeed) {
     std::vector<glm::dvec3> points;
     std::vector<glm::dquat> rotations;
     std::vector<double> fovs;
@@ -38,6 +38,12 @@ CameraPath::Shot::Shot(std::span<const voxel::PathKey> keys, const voxel::Camera
     }
     if (keys.size() == 1) {
         still_ = {points[0], glm::mat3_cast(rotations[0]), fovs[0]};
+        return;
+    }
+    if (linear_) {
+        points_ = std::move(points);
+        keyRotations_ = std::move(rotations);
+        fovs_ = std::move(fovs);
         return;
     }
     curve_ = spline::CentripetalCurve(points);
@@ -81,8 +87,21 @@ size_t CameraPath::shotAt(double time) const {
 
 CameraPose CameraPath::pose(double time) const { return shots_[shotAt(time)].pose(time); }
 
+CameraPose CameraPath::Shot::linearPose(double time) const {
+    const size_t k = std::clamp(size_t(std::upper_bound(times_.begin(), times_.end(), time) - times_.begin()),
+                                size_t(1), times_.size() - 1) - 1;
+    const double u = std::clamp((time - times_[k]) / (times_[k + 1] - times_[k]), 0.0, 1.0);
+    CameraPose pose;
+    pose.position = glm::mix(points_[k], points_[k + 1], u);
+    pose.basis = glm::mat3_cast(glm::slerp(keyRotations_[k], keyRotations_[k + 1], u));  // the short arc
+    if (rollFree_) pose.basis = lookAtBasis(pose.position, pose.position - pose.basis[2]);
+    pose.fovDegrees = fovs_[k] + (fovs_[k + 1] - fovs_[k]) * u;
+    return pose;
+}
+
 CameraPose CameraPath::Shot::pose(double time) const {
     if (times_.size() == 1) return still_;
+    if (linear_) return linearPose(time);
     const double s = curveParameter(time);
     CameraPose pose;
     pose.position = curve_(s);

@@ -2,7 +2,7 @@
 // Evaluates a camera path (voxel/camera_path_desc.h) at a time in seconds:
 // position on a centripetal Catmull-Rom curve through the keys, rotation by squad
 // between the keys' rotations (look-at keys stay roll-free, Y up), fov by a
-// monotone cubic. Keys are met at their times, unless the path asks for constant
+// monotone cubic; or, for a linear path, straight lines, slerp and linear fov. Keys are met at their times, unless the path asks for constant
 // speed, which spreads each shot's curve evenly over its keys' time span. A key
 // marked "cut" starts a new shot: the camera jumps there and the curve restarts.
 #include "engine/camera.h"
@@ -50,13 +50,18 @@ private:
 
     private:
         double curveParameter(double time) const;
+        CameraPose linearPose(double time) const;
 
         std::vector<double> times_;
         spline::CentripetalCurve curve_;
         spline::RotationSpline rotations_;
         spline::MonotoneCubic timeToCurve_, fov_;
         std::vector<double> arcKnot_, arcLength_;  // cumulative length along the curve, for constant speed
-        bool constantSpeed_ = false, rollFree_ = true;
+        // A linear shot's keys, as they are.
+        std::vector<glm::dvec3> points_;
+        std::vector<glm::dquat> keyRotations_;
+        std::vector<double> fovs_;
+        bool linear_ = false, constantSpeed_ = false, rollFree_ = true;
         CameraPose still_;  // a one-key shot's pose
     };
 

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
-# Fuzzes the world JSON, camera-path JSON, .vdb and baked face cache (.gfc) readers with libFuzzer, one
+# Fuzzes the world JSON, camera-path JSON, .vdb, baked face cache (.gfc), MagicaVoxel .vox
+# and glTF camera readers with libFuzzer, one
 # target after another, SECONDS each (default 600), and prints each one's
 # executions, speed and crashes. Not part of CI. Corpora grow in out/fuzz/TARGET/corpus
 # (git-ignored) from run to run; crash, leak, timeout and out-of-memory inputs are
 # written beside them. Reproduce one: build-fuzz/fuzz/fuzz_TARGET FILE
-#   scripts/fuzz.sh [SECONDS] [TARGET...]     TARGET: world_json path_json vdb face_cache
+#   scripts/fuzz.sh [SECONDS] [TARGET...]     TARGET: world_json path_json vdb face_cache vox gltf_camera
 set -euo pipefail
 cd "$(dirname "$0")/.."
 seconds=${1:-600}
-targets=(world_json path_json vdb face_cache)
+targets=(world_json path_json vdb face_cache vox gltf_camera)
 [ $# -gt 1 ] && targets=("${@:2}")
 
 # Fuzzing only: clang, its libFuzzer runtime, and jq to cut inline paths out of the worlds.
@@ -31,6 +32,8 @@ seed_dir() {  # the shipped inputs each target starts from
             done ;;
         vdb) cp worlds/*.vdb "$dir"/ && build-fuzz/fuzz/fuzz_vdb_seeds "$dir" ;;
         face_cache) build-fuzz/fuzz/fuzz_face_cache_seeds "$dir" ;;
+        vox) build-fuzz/fuzz/fuzz_vox_seeds "$dir" ;;
+        gltf_camera) build-fuzz/fuzz/fuzz_gltf_camera_seeds "$dir" ;;
     esac
     echo "$dir"
 }

@@ -4,6 +4,8 @@
 // grotto needs for a good world (its peak resident set, measured; RLIMIT_AS at
 // 2 GiB only keeps a failing run from taking the machine).
 #include "tests/cli_fixture.h"
+#include "tests/gltf_camera_writer.h"
+#include "tests/vox_writer.h"
 
 #include <gtest/gtest.h>
 #include "voxel/openvdb_grids.h"
@@ -13,6 +15,7 @@
 #include <climits>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <random>
 
 namespace grotto {
@@ -60,6 +63,28 @@ protected:
         return dir_ / name;
     }
 
+    // `real` with one bit flipped at byte at(n), for n < count, each file run as
+    // `command` FILE `tail`: read (exit 0), or refused in one line naming the file
+    // (exit 2) with `output` not written; never a crash, never past the caps.
+    void expectBitFlipsReadOrRefused(const std::string& real, const std::string& ext, const std::string& command,
+                                     const std::string& tail, const fs::path& output, int count,
+                                     const std::function<size_t(int n)>& at, std::mt19937& rng) {
+        for (int n = 0; n < count; ++n) {
+            std::string bytes = real;
+            const size_t i = at(n);
+            bytes[i] = char(bytes[i] ^ (1 << (rng() % 8)));
+            const fs::path flipped = writeBytes("flip" + std::to_string(n) + ext, bytes);
+            const test::RunResult r = runGrotto(command + " " + flipped.string() + tail, "", kCaps);
+            EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 2) << r.err;
+            if (r.exitCode == 2) {
+                EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+                EXPECT_NE(r.err.find(flipped.filename().string()), std::string::npos) << r.err;
+                if (!output.empty()) EXPECT_FALSE(fs::exists(output));
+            }
+            if (!output.empty()) fs::remove(output);
+        }
+    }
+
     fs::path oneVoxelGrid(const std::string& name, openvdb::Coord at, openvdb::math::Transform::Ptr xf = nullptr) {
         auto grid = openvdb::BoolGrid::create(false);
         grid->setName("solid");
@@ -104,19 +129,63 @@ TEST_F(HostileInputs, DamagedFaceCaches) {
                                            " -o " + out.string(),
                                        "cut", out);
     std::mt19937 rng(3);
-    for (int n = 0; n < 14; ++n) {
-        std::string bytes = real;
-        const size_t at = n < 7 ? size_t(n) * 13 : 88 + rng() % (real.size() - 88);  // header, then texels
-        bytes[at] = char(bytes[at] ^ (1 << (rng() % 8)));
-        const fs::path flipped = writeBytes("flip" + std::to_string(n) + ".gfc", bytes);
-        const test::RunResult r = runGrotto("bake --merge " + flipped.string() + " -o " + out.string(), "", kCaps);
-        EXPECT_TRUE(r.exitCode == 0 || r.exitCode == 2) << r.err;
-        if (r.exitCode == 2) {
-            EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-            EXPECT_NE(r.err.find("flip"), std::string::npos) << r.err;
-        }
-        fs::remove(out);
-    }
+    expectBitFlipsReadOrRefused(real, ".gfc", "bake --merge", " -o " + out.string(), out, 14, [&](int n) {
+        return n < 7 ? size_t(n) * 13 : 88 + rng() % (real.size() - 88);  // header, then texels
+    }, rng);
+}
+
+// A glTF camera file cut at many offsets is refused; one with a bit flipped
+// anywhere is refused or, where the file stays consistent, read: never a crash,
+// never more than the caps, never a half-written path file.
+TEST_F(HostileInputs, DamagedGltfCameras) {
+    test::GltfCameraScene s;
+    s.samplers = {{"translation", "CUBICSPLINE", {0, 1}, {0, 0, 0, 0, 0, 0, 8, 0, 0, -4, 6, 0, 5, 2, 1, 0, 0, 0}},
+                  {"rotation", "STEP", {0, 2}, {0, 0, 0, 1, 0, 0.38f, 0, 0.92f}}};
+    ASSERT_TRUE(test::writeGltfCamera(s, dir_ / "good.glb"));
+    const std::string real = bytesOf(dir_ / "good.glb");
+    const fs::path out = dir_ / "shot.json";
+    for (size_t cut : {size_t(0), size_t(4), size_t(12), size_t(20), size_t(100), real.size() / 2, real.size() - 40, real.size() - 1})
+        expectCommandRefusedWithinCaps("path import " + writeBytes("cut" + std::to_string(cut) + ".glb", real.substr(0, cut)).string() +
+                                           " -o " + out.string(), "cut", out);
+    std::mt19937 rng(5);
+    expectBitFlipsReadOrRefused(real, ".glb", "path import", " -o " + out.string(), out, 24,
+                                [&](int) { return rng() % real.size(); }, rng);
+}
+
+// A MagicaVoxel scene cut at many offsets is refused naming the file; one with a
+// bit flipped anywhere is refused or, where it stays consistent, read; an
+// instancing bomb (a small file placing more than 2^24 voxels) is refused. All
+// within the caps, through `info`, which reads, builds and meshes the world.
+TEST_F(HostileInputs, DamagedAndHostileVoxFiles) {
+    using voxel::test::VoxWriter;
+    std::vector<std::array<uint8_t, 4>> block;
+    for (uint8_t x = 0; x < 6; ++x)
+        for (uint8_t y = 0; y < 6; ++y)
+            for (uint8_t z = 0; z < 3; ++z) block.push_back({x, y, z, uint8_t(1 + (x + y) % 3)});
+    const std::vector<uint8_t> good = VoxWriter()
+        .model({6, 6, 3}, block).model({1, 1, 2}, {{0, 0, 0, 4}, {0, 0, 1, 4}})
+        .transform(0, 1).group(1, {2, 4}).transform(2, 3, {0, 0, 0}, 0x11).shape(3, 0)
+        .transform(4, 5, {0, 0, 4}).shape(5, 1).material(4, {{"_type", "_emit"}, {"_emit", "2"}})
+        .bytes();
+    const std::string real(good.begin(), good.end());
+    ASSERT_EQ(runGrotto("info " + writeBytes("good.vox", real).string(), "", kCaps).exitCode, 0);
+    for (size_t cut : {size_t(0), size_t(4), size_t(8), size_t(20), size_t(40), size_t(100), real.size() / 2, real.size() - 9,
+                       real.size() - 1})
+        expectRefusedWithinCaps(writeBytes("cut" + std::to_string(cut) + ".vox", real.substr(0, cut)), "cut");
+    std::mt19937 rng(9);
+    expectBitFlipsReadOrRefused(real, ".vox", "info", "", {}, 24, [&](int) { return rng() % real.size(); }, rng);
+    // 4096 instances of a 4096-voxel model: 16 KiB of nodes placing 2^24 + 4096 voxels.
+    std::vector<std::array<uint8_t, 4>> slab;
+    for (uint8_t x = 0; x < 64; ++x)
+        for (uint8_t y = 0; y < 64; ++y) slab.push_back({x, y, 0, 1});
+    VoxWriter bomb;
+    bomb.model({64, 64, 1}, slab);
+    std::vector<int32_t> children;
+    for (int32_t i = 0; i < 4097; ++i) children.push_back(2 + 2 * i);
+    bomb.transform(0, 1).group(1, children);
+    for (int32_t i = 0; i < 4097; ++i) bomb.transform(2 + 2 * i, 3 + 2 * i, {0, 0, i}).shape(3 + 2 * i, 0);
+    const std::vector<uint8_t> b = bomb.bytes();
+    expectRefusedWithinCaps(writeBytes("bomb.vox", std::string(b.begin(), b.end())), "bomb.vox");
 }
 
 TEST_F(HostileInputs, ExtremeTransforms) {

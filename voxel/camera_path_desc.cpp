@@ -37,7 +37,13 @@ CameraPathDesc parseCameraPath(Reader& r, const fs::path& file, const std::strin
     CameraPathDesc p;
     p.source = file;
     p.field = field;
+    const std::string interpolation = r.string("interpolation", "smooth");
+    if (interpolation != "smooth" && interpolation != "linear")
+        r.fail("interpolation", "'" + interpolation + "' is not an interpolation", "accepted: smooth, linear");
+    p.interpolation = interpolation == "linear" ? PathInterpolation::Linear : PathInterpolation::Smooth;
     p.constantSpeed = r.boolean("constant_speed", false);
+    if (p.constantSpeed && p.interpolation == PathInterpolation::Linear)
+        r.fail("constant_speed", "is for smooth paths", "a linear path meets its keys at their times");
     if (r.has("fov")) p.fovDegrees = r.number("fov", 60.0, 1.0, 170.0);
     if (r.has("near")) p.nearPlane = r.number("near", 0.05, 1e-4, 10.0);
     if (r.has("far")) p.farPlane = r.number("far", 0.0, 0.0, 1e7);

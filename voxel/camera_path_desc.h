@@ -34,11 +34,18 @@ struct TimedEdit {
     std::string field;  // where in the file ("paths.dig.edits[2]"), for errors found later
 };
 
+// How the camera moves between keys.
+enum class PathInterpolation {
+    Smooth,  // a centripetal Catmull-Rom curve, squad rotations, monotone cubic fov
+    Linear,  // straight lines, slerp and linear fov: a path sampled from an animation
+};
+
 struct CameraPathDesc {
     std::filesystem::path source;  // the file the path was read from
     std::string field;             // where in it ("paths.walk"), empty for a whole path file
     std::vector<PathKey> keys;     // at least two
-    bool constantSpeed = false;    // reparametrise by arc length
+    PathInterpolation interpolation = PathInterpolation::Smooth;
+    bool constantSpeed = false;    // reparametrise by arc length (smooth paths only)
     std::vector<TimedEdit> edits;  // the "edits" track, in time order; empty = a static world
     // Unset = the world's camera conventions (its default camera).
     std::optional<double> fovDegrees, nearPlane, farPlane;

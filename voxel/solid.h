@@ -49,6 +49,12 @@ std::string overBudget(double bricks, double bytes, size_t budget);
 // because a reader process under limits reads it first. Throws grotto::Error.
 openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc);
 
+// A MagicaVoxel scene's visible voxels as an int32 grid of colour indices (one
+// world unit a voxel, MagicaVoxel's origin at 0; voxel/vox_world.h), refused over
+// desc.memoryBudgetBytes before any voxel is placed.
+struct VoxScene;
+openvdb::GridBase::Ptr voxGrid(const VoxScene& scene, const WorldDesc& desc);
+
 // Applies the solid rule; fills impl.solid, impl.materials, impl.uniformMaterial.
 void buildSolid(const openvdb::GridBase::Ptr& grid, World::Impl& impl);
 

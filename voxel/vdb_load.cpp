@@ -4,6 +4,8 @@
 #include "common/limited_child.h"
 #include "voxel/solid.h"
 #include "voxel/vdb_reader_program.h"
+#include "voxel/vox_read.h"
+#include "voxel/vox_world.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -16,6 +18,8 @@ namespace grotto::voxel {
 
 openvdb::GridBase::Ptr loadGrid(const WorldDesc& desc) {
     const std::string path = desc.gridFile.string();
+    // A .vox is read by our own parser, which checks every size before it allocates.
+    if (isVoxFile(desc.gridFile)) return voxGrid(readVoxFile(desc.gridFile), desc);
     requireInputFile(desc.gridFile, desc.source != desc.gridFile
                                         ? "named by '" + desc.source.string() + "' field 'grid.file'; give an OpenVDB .vdb file"
                                         : "give the path of an OpenVDB .vdb file");

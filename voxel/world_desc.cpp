@@ -6,6 +6,7 @@
 #include "voxel/grid_block.h"
 #include "voxel/json_reader.h"
 #include "voxel/settings_table.h"
+#include "voxel/vox_world.h"
 
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
@@ -166,6 +167,15 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
             w.materials.push_back(mat);
         }
     }
+    if (isVoxFile(w.gridFile)) {
+        // A MagicaVoxel model: its palette unless the file gives materials; its
+        // colour indices are the material ids.
+        if (w.rule != SolidRule::Auto && w.rule != SolidRule::Int32)
+            r.fail("grid.rule", std::string("'") + solidRuleName(w.rule) + "' does not apply to a .vox model",
+                   "a .vox model's voxels are solid, its colour indices the material ids");
+        w.rule = SolidRule::Int32;
+        if (!r.has("materials")) w.materials = voxMaterials(readVoxFile(w.gridFile));
+    }
     readSettings(r, "", w);  // lighting, ao, detail
     std::string firstCamera;  // in file order: the default unless 'default_camera' says otherwise
     if (r.has("cameras")) {
@@ -193,12 +203,20 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
 }  // namespace
 
 WorldDesc loadWorldDesc(const fs::path& path) {
-    requireInputFile(path, "give a world .json or a .vdb grid file");
+    requireInputFile(path, "give a world .json, a .vdb grid file or a MagicaVoxel .vox model");
     if (path.extension() == ".vdb") {
         WorldDesc w;
         w.source = path;
         w.gridFile = path;
         w.materials = defaultMaterials();
+        return w;
+    }
+    if (isVoxFile(path)) {
+        WorldDesc w;
+        w.source = path;
+        w.gridFile = path;
+        w.rule = SolidRule::Int32;
+        w.materials = voxMaterials(readVoxFile(path));
         return w;
     }
     const json doc = readJsonFile(path, "a world file is a JSON object with at least \"grid\": {\"file\": ...}");

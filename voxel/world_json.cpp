@@ -102,6 +102,7 @@ json editJson(const TimedEdit& t) {
 
 json pathJson(const CameraPathDesc& p) {
     json j = json::object();
+    if (p.interpolation == PathInterpolation::Linear) j["interpolation"] = "linear";
     if (p.constantSpeed) j["constant_speed"] = true;
     if (p.fovDegrees) j["fov"] = *p.fovDegrees;
     if (p.nearPlane) j["near"] = *p.nearPlane;
