@@ -14,6 +14,7 @@ packages=(
   gnuplot-nox                                                     # grotto tradeoff --plot
   ffmpeg                                                          # grotto flythrough --video
   libglfw3-dev libimgui-dev                                       # grotto view
+  libtinygltf-dev                                                 # glTF in (cameras) and out (meshes)
   xvfb xauth                                                      # the viewer's tests, headless
   "$@"
 )

@@ -113,8 +113,9 @@ public:
     Engine(const Engine&) = delete;
     Engine& operator=(const Engine&) = delete;
 
-    // The world: a world .json or .vdb (docs/worlds.md), or one built in memory with
-    // a palette (empty: Grotto's default palette: stone, grass, wood, brick, ...).
+    // The world: a world .json, .vdb (docs/worlds.md) or MagicaVoxel .vox
+    // (docs/formats.md), or one built in memory with a palette (empty: Grotto's
+    // default palette: stone, grass, wood, brick, ...).
     // Its lighting, AO settings and default camera become the engine's (without
     // cameras of its own: one framing its bounds in the engine's image size).
     // Throws grotto::Error (input) on bad input, leaving the engine as it was.
