@@ -189,5 +189,38 @@ TEST(GltfCamera, BrokenFilesAreRefusedNamingTheFile) {
     EXPECT_THROW((void)voxel::importGltfCameraPath(dir / "cut.glb"), Error);
 }
 
+// Every cut of a camera file and every byte of it changed: read, or refused with
+// grotto::Error naming the file; never anything else (the sanitizers watch).
+TEST(GltfCamera, EveryTruncationAndChangedByteIsReadOrRefused) {
+    const test::ScratchDir dir;
+    test::GltfCameraScene s = linearScene();
+    s.samplers.push_back({"scale", "CUBICSPLINE", {0, 1}, {0, 0, 0, 1, 1, 1, 0, 0, 0, 0, 0, 0, 2, 2, 2, 0, 0, 0}, 0});
+    ASSERT_TRUE(test::writeGltfCamera(s, dir / "good.glb"));
+    std::ifstream in(dir / "good.glb", std::ios::binary);
+    const std::string real{std::istreambuf_iterator<char>(in), {}};
+    const std::filesystem::path file = dir / "bad.glb";
+    int read = 0, refused = 0;
+    auto attempt = [&](const std::string& bytes) {
+        std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+        try {
+            const voxel::CameraPathDesc p = voxel::importGltfCameraPath(file);
+            for (const voxel::PathKey& k : p.keys) ASSERT_TRUE(std::isfinite(k.time) && std::isfinite(k.position.x));
+            ++read;
+        } catch (const Error& e) {
+            ASSERT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+            ++refused;
+        }
+    };
+    for (size_t cut = 0; cut < real.size(); cut += 7) attempt(real.substr(0, cut));
+    for (size_t i = 0; i < real.size(); ++i) {
+        std::string bytes = real;
+        bytes[i] = char(bytes[i] ^ (1 << (i % 8)));
+        attempt(bytes);
+    }
+    EXPECT_GT(refused, 0);
+    EXPECT_GT(read, 0);  // a changed float in a key is still a camera
+    std::printf("%d read, %d refused\n", read, refused);
+}
+
 }  // namespace
 }  // namespace grotto

@@ -144,11 +144,13 @@ TEST_F(HostileInputs, DamagedGltfCameras) {
     ASSERT_TRUE(test::writeGltfCamera(s, dir_ / "good.glb"));
     const std::string real = bytesOf(dir_ / "good.glb");
     const fs::path out = dir_ / "shot.json";
-    for (size_t cut : {size_t(0), size_t(4), size_t(12), size_t(20), size_t(100), real.size() / 2, real.size() - 40, real.size() - 1})
+    // A sample through the command line (exit code, one line, caps); GltfCamera's
+    // tests try every cut and byte in-process.
+    for (size_t cut : {size_t(0), size_t(12), size_t(100), real.size() / 2, real.size() - 1})
         expectCommandRefusedWithinCaps("path import " + writeBytes("cut" + std::to_string(cut) + ".glb", real.substr(0, cut)).string() +
                                            " -o " + out.string(), "cut", out);
     std::mt19937 rng(5);
-    expectBitFlipsReadOrRefused(real, ".glb", "path import", " -o " + out.string(), out, 24,
+    expectBitFlipsReadOrRefused(real, ".glb", "path import", " -o " + out.string(), out, 8,
                                 [&](int) { return rng() % real.size(); }, rng);
 }
 
@@ -169,11 +171,12 @@ TEST_F(HostileInputs, DamagedAndHostileVoxFiles) {
         .bytes();
     const std::string real(good.begin(), good.end());
     ASSERT_EQ(runGrotto("info " + writeBytes("good.vox", real).string(), "", kCaps).exitCode, 0);
-    for (size_t cut : {size_t(0), size_t(4), size_t(8), size_t(20), size_t(40), size_t(100), real.size() / 2, real.size() - 9,
-                       real.size() - 1})
+    // A sample through the command line (exit code, one line, caps); VoxReadHostile's
+    // tests try every cut and every bit in-process.
+    for (size_t cut : {size_t(0), size_t(8), size_t(40), real.size() / 2, real.size() - 1})
         expectRefusedWithinCaps(writeBytes("cut" + std::to_string(cut) + ".vox", real.substr(0, cut)), "cut");
     std::mt19937 rng(9);
-    expectBitFlipsReadOrRefused(real, ".vox", "info", "", {}, 24, [&](int) { return rng() % real.size(); }, rng);
+    expectBitFlipsReadOrRefused(real, ".vox", "info", "", {}, 8, [&](int) { return rng() % real.size(); }, rng);
     // 4096 instances of a 4096-voxel model: 16 KiB of nodes placing 2^24 + 4096 voxels.
     std::vector<std::array<uint8_t, 4>> slab;
     for (uint8_t x = 0; x < 64; ++x)
