@@ -179,6 +179,9 @@ TEST(GltfCamera, BrokenFilesAreRefusedNamingTheFile) {
     test::GltfCameraScene cubic = linearScene();
     cubic.samplers[0].interpolation = "CUBICSPLINE";  // a third of the values it needs
     refused(cubic, "cubic.glb", "output values");
+    // A .gltf whose buffer is a device: refused, not read forever.
+    std::ofstream(dir / "device.gltf") << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "/dev/zero", "byteLength": 64}]})";
+    EXPECT_THROW((void)voxel::importGltfCameraPath(dir / "device.gltf"), Error);
     // Not glTF at all, and a truncated .glb.
     std::ofstream(dir / "text.glb") << "hello";
     EXPECT_THROW((void)voxel::importGltfCameraPath(dir / "text.glb"), Error);

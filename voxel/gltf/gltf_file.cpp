@@ -20,6 +20,29 @@ bool keepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*,
     return true;
 }
 
+// Files a .gltf names (its buffers) are read only when they are regular files
+// within the size bound: a URI naming /dev/zero or a FIFO must not hang a run.
+bool isRegularFile(const std::string& path, void*) {
+    std::error_code ec;
+    return fs::is_regular_file(path, ec);
+}
+std::string asGiven(const std::string& path, void*) { return path; }
+bool readBoundedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+    std::error_code ec;
+    const uintmax_t size = fs::is_regular_file(path, ec) ? fs::file_size(path, ec) : 0;
+    if (ec || !fs::is_regular_file(path, ec) || size > kMaxGltfFileBytes) {
+        if (err) *err += "buffer file '" + path + "' is not a readable regular file of at most 256 MiB\n";
+        return false;
+    }
+    std::ifstream in(path, std::ios::binary);
+    out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    return !in.bad();
+}
+bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
+    if (err) *err += "writing is not done here\n";
+    return false;
+}
+
 std::string firstLine(const std::string& text) {
     const std::string line = text.substr(0, text.find('\n'));
     return line.empty() ? "not a glTF 2.0 file" : line;
@@ -41,6 +64,7 @@ tinygltf::Model readGltf(const fs::path& path) {
     if (!in.eof() && in.fail()) throw Error(file, "cannot be read");
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keepImageUndecoded, nullptr);
+    loader.SetFsCallbacks({isRegularFile, asGiven, readBoundedFile, refuseWrite, nullptr});
     tinygltf::Model model;
     std::string err, warn;
     const std::string dir = path.parent_path().empty() ? "." : path.parent_path().string();
