@@ -7,6 +7,7 @@
 #include "voxel/settings_table.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
@@ -213,7 +214,11 @@ voxel::CameraPathDesc lookUpCameraPath(const voxel::World& world, const std::str
     std::string known;
     for (auto& [n, p] : paths) known += (known.empty() ? "" : ", ") + n;
     const std::string hint = known.empty() ? "the world defines no paths; give --path-file FILE.json or FILE.glb" : "paths: " + known;
-    const std::string ext = std::filesystem::path(name).extension().string();
+    std::string ext = std::filesystem::path(name).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    std::error_code ec;
+    if (ext != ".json" && ext != ".glb" && ext != ".gltf" && std::filesystem::is_regular_file(name, ec))
+        throw Error(name, "is not a path file", "a path .json, or a glTF .glb or .gltf with an animated camera");
     if (ext == ".json" || ext == ".glb" || ext == ".gltf") {
         auto load = [&](const std::filesystem::path& file) {
             return ext == ".json" ? voxel::loadCameraPath(file) : voxel::importGltfCameraPath(file);

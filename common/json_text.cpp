@@ -6,10 +6,9 @@
 #include <fstream>
 
 namespace grotto {
-namespace {
 
 // Counts brackets outside strings; stops at the first too deep.
-void requireShallowJson(const std::string& text, const std::string& where) {
+void requireShallowJson(std::string_view text, const std::string& where) {
     int depth = 0;
     bool inString = false, escaped = false;
     for (const char c : text) {
@@ -28,8 +27,6 @@ void requireShallowJson(const std::string& text, const std::string& where) {
         }
     }
 }
-
-}  // namespace
 
 std::string readJsonText(const std::filesystem::path& path, const std::string& hint, size_t maxBytes) {
     requireInputFile(path, hint);

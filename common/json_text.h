@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace grotto {
 
@@ -18,5 +19,9 @@ inline constexpr int kMaxJsonDepth = 64;
 // (input) naming the file otherwise; `hint` says what the file should hold.
 // (A file that grows with a run, like a flythrough's stats, may allow more bytes.)
 std::string readJsonText(const std::filesystem::path& path, const std::string& hint, size_t maxBytes = kMaxJsonBytes);
+
+// The depth check alone, for JSON text found inside another file (a .glb's JSON
+// chunk): throws grotto::Error (input) naming `where` past kMaxJsonDepth.
+void requireShallowJson(std::string_view text, const std::string& where);
 
 }  // namespace grotto

@@ -137,6 +137,24 @@ TEST(GltfCamera, BlenderExportsPlayWhereBlenderPutsTheCamera) {
     }
 }
 
+// A mirroring scale on the camera's node, and a morph-weights channel beside the
+// camera's own: the camera still looks down its node's -Z, up its +Y, and moves
+// as its translation says.
+TEST(GltfCamera, AMirroredCameraNodeStillLooksDownItsMinusZ) {
+    test::GltfCameraScene s = linearScene();
+    s.samplers.push_back({"scale", "LINEAR", {0, 2}, {-1, 1, 1, -1, 1, 1}});
+    const test::ScratchDir dir;
+    ASSERT_TRUE(test::writeGltfCamera(s, dir / "mirror.glb"));
+    const CameraPath path(voxel::importGltfCameraPath(dir / "mirror.glb"), voxel::CameraDesc{});
+    for (double t = 0.0; t <= 2.0; t += 0.25) {
+        const auto want = expectedLinear(t);
+        const glm::dmat3 m = glm::mat3_cast(want.rotation);
+        EXPECT_LT(glm::length(path.pose(t).position - want.position), 1e-5);
+        EXPECT_LT(glm::length(path.pose(t).basis[2] - m[2]), 1e-5) << "t " << t;  // back (view is -back)
+        EXPECT_LT(glm::length(path.pose(t).basis[1] - m[1]), 1e-5) << "t " << t;
+    }
+}
+
 TEST(GltfCamera, ThePathFileWrittenFromItReadsBackTheSame) {
     const test::ScratchDir dir;
     ASSERT_TRUE(test::writeGltfCamera(linearScene(), dir / "shot.glb"));
@@ -179,6 +197,18 @@ TEST(GltfCamera, BrokenFilesAreRefusedNamingTheFile) {
     test::GltfCameraScene cubic = linearScene();
     cubic.samplers[0].interpolation = "CUBICSPLINE";  // a third of the values it needs
     refused(cubic, "cubic.glb", "output values");
+    test::GltfCameraScene twice = linearScene();
+    twice.samplers.push_back(twice.samplers[0]);
+    refused(twice, "twice.glb", "again");
+    // JSON nested past 64 levels (tinygltf's parser would recurse once per level).
+    std::ofstream(dir / "deep.gltf") << R"({"asset": {"version": "2.0", "extras": )" << std::string(100000, '[')
+                                      << std::string(100000, ']') << "}}";
+    try {
+        (void)voxel::importGltfCameraPath(dir / "deep.gltf");
+        ADD_FAILURE() << "deep.gltf was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("64 deep"), std::string::npos) << e.what();
+    }
     // A .gltf whose buffer is a device: refused, not read forever.
     std::ofstream(dir / "device.gltf") << R"({"asset": {"version": "2.0"}, "buffers": [{"uri": "/dev/zero", "byteLength": 64}]})";
     EXPECT_THROW((void)voxel::importGltfCameraPath(dir / "device.gltf"), Error);

@@ -51,7 +51,8 @@ openvdb::GridBase::Ptr voxGrid(const VoxScene& scene, const WorldDesc& desc) {
         for (int a = 0; a < 3; ++a) box *= double(model.size[a] + 7) / 8 + 1;
         bricks += std::min(double(model.voxels.size()), box);
     }
-    const double bytes = bricks * double(kBytesPerBrick);
+    // Each brick touched holds an int32 leaf and a mask leaf too, as the grid is built.
+    const double bytes = bricks * double(kBytesPerBrick + kValueLeafBytes + kMaskLeafBytes);
     if (bytes > double(desc.memoryBudgetBytes))
         throw Error(file, "the scene could fill " + overBudget(bricks, bytes, desc.memoryBudgetBytes),
                     "raise 'memory_budget_mib' in a world file naming it, or hide layers in MagicaVoxel");

@@ -96,6 +96,7 @@ struct GltfCameraAnimation::Data {
     std::vector<int> chain;  // root first, the camera's node last
     std::vector<NodeRest> rest;  // per chain entry
     std::vector<Channel> channels;
+    std::vector<std::vector<size_t>> channelsAt;  // per chain entry: its channels
     std::vector<double> times;
     double fov = 60.0, nearPlane = 0.05, farPlane = 0.0;
 
@@ -125,10 +126,15 @@ std::vector<int> parents(const tinygltf::Model& m, const Data& d) {
     return parent;
 }
 
+// Far deeper than any scene a tool writes; bounds the work per pose.
+constexpr size_t kMaxNodeDepth = 1024;
+
 std::vector<int> chainTo(int node, const std::vector<int>& parent, const tinygltf::Model& m, const Data& d) {
     std::vector<int> chain;
     for (int n = node; n != -1; n = parent[size_t(n)]) {
         if (chain.size() > m.nodes.size()) d.fail(nodeName(m, node) + "'s ancestors form a cycle", "glTF nodes form a tree");
+        if (chain.size() >= kMaxNodeDepth)
+            d.fail(nodeName(m, node) + " has more than " + std::to_string(kMaxNodeDepth) + " ancestors");
         chain.push_back(n);
     }
     std::reverse(chain.begin(), chain.end());
@@ -205,14 +211,14 @@ int findCameraNode(const tinygltf::Model& m, const GltfCameraChoice& choice, con
     if (cameras.empty())
         d.fail(choice.camera.empty() ? "has no camera" : "has no camera named '" + choice.camera + "'",
                "export the scene with its cameras (Blender: Include > Cameras)");
-    for (int node : cameras) {
-        const std::vector<int> chain = chainTo(node, parent, m, d);
-        for (const tinygltf::Animation& a : m.animations) {
-            if (!choice.animation.empty() && a.name != choice.animation) continue;
+    std::vector<char> animated(m.nodes.size(), 0);
+    for (const tinygltf::Animation& a : m.animations)
+        if (choice.animation.empty() || a.name == choice.animation)
             for (const tinygltf::AnimationChannel& c : a.channels)
-                if (std::find(chain.begin(), chain.end(), c.target_node) != chain.end()) return node;
-        }
-    }
+                if (c.target_node >= 0 && size_t(c.target_node) < m.nodes.size()) animated[size_t(c.target_node)] = 1;
+    for (int node : cameras)
+        for (int n : chainTo(node, parent, m, d))
+            if (animated[size_t(n)]) return node;
     return cameras.front();
 }
 
@@ -227,6 +233,9 @@ GltfCameraAnimation::GltfCameraAnimation(const fs::path& path, const GltfCameraC
     const int node = findCameraNode(m, choice, parent, d);
     d.chain = chainTo(node, parent, m, d);
     for (int n : d.chain) d.rest.push_back(restOf(m.nodes[size_t(n)], d, nodeName(m, n)));
+    std::vector<int> chainIndex(m.nodes.size(), -1);  // a node's place in the chain, -1 off it
+    for (size_t i = 0; i < d.chain.size(); ++i) chainIndex[size_t(d.chain[i])] = int(i);
+    auto onChain = [&](int n) { return n >= 0 && size_t(n) < m.nodes.size() && chainIndex[size_t(n)] >= 0; };
 
     const tinygltf::Camera& cam = m.cameras[size_t(m.nodes[size_t(node)].camera)];
     const std::string camName = "camera " + std::to_string(m.nodes[size_t(node)].camera) + (cam.name.empty() ? "" : " '" + cam.name + "'");
@@ -244,7 +253,7 @@ GltfCameraAnimation::GltfCameraAnimation(const fs::path& path, const GltfCameraC
     for (const tinygltf::Animation& a : m.animations) {
         if (!choice.animation.empty() && a.name != choice.animation) continue;
         for (const tinygltf::AnimationChannel& c : a.channels)
-            if (std::find(d.chain.begin(), d.chain.end(), c.target_node) != d.chain.end()) chosen = &a;
+            if (onChain(c.target_node) && c.target_path != "weights") chosen = &a;
         if (chosen) break;
     }
     if (!chosen)
@@ -252,12 +261,28 @@ GltfCameraAnimation::GltfCameraAnimation(const fs::path& path, const GltfCameraC
                                         : "has no animation '" + choice.animation + "' that moves " + nodeName(m, node),
                "a path needs the camera's node, or a parent, animated over at least two key times");
     const size_t index = size_t(chosen - m.animations.data());
+    std::vector<std::string> animatedProperties;  // "node/path", each once (as glTF requires)
+    size_t keys = 0;
+    d.channelsAt.resize(d.chain.size());
     for (size_t i = 0; i < chosen->channels.size(); ++i) {
         const tinygltf::AnimationChannel& c = chosen->channels[i];
-        if (std::find(d.chain.begin(), d.chain.end(), c.target_node) == d.chain.end()) continue;
+        if (!onChain(c.target_node) || c.target_path == "weights") continue;  // morph weights move no camera
         const std::string where = "animation " + std::to_string(index) + " channel " + std::to_string(i);
-        if (d.rest[size_t(std::find(d.chain.begin(), d.chain.end(), c.target_node) - d.chain.begin())].matrix)
+        const size_t at = size_t(chainIndex[size_t(c.target_node)]);
+        if (d.rest[at].matrix)
             d.fail(where + " animates " + nodeName(m, c.target_node) + ", which is given by a matrix", "glTF animates only nodes given by translation, rotation and scale");
+        const std::string property = std::to_string(c.target_node) + "/" + c.target_path;
+        if (std::find(animatedProperties.begin(), animatedProperties.end(), property) != animatedProperties.end())
+            d.fail(where + " animates '" + c.target_path + "' of " + nodeName(m, c.target_node) + " again", "glTF animates each property of a node once per animation");
+        animatedProperties.push_back(property);
+        // The keys are bounded before any is read: channels may share one huge sampler.
+        if (c.sampler >= 0 && size_t(c.sampler) < chosen->samplers.size()) {
+            const int input = chosen->samplers[size_t(c.sampler)].input;
+            if (input >= 0 && size_t(input) < m.accessors.size()) keys += m.accessors[size_t(input)].count;
+        }
+        if (keys > kMaxAnimationKeys)
+            d.fail("the camera's samplers hold more than " + std::to_string(kMaxAnimationKeys) + " keys");
+        d.channelsAt[at].push_back(d.channels.size());
         d.channels.push_back(readChannel(m, *chosen, c, where, d));
         d.times.insert(d.times.end(), d.channels.back().times.begin(), d.channels.back().times.end());
     }
@@ -284,8 +309,8 @@ GltfCameraAnimation::Pose GltfCameraAnimation::pose(double time, bool before) co
         }
         glm::dvec3 t = rest.translation, s = rest.scale;
         glm::dquat r = rest.rotation;
-        for (const Channel& c : d_->channels) {
-            if (c.node != d_->chain[i]) continue;
+        for (size_t k : d_->channelsAt[i]) {
+            const Channel& c = d_->channels[k];
             const glm::dvec4 v = c.sample(time, before);
             if (c.property == Property::Translation) t = glm::dvec3(v);
             else if (c.property == Property::Scale) s = glm::dvec3(v);
@@ -293,13 +318,17 @@ GltfCameraAnimation::Pose GltfCameraAnimation::pose(double time, bool before) co
         }
         world = world * glm::translate(glm::dmat4(1.0), t) * glm::mat4_cast(r) * glm::scale(glm::dmat4(1.0), s);
     }
-    // The camera's frame without scale (or shear): Gram-Schmidt from its X and Y.
-    const glm::dvec3 x = glm::dvec3(world[0]), y = glm::dvec3(world[1]);
-    if (glm::length(x) < 1e-12 || glm::length(glm::cross(x, y)) < 1e-12)
+    for (int c = 0; c < 4; ++c)
+        for (int r = 0; r < 4; ++r)
+            if (!std::isfinite(world[c][r])) d_->fail("the camera's transform at " + std::to_string(time) + " s is not finite");
+    // The camera's frame without scale, shear or mirror: Gram-Schmidt from its Z
+    // and Y, so it looks where the node's -Z does, up its Y.
+    const glm::dvec3 z = glm::dvec3(world[2]), y = glm::dvec3(world[1]);
+    if (glm::length(z) < 1e-12 || glm::length(glm::cross(z, y)) < 1e-12)
         d_->fail("the camera's transform at " + std::to_string(time) + " s is degenerate (a zero scale)");
-    const glm::dvec3 right = glm::normalize(x);
-    const glm::dvec3 up = glm::normalize(y - glm::dot(y, right) * right);
-    const glm::dvec3 back = glm::cross(right, up);
+    const glm::dvec3 back = glm::normalize(z);
+    const glm::dvec3 up = glm::normalize(y - glm::dot(y, back) * back);
+    const glm::dvec3 right = glm::cross(up, back);
     Pose p;
     p.position = glm::dvec3(world[3]);
     p.rotation = glm::normalize(glm::quat_cast(glm::dmat3(right, up, back)));

@@ -24,6 +24,7 @@ namespace grotto::voxel {
 inline constexpr double kPathPositionTolerance = 1e-5;  // of the extent of the camera's positions
 inline constexpr double kPathRotationTolerance = 1e-4;  // radians (0.006 degrees)
 inline constexpr size_t kMaxImportedPathKeys = 200000;
+inline constexpr size_t kMaxAnimationKeys = size_t(1) << 20;  // over the samplers that move the camera
 
 struct GltfCameraChoice {
     std::string camera;     // a node's or a camera's name; empty: the first animated camera node

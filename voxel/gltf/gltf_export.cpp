@@ -144,6 +144,7 @@ uintmax_t writeGltfMesh(const World& world, const AoMesh& mesh, const fs::path& 
     const std::string ext = out.extension().string();
     if (ext != ".glb" && ext != ".gltf") throw Error(out.string(), "a glTF file ends in .glb or .gltf");
     requireOutputPath(out);
+    if (mesh.primitives.empty()) throw Error(out.string(), "the world has no exposed faces to write", "glTF has no empty meshes");
     tinygltf::Model m;
     m.asset.version = "2.0";
     m.asset.generator = "grotto " GROTTO_VERSION;

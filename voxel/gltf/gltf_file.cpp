@@ -1,8 +1,10 @@
 #include "voxel/gltf/gltf_file.h"
 
 #include "common/file_kind.h"
+#include "common/json_text.h"
 #include "grotto/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -20,27 +22,50 @@ bool keepImageUndecoded(tinygltf::Image*, const int, std::string*, std::string*,
     return true;
 }
 
-// Files a .gltf names (its buffers) are read only when they are regular files
-// within the size bound: a URI naming /dev/zero or a FIFO must not hang a run.
+// Files a .gltf names (its buffers) are read only when they are regular files,
+// and at most kMaxGltfFileBytes of them in all: a URI naming /dev/zero, a FIFO,
+// /proc's endless files or one file a million times must not hang a run.
 bool isRegularFile(const std::string& path, void*) {
     std::error_code ec;
     return fs::is_regular_file(path, ec);
 }
 std::string asGiven(const std::string& path, void*) { return path; }
-bool readBoundedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void*) {
+bool readBoundedFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* budget) {
+    uintmax_t& left = *static_cast<uintmax_t*>(budget);
     std::error_code ec;
-    const uintmax_t size = fs::is_regular_file(path, ec) ? fs::file_size(path, ec) : 0;
-    if (ec || !fs::is_regular_file(path, ec) || size > kMaxGltfFileBytes) {
-        if (err) *err += "buffer file '" + path + "' is not a readable regular file of at most 256 MiB\n";
+    std::ifstream in;
+    if (fs::is_regular_file(path, ec)) in.open(path, std::ios::binary);
+    out->clear();
+    char chunk[1 << 16];
+    while (in && (in.read(chunk, sizeof chunk) || in.gcount() > 0)) {
+        const auto got = uintmax_t(in.gcount());
+        if (got > left) {
+            if (err) *err += "buffer files reach past 256 MiB in all ('" + path + "')\n";
+            return false;
+        }
+        left -= got;
+        out->insert(out->end(), chunk, chunk + got);
+    }
+    if (!in.eof()) {
+        if (err) *err += "buffer file '" + path + "' is not a readable regular file\n";
         return false;
     }
-    std::ifstream in(path, std::ios::binary);
-    out->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    return !in.bad();
+    return true;
 }
 bool refuseWrite(std::string* err, const std::string&, const std::vector<unsigned char>&, void*) {
     if (err) *err += "writing is not done here\n";
     return false;
+}
+
+// The JSON tinygltf will parse (all of a .gltf, a .glb's first chunk), checked
+// for depth first: its parser recurses once per level of extras.
+std::string_view jsonOf(const std::vector<unsigned char>& bytes, bool binary) {
+    const auto* text = reinterpret_cast<const char*>(bytes.data());
+    if (!binary) return {text, bytes.size()};
+    if (bytes.size() < 20) return {};
+    uint32_t length = 0;
+    std::memcpy(&length, text + 12, 4);
+    return {text + 20, std::min<size_t>(length, bytes.size() - 20)};
 }
 
 std::string firstLine(const std::string& text) {
@@ -62,13 +87,15 @@ tinygltf::Model readGltf(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     const std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if (!in.eof() && in.fail()) throw Error(file, "cannot be read");
+    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
+    requireShallowJson(jsonOf(bytes, binary), file);
+    uintmax_t bufferBudget = kMaxGltfFileBytes;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keepImageUndecoded, nullptr);
-    loader.SetFsCallbacks({isRegularFile, asGiven, readBoundedFile, refuseWrite, nullptr});
+    loader.SetFsCallbacks({isRegularFile, asGiven, readBoundedFile, refuseWrite, &bufferBudget});
     tinygltf::Model model;
     std::string err, warn;
     const std::string dir = path.parent_path().empty() ? "." : path.parent_path().string();
-    const bool binary = bytes.size() >= 4 && std::memcmp(bytes.data(), "glTF", 4) == 0;
     const bool ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), dir)
                            : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
                                                         unsigned(bytes.size()), dir);
