@@ -6,6 +6,7 @@
 #include "common/file_kind.h"
 #include "common/printable.h"
 #include "grotto/error.h"
+#include "voxel/vox_chunk.h"
 
 #include <charconv>
 #include <cmath>
@@ -56,178 +57,11 @@ constexpr uint32_t kDefaultPalette[256] = {
     0xffbbbbbb, 0xffaaaaaa, 0xff888888, 0xff777777, 0xff555555, 0xff444444, 0xff222222, 0xff111111,
 };
 
-constexpr size_t kChunkHeaderBytes = 12;  // id, content size, children size
+using namespace vox;
+
 constexpr size_t kPaletteBytes = 256 * 4;
 constexpr size_t kMaxMaterialTypeBytes = 32;
-const char* const kDamaged = "the file is damaged or was not written by MagicaVoxel: save it again from MagicaVoxel";
 const char* const kGiveVox = "give a MagicaVoxel .vox file";
-
-// A chunk as errors name it: "chunk 'nTRN' at byte 1234".
-struct ChunkRef {
-    std::string id;  // made printable: a damaged file's ids are any bytes
-    size_t at = 0;
-};
-
-[[noreturn]] void fail(const std::string& file, const ChunkRef& chunk, const std::string& what,
-                       const std::string& hint = kDamaged) {
-    throw Error(file, "chunk '" + chunk.id + "' at byte " + std::to_string(chunk.at) + ": " + what, hint);
-}
-
-uint32_t le32(const uint8_t* p) {
-    return uint32_t(p[0]) | uint32_t(p[1]) << 8 | uint32_t(p[2]) << 16 | uint32_t(p[3]) << 24;
-}
-
-std::string chunkId(std::span<const uint8_t> bytes, size_t at) {
-    return printable(std::string_view(reinterpret_cast<const char*>(bytes.data() + at), 4));
-}
-
-// A value from the file, quoted and cut short for a one-line message.
-std::string quoted(std::string_view text) {
-    constexpr size_t kShown = 40;
-    return "'" + printable(text.substr(0, kShown)) + (text.size() > kShown ? "...'" : "'");
-}
-
-std::string str(uint64_t n) { return std::to_string(n); }
-
-// A DICT: key-value strings, viewed in the file's bytes. The first of a repeated key counts.
-struct Dict {
-    std::vector<std::pair<std::string_view, std::string_view>> entries;
-    std::optional<std::string_view> get(std::string_view key) const {
-        for (const auto& [k, v] : entries)
-            if (k == key) return v;
-        return std::nullopt;
-    }
-};
-
-// Reads one chunk's content field by field, each checked against the bytes left
-// in the chunk before it is read or anything is reserved for it.
-class Cursor {
-public:
-    Cursor(std::span<const uint8_t> content, const std::string& file, ChunkRef chunk)
-        : bytes_(content), file_(file), chunk_(std::move(chunk)) {}
-
-    size_t left() const { return bytes_.size() - pos_; }
-    const ChunkRef& chunk() const { return chunk_; }
-
-    [[noreturn]] void fail(const std::string& what, const std::string& hint = kDamaged) const {
-        voxel::fail(file_, chunk_, what, hint);
-    }
-
-    uint32_t u32(std::string_view what) {
-        need(4, what);
-        const uint32_t v = le32(bytes_.data() + pos_);
-        pos_ += 4;
-        return v;
-    }
-    int32_t i32(std::string_view what) { return int32_t(u32(what)); }  // two's complement, as written
-
-    // A count of items of at least `minBytes` each, refused when the bytes left cannot hold that many.
-    uint32_t count(std::string_view what, size_t minBytes) {
-        const uint32_t n = u32(what);
-        if (uint64_t(n) * minBytes > left())
-            fail(std::string(what) + " is " + str(n) + ", more than the " + str(left()) +
-                 " bytes left in the chunk hold");
-        return n;
-    }
-
-    std::span<const uint8_t> take(size_t n, std::string_view what) {
-        need(n, what);
-        const auto s = bytes_.subspan(pos_, n);
-        pos_ += n;
-        return s;
-    }
-
-    std::string_view text(std::string_view what) {
-        const auto s = take(u32(what), what);
-        return {reinterpret_cast<const char*>(s.data()), s.size()};
-    }
-
-    Dict dict(std::string_view what) {
-        const uint32_t n = count(std::string(what) + "' entry count", 8);  // a key and a value: two lengths at least
-        Dict d;
-        d.entries.reserve(n);
-        for (uint32_t i = 0; i < n; ++i) {
-            const std::string_view key = text(std::string(what) + "' key");
-            d.entries.emplace_back(key, text(std::string(what) + "' value"));
-        }
-        return d;
-    }
-
-private:
-    void need(uint64_t n, std::string_view what) const {
-        if (n > left())
-            fail("truncated: " + std::string(what) + " needs " + str(n) + " bytes at byte " +
-                 str(chunk_.at + kChunkHeaderBytes + pos_) + ", the chunk has " + str(left()) + " left");
-    }
-
-    std::span<const uint8_t> bytes_;
-    size_t pos_ = 0;
-    const std::string& file_;
-    ChunkRef chunk_;
-};
-
-std::optional<int64_t> toInteger(std::string_view v) {
-    int64_t n = 0;
-    if (v.empty()) return std::nullopt;
-    const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), n);
-    if (ec != std::errc() || end != v.data() + v.size()) return std::nullopt;
-    return n;
-}
-
-int64_t integer(const Cursor& c, std::string_view key, std::string_view v, int64_t lo, int64_t hi) {
-    const auto n = toInteger(v);
-    if (!n || *n < lo || *n > hi)
-        c.fail("'" + std::string(key) + "' is " + quoted(v) + ", not an integer in " + std::to_string(lo) + ".." +
-               std::to_string(hi));
-    return *n;
-}
-
-float number(const Cursor& c, std::string_view key, std::string_view v) {
-    float f = 0.0f;
-    if (!v.empty()) {
-        const auto [end, ec] = std::from_chars(v.data(), v.data() + v.size(), f);
-        if (ec == std::errc() && end == v.data() + v.size() && std::isfinite(f)) return f;
-    }
-    c.fail("'" + std::string(key) + "' is " + quoted(v) + ", not a finite number");
-}
-
-// `_hidden` and the like: "0" or "1", absent = 0.
-bool flag(const Cursor& c, const Dict& d, std::string_view key) {
-    const auto v = d.get(key);
-    return v && integer(c, key, *v, 0, 1) == 1;
-}
-
-// `_f`: the animation frame a keyframe is for, absent = 0.
-int64_t frameIndex(const Cursor& c, const Dict& d) {
-    const auto v = d.get("_f");
-    return v ? integer(c, "_f", *v, 0, INT32_MAX) : 0;
-}
-
-// `_t`: "x y z", each within kMaxVoxTranslation.
-glm::ivec3 translation(const Cursor& c, std::string_view v) {
-    glm::ivec3 t(0);
-    int n = 0;
-    for (size_t i = 0; i < v.size();) {
-        if (v[i] == ' ') {
-            ++i;
-            continue;
-        }
-        if (n == 3) {  // a fourth value
-            n = 4;
-            break;
-        }
-        const size_t end = std::min(v.find(' ', i), v.size());
-        const auto x = toInteger(v.substr(i, end - i));
-        if (!x) break;
-        if (*x < -kMaxVoxTranslation || *x > kMaxVoxTranslation)
-            c.fail("'_t' is " + quoted(v) + ", beyond " + str(kMaxVoxTranslation) + " voxels from the origin",
-                   "Grotto reads .vox content within 2^24 voxels of the origin: move it closer in MagicaVoxel");
-        t[n++] = int(*x);
-        i = end;
-    }
-    if (n != 3) c.fail("'_t' is " + quoted(v) + ", not three integers 'x y z'");
-    return t;
-}
 
 // A transform node's frame 0 among its keyframes: the one whose `_f` is 0, else the first.
 template <class Item>
