@@ -1,6 +1,7 @@
 // grotto convert MODEL.vox -o MODEL.vdb: a MagicaVoxel model as an OpenVDB grid
 // and a world file beside it whose materials are the model's palette.
 #include "app/commands.h"
+#include "common/file_kind.h"
 #include "grotto/error.h"
 #include "voxel/world.h"
 
@@ -16,9 +17,7 @@ void addConvertCommand(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Output .vdb (the world file goes beside it as .json)")->required();
     cmd->callback([args] {
         const std::filesystem::path in = args->input, out = args->output;
-        std::string ext = in.extension().string();
-        for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-        if (ext != ".vox") throw Error(in.string(), "convert reads MagicaVoxel .vox models", "give a .vox file");
+        if (lowerExtension(in) != ".vox") throw Error(in.string(), "convert reads MagicaVoxel .vox models", "give a .vox file");
         if (out.extension() != ".vdb") throw Error(out.string(), "output must end in .vdb", "the world file goes beside it as .json");
         const voxel::World world = voxel::World::load(in);
         const voxel::World::SavedFiles saved = world.save(out);

@@ -1,5 +1,6 @@
 #include "app/options.h"
 
+#include "common/file_kind.h"
 #include "grotto/error.h"
 #include "common/overloaded.h"
 #include "engine/scene/path_edits.h"
@@ -214,8 +215,7 @@ voxel::CameraPathDesc lookUpCameraPath(const voxel::World& world, const std::str
     std::string known;
     for (auto& [n, p] : paths) known += (known.empty() ? "" : ", ") + n;
     const std::string hint = known.empty() ? "the world defines no paths; give --path-file FILE.json or FILE.glb" : "paths: " + known;
-    std::string ext = std::filesystem::path(name).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lowerExtension(name);
     std::error_code ec;
     if (ext != ".json" && ext != ".glb" && ext != ".gltf" && std::filesystem::is_regular_file(name, ec))
         throw Error(name, "is not a path file", "a path .json, or a glTF .glb or .gltf with an animated camera");

@@ -1,5 +1,6 @@
 #include "app/video_pipe.h"
 
+#include "common/file_kind.h"
 #include "grotto/error.h"
 
 #include <fcntl.h>
@@ -62,8 +63,7 @@ constexpr Container kContainers[] = {{".mp4", "mp4", false}, {".mov", "mov", fal
                                      {".webm", "webm", true}};
 
 const Container* containerFor(const fs::path& target) {
-    std::string ext = target.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string ext = lowerExtension(target);
     for (const Container& c : kContainers)
         if (ext == c.extension) return &c;
     return nullptr;

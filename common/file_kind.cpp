@@ -2,6 +2,8 @@
 
 #include "grotto/error.h"
 
+#include <cctype>
+
 namespace grotto {
 namespace fs = std::filesystem;
 
@@ -25,6 +27,12 @@ void requireInputFile(const fs::path& path, const std::string& hint) {
     if (!fs::exists(path, ec)) throw Error(path.string(), "no such file", hint);
     if (const std::string kind = irregularKind(path); !kind.empty())
         throw Error(path.string(), "is " + kind + ", not a regular file", hint);
+}
+
+std::string lowerExtension(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
 }
 
 }  // namespace grotto

@@ -15,4 +15,7 @@ std::string irregularKind(const std::filesystem::path& path);
 // file; `hint` says what the file should be.
 void requireInputFile(const std::filesystem::path& path, const std::string& hint);
 
+// The path's extension in lower case (".VOX" -> ".vox"): what a file's kind is chosen by.
+std::string lowerExtension(const std::filesystem::path& path);
+
 }  // namespace grotto

@@ -1,5 +1,6 @@
 #include "voxel/vox_world.h"
 
+#include "common/file_kind.h"
 #include "grotto/error.h"
 #include "voxel/solid.h"
 
@@ -10,9 +11,7 @@
 namespace grotto::voxel {
 
 bool isVoxFile(const std::filesystem::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext == ".vox";
+    return lowerExtension(path) == ".vox";
 }
 
 namespace {

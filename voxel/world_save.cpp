@@ -2,6 +2,7 @@
 // transform and metadata, and beside it the world file naming that .vdb with
 // every setting, camera, path and object: World::load of it is the same world.
 #include "common/atomic_file.h"
+#include "common/file_kind.h"
 #include "grotto/error.h"
 #include "voxel/solid.h"
 #include "voxel/world_json.h"
@@ -38,8 +39,7 @@ World::SavedFiles World::save(const std::filesystem::path& path) const { return 
 
 World::SavedFiles World::save(const std::filesystem::path& path, const WorldDesc& settings) const {
     namespace fs = std::filesystem;
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    const std::string ext = lowerExtension(path);
     if (ext != ".vdb" && ext != ".json")
         throw Error(path.string(), "a world is saved as a world file and its grid, FILE.json and FILE.vdb",
                     "name either of them (FILE.json or FILE.vdb): both are written");

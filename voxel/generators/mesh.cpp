@@ -1,6 +1,7 @@
 // mesh: voxelises a triangle mesh (OBJ, or ASCII PLY) into a narrow-band level set.
 // The mesh is scaled uniformly so its largest extent is options.size voxels, centred
 // on x = z = 0 and standing on y = 0.
+#include "common/file_kind.h"
 #include "grotto/error.h"
 #include "voxel/mkworld.h"
 
@@ -202,9 +203,7 @@ Mesh readMesh(const fs::path& file) {
     LineReader r(file);
     Mesh mesh;
     std::string first;
-    std::string ext = file.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
+    const std::string ext = lowerExtension(file);
     const bool hasLine = r.next(first);
     if (hasLine && split(first).size() == 1 && split(first)[0] == "ply") {
         readPlyData(r, readPlyHeader(r), mesh);

@@ -1,4 +1,5 @@
 // The table of world kinds: option checks, dispatch, and writing the .vdb.
+#include "common/file_kind.h"
 #include "common/atomic_file.h"
 #include "grotto/error.h"
 #include "voxel/generators.h"
@@ -135,10 +136,7 @@ GeneratedSize generatedSize(const std::string& kindName, const GeneratorOptions&
 
 void makeWorldFile(const std::string& kind, const GeneratorOptions& options,
                    const std::filesystem::path& out) {
-    std::string ext = out.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    if (ext != ".vdb")
+    if (lowerExtension(out) != ".vdb")
         throw Error(out.string(), "the output of mkworld is an OpenVDB file", "name it with .vdb");
     requireOutputPath(out);  // fail before a long generation, not after
     openvdb::GridBase::Ptr grid = generateWorld(kind, options);
