@@ -1,6 +1,7 @@
 // The whole frame on one screen (recordFrame): G-buffer (with occlusion culling, its
 // Hi-Z and, in render(), a mid-frame submit), sun shadows, with the face cache the
-// objects' light, then with AO the depth prefilter, the estimator, spatial denoise
+// objects' light (with the face cache: first its rays for the faces in view not
+// converged), then with AO the depth prefilter, the estimator, spatial denoise
 // and temporal accumulation at AO resolution, then the composite (which upsamples
 // the AO itself), the display image and the read-backs (frame/renderer_copy.cpp).
 // Each pass declares what it reads and writes; the barriers follow from that.
@@ -49,6 +50,7 @@ void Renderer::createPasses() {
     if (normalsOn_ && !normalsPass_) normalsPass_ = std::make_unique<NormalsPass>(ctx);
     if (tracedShadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows(), compositeShape().cachedSun);
     if (objectLight() && !objectLightPass_) objectLightPass_ = std::make_unique<ObjectLightPass>(ctx);
+    if (faceCached(ao_) && scene_.occupancy && !cacheTracePass_) cacheTracePass_ = std::make_unique<FaceCacheTracePass>(ctx);
     if (!aoChain(ao_)) return;
     if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx, voxelThickness(ao_));
     if (!estimatorPass_) estimatorPass_ = std::make_unique<EstimatorPass>(ctx, ao_, bentNormals(ao_, lighting_));
@@ -131,6 +133,7 @@ void Renderer::release() {
     shadowPass_.reset();
     objectLightPass_.reset();
     faceCacheAovPass_.reset();
+    cacheTracePass_.reset();
     targets_.release();
     vk::destroy(ctx_, objectGrids_.buffer);
 }
@@ -279,6 +282,12 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
     scene_.recordUploads(cmd, s.staging);  // edits since the last frame, with their barrier to vertex input
     FrameStats stats = inFlight ? recordGBufferInFlight(cmd, camera) : recordGBuffer(cmd, camera);
     stats.passMs = std::move(unread);
+    if (cacheTracing())
+        pass(cmd, FaceCacheTracePass::declare(), [&] {
+            cacheTracePass_->record(cmd, targets_.gbuffer(), {width(), height()}, s.frame, s.traceConstants,
+                                    *scene_.occupancy, *scene_.faceCache,
+                                    ao_.chain.cacheRays ? ao_.chain.cacheRays : defaultCacheRays(ctx_));
+        });
     const uint32_t history = surfaceHistoryIndex_;
     if (softShadows() || objectLight()) surfaceHistoryIndex_ = 1 - surfaceHistoryIndex_;  // reads the last, writes the other
     if (tracedShadows())

@@ -18,6 +18,7 @@
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/passes/estimator_pass.h"
 #include "engine/passes/face_cache_aov_pass.h"
+#include "engine/passes/face_cache_trace_pass.h"
 #include "engine/passes/hiz_pass.h"
 #include "engine/passes/object_light_pass.h"
 #include "engine/passes/shadow_pass.h"
@@ -186,6 +187,8 @@ private:
     bool softShadows() const { return tracedShadows() && lighting_.sunAngle > 0.0f; }
     // Objects' AO and sky light over the face cache (object_light_pass.h).
     bool objectLight() const { return faceCached(ao_) && objects_; }
+    // The GPU traces the face cache's texels in view that have not converged.
+    bool cacheTracing() const { return faceCached(ao_) && scene_.occupancy && scene_.faceCache; }
     // VBAO finds bent normals in every frame: the sky's ambient is lit around them.
     static bool bentNormals(const AoOptions& ao, const voxel::Lighting& lighting) {
         return ao.enabled && ao.method == AoMethod::Vbao && lighting.ambientFrom == voxel::AmbientSource::Sky;
@@ -246,6 +249,7 @@ private:
     std::unique_ptr<ShadowPass> shadowPass_;
     std::unique_ptr<ObjectLightPass> objectLightPass_;
     std::unique_ptr<FaceCacheAovPass> faceCacheAovPass_;  // --ao cache's AOVs, for read-backs
+    std::unique_ptr<FaceCacheTracePass> cacheTracePass_;  // --ao cache's rays for the faces in view not converged
     // The two frames in flight: each frame takes the other slot than the last.
     std::array<std::unique_ptr<FrameSlot>, 2> slots_;
     uint32_t slotIndex_ = 1;

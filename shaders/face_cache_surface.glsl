@@ -2,10 +2,11 @@
 // declares `depthBuffer` (full-res D32, reverse-Z), the frame uniforms as `frame`
 // (shared/frame.h) and the cache (face_cache.glsl).
 
-// The light cached where the pixel's view ray meets the voxel plane of world face
-// `face` (0..5): the depth only picks the plane, the ray gives the point on it, so
-// the point is exact to the plane whatever the depth buffer's precision.
-vec4 cachedLightAt(ivec2 q, uint face, out bool found) {
+// Where the pixel's view ray meets the voxel plane of world face `face` (0..5), in
+// voxels from the camera's voxel (frame.cameraCell): the depth only picks the
+// plane, the ray gives the point on it, so the point is exact to the plane
+// whatever the depth buffer's precision.
+vec3 cachedPointAt(ivec2 q, uint face) {
     float z = frame.depthAB.y / (texelFetch(depthBuffer, q, 0).r + frame.depthAB.x);
     vec2 c = vec2(q) + 0.5;
     // The view ray at unit view depth, in voxels.
@@ -16,5 +17,10 @@ vec4 cachedLightAt(ivec2 q, uint face, out bool found) {
     float plane = round(p[axis]);
     if (abs(ray[axis]) > 1e-6 * abs(plane - start[axis])) p = start + ray * ((plane - start[axis]) / ray[axis]);
     p[axis] = plane;
-    return faceCacheAt(p, frame.cameraCell.xyz, face, found);
+    return p;
+}
+
+// The light cached at that point.
+vec4 cachedLightAt(ivec2 q, uint face, out bool found) {
+    return faceCacheAt(cachedPointAt(q, face), frame.cameraCell.xyz, face, found);
 }

@@ -39,6 +39,9 @@ struct ChainSettings {
     uint32_t temporalHistory = 16;  // most frames the temporal pass averages; 0: no temporal pass
     float strength = 1.0f;          // how much of the AO the composite applies
     bool fullResolution = false;    // the chain at full instead of half resolution
+    // The face cache: rays per frame for the texels in view that have not
+    // converged (0: the device's default, engine/passes/face_cache_trace_pass.h).
+    uint32_t cacheRays = 0;
 };
 
 // A quality preset: the estimator's loop shape. HBAO takes GTAO's sample budget

@@ -58,13 +58,14 @@ StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed
 }
 
 void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox& changed,
-                                      const FaceBakeSettings& s, std::vector<ExposedFace>& faces,
-                                      std::vector<FaceTexel>& texels, CacheEditStats* stats) {
+                     const FaceBakeSettings& s, std::vector<ExposedFace>& faces, std::vector<FaceTexel>& texels,
+                     CacheEditStats* stats, bool traceNow, std::vector<FaceReach>* reach) {
     const uint32_t k = s.texelsPerSide, perFace = k * k;
     std::vector<ExposedFace> now = exposedFaces(table, world);
     std::vector<FaceTexel> carried(now.size() * perFace);
     std::vector<uint32_t> retrace;
     uint64_t far = 0;
+    if (reach) reach->assign(now.size(), FaceReach::Untouched);
     for (size_t f = 0; f < now.size(); ++f) {
         const auto it = std::lower_bound(faces.begin(), faces.end(), now[f]);
         const bool existed = it != faces.end() && *it == now[f];
@@ -74,21 +75,25 @@ void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox
                 const StaleParts p = staleAfterEdit(texelPoint(now[f], k, i, j), now[f].dir, changed, s, world.voxelSize());
                 worst.ao |= p.ao, worst.sun |= p.sun, worst.skyNear |= p.skyNear, worst.skyFar |= p.skyFar;
             }
+        const size_t old = size_t(it - faces.begin());
         if (!existed || worst.now()) {
             retrace.push_back(uint32_t(f));
-            continue;
+            if (reach) (*reach)[f] = FaceReach::Stale;
+            if (!existed || traceNow) continue;
+        } else if (worst.skyFar) {
+            ++far;
+            if (reach) (*reach)[f] = FaceReach::SkyFar;
         }
-        if (worst.skyFar) ++far;
-        const size_t old = size_t(it - faces.begin());
         std::copy_n(texels.begin() + ptrdiff_t(old * perFace), perFace, carried.begin() + ptrdiff_t(f * perFace));
     }
+    if (stats) *stats = {.traced = retrace.size(), .carried = now.size() - retrace.size(), .skyFar = far};
+    if (!traceNow) retrace.clear();  // the stale keep their old texels till the GPU traces them
     std::vector<ExposedFace> redo(retrace.size());
     for (size_t n = 0; n < retrace.size(); ++n) redo[n] = now[retrace[n]];
     std::vector<FaceTexel> traced(redo.size() * perFace);
     bakeFaces(table, world, redo, s, traced);
     for (size_t n = 0; n < retrace.size(); ++n)
         std::copy_n(traced.begin() + ptrdiff_t(n * perFace), perFace, carried.begin() + ptrdiff_t(size_t(retrace[n]) * perFace));
-    if (stats) *stats = {.traced = retrace.size(), .carried = now.size() - retrace.size(), .skyFar = far};
     faces = std::move(now);
     texels = std::move(carried);
 }

@@ -44,14 +44,21 @@ StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed
 // The cache of a world after an edit of `changed`: `faces` and `texels` as they
 // were before, replaced by the world's exposed faces now, each texel carried over
 // unless the edit reaches it now (staleAfterEdit), new and reached faces traced
-// afresh.
+// afresh: here at once with `traceNow`, else left for the GPU's tracer (their old
+// texels kept as a placeholder, a new face's empty). `reach`, when given: per face
+// now, what the edit left (FaceReach).
 struct CacheEditStats {
-    uint64_t traced = 0;   // faces traced again or anew
+    uint64_t traced = 0;   // faces traced again or anew (or left stale for the GPU)
     uint64_t carried = 0;  // faces carried over untouched
     uint64_t skyFar = 0;   // of those, faces whose sky light the edit may change by at most kSkyStaleShare
 };
+enum class FaceReach : uint8_t {
+    Untouched,  // carried over, still right
+    Stale,      // new, or reached now: traced again (or to be)
+    SkyFar,     // carried over; its sky light off by at most kSkyStaleShare
+};
 void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox& changed,
-                                      const FaceBakeSettings& settings, std::vector<ExposedFace>& faces,
-                                      std::vector<FaceTexel>& texels, CacheEditStats* stats = nullptr);
+                     const FaceBakeSettings& settings, std::vector<ExposedFace>& faces, std::vector<FaceTexel>& texels,
+                     CacheEditStats* stats = nullptr, bool traceNow = true, std::vector<FaceReach>* reach = nullptr);
 
 }  // namespace grotto::voxel

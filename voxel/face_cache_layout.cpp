@@ -35,6 +35,25 @@ uint32_t packFaceTexel(const FaceTexel& t) {
     return unorm(t.ao(), 8) | unorm(t.sun(), 5) << 8 | unorm(t.skyHorizon / n, 5) << 13 | unorm(t.skyZenith / n, 6) << 18;
 }
 
+uint32_t packedTexel(std::span<const uint32_t> words, size_t texel) {
+    uint32_t bits = 0;
+    for (size_t b = 0, byte = texel * GROTTO_FACE_TEXEL_BYTES; b < GROTTO_FACE_TEXEL_BYTES; ++b, ++byte)
+        bits |= ((words[byte / 4] >> (8 * (byte % 4))) & 255u) << (8 * b);
+    return bits;
+}
+
+FaceTexel unpackFaceTexel(uint32_t bits, uint32_t rays, uint32_t sunRays) {
+    auto part = [&](uint32_t shift, uint32_t width) { return double((bits >> shift) & ((1u << width) - 1u)) / double((1u << width) - 1u); };
+    FaceTexel t;
+    t.samples = rays;
+    t.open = uint32_t(std::lround(part(0, 8) * rays));
+    t.sunSamples = sunRays;
+    t.sunOpen = uint32_t(std::lround(part(8, 5) * sunRays));
+    t.skyHorizon = float(part(13, 5) * rays);
+    t.skyZenith = float(part(18, 6) * rays);
+    return t;
+}
+
 size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide) {
     std::vector<glm::ivec3> bricks;
     bricks.reserve(faces.size());
@@ -47,7 +66,8 @@ size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerS
 size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide) {
     const size_t slots = hashSlots(count.bricks);
     const size_t texelWords = (count.faces * texelsPerSide * texelsPerSide * GROTTO_FACE_TEXEL_BYTES + 3) / 4;
-    return slots * 16 + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + texelWords * 4;
+    const size_t levelWords = (count.faces + 15) / 16;  // each face's level for the GPU's tracer, 2 bits
+    return slots * 16 + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + texelWords * 4 + levelWords * 4;
 }
 
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
@@ -62,6 +82,8 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
     }
     FaceCacheArrays out;
     out.texelsPerSide = texelsPerSide;
+    out.faceCount = uint32_t(faces.size());
+    out.faceOrder.reserve(faces.size());
     out.bricks.assign(hashSlots(bricks.size()), glm::uvec4(0));
     out.records.reserve(bricks.size() * GROTTO_FACE_RECORD_WORDS);
     out.texels.assign((texels.size() * GROTTO_FACE_TEXEL_BYTES + 3) / 4, 0u);
@@ -80,6 +102,7 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
             entries.begin(), entries.end(), [d](const Entry& e) { return e.dir < d; }));
         for (const Entry& e : entries) {
             out.records[base + e.dir * 16 + (e.bit >> 5)] |= 1u << (e.bit & 31u);
+            out.faceOrder.push_back(e.face);
             for (uint32_t t = 0; t < perFace; ++t) append(packFaceTexel(texels[size_t(e.face) * perFace + t]));
         }
         next += uint32_t(entries.size());

@@ -16,9 +16,14 @@ struct FaceCacheArrays {
     std::vector<glm::uvec4> bricks;  // power-of-two size, at most three quarters full
     std::vector<uint32_t> records;   // GROTTO_FACE_RECORD_WORDS per brick
     std::vector<uint32_t> texels;    // 3 bytes a texel one after another, faces in record order
+    std::vector<uint32_t> faceOrder; // the GPU's face i is the listed face faceOrder[i]
     uint32_t texelsPerSide = 0;
+    uint32_t faceCount = 0;
     uint32_t hashMask() const { return uint32_t(bricks.size() - 1); }
-    size_t bytes() const { return bricks.size() * 16 + records.size() * 4 + texels.size() * 4; }
+    // On the GPU, with each face's level (2 bits, shaders/shared/face_trace.h).
+    size_t bytes() const {
+        return bricks.size() * 16 + records.size() * 4 + texels.size() * 4 + (size_t(faceCount) + 15) / 16 * 4;
+    }
 };
 
 // AO, sun, horizon and zenith weights in [0, 1] as 24 bits: unorms of 8, 5, 5 and
@@ -31,6 +36,12 @@ inline constexpr double kFaceTexelStep[4] = {1.0 / 255, 1.0 / 31, 1.0 / 31, 1.0 
 // `faces` as exposedFaces lists them, `texels` k x k per face in that order.
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
                              uint32_t texelsPerSide);
+
+// Texel `texel`'s 24 bits in packed words laid out as FaceCacheArrays::texels.
+uint32_t packedTexel(std::span<const uint32_t> words, size_t texel);
+// A packed texel (packFaceTexel's bits) as sums of `rays` and `sunRays` rays: what
+// the GPU's tracer left, for the host's copy.
+FaceTexel unpackFaceTexel(uint32_t bits, uint32_t rays, uint32_t sunRays);
 
 // What layFaceCache's arrays for `faces` at k texels a side take, without laying
 // them out (for `info` and `bench`).

@@ -142,6 +142,10 @@ const Setting kSettings[] = {
     {.key = "ao.rays", .flag = "--rays", .type = T::Whole, .desc = &AoDesc::rays, .value = &EstimatorSettings::rays,
      .lo = 1, .hi = 64, .help = "Voxel and hybrid AO: rays per AO pixel per frame", .defaultNote = "the preset's",
      .manifest = "rays", .invalidates = kEstimatorPipeline | kHistory, .presetShaped = true, .tracingOnly = true},
+    {.key = "ao.cache_rays", .flag = "--cache-rays", .type = T::Whole, .desc = &AoDesc::cacheRays,
+     .value = &ChainSettings::cacheRays, .lo = 0, .hi = 1e9, .uiLo = 0, .uiHi = 64e6,
+     .help = "Face cache: rays per frame for the texels in view that have not converged (0: the device's default)",
+     .manifest = "cache_rays"},
     {.key = "ao.full_resolution", .flag = "--ao-full-res", .type = T::Bool, .desc = &AoDesc::fullResolution,
      .value = &ChainSettings::fullResolution, .help = "Run the AO chain at full instead of half resolution",
      .manifest = "full_resolution", .invalidates = kTargets | kHistory},
@@ -243,7 +247,8 @@ void resetPresetShaped(AoDesc& ao) {
 
 bool usedBy(const Setting& s, std::string_view method) {
     if (method == "cache" && s.key.substr(0, 3) == "ao.")
-        return s.key == "ao.method" || s.key == "ao.radius" || s.key == "ao.strength";
+        return s.key == "ao.method" || s.key == "ao.radius" || s.key == "ao.strength" || s.key == "ao.cache_rays";
+    if (s.key == "ao.cache_rays") return false;
     if (s.tracingOnly) return method == "voxel" || method == "hybrid";
     if (s.vbaoOnly) return method == "vbao";
     return true;

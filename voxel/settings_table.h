@@ -70,7 +70,8 @@ struct Setting {
 
 // Does the AO method named `method` use the setting (the panel shows it, a
 // manifest records it)? Every setting but the tracing methods' and VBAO's own;
-// of the AO block, the face cache uses only the method, radius and strength.
+// of the AO block, the face cache uses only the method, radius, strength and
+// cache_rays (which no other method uses).
 bool usedBy(const Setting& s, std::string_view method);
 
 // Every setting: lighting, AO, detail, in world-file order.

@@ -25,11 +25,21 @@ void ComputePass::release() {
     vkDestroyDescriptorSetLayout(ctx_.device, setLayout_, nullptr);
 }
 
-void ComputePass::dispatch(VkCommandBuffer cmd, const std::vector<vk::Binding>& bindings, VkExtent2D size,
-                           uint32_t group, const void* push) const {
+void ComputePass::bind(VkCommandBuffer cmd, const std::vector<vk::Binding>& bindings, const void* push) const {
     vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, pipeline_);
     vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_COMPUTE, layout_, bindings);
     if (pushBytes_ && push) vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_COMPUTE_BIT, 0, pushBytes_, push);
+}
+
+void ComputePass::dispatchIndirect(VkCommandBuffer cmd, const std::vector<vk::Binding>& bindings, VkBuffer args,
+                                   VkDeviceSize offset, const void* push) const {
+    bind(cmd, bindings, push);
+    vkCmdDispatchIndirect(cmd, args, offset);
+}
+
+void ComputePass::dispatch(VkCommandBuffer cmd, const std::vector<vk::Binding>& bindings, VkExtent2D size,
+                           uint32_t group, const void* push) const {
+    bind(cmd, bindings, push);
     vkCmdDispatch(cmd, (size.width + group - 1) / group, (size.height + group - 1) / group, 1);
 }
 

@@ -21,7 +21,12 @@ public:
     void dispatch(VkCommandBuffer cmd, const std::vector<vk::Binding>& bindings, VkExtent2D size, uint32_t group,
                   const void* push = nullptr) const;
 
+    // Groups as `args` holds them at `offset` (VkDispatchIndirectCommand), written on the GPU.
+    void dispatchIndirect(VkCommandBuffer cmd, const std::vector<vk::Binding>& bindings, VkBuffer args,
+                          VkDeviceSize offset, const void* push = nullptr) const;
+
 private:
+    void bind(VkCommandBuffer cmd, const std::vector<vk::Binding>& bindings, const void* push) const;
     void release();  // handles not made yet are null, which Vulkan ignores
 
     vk::Context& ctx_;

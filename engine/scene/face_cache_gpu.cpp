@@ -1,32 +1,55 @@
 #include "engine/scene/face_cache_gpu.h"
 
+#include "engine/vk/readback.h"
+#include "shaders/shared/face_trace.h"
+
+#include <algorithm>
+#include <cstring>
+
 namespace grotto {
 
 namespace {
-constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+// Faces a list of the queue holds: a frame that asks for more leaves the rest to
+// the next. Bounded too so the trace's dispatch stays within 65535 groups.
+uint32_t capacityFor(uint32_t faces, uint32_t k) {
+    return std::min({faces, 65536u, 65535u * GROTTO_FACE_TRACE_GROUP / (2u * std::max(k * k, 1u))});
 }
+}  // namespace
 
-GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Sun sun)
-    : ctx_(ctx), hashMask_(a.hashMask()), texelsPerSide_(a.texelsPerSide), sun_(sun) {
+GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Sun sun, FaceCacheRays rays,
+                           std::span<const uint8_t> levels)
+    : ctx_(ctx), hashMask_(a.hashMask()), texelsPerSide_(a.texelsPerSide), faceCount_(a.faceCount),
+      capacity_(capacityFor(a.faceCount, a.texelsPerSide)), sun_(sun), rays_(rays) {
     // Empty arrays (a world with no faces) still bind: one zero word each.
     const uint32_t zero[4] = {};
     auto upload = [&](const void* data, size_t bytes) {
         return bytes ? vk::uploadBuffer(ctx, data, bytes, kUsage) : vk::uploadBuffer(ctx, zero, sizeof zero, kUsage);
     };
+    std::vector<uint32_t> levelWords((size_t(faceCount_) + 15) / 16, levels.empty() ? ~0u : 0u);
+    for (size_t f = 0; f < levels.size(); ++f) levelWords[f / 16] |= uint32_t(levels[f] & 3u) << (2 * (f % 16));
+    const std::vector<uint32_t> requested((size_t(faceCount_) + 31) / 32, 0u);
+    const std::vector<glm::uvec4> queue(2 * size_t(capacity_), glm::uvec4(0));
     try {
         bricks_ = upload(a.bricks.data(), a.bricks.size() * sizeof(glm::uvec4));
         records_ = upload(a.records.data(), a.records.size() * sizeof(uint32_t));
         texels_ = upload(a.texels.data(), a.texels.size() * sizeof(uint32_t));
+        levels_ = upload(levelWords.data(), levelWords.size() * sizeof(uint32_t));
+        requested_ = upload(requested.data(), requested.size() * sizeof(uint32_t));
+        queue_ = upload(queue.data(), queue.size() * sizeof(glm::uvec4));
+        header_ = vk::createBuffer(ctx, GROTTO_FACE_HEADER_WORDS * sizeof(uint32_t),
+                                   VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
+                                       VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                                   true);
+        std::memset(header_.mapped(), 0, header_.size);
     } catch (...) {
-        vk::destroy(ctx_, bricks_), vk::destroy(ctx_, records_), vk::destroy(ctx_, texels_);
+        for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_}) vk::destroy(ctx_, *b);
         throw;
     }
 }
 
 GpuFaceCache::~GpuFaceCache() {
-    vk::destroy(ctx_, bricks_);
-    vk::destroy(ctx_, records_);
-    vk::destroy(ctx_, texels_);
+    for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_}) vk::destroy(ctx_, *b);
 }
 
 std::vector<VkDescriptorType> GpuFaceCache::withBindings(std::vector<VkDescriptorType> own) {
@@ -39,6 +62,23 @@ std::vector<vk::Binding> GpuFaceCache::withBindings(std::vector<vk::Binding> own
     own.push_back(vk::storageBuffer(records_.buffer));
     own.push_back(vk::storageBuffer(texels_.buffer));
     return own;
+}
+
+std::vector<uint32_t> GpuFaceCache::lastHeader() const {
+    std::vector<uint32_t> words(GROTTO_FACE_HEADER_WORDS);
+    std::memcpy(words.data(), header_.mapped(), words.size() * sizeof(uint32_t));
+    return words;
+}
+
+GpuFaceCache::Contents GpuFaceCache::read() const {
+    Contents c;
+    const std::vector<uint8_t> texelBytes = vk::readBuffer(ctx_, texels_);
+    c.texelWords.resize(texelBytes.size() / 4);
+    std::memcpy(c.texelWords.data(), texelBytes.data(), c.texelWords.size() * 4);
+    const std::vector<uint8_t> levelBytes = vk::readBuffer(ctx_, levels_);
+    c.levels.resize(faceCount_);
+    for (size_t f = 0; f < faceCount_; ++f) c.levels[f] = (levelBytes[f / 4] >> (2 * (f % 4))) & 3u;
+    return c;
 }
 
 }  // namespace grotto

@@ -1,11 +1,14 @@
 #pragma once
-// A baked face cache on the GPU: the three arrays of shaders/shared/face_cache.h
-// in storage buffers (voxel/face_cache_layout.h lays them out), and what a pass
-// that reads it binds after its own inputs (shaders/face_cache.glsl).
+// A face cache on the GPU: the three arrays of shaders/shared/face_cache.h in
+// storage buffers (voxel/face_cache_layout.h lays them out), what a pass that
+// reads it binds after its own inputs (shaders/face_cache.glsl), and what its
+// tracer keeps (shaders/shared/face_trace.h): each face's level, the faces asked
+// for this frame and the queue of them.
 #include "engine/vk/pipeline.h"
 #include "engine/vk/resources.h"
 #include "voxel/face_cache_layout.h"
 
+#include <span>
 #include <vector>
 
 namespace grotto {
@@ -16,28 +19,61 @@ struct FaceCacheSun {
     float angleDegrees = 0.0f;
 };
 
+// The rays a converged texel holds, for the GPU's tracer to match.
+struct FaceCacheRays {
+    uint32_t rays = 64, sunRays = 16;
+    float radiusVoxels = 4.0f;  // AO's R
+};
+
 class GpuFaceCache {
 public:
     using Sun = FaceCacheSun;
-    GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& arrays, Sun sun = {});
+    // `levels`: each face's (shared/face_trace.h), in the arrays' face order
+    // (FaceCacheArrays::faceOrder); empty: all converged.
+    GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& arrays, Sun sun = {}, FaceCacheRays rays = {},
+                 std::span<const uint8_t> levels = {});
     ~GpuFaceCache();
     GpuFaceCache(const GpuFaceCache&) = delete;
     GpuFaceCache& operator=(const GpuFaceCache&) = delete;
 
     uint32_t hashMask() const { return hashMask_; }
     uint32_t texelsPerSide() const { return texelsPerSide_; }
+    uint32_t faceCount() const { return faceCount_; }
     const Sun& sun() const { return sun_; }
-    size_t gpuBytes() const { return size_t(bricks_.size + records_.size + texels_.size); }
+    const FaceCacheRays& rays() const { return rays_; }
+    // The cache's own arrays and levels (what `info` and `bench` report); the
+    // tracer's queue and request bits come on top (tracerBytes).
+    size_t gpuBytes() const { return size_t(bricks_.size + records_.size + texels_.size + levels_.size); }
+    size_t tracerBytes() const { return size_t(requested_.size + queue_.size + header_.size); }
 
     // Appends the three buffers' bindings (bricks, records, texels) to a pass's own.
     static std::vector<VkDescriptorType> withBindings(std::vector<VkDescriptorType> own);
     std::vector<vk::Binding> withBindings(std::vector<vk::Binding> own) const;
 
+    // The tracer's buffers (face_cache_trace_pass.h).
+    const vk::Buffer& texels() const { return texels_; }
+    const vk::Buffer& levels() const { return levels_; }
+    const vk::Buffer& requested() const { return requested_; }
+    const vk::Buffer& queue() const { return queue_; }
+    const vk::Buffer& header() const { return header_; }  // host-visible
+    uint32_t queueCapacity() const { return capacity_; }
+    // The last finished frame's header words (shared/face_trace.h).
+    std::vector<uint32_t> lastHeader() const;
+
+    // The texels' packed words and each face's level (in the arrays' face order), as
+    // the GPU holds them now: waits for the device.
+    struct Contents {
+        std::vector<uint32_t> texelWords;
+        std::vector<uint8_t> levels;
+    };
+    Contents read() const;
+
 private:
     vk::Context& ctx_;
-    vk::Buffer bricks_, records_, texels_;
-    uint32_t hashMask_, texelsPerSide_;
+    vk::Buffer bricks_, records_, texels_, levels_, requested_, queue_, header_;
+    uint32_t hashMask_, texelsPerSide_, faceCount_, capacity_;
     Sun sun_;
+    FaceCacheRays rays_;
 };
 
 }  // namespace grotto

@@ -1,5 +1,6 @@
 #include "engine/scene/live_face_cache.h"
 
+#include "shaders/shared/face_trace.h"
 #include "voxel/face_cache_layout.h"
 
 #include <algorithm>
@@ -12,9 +13,23 @@ voxel::FaceBakeSettings worldBakeSettings(const voxel::World& world, double radi
             .sunAngleDegrees = double(light.sunAngle)};
 }
 
+namespace {
+// A face's level from its texels' rays: converged once they hold the settings'.
+uint8_t levelOf(std::span<const voxel::FaceTexel> texels, const voxel::FaceBakeSettings& s) {
+    uint32_t least = ~0u;
+    for (const voxel::FaceTexel& t : texels) least = std::min(least, t.samples);
+    return least == 0 ? 0 : least < s.rays ? 1 : GROTTO_FACE_LEVEL_CONVERGED;
+}
+}  // namespace
+
 LiveFaceCache::LiveFaceCache(GpuScene& scene, std::vector<voxel::ExposedFace> faces,
-                             std::vector<voxel::FaceTexel> texels, const voxel::FaceBakeSettings& settings)
-    : scene_(scene), faces_(std::move(faces)), texels_(std::move(texels)), settings_(settings) {
+                             std::vector<voxel::FaceTexel> texels, const voxel::FaceBakeSettings& settings,
+                             double voxelSize)
+    : scene_(scene), faces_(std::move(faces)), texels_(std::move(texels)), settings_(settings), voxelSize_(voxelSize) {
+    const uint32_t perFace = settings_.texelsPerSide * settings_.texelsPerSide;
+    levels_.resize(faces_.size());
+    for (size_t f = 0; f < faces_.size(); ++f)
+        levels_[f] = levelOf(std::span(texels_).subspan(f * perFace, perFace), settings_);
     upload();
 }
 
@@ -24,12 +39,12 @@ LiveFaceCache LiveFaceCache::load(GpuScene& scene, const voxel::BrickTable& tabl
     std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
     voxel::requireMatchingBake(file, voxel::faceCacheKey(world, radius, file.key.texelsPerSide), faces.size(), bake);
     voxel::FaceBakeSettings settings = worldBakeSettings(world, radius, file.key.texelsPerSide);
-    // Faces baked after an edit get as many rays as the bake gave its texels.
+    // Faces traced after an edit get as many rays as the bake gave its texels.
     uint32_t rays = 0, sunRays = 0;
     for (const voxel::FaceTexel& t : file.texels) rays = std::max(rays, t.samples), sunRays = std::max(sunRays, t.sunSamples);
     if (rays) settings.rays = rays;
     if (sunRays) settings.sunRays = sunRays;
-    return LiveFaceCache(scene, std::move(faces), std::move(file.texels), settings);
+    return LiveFaceCache(scene, std::move(faces), std::move(file.texels), settings, world.voxelSize());
 }
 
 LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
@@ -37,21 +52,65 @@ LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& tabl
     std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
     std::vector<voxel::FaceTexel> texels(faces.size() * settings.texelsPerSide * settings.texelsPerSide);
     voxel::bakeFaces(table, world, faces, settings, texels);
-    return LiveFaceCache(scene, std::move(faces), std::move(texels), settings);
+    return LiveFaceCache(scene, std::move(faces), std::move(texels), settings, world.voxelSize());
 }
 
-void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed) {
-    voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_);
+LiveFaceCache LiveFaceCache::progressive(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
+                                         const voxel::FaceBakeSettings& settings) {
+    std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
+    std::vector<voxel::FaceTexel> texels(faces.size() * settings.texelsPerSide * settings.texelsPerSide);
+    return LiveFaceCache(scene, std::move(faces), std::move(texels), settings, world.voxelSize());
+}
+
+void LiveFaceCache::sync() {
+    if (!scene_.faceCache) return;
+    const GpuFaceCache::Contents gpu = scene_.faceCache->read();
+    const uint32_t perFace = settings_.texelsPerSide * settings_.texelsPerSide;
+    const uint32_t sunRays = settings_.sunAngleDegrees > 0.0 ? settings_.sunRays : std::min(settings_.sunRays, 1u);
+    for (size_t g = 0; g < order_.size(); ++g) {
+        const uint32_t f = order_[g];
+        if (gpu.levels[g] == levels_[f]) continue;  // the tracer did not touch it
+        levels_[f] = gpu.levels[g];
+        const bool full = levels_[f] >= 2;
+        const uint32_t rays = full ? settings_.rays : std::min<uint32_t>(GROTTO_FACE_COARSE_RAYS, settings_.rays);
+        const uint32_t sun = full ? sunRays : std::min<uint32_t>(GROTTO_FACE_COARSE_SUN_RAYS, sunRays);
+        for (uint32_t t = 0; t < perFace; ++t)
+            texels_[size_t(f) * perFace + t] =
+                voxel::unpackFaceTexel(voxel::packedTexel(gpu.texelWords, g * perFace + t), rays, sun);
+    }
+}
+
+size_t LiveFaceCache::unconverged() const {
+    return size_t(std::count_if(levels_.begin(), levels_.end(), [](uint8_t l) { return l != GROTTO_FACE_LEVEL_CONVERGED; }));
+}
+
+void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed,
+                           voxel::CacheEditStats* stats) {
+    sync();  // what the GPU traced since the last edit is carried over with the rest
+    const std::vector<voxel::ExposedFace> before = faces_;
+    std::vector<voxel::FaceReach> reach;
+    voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, stats, false, &reach);
+    std::vector<uint8_t> levels(faces_.size(), 0);
+    for (size_t f = 0; f < faces_.size(); ++f) {
+        if (reach[f] == voxel::FaceReach::Stale) continue;  // traced again in view from the next frame
+        const auto it = std::lower_bound(before.begin(), before.end(), faces_[f]);
+        const uint8_t old = levels_[size_t(it - before.begin())];
+        levels[f] = reach[f] == voxel::FaceReach::SkyFar ? std::min<uint8_t>(old, 2) : old;
+    }
+    levels_ = std::move(levels);
     upload();
 }
 
 void LiveFaceCache::upload() {
     const voxel::FaceCacheArrays arrays = voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide);
+    std::vector<uint8_t> gpuLevels(arrays.faceOrder.size());
+    for (size_t g = 0; g < gpuLevels.size(); ++g) gpuLevels[g] = levels_[arrays.faceOrder[g]];
     auto gpu = std::make_unique<GpuFaceCache>(
-        scene_.ctx, arrays,
-        GpuFaceCache::Sun{glm::vec3(settings_.sunDirection), float(settings_.sunAngleDegrees)});
+        scene_.ctx, arrays, GpuFaceCache::Sun{glm::vec3(settings_.sunDirection), float(settings_.sunAngleDegrees)},
+        FaceCacheRays{settings_.rays, settings_.sunRays, float(settings_.radius / voxelSize_)}, gpuLevels);
     vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still read the old copy
     scene_.faceCache = std::move(gpu);
+    order_ = arrays.faceOrder;
 }
 
 }  // namespace grotto

@@ -1,7 +1,9 @@
 #pragma once
 // The face cache of a live world (--ao cache): every exposed face's texels on the
 // host, laid out and uploaded into the scene's GpuScene::faceCache, from a bake
-// loaded from disk or made here on every core.
+// loaded from disk, made here on every core, or left empty for the GPU's tracer to
+// converge in view (engine/passes/face_cache_trace_pass.h). After an edit the
+// texels it reaches are left to that tracer too.
 #include "engine/scene/scene.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
@@ -19,7 +21,7 @@ public:
     // `texels`: k x k for each of `faces` (exposedFaces of the world, in order),
     // traced with `settings`. Uploads them into `scene`.
     LiveFaceCache(GpuScene& scene, std::vector<voxel::ExposedFace> faces, std::vector<voxel::FaceTexel> texels,
-                  const voxel::FaceBakeSettings& settings);
+                  const voxel::FaceBakeSettings& settings, double voxelSize);
 
     // A bake of the world (`grotto bake`) with AO radius `radius` (world units);
     // throws grotto::Error (input) naming the file and the first field that is not
@@ -29,15 +31,28 @@ public:
     // Baked here on every core, as `grotto bake` with `settings` would.
     static LiveFaceCache bake(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
                               const voxel::FaceBakeSettings& settings);
+    // Nothing traced yet: the GPU's tracer converges the faces as they come into view.
+    static LiveFaceCache progressive(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
+                                     const voxel::FaceBakeSettings& settings);
 
     // After an edit of `changed` (the world and table already edited): the faces
-    // listed again, the texels the edit reaches traced again, the rest carried
-    // over (voxel::updateAfterEdit), and the GPU copy replaced.
-    void edited(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed);
+    // listed again, the rest carried over, and the GPU copy replaced; the faces
+    // the edit reaches (voxel::updateAfterEdit) keep their old texels until the
+    // GPU's tracer traces them again, in view, from the next frame on.
+    void edited(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed,
+                voxel::CacheEditStats* stats = nullptr);
 
     const voxel::FaceBakeSettings& settings() const { return settings_; }
     std::span<const voxel::ExposedFace> faces() const { return faces_; }
+    // The texels and each face's level (shaders/shared/face_trace.h) as of the
+    // last sync(): what the GPU's tracer traced since is on the GPU alone.
     std::span<const voxel::FaceTexel> texels() const { return texels_; }
+    std::span<const uint8_t> levels() const { return levels_; }
+    // Brings the GPU tracer's texels into the host's copy (waits for the device);
+    // their values come back as the GPU holds them, quantised (face_cache.h).
+    void sync();
+    // Faces not converged, of all.
+    size_t unconverged() const;
 
 private:
     void upload();  // replaces the scene's GPU copy
@@ -45,7 +60,10 @@ private:
     GpuScene& scene_;
     std::vector<voxel::ExposedFace> faces_;
     std::vector<voxel::FaceTexel> texels_;
+    std::vector<uint8_t> levels_;  // per face
+    std::vector<uint32_t> order_;  // the GPU's face g is faces_[order_[g]]
     voxel::FaceBakeSettings settings_;
+    double voxelSize_;
 };
 
 // The settings a bake of `world` with AO radius `radius` (world units) and k

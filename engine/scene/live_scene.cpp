@@ -34,6 +34,10 @@ void LiveScene::bakeFaceCache(const voxel::FaceBakeSettings& settings) {
     faceCache_.emplace(LiveFaceCache::bake(*gpu_, bricks(), world_, settings));
 }
 
+void LiveScene::progressiveFaceCache(const voxel::FaceBakeSettings& settings) {
+    faceCache_.emplace(LiveFaceCache::progressive(*gpu_, bricks(), world_, settings));
+}
+
 void LiveScene::changed(const voxel::EditResult& result) {
     if (result.voxels.empty()) return;
     std::vector<voxel::MeshChunkQuads> replaced;

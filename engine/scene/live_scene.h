@@ -34,7 +34,10 @@ public:
     // with grotto::Error (input) when it is not one, or a bake made here.
     void loadFaceCache(const std::filesystem::path& bake, double radius);
     void bakeFaceCache(const voxel::FaceBakeSettings& settings);
+    // Nothing traced yet: the renderer's tracer converges the faces in view.
+    void progressiveFaceCache(const voxel::FaceBakeSettings& settings);
     const LiveFaceCache* faceCache() const { return faceCache_ ? &*faceCache_ : nullptr; }
+    LiveFaceCache* faceCache() { return faceCache_ ? &*faceCache_ : nullptr; }
 
 private:
     void changed(const voxel::EditResult& result);

@@ -38,4 +38,22 @@ std::vector<uint8_t> readImage(Context& ctx, const Image& image, VkImageLayout l
     return out;
 }
 
+std::vector<uint8_t> readBuffer(Context& ctx, const Buffer& buffer) {
+    Buffer staging = createBuffer(ctx, buffer.size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    ctx.submitAndWait([&](VkCommandBuffer cmd) {
+        const VkMemoryBarrier before{.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER,
+                                     .srcAccessMask = VK_ACCESS_MEMORY_WRITE_BIT,
+                                     .dstAccessMask = VK_ACCESS_TRANSFER_READ_BIT};
+        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 1, &before, 0,
+                             nullptr, 0, nullptr);
+        const VkBufferCopy region{.size = buffer.size};
+        vkCmdCopyBuffer(cmd, buffer.buffer, staging.buffer, 1, &region);
+        recordHostRead(cmd);
+    });
+    std::vector<uint8_t> out(buffer.size);
+    std::memcpy(out.data(), staging.mapped(), buffer.size);
+    destroy(ctx, staging);
+    return out;
+}
+
 }  // namespace grotto::vk

@@ -18,6 +18,9 @@ VkDeviceSize recordImageCopy(VkCommandBuffer cmd, const Image& image, VkImageLay
 void recordHostRead(VkCommandBuffer cmd, VkPipelineStageFlags stage = VK_PIPELINE_STAGE_TRANSFER_BIT,
                     VkAccessFlags access = VK_ACCESS_TRANSFER_WRITE_BIT);
 
+// A device buffer's bytes, copied out at once (after all work submitted before).
+std::vector<uint8_t> readBuffer(Context& ctx, const Buffer& buffer);
+
 std::vector<uint8_t> readImage(Context& ctx, const Image& image, VkImageLayout layout, uint32_t bytesPerPixel);
 
 }  // namespace grotto::vk

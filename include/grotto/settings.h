@@ -53,12 +53,12 @@ struct Lighting {
 // The AO settings, as a world file's "ao" block: method, preset and any
 // overrides (unset = the preset's). Keys, ranges and meanings: docs/worlds.md.
 struct AoDesc {
-    std::string method = "gtao";   // gtao, voxel, hybrid, vbao, ssao, hbao (baselines) or off
+    std::string method = "gtao";   // gtao, voxel, hybrid, vbao, cache, ssao, hbao (baselines) or off
     std::string quality = "high";  // low, medium, high, ultra, custom
     std::string thickness = "voxels";  // vbao: voxels, constant or distance
     std::optional<double> radius, radiusMultiplier, falloffRange, sampleDistributionPower, thinOccluder,
         finalValuePower, depthMipOffset, strength, denoiseBlurBeta, maxDistance, thicknessValue;
-    std::optional<int> slices, steps, denoisePasses, temporalHistory, rays;
+    std::optional<int> slices, steps, denoisePasses, temporalHistory, rays, cacheRays;
     std::optional<bool> fullResolution;
 };
 

@@ -87,12 +87,20 @@ GROTTO_FUNCTION vec4 faceCacheUnpack(uint bits) {
                 float(bits >> 18u) / 63.0f);
 }
 
-// AO, sun visibility and the two sky weights at point `p` (voxel index units,
-// camera-relative whole voxels removed is fine as long as `origin` restores them:
-// p + origin is the absolute voxel position) on the plane of a face looking `dir`:
-// the four nearest texel centres bilinearly, across coplanar exposed faces,
-// reweighted where some are missing. `found`: false where none is.
-GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool) found) {
+// The texels a point reads: the four texel centres nearest to it on its face
+// plane, each with its face's index (-1: no exposed face there), that face's cell,
+// the texel's index and its bilinear weight (0 where the face is missing).
+struct FaceCacheTaps {
+    int face[4];
+    ivec3 cell[4];
+    uint texel[4];
+    float weight[4];
+};
+
+// The taps at point `p` (voxel index units, camera-relative whole voxels removed is
+// fine as long as `origin` restores them: p + origin is the absolute voxel
+// position) on the plane of a face looking `dir`, across coplanar exposed faces.
+GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
     int k = int(faceCacheK());
     uint axis = faceAxis(dir), ua = faceUAxis(dir), va = faceVAxis(dir);
     int plane = int(floor(p[axis] + 0.5f)) + origin[axis];
@@ -106,37 +114,50 @@ GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool
     int I0 = int(fu) + origin[ua] * k, J0 = int(fv) + origin[va] * k;
     int cu0 = faceCacheFloorDiv(I0, k), cu1 = faceCacheFloorDiv(I0 + 1, k);
     int cv0 = faceCacheFloorDiv(J0, k), cv1 = faceCacheFloorDiv(J0 + 1, k);
+    FaceCacheTaps t;
     ivec3 q = cell;
     q[ua] = cu0;
     q[va] = cv0;
     ivec3 brick = ivec3(q.x >> 3, q.y >> 3, q.z >> 3);
     uint record = faceCacheRecord(brick);
-    int faces[4];
-    faces[0] = faceCacheFaceIn(record, q, dir);
+    t.face[0] = faceCacheFaceIn(record, q, dir);
+    t.cell[0] = q;
     for (int c = 1; c < 4; ++c) {
         int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
-        if (cu == cu0 && cv == cv0) { faces[c] = faces[0]; continue; }
-        if (c == 3 && cu1 == cu0) { faces[3] = faces[2]; continue; }
-        if (c == 3 && cv1 == cv0) { faces[3] = faces[1]; continue; }
         q[ua] = cu;
         q[va] = cv;
+        t.cell[c] = q;
+        if (cu == cu0 && cv == cv0) { t.face[c] = t.face[0]; continue; }
+        if (c == 3 && cu1 == cu0) { t.face[3] = t.face[2]; continue; }
+        if (c == 3 && cv1 == cv0) { t.face[3] = t.face[1]; continue; }
         ivec3 b = ivec3(q.x >> 3, q.y >> 3, q.z >> 3);
         if (b.x != brick.x || b.y != brick.y || b.z != brick.z) {
             brick = b;
             record = faceCacheRecord(brick);
         }
-        faces[c] = faceCacheFaceIn(record, q, dir);
+        t.face[c] = faceCacheFaceIn(record, q, dir);
     }
+    for (int c = 0; c < 4; ++c) {
+        float w = ((c & 1) != 0 ? wu : 1.0f - wu) * ((c >> 1) != 0 ? wv : 1.0f - wv);
+        t.weight[c] = t.face[c] < 0 ? 0.0f : w;
+        int I = I0 + (c & 1), J = J0 + (c >> 1);
+        int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
+        t.texel[c] = t.face[c] < 0 ? 0u : uint(t.face[c]) * uint(k * k) + uint(J - cv * k) * uint(k) + uint(I - cu * k);
+    }
+    return t;
+}
+
+// AO, sun visibility and the two sky weights at point `p` (as faceCacheTaps): the
+// taps blended bilinearly, reweighted where some are missing. `found`: false
+// where none is.
+GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool) found) {
+    FaceCacheTaps t = faceCacheTaps(p, origin, dir);
     vec4 sum = vec4(0.0f);
     float weight = 0.0f;
     for (int c = 0; c < 4; ++c) {
-        float w = ((c & 1) != 0 ? wu : 1.0f - wu) * ((c >> 1) != 0 ? wv : 1.0f - wv);
-        if (w <= 0.0f || faces[c] < 0) continue;
-        int I = I0 + (c & 1), J = J0 + (c >> 1);
-        int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
-        uint texel = uint(faces[c]) * uint(k * k) + uint(J - cv * k) * uint(k) + uint(I - cu * k);
-        sum += w * faceCacheUnpack(faceCacheTexel(texel));
-        weight += w;
+        if (t.weight[c] <= 0.0f) continue;
+        sum += t.weight[c] * faceCacheUnpack(faceCacheTexel(t.texel[c]));
+        weight += t.weight[c];
     }
     found = weight > 0.0f;
     return found ? sum / weight : vec4(1.0f, 1.0f, 0.0f, 0.0f);

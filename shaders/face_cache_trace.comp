@@ -1,0 +1,104 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// The face cache's texels traced on the GPU: one invocation per texel of the faces
+// face_cache_plan.comp took this frame, each tracing the texel's whole sequence of
+// rays (the CPU bake's, voxel/face_bake.cpp) afresh, so a texel traced again
+// continues nothing and needs no sums kept. It writes the texel's packed bits
+// (shared/face_cache.h) and its face's level.
+#include "shared/face_trace.h"
+#include "shared/quad.h"
+
+layout(local_size_x = GROTTO_FACE_TRACE_GROUP) in;
+layout(push_constant) uniform Push { FaceTraceConstants c; };
+layout(set = 0, binding = 0, std430) readonly buffer Queue { uvec4 queue[]; };
+layout(set = 0, binding = 1, std430) readonly buffer Header { uint header[]; };
+layout(set = 0, binding = 2, std430) buffer Levels { uint levels[]; };
+layout(set = 0, binding = 3, std430) buffer FaceTexels { uint faceTexels[]; };
+#define GROTTO_TRACE_BINDING 4
+#include "trace.glsl"
+#include "texel_rays.glsl"
+
+uint unorm(float v, uint bits) { return uint(round(clamp(v, 0.0, 1.0) * float((1u << bits) - 1u))); }
+
+// The texel's 24 bits into bytes 3t .. 3t + 2, beside other invocations' texels.
+void storeTexel(uint texel, uint bits) {
+    uint byte = 3u * texel, word = byte >> 2u, shift = (byte & 3u) * 8u;
+    atomicAnd(faceTexels[word], ~(0xFFFFFFu << shift));
+    atomicOr(faceTexels[word], bits << shift);
+    if (shift > 8u) {
+        uint high = 0xFFFFFFu >> (32u - shift);
+        atomicAnd(faceTexels[word + 1u], ~high);
+        atomicOr(faceTexels[word + 1u], bits >> (32u - shift));
+    }
+}
+
+// Does a ray from `start` along d leave the world without entering a solid voxel?
+bool leaves(VoxelRayStart start, vec3 d) {
+    return trace.boundsHi.w != 0 || voxelRay(start, d, kVoxelRayNever, trace.boundsLo.xyz, trace.boundsHi.xyz, true, 16384).t < 0.0;
+}
+
+void main() {
+    uint k = c.texelsPerSide, texels = k * k;
+    uint item = gl_GlobalInvocationID.x, slot = item / texels, t = item % texels;
+    uint empty = header[GROTTO_FACE_TRACED_EMPTY], taken = header[GROTTO_FACE_TRACED_PARTIAL];
+    if (slot >= empty + taken) return;
+    bool first = slot < empty;
+    uvec4 e = first ? queue[slot] : queue[c.capacity + slot - empty];
+    bool full = !first || header[GROTTO_FACE_EMPTY_FULL] != 0u;
+    uint rays = full ? c.rays : c.coarseRays, sunRays = full ? c.sunRays : c.coarseSunRays;
+    ivec3 cell = ivec3(e.xyz);
+    uint dir = e.w & 7u, face = e.w >> 3u;
+    uint i = t % k, j = t / k;
+
+    // The texel's centre, a hair in front of the face, in the open voxel there.
+    uint axis = faceAxis(dir), ua = faceUAxis(dir), va = faceVAxis(dir);
+    bool positive = facePositive(dir);
+    VoxelRayStart start;
+    start.voxel = cell;
+    start.voxel[axis] += positive ? 1 : -1;
+    start.fraction[axis] = positive ? c.epsilon : 1.0 - c.epsilon;
+    start.fraction[ua] = (float(i) + 0.5) / float(k);
+    start.fraction[va] = (float(j) + 0.5) / float(k);
+    vec3 n = faceAxisNormal(dir), t1, t2;
+    texelTangents(n, t1, t2);
+
+    uvec2 h = texelSeed(cell, dir, i, j);
+    vec2 shift = vec2(unitInterval(h), unitInterval(splitmix64(h)));
+    uint open = 0u;
+    float horizon = 0.0, zenith = 0.0;
+    for (uint r = 0u; r < rays; ++r) {
+        vec3 l = cosineDirection(r2(r, shift));
+        vec3 d = t1 * l.x + t2 * l.y + n * l.z;
+        if (traceShortWorldRay(start, d, c.radiusVoxels) >= 0.0) continue;  // within R: neither AO nor sky
+        ++open;
+        if (!leaves(start, d)) continue;
+        if (d.y < 0.0) horizon += 0.8;  // the darker horizon below it (voxel::skyWeights)
+        else {
+            float s = sqrt(min(d.y, 1.0));
+            horizon += 1.0 - s;
+            zenith += s;
+        }
+    }
+    uint sunOpen = 0u;
+    bool pointSun = c.sun.w >= 1.0;
+    vec2 sunShift = vec2(unitInterval(splitmix64(h ^ uvec2(1u, 0u))), unitInterval(splitmix64(h ^ uvec2(2u, 0u))));
+    vec3 s1, s2;
+    texelTangents(c.sun.xyz, s1, s2);
+    for (uint r = 0u; r < sunRays; ++r) {
+        vec3 d = c.sun.xyz;
+        if (!pointSun) {
+            vec3 cone = coneDirection(r2(r, sunShift), c.sun.w);
+            d = s1 * cone.x + s2 * cone.y + c.sun.xyz * cone.z;
+        }
+        if (dot(d, n) > 0.0 && leaves(start, d)) ++sunOpen;
+    }
+    float samples = float(max(rays, 1u));
+    uint bits = unorm(float(open) / samples, 8u) | unorm(sunRays > 0u ? float(sunOpen) / float(sunRays) : 1.0, 5u) << 8u |
+                unorm(horizon / samples, 5u) << 13u | unorm(zenith / samples, 6u) << 18u;
+    storeTexel(face * texels + t, bits);
+    if (t == 0u) {
+        uint shiftBits = (face & 15u) * 2u;
+        atomicAnd(levels[face >> 4u], ~(3u << shiftBits));
+        atomicOr(levels[face >> 4u], (full ? GROTTO_FACE_LEVEL_CONVERGED : 1u) << shiftBits);
+    }
+}

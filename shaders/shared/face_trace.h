@@ -1,0 +1,51 @@
+// The face cache's rays on the GPU (engine/passes/face_cache_trace_pass.h), shared
+// by C++ and GLSL: each frame the faces in view whose texels have not converged
+// are listed, and texels are traced, least converged first, within a ray budget.
+//
+// A face's level (2 bits each, 16 faces a word in the levels buffer):
+//   0: never traced, or reached by an edit (its texels are stale or placeholders);
+//   1: traced with the coarse rays only;
+//   2: converged but for its sky light, which an edit far away may have moved by
+//      at most voxel/face_cache_edit.h's kSkyStaleShare;
+//   3: converged: traced with the full rays since the last edit that reached it.
+// The queue: two lists of up to `capacity` faces in view this frame (uvec4: cell
+// xyz, dir | face index << 3), level 0 first at [0, capacity), levels 1 and 2 at
+// [capacity, 2 capacity). The header's words:
+#ifndef GROTTO_SHARED_FACE_TRACE_H
+#define GROTTO_SHARED_FACE_TRACE_H
+#include "common.h"
+
+#define GROTTO_FACE_LEVEL_CONVERGED 3u
+// The rays a face never traced gets at first, in the frame it comes into view:
+// an estimate about as good as screen-space AO's (docs/face-cache.md).
+#define GROTTO_FACE_COARSE_RAYS 8u
+#define GROTTO_FACE_COARSE_SUN_RAYS 2u
+#define GROTTO_FACE_QUEUE_EMPTY 0u    // faces at level 0 asked for this frame (may pass capacity)
+#define GROTTO_FACE_QUEUE_PARTIAL 1u  // faces at levels 1 and 2 asked for this frame
+#define GROTTO_FACE_TRACED_EMPTY 2u   // of the first list, traced this frame
+#define GROTTO_FACE_TRACED_PARTIAL 3u // of the second, traced this frame (the budget's share)
+#define GROTTO_FACE_EMPTY_FULL 4u     // 1: the first list got the full rays, 0: the coarse
+#define GROTTO_FACE_DISPATCH 5u       // three words: the trace's indirect dispatch
+#define GROTTO_FACE_HEADER_WORDS 8u
+#define GROTTO_FACE_TRACE_GROUP 64u
+
+GROTTO_NAMESPACE_BEGIN
+
+struct FaceTraceConstants {
+    vec4 sun;             // xyz: unit, toward the sun; w: cos of the disc's angular radius (1: a point)
+    uint rays;            // cosine-weighted rays per texel, converged (AO and sky light)
+    uint sunRays;         // rays per texel over the sun's disc, converged (1 for a point sun)
+    uint coarseRays;      // the same for a first look at a face never traced
+    uint coarseSunRays;
+    float radiusVoxels;   // AO's R, in voxels
+    float epsilon;        // rays leave this far (voxels) in front of the face
+    uint capacity;        // the queue's lists' length
+    uint texelsPerSide;   // k
+    uint budget;          // rays per frame for the second list (and for the first at full rays)
+    uint width, height;   // the frame's size, for the request pass
+    uint pad;
+};
+GROTTO_STATIC_ASSERT(sizeof(FaceTraceConstants) == 64);
+
+GROTTO_NAMESPACE_END
+#endif

@@ -1,0 +1,202 @@
+// The face cache traced on the GPU (face_cache_trace_pass.h), with validation on:
+//  - texels traced on the GPU are the CPU bake's: the same rays, the same counts,
+//    texel by texel, but for rays that graze a voxel edge in float;
+//  - only faces in view are traced, a face never traced gets its coarse rays at
+//    once, and the budget bounds the faces converged a frame;
+//  - after an edit, every face in view that it reaches is traced again in the
+//    next frame and equals a fresh bake of the edited world; faces it cannot
+//    reach keep their bits.
+#include "engine/renderer.h"
+#include "engine/scene/live_scene.h"
+#include "shaders/shared/face_trace.h"
+#include "tests/gpu_fixture.h"
+#include "tests/scenes.h"
+#include "tests/test_util.h"
+#include "voxel/brick_table.h"
+#include "voxel/face_cache_layout.h"
+
+#include <cmath>
+
+namespace grotto {
+namespace {
+
+using FaceCacheTrace = test::GpuTest;
+
+constexpr uint32_t kK = 3;
+
+AoOptions cacheAo(const voxel::World& world, double radius, uint32_t budget) {
+    AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), "test");
+    ao.method = AoMethod::Cache;
+    ao.estimator.radius = float(radius);
+    ao.chain.cacheRays = budget;
+    return ao;
+}
+
+// A floor with pillars and a roof over part of it, half-voxel cells, far from the
+// origin, under a soft sun: every kind of ray the texels cast.
+voxel::World pillars() {
+    voxel::World w = test::makeVoxelWorld(
+        {-6, 0, -6}, {17, 9, 17},
+        [](int x, int y, int z) { return y == 0 || ((x + 8) % 5 == 1 && (z + 8) % 4 == 1) || (y == 6 && x < 4); }, 0.5,
+        glm::dvec3(-3000.25, 7.0, 1234.0));
+    return w;
+}
+
+voxel::FaceBakeSettings traceSettings(const voxel::World& world) {
+    voxel::FaceBakeSettings s = worldBakeSettings(world, 1.5, kK);
+    s.rays = 16, s.sunRays = 4, s.sunAngleDegrees = 3.0;
+    return s;
+}
+
+Camera viewOf(const voxel::World& world) {
+    const glm::dvec3 o = world.origin();
+    return makeCamera(test::lookAt(o + glm::dvec3(-2.0, 7.5, -3.0), o + glm::dvec3(6.0, 0.0, 5.0), 70.0), 96, 72);
+}
+
+voxel::Lighting softSun(const voxel::World& world) {
+    voxel::Lighting l = world.desc().lighting;
+    l.sunAngle = 3.0f;
+    return l;
+}
+
+// Texels whose counts differ from the CPU's, of those compared, and the largest difference.
+struct Agreement {
+    size_t compared = 0, differing = 0;
+    double worstAo = 0.0, worstSun = 0.0;
+};
+Agreement compare(std::span<const voxel::FaceTexel> gpu, std::span<const voxel::FaceTexel> cpu,
+                  std::span<const uint8_t> levels) {
+    Agreement a;
+    for (size_t f = 0; f < levels.size(); ++f) {
+        if (levels[f] != GROTTO_FACE_LEVEL_CONVERGED) continue;
+        for (size_t t = f * kK * kK; t < (f + 1) * kK * kK; ++t) {
+            // Both through the GPU's packing, so only the rays can differ.
+            const voxel::FaceTexel c = voxel::unpackFaceTexel(voxel::packFaceTexel(cpu[t]), cpu[t].samples, cpu[t].sunSamples);
+            ++a.compared;
+            a.differing += !(gpu[t] == c);
+            a.worstAo = std::max(a.worstAo, std::abs(gpu[t].ao() - c.ao()));
+            a.worstSun = std::max(a.worstSun, std::abs(gpu[t].sun() - c.sun()));
+        }
+    }
+    return a;
+}
+
+TEST_F(FaceCacheTrace, GpuTexelsAreTheCpuBakesAndOnlyFacesInViewAreTraced) {
+    const voxel::World world = pillars();
+    LiveScene scene(ctx(), voxel::World(world));
+    const voxel::FaceBakeSettings settings = traceSettings(world);
+    scene.progressiveFaceCache(settings);
+    Renderer renderer(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, 1'000'000'000u), 96, 72);
+    renderer.render(viewOf(world));
+    LiveFaceCache& cache = *scene.faceCache();
+    cache.sync();
+
+    std::vector<voxel::FaceTexel> cpu(cache.texels().size());
+    voxel::bakeFaces(scene.bricks(), world, cache.faces(), settings, cpu);
+    size_t converged = 0, untouched = 0;
+    for (uint8_t l : cache.levels()) converged += l == GROTTO_FACE_LEVEL_CONVERGED, untouched += l == 0;
+    EXPECT_GT(converged, 200u);
+    EXPECT_GT(untouched, 200u);  // out of view: not traced
+    EXPECT_EQ(converged + untouched, cache.levels().size());  // the budget covers every face in view at once
+    const Agreement a = compare(cache.texels(), cpu, cache.levels());
+    EXPECT_LT(double(a.differing), 0.01 * double(a.compared)) << a.differing << " of " << a.compared;
+    std::printf("%zu of %zu texels differ; worst AO %.4f, sun %.4f; %zu faces converged, %zu not in view\n",
+                a.differing, a.compared, a.worstAo, a.worstSun, converged, untouched);
+    EXPECT_LE(a.worstAo, 2.0 / 16.0 + 1e-9);
+    EXPECT_LE(a.worstSun, 1.0 / 4.0 + 1e-9);
+}
+
+TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) {
+    const voxel::World world = pillars();
+    LiveScene scene(ctx(), voxel::World(world));
+    const voxel::FaceBakeSettings settings = traceSettings(world);
+    scene.progressiveFaceCache(settings);
+    // Room for exactly 25 faces at the full rays a frame, beyond the coarse ones.
+    const uint32_t perFace = kK * kK * (settings.rays + settings.sunRays);
+    const uint32_t coarse = kK * kK * (GROTTO_FACE_COARSE_RAYS + GROTTO_FACE_COARSE_SUN_RAYS);
+    const Camera camera = viewOf(world);
+    LiveFaceCache& cache = *scene.faceCache();
+    auto count = [&](uint8_t level) { return size_t(std::count(cache.levels().begin(), cache.levels().end(), level)); };
+
+    Renderer first(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, 1), 96, 72);
+    first.render(camera, 0);
+    cache.sync();
+    const size_t inView = count(1);
+    EXPECT_GT(inView, 200u);          // every face in view: coarse at once, whatever the budget
+    EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), 0u);  // a budget of one ray converges none
+
+    const uint32_t budget = 25 * perFace;
+    Renderer renderer(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, budget), 96, 72);
+    renderer.render(camera, 0);
+    cache.sync();
+    EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), 25u);
+    EXPECT_EQ(count(1), inView - 25);
+    // The coarse texels: 8 rays each, the same sequence's first.
+    std::vector<voxel::FaceTexel> cpu(cache.texels().size());
+    voxel::FaceBakeSettings coarseSettings = settings;
+    coarseSettings.rays = GROTTO_FACE_COARSE_RAYS, coarseSettings.sunRays = GROTTO_FACE_COARSE_SUN_RAYS;
+    voxel::bakeFaces(scene.bricks(), world, cache.faces(), coarseSettings, cpu);
+    std::vector<uint8_t> coarseOnly(cache.levels().begin(), cache.levels().end());
+    for (uint8_t& l : coarseOnly) l = l == 1 ? GROTTO_FACE_LEVEL_CONVERGED : 0;
+    const Agreement a = compare(cache.texels(), cpu, coarseOnly);
+    EXPECT_LT(double(a.differing), 0.01 * double(a.compared));
+    (void)coarse;
+    for (int frame = 1; frame < 200 && count(1) > 0; ++frame) {
+        renderer.render(camera, uint32_t(frame));
+        cache.sync();
+    }
+    EXPECT_EQ(count(1), 0u);
+    EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), inView);
+}
+
+TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgainInTheNextFrame) {
+    const voxel::World world = pillars();
+    LiveScene scene(ctx(), voxel::World(world));
+    const voxel::FaceBakeSettings settings = traceSettings(world);
+    scene.bakeFaceCache(settings);
+    const Camera camera = viewOf(world);
+    Renderer renderer(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, 1'000'000'000u), 96, 72);
+    renderer.render(camera, 0);
+    LiveFaceCache& cache = *scene.faceCache();
+    const std::vector<voxel::ExposedFace> facesBefore(cache.faces().begin(), cache.faces().end());
+    const std::vector<voxel::FaceTexel> before(cache.texels().begin(), cache.texels().end());
+
+    // A hole in the floor and a pillar cut, in view.
+    const glm::dvec3 centre = world.origin() + glm::dvec3(3.2, 0.4, 2.9);
+    scene.apply(voxel::Edit::carveSphere(centre, 1.2));
+    cache.sync();
+    std::vector<uint8_t> stale(cache.levels().begin(), cache.levels().end());
+    size_t reached = 0;
+    for (uint8_t l : stale) reached += l == 0;
+    ASSERT_GT(reached, 10u);
+    renderer.render(camera, 1);
+    cache.sync();
+
+    std::vector<voxel::FaceTexel> fresh(cache.texels().size());
+    voxel::bakeFaces(scene.bricks(), scene.world(), cache.faces(), settings, fresh);
+    size_t retraced = 0;
+    std::vector<uint8_t> retracedOnly(stale.size(), 0);
+    for (size_t f = 0; f < stale.size(); ++f) {
+        const uint32_t perFace = kK * kK;
+        if (stale[f] == 0) {
+            if (cache.levels()[f] == GROTTO_FACE_LEVEL_CONVERGED) ++retraced, retracedOnly[f] = GROTTO_FACE_LEVEL_CONVERGED;
+            continue;
+        }
+        // Not reached: its bits as they were (carried, or as the bake left them).
+        const auto it = std::lower_bound(facesBefore.begin(), facesBefore.end(), cache.faces()[f]);
+        ASSERT_TRUE(it != facesBefore.end() && *it == cache.faces()[f]);
+        const size_t old = size_t(it - facesBefore.begin());
+        for (uint32_t t = 0; t < perFace; ++t)
+            EXPECT_EQ(voxel::packFaceTexel(cache.texels()[f * perFace + t]), voxel::packFaceTexel(before[old * perFace + t]));
+    }
+    EXPECT_GT(retraced, 50u);
+    // Those were all the faces in view: the next frame finds none to trace.
+    renderer.render(camera, 2);
+    const std::vector<uint32_t> asked = scene.gpu().faceCache->lastHeader();
+    EXPECT_EQ(asked[GROTTO_FACE_QUEUE_EMPTY] + asked[GROTTO_FACE_QUEUE_PARTIAL], 0u);
+    const Agreement a = compare(cache.texels(), fresh, retracedOnly);
+    EXPECT_LT(double(a.differing), 0.02 * double(a.compared)) << a.differing << " of " << a.compared;
+}
+
+}  // namespace
+}  // namespace grotto
