@@ -27,6 +27,9 @@ struct EditBenchFigures {
     // settings, then laid out for the GPU), and what it traced and carried.
     double cacheEditMs = 0;
     voxel::CacheEditStats cacheEdit;
+    // The same with the faces it reaches left to the GPU's tracer (what a live
+    // session does): relisting, carrying over and laying out only.
+    double cacheEditDeferredMs = 0;
     int randomEdits = 0;
     double randomEditMs = 0;       // a random single-voxel edit, incremental
     int fullRemeshEdits = 0;

@@ -110,6 +110,7 @@ void addCompareCommand(CLI::App& app) {
         // As `tradeoff` does: a temporal history gets static frames enough to fill.
         const int frames = std::max(args->warmup + args->frames, aoChain(ao) && ao.chain.temporalHistory > 0 ? 32 : 0);
         const AoMeasurement m = measureAo(ctx, *session, camera, ao, cullingOptions(detail), ref, frames, args->warmup);
+        if (faceCached(ao)) session->scene().faceCache()->sync();  // what the GPU traced, with --progressive
         const std::string sky = faceCached(ao) ? compareSkyLight(*session, camera, ctx, args->skySpp) : "";
         const std::string name = world.desc().source.stem().string();
         session.reset();

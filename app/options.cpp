@@ -108,6 +108,9 @@ void addAoFlags(CLI::App* cmd, AoFlags& f) {
                    s.desc);
     });
     cmd->add_option("--bake", f.bake, "Face cache from grotto bake of this world (implies --ao cache)");
+    cmd->add_flag("--progressive", f.progressive,
+                  "With --ao cache and no --bake: bake nothing first; the GPU traces the faces in view as frames go, "
+                  "within --cache-rays a frame (a still renders until they have converged)");
     addDetailFlags(cmd, f);
 }
 
@@ -151,6 +154,10 @@ voxel::AoDesc aoDescWithFlags(const voxel::AoDesc& world, const AoFlags& f) {
         d.method = "cache";
     }
     if (!f.set.method.empty()) d.method = f.set.method;
+    if (f.progressive && !f.bake.empty())
+        throw Error("--progressive", "starts the face cache empty, and --bake loads one", "drop one of them");
+    if (f.progressive && d.method != "cache")
+        throw Error("--progressive", "is for --ao cache's face cache, not --ao " + d.method + "'s", "add --ao cache");
     if (!f.set.quality.empty()) {
         d.quality = f.set.quality;
         voxel::resetPresetShaped(d);  // a preset on the command line replaces the world's loop shape
@@ -183,6 +190,11 @@ void prepareFaceCache(RenderSession& session, const AoFlags& flags) {
         return;
     }
     if (!faceCached(session.ao())) return;
+    if (flags.progressive) {
+        session.setProgressiveFaceCache(true);
+        session.startFaceCache();
+        return;
+    }
     std::fprintf(stderr, "baking the face cache (no --bake given; grotto bake writes one for every run)...\n");
     const auto start = std::chrono::steady_clock::now();
     session.bakeFaceCache();

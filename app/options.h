@@ -62,6 +62,7 @@ void addPathOptions(CLI::App* cmd, std::string& path);
 struct AoFlags {
     voxel::AoDesc set{.method = {}, .quality = {}, .thickness = {}};  // the AO settings given; choices empty when not
     std::string bake;  // --bake: a face cache from grotto bake (implies --ao cache)
+    bool progressive = false;  // --progressive: --ao cache without a bake starts empty, traced on the GPU in view
     nlohmann::ordered_json detail = nlohmann::ordered_json::object();  // the "detail" block's fields given
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);
@@ -77,8 +78,9 @@ voxel::AoDesc aoDescWithFlags(const voxel::AoDesc& world, const AoFlags& flags);
 AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
 
 // --ao cache's light for the session's world: the --bake file (refused, naming the
-// file and field, when it is not this world's or these settings'), or with no
-// --bake a bake made here on every core, announced on stderr. Nothing for other methods.
+// file and field, when it is not this world's or these settings'), with
+// --progressive none (the GPU traces the faces in view as frames go), or else a
+// bake made here on every core, announced on stderr. Nothing for other methods.
 void prepareFaceCache(RenderSession& session, const AoFlags& flags);
 
 // The world file's "detail" block, then --lod-bias and --occlusion-culling.

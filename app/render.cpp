@@ -17,6 +17,9 @@
 namespace grotto::app {
 namespace {
 
+// A --progressive still stops here even if faces in view are left to trace.
+constexpr uint32_t kMaxProgressiveFrames = 4096;
+
 // Frames to accumulate: --accumulate, else the history (a converged still) of
 // the temporal pass or, with --ao cache, of the objects' light (16 frames unless
 // set), else 1 where there is nothing to average in. The history is raised to
@@ -87,12 +90,16 @@ void addRenderCommand(CLI::App& app) {
         vk::Context ctx;
         requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");
         const voxel::Detail detail = resolveDetail(world, args->ao);
+        uint32_t rendered = 0;
         {
             RenderSession session(ctx, std::move(world), ao, detail, size.width, size.height);
             prepareFaceCache(session, args->ao);
             session.setTime(args->time);  // the objects, held for every frame
             Renderer& renderer = session.renderer();
-            for (uint32_t i = 0; i < frames; ++i) renderer.render(camera, i);
+            for (; rendered < frames; ++rendered) renderer.render(camera, rendered);
+            // --progressive: on until a frame finds no face in view left to trace.
+            while (args->ao.progressive && rendered < kMaxProgressiveFrames && !session.faceCacheConverged())
+                renderer.render(camera, rendered++);
             const FrameImages frame = renderer.readback(camera, aovs);
             if (!args->show.empty())
                 writeSrgb8(out, frame.width, frame.height, encodeSrgb8(aovDisplay(frame, args->show)), &camera);
@@ -100,8 +107,8 @@ void addRenderCommand(CLI::App& app) {
                 writeFrame(out, frame, camera, args->aov);
         }
         requireNoValidationMessages(ctx);
-        std::printf("wrote %s (%ux%u, %u frame%s, %s)\n", out.c_str(), size.width, size.height, frames,
-                    frames == 1 ? "" : "s", ctx.deviceName().c_str());
+        std::printf("wrote %s (%ux%u, %u frame%s, %s)\n", out.c_str(), size.width, size.height, rendered,
+                    rendered == 1 ? "" : "s", ctx.deviceName().c_str());
     });
 }
 

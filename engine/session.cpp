@@ -1,6 +1,7 @@
 #include "engine/session.h"
 
 #include "engine/camera_path.h"
+#include "shaders/shared/face_trace.h"
 #include "voxel/object_worlds.h"
 
 namespace grotto {
@@ -16,11 +17,20 @@ RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptio
     setTime(0.0);
 }
 
-// --ao cache without a cache of the session's radius: baked here first.
+// --ao cache without a cache of the session's radius: baked here first, or left
+// to the GPU's tracer.
 void RenderSession::requireFaceCache(const AoOptions& ao) {
     const LiveFaceCache* cache = scene_->faceCache();
-    if (faceCached(ao) && (!cache || cache->settings().radius != double(ao.estimator.radius)))
-        scene_->bakeFaceCache(worldBakeSettings(world(), ao.estimator.radius));
+    if (!faceCached(ao) || (cache && cache->settings().radius == double(ao.estimator.radius))) return;
+    if (progressiveCache_) scene_->progressiveFaceCache(worldBakeSettings(world(), ao.estimator.radius));
+    else scene_->bakeFaceCache(worldBakeSettings(world(), ao.estimator.radius));
+}
+
+bool RenderSession::faceCacheConverged() {
+    if (!renderer_ || !faceCached(ao_) || !scene_->gpu().faceCache) return true;
+    renderer_->finishFrames();
+    const std::vector<uint32_t> header = scene_->gpu().faceCache->lastHeader();
+    return header[GROTTO_FACE_QUEUE_EMPTY] + header[GROTTO_FACE_QUEUE_PARTIAL] == 0;
 }
 
 Renderer& RenderSession::renderer() {

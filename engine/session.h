@@ -53,6 +53,15 @@ public:
     // here on every core with grotto bake's defaults.
     void loadFaceCache(const std::filesystem::path& bake) { scene_->loadFaceCache(bake, ao_.estimator.radius); }
     void bakeFaceCache() { scene_->bakeFaceCache(worldBakeSettings(world(), ao_.estimator.radius)); }
+    // Or nothing traced yet: the renderer's GPU tracer converges the faces as they
+    // come into view (engine/passes/face_cache_trace_pass.h). With `progressive`
+    // set, a cache the session needs later (a new radius, cache chosen without
+    // one) starts so too, instead of being baked on the CPU first.
+    void startFaceCache() { scene_->progressiveFaceCache(worldBakeSettings(world(), ao_.estimator.radius)); }
+    void setProgressiveFaceCache(bool progressive) { progressiveCache_ = progressive; }
+    // Frames with no face in view left to trace: the last frame's tracer found none
+    // (true without the face cache).
+    bool faceCacheConverged();
 
     // The objects at their keys' poses `seconds` into the world's time, for the
     // frames that follow (at time 0 until then), or at poses of the caller's.
@@ -111,6 +120,7 @@ public:
 
 private:
     void requireFaceCache(const AoOptions& ao);
+    bool progressiveCache_ = false;
 
     vk::Context& ctx_;
     std::vector<voxel::World> objectWorlds_;

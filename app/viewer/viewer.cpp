@@ -45,7 +45,12 @@ Viewer::Viewer(const ViewOptions& o)
     renderSize_ = scaled(window_.framebufferSize());
     session_ = std::make_unique<RenderSession>(ctx_, std::move(loaded_), ao, desc_.detail, renderSize_.width,
                                                renderSize_.height);
-    app::prepareFaceCache(*session_, o.ao);
+    // The viewer never waits for a bake: without --bake the GPU traces the faces
+    // in view as frames go, now and whenever the cache is needed anew.
+    session_->setProgressiveFaceCache(true);
+    app::AoFlags cacheFlags = o.ao;
+    cacheFlags.progressive = cacheFlags.bake.empty();
+    app::prepareFaceCache(*session_, cacheFlags);
     renderer().setDisplayImage(true);  // the final view: the colour through the tone map
     const voxel::World& world = session_->world();
     presenter_ = std::make_unique<Presenter>(ctx_, window_.framebufferSize(), o.vsync);

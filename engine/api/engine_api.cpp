@@ -108,6 +108,7 @@ void Engine::Impl::setWorld(voxel::World world) {
     const voxel::Detail detail = world.desc().detail;
     // A game may move, add and remove any object: motion vectors for all.
     session.emplace(*ctx, std::move(world), ao, detail, width, height, true);
+    session->setProgressiveFaceCache(true);  // a game never waits for a bake: the GPU traces what comes into view
     poses = session->poses();
     added.assign(poses.size(), false);
     last.reset();

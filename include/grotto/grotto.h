@@ -163,7 +163,8 @@ public:
     // The light cached on the world's faces for ao.method "cache" (docs/face-cache.md):
     // a bake of this world from `grotto bake`, at the AO radius set now. Throws
     // Error naming the file and the field when it is not this world's bake or
-    // not these settings'. Without one, "cache" bakes the world on every core first.
+    // not these settings'. Without one, "cache" starts with nothing traced and
+    // the GPU traces the faces as they come into view, within ao.cache_rays a frame.
     // With "cache" the AO lives on the faces: readPixels() has it per pixel, and
     // RenderedFrame::ao is a 1x1 placeholder.
     void loadBake(const std::filesystem::path& file);
