@@ -135,6 +135,25 @@ EditBenchFigures benchEdits(const voxel::World& source, const EditBenchOptions& 
     return f;
 }
 
+std::optional<CacheCarveFigures> timeCacheCarve(RenderSession& session, const Camera& camera, int frameIndex) {
+    const voxel::World& world = session.world();
+    const glm::dvec3 forward = -camera.basis[2];
+    const std::optional<voxel::RayHit> hit = world.raycast(camera.position, forward, 1e9);
+    if (!hit) return std::nullopt;
+    const glm::dvec3 centre = camera.position + forward * hit->distance;
+    CacheCarveFigures f;
+    const auto t = Clock::now();
+    session.apply(voxel::Edit::carveSphere(centre, 8.0 * world.voxelSize()));
+    f.editMs = msSince(t);
+    Renderer& renderer = session.renderer();
+    do {
+        renderer.render(camera, uint32_t(frameIndex++));
+        ++f.frames;
+    } while (!session.faceCacheConverged() && f.frames < 1000);
+    f.ms = msSince(t);
+    return f;
+}
+
 void printEditFigures(const EditBenchFigures& f) {
     std::printf("  edits (CPU: apply + LiveMesh::update + BrickTable::update, medians):\n");
     std::printf("    voxel set    %8.3f ms at (%d, %d, %d)\n", f.voxelEditMs, f.voxel.x, f.voxel.y, f.voxel.z);

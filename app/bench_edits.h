@@ -1,11 +1,15 @@
 #pragma once
 // `grotto bench --edits`: the CPU cost of live edits on a loaded world (the
 // edit itself, the chunks it re-meshes, the brick table it updates), against
-// re-meshing the whole world after every edit.
+// re-meshing the whole world after every edit; with --ao cache, how long the GPU
+// takes to trace again what a carve in view reached.
+#include "engine/session.h"
 #include "voxel/face_cache_edit.h"
 #include "voxel/world.h"
 
 #include <nlohmann/json_fwd.hpp>
+
+#include <optional>
 
 namespace grotto::app {
 
@@ -43,5 +47,16 @@ EditBenchFigures benchEdits(const voxel::World& world, const EditBenchOptions& o
 // The figures as lines under `grotto bench`'s report, and as its JSON's "edits".
 void printEditFigures(const EditBenchFigures& f);
 nlohmann::json editFiguresJson(const EditBenchFigures& f);
+
+// --edits with --ao cache, in the bench's own session: a sphere of radius 8 voxels
+// carved where the view's centre ray meets the world, then frames of the camera
+// until the GPU's tracer finds no face in view left to trace.
+struct CacheCarveFigures {
+    double ms = 0;      // from the edit until that frame has finished
+    double editMs = 0;  // of it, the edit itself (world, mesh, cache re-listed)
+    uint32_t frames = 0;
+};
+// Nothing when the centre ray meets no voxel. `frameIndex`: the next frame's.
+std::optional<CacheCarveFigures> timeCacheCarve(RenderSession& session, const Camera& camera, int frameIndex);
 
 }  // namespace grotto::app
