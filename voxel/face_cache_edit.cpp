@@ -78,7 +78,8 @@ void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox
         const size_t old = size_t(it - faces.begin());
         if (!existed || worst.now()) {
             retrace.push_back(uint32_t(f));
-            if (reach) (*reach)[f] = FaceReach::Stale;
+            const bool skyOnly = existed && !worst.ao && !worst.sun;
+            if (reach) (*reach)[f] = skyOnly ? FaceReach::SkyNear : FaceReach::Stale;
             if (!existed || traceNow) continue;
         } else if (worst.skyFar) {
             ++far;

@@ -54,7 +54,9 @@ struct CacheEditStats {
 };
 enum class FaceReach : uint8_t {
     Untouched,  // carried over, still right
-    Stale,      // new, or reached now: traced again (or to be)
+    Stale,      // new, or its AO or sun reached: traced again (or to be)
+    SkyNear,    // only its sky light reached, by more than kSkyStaleShare: traced again
+                // (or kept until it is: its AO and sun still right)
     SkyFar,     // carried over; its sky light off by at most kSkyStaleShare
 };
 void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox& changed,
