@@ -2,8 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // The faces in view whose texels have not converged, listed for the face cache's
 // tracer (shared/face_trace.h): every full-res pixel on a world surface asks for
-// the faces of the texels it reads, once each per frame, level 0 in the first
-// list and levels 1 and 2 in the second.
+// the face its point lies on, once each per frame, level 0 in the first list and
+// levels 1 and 2 in the second.
 #include "shared/face_trace.h"
 #include "shared/frame.h"
 #include "shared/objects.h"
@@ -40,8 +40,13 @@ void main() {
     if (any(greaterThanEqual(uvec2(q), frame.size))) return;
     uint surface = texelFetch(surfaceTex, q, 0).r;
     if (surface == 0u || surfaceObject(surface) != 0u) return;
+    // The face the pixel's point lies on: the texels of its neighbours across an
+    // edge that it reads too are in view beside it, and asked for there.
     uint dir = surfaceFace(surface);
-    FaceCacheTaps t = faceCacheTaps(cachedPointAt(q, dir), frame.cameraCell.xyz, dir);
-    for (int i = 0; i < 4; ++i)
-        if (t.weight[i] > 0.0) request(t.face[i], t.cell[i], dir);
+    vec3 p = cachedPointAt(q, dir);
+    uint axis = faceAxis(dir);
+    ivec3 cell = ivec3(floor(p)) + frame.cameraCell.xyz;
+    cell[axis] = int(round(p[axis])) + frame.cameraCell[axis] - (facePositive(dir) ? 1 : 0);
+    int face = faceCacheFace(cell, dir);
+    if (face >= 0) request(face, cell, dir);
 }

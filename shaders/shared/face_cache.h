@@ -88,11 +88,10 @@ GROTTO_FUNCTION vec4 faceCacheUnpack(uint bits) {
 }
 
 // The texels a point reads: the four texel centres nearest to it on its face
-// plane, each with its face's index (-1: no exposed face there), that face's cell,
-// the texel's index and its bilinear weight (0 where the face is missing).
+// plane, each with its face's index (-1: no exposed face there), the texel's
+// index and its bilinear weight (0 where the face is missing).
 struct FaceCacheTaps {
     int face[4];
-    ivec3 cell[4];
     uint texel[4];
     float weight[4];
 };
@@ -121,12 +120,10 @@ GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
     ivec3 brick = ivec3(q.x >> 3, q.y >> 3, q.z >> 3);
     uint record = faceCacheRecord(brick);
     t.face[0] = faceCacheFaceIn(record, q, dir);
-    t.cell[0] = q;
     for (int c = 1; c < 4; ++c) {
         int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
         q[ua] = cu;
         q[va] = cv;
-        t.cell[c] = q;
         if (cu == cu0 && cv == cv0) { t.face[c] = t.face[0]; continue; }
         if (c == 3 && cu1 == cu0) { t.face[3] = t.face[2]; continue; }
         if (c == 3 && cv1 == cv0) { t.face[3] = t.face[1]; continue; }
