@@ -42,6 +42,9 @@ uint faceCacheK() { return frame.faceCache.y; }
 layout(set = 0, binding = 10, rgba16f) uniform readonly image2D objectLightImage;
 #define GROTTO_FACE_CACHE_BINDING 11
 #include "face_cache.glsl"
+#include "shared/face_trace.h"
+#define GROTTO_FACE_REQUEST_BINDING 14
+#include "face_cache_requests.glsl"
 #include "face_cache_surface.glsl"
 #endif
 

@@ -18,6 +18,7 @@ void main() {
     bool emptyFull = float(empty) * float(full) <= float(c.budget);
     float left = max(float(c.budget) - float(empty) * float(emptyFull ? full : coarse), 0.0);
     uint taken = uint(min(float(partial), floor(left / float(full))));
+    header[GROTTO_FACE_ASKED] = header[GROTTO_FACE_QUEUE_EMPTY] + header[GROTTO_FACE_QUEUE_PARTIAL];
     header[GROTTO_FACE_TRACED_EMPTY] = empty;
     header[GROTTO_FACE_TRACED_PARTIAL] = taken;
     header[GROTTO_FACE_EMPTY_FULL] = emptyFull ? 1u : 0u;

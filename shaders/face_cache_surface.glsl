@@ -20,7 +20,14 @@ vec3 cachedPointAt(ivec2 q, uint face) {
     return p;
 }
 
-// The light cached at that point.
+// The light cached at that point. With GROTTO_FACE_REQUEST_BINDING (the
+// composite), its texels' faces that have not converged are asked for too, for
+// the next frame's tracer (face_cache_requests.glsl, included before this).
 vec4 cachedLightAt(ivec2 q, uint face, out bool found) {
-    return faceCacheAt(cachedPointAt(q, face), frame.cameraCell.xyz, face, found);
+    FaceCacheTaps t = faceCacheTaps(cachedPointAt(q, face), frame.cameraCell.xyz, face);
+#ifdef GROTTO_FACE_REQUEST_BINDING
+    for (int c = 0; c < 4; ++c)
+        if (t.weight[c] > 0.0) requestFace(t.face[c], t.cell[c], face);
+#endif
+    return faceCacheBlend(t, found);
 }

@@ -2,10 +2,11 @@
 //  - texels traced on the GPU are the CPU bake's: the same rays, the same counts,
 //    texel by texel, but for rays that graze a voxel edge in float;
 //  - only faces in view are traced, a face never traced gets its coarse rays at
-//    once, and the budget bounds the faces converged a frame;
-//  - after an edit, every face in view that it reaches is traced again in the
-//    next frame and equals a fresh bake of the edited world; faces it cannot
-//    reach keep their bits.
+//    once (under a pixel: in its first frame; beside one: in the next), and the
+//    budget bounds the faces converged a frame;
+//  - after an edit, every face in view that it reaches is traced again (under a
+//    pixel in the next frame, beside one in the frame after) and equals a fresh
+//    bake of the edited world; faces it cannot reach keep their bits.
 #include "engine/renderer.h"
 #include "engine/scene/live_scene.h"
 #include "shaders/shared/face_trace.h"
@@ -111,7 +112,6 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     LiveScene scene(ctx(), voxel::World(world));
     const voxel::FaceBakeSettings settings = traceSettings(world);
     scene.progressiveFaceCache(settings);
-    // Room for exactly 25 faces at the full rays a frame, beyond the coarse ones.
     const uint32_t perFace = kK * kK * (settings.rays + settings.sunRays);
     const uint32_t coarse = kK * kK * (GROTTO_FACE_COARSE_RAYS + GROTTO_FACE_COARSE_SUN_RAYS);
     const Camera camera = viewOf(world);
@@ -121,16 +121,28 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     Renderer first(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, 1), 96, 72);
     first.render(camera, 0);
     cache.sync();
-    const size_t inView = count(1);
-    EXPECT_GT(inView, 200u);          // every face in view: coarse at once, whatever the budget
+    const size_t underPixels = count(1);
+    EXPECT_GT(underPixels, 200u);  // every face under a pixel: coarse at once, whatever the budget
     EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), 0u);  // a budget of one ray converges none
+    // The composite asked for the faces beside them whose texels it read too.
+    const std::vector<uint32_t> after = scene.gpu().faceCache->lastHeader();
+    const uint32_t beside = after[GROTTO_FACE_QUEUE_EMPTY];
+    EXPECT_GT(beside, 0u);
+    EXPECT_EQ(after[GROTTO_FACE_QUEUE_PARTIAL], underPixels);
 
+    // Room for 25 faces at the full rays, less what those faces' coarse rays take.
     const uint32_t budget = 25 * perFace;
     Renderer renderer(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, budget), 96, 72);
-    renderer.render(camera, 0);
+    renderer.render(camera, 1);
     cache.sync();
-    EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), 25u);
-    EXPECT_EQ(count(1), inView - 25);
+    const std::vector<uint32_t> plan = scene.gpu().faceCache->lastHeader();
+    EXPECT_EQ(plan[GROTTO_FACE_TRACED_EMPTY], beside);
+    EXPECT_EQ(plan[GROTTO_FACE_EMPTY_FULL], 0u);
+    const uint32_t full = (budget - beside * coarse) / perFace;
+    EXPECT_EQ(plan[GROTTO_FACE_TRACED_PARTIAL], full);
+    EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), full);
+    EXPECT_EQ(count(1), underPixels + beside - full);
+    const size_t inView = underPixels + beside;
     // The coarse texels: 8 rays each, the same sequence's first.
     std::vector<voxel::FaceTexel> cpu(cache.texels().size());
     voxel::FaceBakeSettings coarseSettings = settings;
@@ -140,8 +152,7 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     for (uint8_t& l : coarseOnly) l = l == 1 ? GROTTO_FACE_LEVEL_CONVERGED : 0;
     const Agreement a = compare(cache.texels(), cpu, coarseOnly);
     EXPECT_LT(double(a.differing), 0.01 * double(a.compared));
-    (void)coarse;
-    for (int frame = 1; frame < 200 && count(1) > 0; ++frame) {
+    for (int frame = 2; frame < 200 && count(1) > 0; ++frame) {
         renderer.render(camera, uint32_t(frame));
         cache.sync();
     }
@@ -149,7 +160,7 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), inView);
 }
 
-TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgainInTheNextFrame) {
+TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgainAtOnce) {
     const voxel::World world = pillars();
     LiveScene scene(ctx(), voxel::World(world));
     const voxel::FaceBakeSettings settings = traceSettings(world);
@@ -169,7 +180,8 @@ TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgainInTheNext
     size_t reached = 0;
     for (uint8_t l : stale) reached += l == 0;
     ASSERT_GT(reached, 10u);
-    renderer.render(camera, 1);
+    renderer.render(camera, 1);  // traces those under pixels
+    renderer.render(camera, 2);  // and those beside them the composite read
     cache.sync();
 
     std::vector<voxel::FaceTexel> fresh(cache.texels().size());
@@ -193,9 +205,9 @@ TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgainInTheNext
     EXPECT_GT(stillStale, 0u);  // out of view: left for later
     EXPECT_GT(retraced, 50u);
     // Those were all the faces in view: the next frame finds none to trace.
-    renderer.render(camera, 2);
+    renderer.render(camera, 3);
     const std::vector<uint32_t> asked = scene.gpu().faceCache->lastHeader();
-    EXPECT_EQ(asked[GROTTO_FACE_QUEUE_EMPTY] + asked[GROTTO_FACE_QUEUE_PARTIAL], 0u);
+    EXPECT_EQ(asked[GROTTO_FACE_ASKED] + asked[GROTTO_FACE_QUEUE_EMPTY] + asked[GROTTO_FACE_QUEUE_PARTIAL], 0u);
     const Agreement a = compare(cache.texels(), fresh, retracedOnly);
     EXPECT_LT(double(a.differing), 0.02 * double(a.compared)) << a.differing << " of " << a.compared;
 }

@@ -19,7 +19,7 @@ std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     if (!s.faceCache) return b;
     b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the object light
-    return GpuFaceCache::withBindings(std::move(b));
+    return GpuFaceCache::withRequestBindings(GpuFaceCache::withBindings(std::move(b)));
 }
 }  // namespace
 
@@ -42,7 +42,7 @@ void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const v
         if (!in.faceCache || !in.objectLight)
             throw Error::internal("CompositePass", "the face cache's composite without the cache or the object light");
         b.push_back(vk::storageImage(in.objectLight->view));
-        b = in.faceCache->withBindings(std::move(b));
+        b = in.faceCache->withRequestBindings(in.faceCache->withBindings(std::move(b)));
     }
     pass_.dispatch(cmd, b, shape_.withAo ? in.aoHalf.extent : color.extent, group(shape_));  // with AO, per AO pixel
 }

@@ -24,9 +24,8 @@ uint32_t defaultCacheRays(const vk::Context& ctx) {
 FaceCacheTracePass::FaceCacheTracePass(vk::Context& ctx)
     : ctx_(ctx),
       request_(ctx, "face_cache_request.comp",
-               GpuFaceCache::withBindings({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kSampled, kSampled, kBuffer, kBuffer,
-                                           kBuffer, kBuffer}),
-               sizeof(gpu::FaceTraceConstants)),
+               GpuFaceCache::withRequestBindings(
+                   GpuFaceCache::withBindings({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kSampled, kSampled}))),
       plan_(ctx, "face_cache_plan.comp", {kBuffer}, sizeof(gpu::FaceTraceConstants)),
       trace_(ctx, "face_cache_trace.comp", withTraceBindings({kBuffer, kBuffer, kBuffer, kBuffer}),
              sizeof(gpu::FaceTraceConstants)) {}
@@ -48,25 +47,14 @@ void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, Vk
         .epsilon = 1e-4f,
         .capacity = cache.queueCapacity(),
         .texelsPerSide = cache.texelsPerSide(),
-        .budget = budget,
-        .width = size.width,
-        .height = size.height};
+        .budget = budget};
     if (cache.faceCount() == 0) return;
-    // This frame's requests start from none.
-    vkCmdFillBuffer(cmd, cache.requested().buffer, 0, VK_WHOLE_SIZE, 0);
-    vkCmdFillBuffer(cmd, cache.header().buffer, 0, VK_WHOLE_SIZE, 0);
-    barrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-            VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     request_.dispatch(cmd,
-                      cache.withBindings({vk::uniformBuffer(frame.buffer),
+                      cache.withRequestBindings(cache.withBindings({vk::uniformBuffer(frame.buffer),
                                           vk::sampledImage(ctx_.pointSampler, g.depth.view, ro),
-                                          vk::sampledImage(ctx_.pointSampler, g.surface.view, ro),
-                                          vk::storageBuffer(cache.levels().buffer),
-                                          vk::storageBuffer(cache.requested().buffer),
-                                          vk::storageBuffer(cache.queue().buffer),
-                                          vk::storageBuffer(cache.header().buffer)}),
-                      size, 16, &c);
+                                          vk::sampledImage(ctx_.pointSampler, g.surface.view, ro)})),
+                      size, 16);
     computeToCompute(cmd);
     plan_.dispatch(cmd, {vk::storageBuffer(cache.header().buffer)}, {1, 1}, 1, &c);
     barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
@@ -79,10 +67,17 @@ void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, Vk
                                                vk::storageBuffer(cache.texels().buffer)},
                                               traceConstants, occupancy),
                             cache.header().buffer, GROTTO_FACE_DISPATCH * sizeof(uint32_t), &c);
-    // The composite and the AOVs read the texels next; the host reads the header's counts.
-    barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+    // The requests start afresh for the composite, which asks for the next frame:
+    // the counts and the request bits (the rest of the header is the plan's).
+    barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT,
+            VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
+    vkCmdFillBuffer(cmd, cache.requested().buffer, 0, VK_WHOLE_SIZE, 0);
+    vkCmdFillBuffer(cmd, cache.header().buffer, 0, 2 * sizeof(uint32_t), 0);
+    // The composite and the AOVs read the texels next and ask anew; the host reads the header.
+    barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
+            VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
-            VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_HOST_READ_BIT);
+            VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_HOST_READ_BIT);
 }
 
 }  // namespace grotto

@@ -42,6 +42,7 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                    true);
         std::memset(header_.mapped(), 0, header_.size);
+        static_cast<uint32_t*>(header_.mapped())[GROTTO_FACE_CAPACITY] = capacity_;
     } catch (...) {
         for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_}) vk::destroy(ctx_, *b);
         throw;
@@ -61,6 +62,16 @@ std::vector<vk::Binding> GpuFaceCache::withBindings(std::vector<vk::Binding> own
     own.push_back(vk::storageBuffer(bricks_.buffer));
     own.push_back(vk::storageBuffer(records_.buffer));
     own.push_back(vk::storageBuffer(texels_.buffer));
+    return own;
+}
+
+std::vector<VkDescriptorType> GpuFaceCache::withRequestBindings(std::vector<VkDescriptorType> own) {
+    own.insert(own.end(), 4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    return own;
+}
+
+std::vector<vk::Binding> GpuFaceCache::withRequestBindings(std::vector<vk::Binding> own) const {
+    for (const vk::Buffer* b : {&levels_, &requested_, &queue_, &header_}) own.push_back(vk::storageBuffer(b->buffer));
     return own;
 }
 

@@ -50,6 +50,11 @@ public:
     static std::vector<VkDescriptorType> withBindings(std::vector<VkDescriptorType> own);
     std::vector<vk::Binding> withBindings(std::vector<vk::Binding> own) const;
 
+    // Appends the buffers a pass that asks for faces binds (levels, request bits,
+    // queue, header: shaders/face_cache_requests.glsl) to a pass's own.
+    static std::vector<VkDescriptorType> withRequestBindings(std::vector<VkDescriptorType> own);
+    std::vector<vk::Binding> withRequestBindings(std::vector<vk::Binding> own) const;
+
     // The tracer's buffers (face_cache_trace_pass.h).
     const vk::Buffer& texels() const { return texels_; }
     const vk::Buffer& levels() const { return levels_; }

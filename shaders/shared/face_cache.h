@@ -88,10 +88,11 @@ GROTTO_FUNCTION vec4 faceCacheUnpack(uint bits) {
 }
 
 // The texels a point reads: the four texel centres nearest to it on its face
-// plane, each with its face's index (-1: no exposed face there), the texel's
-// index and its bilinear weight (0 where the face is missing).
+// plane, each with its face's index (-1: no exposed face there) and cell, the
+// texel's index and its bilinear weight (0 where the face is missing).
 struct FaceCacheTaps {
     int face[4];
+    ivec3 cell[4];
     uint texel[4];
     float weight[4];
 };
@@ -120,10 +121,12 @@ GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
     ivec3 brick = ivec3(q.x >> 3, q.y >> 3, q.z >> 3);
     uint record = faceCacheRecord(brick);
     t.face[0] = faceCacheFaceIn(record, q, dir);
+    t.cell[0] = q;
     for (int c = 1; c < 4; ++c) {
         int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
         q[ua] = cu;
         q[va] = cv;
+        t.cell[c] = q;
         if (cu == cu0 && cv == cv0) { t.face[c] = t.face[0]; continue; }
         if (c == 3 && cu1 == cu0) { t.face[3] = t.face[2]; continue; }
         if (c == 3 && cv1 == cv0) { t.face[3] = t.face[1]; continue; }
@@ -144,11 +147,10 @@ GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
     return t;
 }
 
-// AO, sun visibility and the two sky weights at point `p` (as faceCacheTaps): the
-// taps blended bilinearly, reweighted where some are missing. `found`: false
-// where none is.
-GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool) found) {
-    FaceCacheTaps t = faceCacheTaps(p, origin, dir);
+// AO, sun visibility and the two sky weights at point `p` (as faceCacheTaps),
+// blended; `found`: false where no tap has a face.
+// The taps blended bilinearly, reweighted where some are missing.
+GROTTO_FUNCTION vec4 faceCacheBlend(FaceCacheTaps t, GROTTO_OUT(bool) found) {
     vec4 sum = vec4(0.0f);
     float weight = 0.0f;
     for (int c = 0; c < 4; ++c) {
@@ -158,6 +160,10 @@ GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool
     }
     found = weight > 0.0f;
     return found ? sum / weight : vec4(1.0f, 1.0f, 0.0f, 0.0f);
+}
+
+GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool) found) {
+    return faceCacheBlend(faceCacheTaps(p, origin, dir), found);
 }
 
 #endif  // GROTTO_FACE_CACHE_LAYOUT_ONLY

@@ -8,9 +8,11 @@
 //   2: converged but for its sky light, which an edit far away may have moved by
 //      at most voxel/face_cache_edit.h's kSkyStaleShare;
 //   3: converged: traced with the full rays since the last edit that reached it.
-// The queue: two lists of up to `capacity` faces in view this frame (uvec4: cell
-// xyz, dir | face index << 3), level 0 first at [0, capacity), levels 1 and 2 at
-// [capacity, 2 capacity). The header's words:
+// The queue: two lists of up to `capacity` faces in view (uvec4: cell xyz, dir |
+// face index << 3), level 0 first at [0, capacity), levels 1 and 2 at
+// [capacity, 2 capacity). The faces are asked for by the request pass, for the
+// face under each pixel, and by the composite of the frame before, for every
+// texel it read that had not converged. The header's words:
 #ifndef GROTTO_SHARED_FACE_TRACE_H
 #define GROTTO_SHARED_FACE_TRACE_H
 #include "common.h"
@@ -20,13 +22,15 @@
 // an estimate about as good as screen-space AO's (docs/face-cache.md).
 #define GROTTO_FACE_COARSE_RAYS 8u
 #define GROTTO_FACE_COARSE_SUN_RAYS 2u
-#define GROTTO_FACE_QUEUE_EMPTY 0u    // faces at level 0 asked for this frame (may pass capacity)
-#define GROTTO_FACE_QUEUE_PARTIAL 1u  // faces at levels 1 and 2 asked for this frame
+#define GROTTO_FACE_QUEUE_EMPTY 0u    // faces at level 0 asked for (may pass capacity)
+#define GROTTO_FACE_QUEUE_PARTIAL 1u  // faces at levels 1 and 2 asked for
 #define GROTTO_FACE_TRACED_EMPTY 2u   // of the first list, traced this frame
 #define GROTTO_FACE_TRACED_PARTIAL 3u // of the second, traced this frame (the budget's share)
 #define GROTTO_FACE_EMPTY_FULL 4u     // 1: the first list got the full rays, 0: the coarse
 #define GROTTO_FACE_DISPATCH 5u       // three words: the trace's indirect dispatch
-#define GROTTO_FACE_HEADER_WORDS 8u
+#define GROTTO_FACE_CAPACITY 8u       // the lists' length, set once
+#define GROTTO_FACE_ASKED 9u          // faces asked for in all, this frame (for the host)
+#define GROTTO_FACE_HEADER_WORDS 10u
 #define GROTTO_FACE_TRACE_GROUP 64u
 
 GROTTO_NAMESPACE_BEGIN
@@ -42,8 +46,7 @@ struct FaceTraceConstants {
     uint capacity;        // the queue's lists' length
     uint texelsPerSide;   // k
     uint budget;          // rays per frame for the second list (and for the first at full rays)
-    uint width, height;   // the frame's size, for the request pass
-    uint pad;
+    uint pad0, pad1, pad2;
 };
 GROTTO_STATIC_ASSERT(sizeof(FaceTraceConstants) == 64);
 
