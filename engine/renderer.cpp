@@ -69,7 +69,8 @@ bool Renderer::cachedSun() const {
 
 CompositeShape Renderer::compositeShape() const {
     return {.withAo = aoChain(ao_), .withShadow = tracedShadows(), .withBentNormals = bentNormals(ao_, lighting_),
-            .faceCache = faceCached(ao_), .cachedSun = shadows() && cachedSun(), .objectLight = objectLight()};
+            .faceCache = faceCached(ao_), .cachedSun = shadows() && cachedSun(), .objectLight = objectLight(),
+            .shadowEdges = shadowEdges()};
 }
 
 FrameShape Renderer::shapeFor(uint32_t width, uint32_t height, const AoOptions& ao,
@@ -134,6 +135,7 @@ void Renderer::release() {
     objectLightPass_.reset();
     faceCacheAovPass_.reset();
     cacheTracePass_.reset();
+    shadowEdgePass_.reset();
     targets_.release();
     vk::destroy(ctx_, objectGrids_.buffer);
 }
@@ -259,6 +261,12 @@ FrameStats Renderer::submit(const Camera& camera, uint32_t frameIndex, const Fra
 
 // The frame, top to bottom; each pass's barriers follow from what it declares.
 FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, FrameCopy* copy, bool inFlight) {
+    if (shadowEdges() && (!shadowEdgePass_ || edgeSize_.width != width() || edgeSize_.height != height())) {
+        finishFrames();  // no frame in flight may still use the list
+        shadowEdgePass_.reset();
+        shadowEdgePass_ = std::make_unique<ShadowEdgePass>(ctx_, width(), height());
+        edgeSize_ = {width(), height()};
+    }
     if (tracedShadows() || objectLight() || (aoChain(ao_) && tracesVoxels(ao_.method))) refreshObjectGrids();
     slotIndex_ = 1 - slotIndex_;
     FrameSlot& s = slot();
@@ -309,8 +317,13 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
                                {.aoHalf = image(aoOutput()), .frame = s.frame, .palette = scene_.palette,
                                 .gtaoConstants = s.aoConstants, .objectUniforms = s.objectUniforms,
                                 .shadow = image(TargetId::Shadow), .bentNormals = image(TargetId::AoBentNormal),
-                                .faceCache = scene_.faceCache.get(), .objectLight = &image(TargetId::ObjectLight)});
+                                .faceCache = scene_.faceCache.get(), .objectLight = &image(TargetId::ObjectLight),
+                                .shadowEdges = shadowEdgePass_ ? &shadowEdgePass_->edges() : nullptr});
     });
+    if (shadowEdges())
+        pass(cmd, ShadowEdgePass::declare(), [&] {
+            shadowEdgePass_->record(cmd, targets_.gbuffer(), image(TargetId::Color), s.traceConstants, *scene_.occupancy);
+        });
     if (displayOn_)
         pass(cmd, DisplayPass::declare(), [&] {
             displayPass_->record(cmd, image(TargetId::Color), image(TargetId::Display), toneMapCurve(lighting_.toneMap));

@@ -21,6 +21,7 @@
 #include "engine/passes/face_cache_trace_pass.h"
 #include "engine/passes/hiz_pass.h"
 #include "engine/passes/object_light_pass.h"
+#include "engine/passes/shadow_edge_pass.h"
 #include "engine/passes/shadow_pass.h"
 #include "engine/passes/temporal_pass.h"
 #include "engine/passes/upsample_pass.h"
@@ -187,6 +188,8 @@ private:
     bool softShadows() const { return tracedShadows() && lighting_.sunAngle > 0.0f; }
     // Objects' AO and sky light over the face cache (object_light_pass.h).
     bool objectLight() const { return faceCached(ao_) && objects_; }
+    // Exact sun rays on the cache's shadow edges: its sun is the frame's, a point.
+    bool shadowEdges() const { return shadows() && cachedSun() && !(lighting_.sunAngle > 0.0f); }
     // The GPU traces the face cache's texels in view that have not converged.
     bool cacheTracing() const { return faceCached(ao_) && scene_.occupancy && scene_.faceCache; }
     // VBAO finds bent normals in every frame: the sky's ambient is lit around them.
@@ -250,6 +253,8 @@ private:
     std::unique_ptr<ObjectLightPass> objectLightPass_;
     std::unique_ptr<FaceCacheAovPass> faceCacheAovPass_;  // --ao cache's AOVs, for read-backs
     std::unique_ptr<FaceCacheTracePass> cacheTracePass_;  // --ao cache's rays for the faces in view not converged
+    std::unique_ptr<ShadowEdgePass> shadowEdgePass_;      // its list sized for edgeSize_
+    VkExtent2D edgeSize_{};
     // The two frames in flight: each frame takes the other slot than the last.
     std::array<std::unique_ptr<FrameSlot>, 2> slots_;
     uint32_t slotIndex_ = 1;

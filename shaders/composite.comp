@@ -21,6 +21,7 @@ layout(constant_id = 3) const bool withShadow = true;  // false: the sun reaches
 layout(constant_id = 4) const bool withBentNormals = false;  // VBAO's bent normals light the sky's ambient
 layout(constant_id = 5) const bool cachedSun = false;  // cache: world surfaces take the cache's sun visibility
 layout(constant_id = 6) const bool objectLight = false;  // cache: objects' AO and sky light (object_light.comp)
+layout(constant_id = 7) const bool shadowEdges = false;  // cache, a point sun: list its edges' pixels (shadow_edge.comp)
 // The group's side, set by CompositePass: lavapipe runs 16x16 groups of single
 // pixels faster, 8x8 groups of 2x2 blocks (docs/benchmarks.md).
 layout(local_size_x_id = 1, local_size_y_id = 2) in;
@@ -46,6 +47,16 @@ layout(set = 0, binding = 10, rgba16f) uniform readonly image2D objectLightImage
 #define GROTTO_FACE_REQUEST_BINDING 14
 #include "face_cache_requests.glsl"
 #include "face_cache_surface.glsl"
+layout(set = 0, binding = 18, std430) buffer Edges { uint edgeHeader[GROTTO_EDGE_HEADER_WORDS]; uvec4 edges[]; };
+
+// Lists pixel q for an exact sun ray (shadow_edge.comp): lit with sun visibility
+// `used`, its sun's light at full visibility is `light` (exposed).
+void listShadowEdge(ivec2 q, float used, vec3 light) {
+    uint slot = atomicAdd(edgeHeader[GROTTO_EDGE_COUNT], 1u);
+    if (slot >= edgeHeader[GROTTO_EDGE_CAPACITY]) return;
+    edges[2u * slot] = uvec4(uint(q.x) | (uint(q.y) << 16u), floatBitsToUint(used), 0u, 0u);
+    edges[2u * slot + 1u] = uvec4(floatBitsToUint(light), 0u);
+}
 #endif
 
 float gtaoDepth(ivec2 texel, int mip) { return 0.0; }
@@ -145,6 +156,9 @@ vec3 shadeCached(ivec2 q, uint surface) {
     if (!found) return shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
     // With the cache's sun, the shadow pass holds the objects' alone.
     float sunReach = cachedSun ? c.y * sunlit(q) : sunlit(q);
+    float cosSun = dot(normal, frame.sunDirection.xyz);
+    if (shadowEdges && cosSun > 0.0 && cachedSunEdge(lastCachedTaps))
+        listShadowEdge(q, c.y, exposed(albedo[surfaceMaterial(surface) - 1u].rgb * frame.sunRadiance.rgb * (cosSun * sunlit(q))));
     return shadeSeen(surface, normal, max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)), sunReach, open);
 }
 #endif

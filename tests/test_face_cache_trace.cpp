@@ -4,9 +4,13 @@
 //  - only faces in view are traced, a face never traced gets its coarse rays at
 //    once (under a pixel: in its first frame; beside one: in the next), and the
 //    budget bounds the faces converged a frame;
+//  - a point sun's shadow edges are traced per pixel: the rendered sunlight
+//    agrees with an exact ray from each pixel's point, where the texels alone
+//    (an all but point sun, which the edge rays leave out) blur the edge;
 //  - after an edit, every face in view that it reaches is traced again (under a
 //    pixel in the next frame, beside one in the frame after) and equals a fresh
 //    bake of the edited world; faces it cannot reach keep their bits.
+#include "engine/lab/surface_points.h"
 #include "engine/renderer.h"
 #include "engine/scene/live_scene.h"
 #include "shaders/shared/face_trace.h"
@@ -17,6 +21,7 @@
 #include "voxel/face_cache_layout.h"
 
 #include <cmath>
+#include <map>
 
 namespace grotto {
 namespace {
@@ -210,6 +215,49 @@ TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgainAtOnce) {
     EXPECT_EQ(asked[GROTTO_FACE_ASKED] + asked[GROTTO_FACE_QUEUE_EMPTY] + asked[GROTTO_FACE_QUEUE_PARTIAL], 0u);
     const Agreement a = compare(cache.texels(), fresh, retracedOnly);
     EXPECT_LT(double(a.differing), 0.02 * double(a.compared)) << a.differing << " of " << a.compared;
+}
+
+// Pixels lit by the sun where an exact ray from their point finds it blocked, or
+// the reverse, under a sun of angular size `angle` (0: a point) and no ambient light.
+size_t sunMismatches(vk::Context& ctx, float angle) {
+    const voxel::World world = pillars();
+    voxel::Lighting light = world.desc().lighting;
+    light.sunAngle = angle;
+    light.sunDirection = glm::normalize(glm::vec3(0.6f, 0.7f, 0.35f));
+    light.ambientIntensity = 0.0f;
+    light.ambientFrom = voxel::AmbientSource::Color;
+    LiveScene scene(ctx, voxel::World(world));
+    voxel::FaceBakeSettings settings = worldBakeSettings(world, 1.5, kK);
+    settings.rays = 4, settings.sunRays = 1;
+    settings.sunDirection = glm::dvec3(light.sunDirection), settings.sunAngleDegrees = angle;
+    scene.bakeFaceCache(settings);
+    const Camera camera = viewOf(world);
+    Renderer renderer(ctx, scene.gpu(), light, cacheAo(world, 1.5, 0), 96, 72);
+    renderer.render(camera);
+    const FrameImages f = renderer.readback(camera, true);
+    const SurfacePoints sp = surfacePoints(f, camera, world.voxelSize(), world.origin());
+    // Lit: over half the brightest red of its facing (the sun alone lights it).
+    std::map<int, float> brightest;
+    auto facing = [](glm::dvec3 n) { return int(std::lround(n.x)) * 9 + int(std::lround(n.y)) * 3 + int(std::lround(n.z)); };
+    for (size_t i = 0; i < sp.points.size(); ++i)
+        brightest[facing(sp.normals[i])] = std::max(brightest[facing(sp.normals[i])], f.color[4 * sp.pixels[i]]);
+    size_t off = 0, lit = 0;
+    for (size_t i = 0; i < sp.points.size(); ++i) {
+        if (glm::dot(sp.normals[i], glm::dvec3(light.sunDirection)) <= 0.0) continue;
+        const bool exact = !world.raycast(sp.points[i] + sp.normals[i] * 1e-4, glm::dvec3(light.sunDirection), 1e6);
+        const bool shown = f.color[4 * sp.pixels[i]] > 0.5f * brightest[facing(sp.normals[i])];
+        off += exact != shown;
+        lit += exact;
+    }
+    EXPECT_GT(lit, 500u);
+    return off;
+}
+
+TEST_F(FaceCacheTrace, APointSunsShadowEdgesAreTracedPerPixel) {
+    const size_t traced = sunMismatches(ctx(), 0.0f), blurred = sunMismatches(ctx(), 1e-4f);
+    std::printf("sun off at %zu pixels with edge rays, %zu with the texels alone\n", traced, blurred);
+    EXPECT_LE(traced, 8u);  // shadows thinner than the texels apart, and depth rounding
+    EXPECT_GT(blurred, 10 * std::max<size_t>(traced, 1));
 }
 
 }  // namespace

@@ -19,7 +19,9 @@ std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     if (!s.faceCache) return b;
     b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the object light
-    return GpuFaceCache::withRequestBindings(GpuFaceCache::withBindings(std::move(b)));
+    b = GpuFaceCache::withRequestBindings(GpuFaceCache::withBindings(std::move(b)));
+    b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);  // the shadow edges' list
+    return b;
 }
 }  // namespace
 
@@ -28,7 +30,8 @@ CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
       shape_(shape),
       pass_(ctx, shape.faceCache ? "composite_cache.comp" : "composite.comp", bindings(shape), 0,
             {shape.withAo ? 1u : 0u, group(shape), group(shape), shape.withShadow ? 1u : 0u,
-             shape.withBentNormals ? 1u : 0u, shape.cachedSun ? 1u : 0u, shape.objectLight ? 1u : 0u}) {}
+             shape.withBentNormals ? 1u : 0u, shape.cachedSun ? 1u : 0u, shape.objectLight ? 1u : 0u,
+             shape.shadowEdges ? 1u : 0u}) {}
 
 void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& color, const Inputs& in) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
@@ -42,7 +45,11 @@ void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const v
         if (!in.faceCache || !in.objectLight)
             throw Error::internal("CompositePass", "the face cache's composite without the cache or the object light");
         b.push_back(vk::storageImage(in.objectLight->view));
+        if (shape_.shadowEdges && !in.shadowEdges)
+            throw Error::internal("CompositePass", "shadow edges without their list");
         b = in.faceCache->withRequestBindings(in.faceCache->withBindings(std::move(b)));
+        // Without edges the binding is never read: any buffer holds its place.
+        b.push_back(vk::storageBuffer(in.shadowEdges ? in.shadowEdges->buffer : in.faceCache->header().buffer));
     }
     pass_.dispatch(cmd, b, shape_.withAo ? in.aoHalf.extent : color.extent, group(shape_));  // with AO, per AO pixel
 }

@@ -24,6 +24,7 @@ struct CompositeShape {
     bool faceCache = false;        // --ao cache: the face cache instead of an AO chain
     bool cachedSun = false;        // with it: world surfaces take the cache's sun visibility
     bool objectLight = false;      // with it: objects' AO and sky light from the object light pass
+    bool shadowEdges = false;      // with the cache's sun, a point: its shadow edges' pixels listed (shadow_edge_pass.h)
     bool operator==(const CompositeShape&) const = default;
 };
 
@@ -49,6 +50,7 @@ public:
         const vk::Image& bentNormals;
         const GpuFaceCache* faceCache = nullptr;
         const vk::Image* objectLight = nullptr;  // with the face cache: the object light pass's (or a placeholder)
+        const vk::Buffer* shadowEdges = nullptr;  // with shadowEdges: the list it appends to
     };
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& color, const Inputs& in);
 

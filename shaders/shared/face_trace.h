@@ -32,6 +32,11 @@
 #define GROTTO_FACE_ASKED 9u          // faces asked for in all, this frame (for the host)
 #define GROTTO_FACE_HEADER_WORDS 10u
 #define GROTTO_FACE_TRACE_GROUP 64u
+// The shadow edge list (shadow_edge.comp): its header's words, then the pixels.
+#define GROTTO_EDGE_COUNT 0u     // pixels listed this frame (may pass capacity)
+#define GROTTO_EDGE_CAPACITY 1u  // pixels it holds, set once
+#define GROTTO_EDGE_DISPATCH 2u  // three words: the edge pass's indirect dispatch
+#define GROTTO_EDGE_HEADER_WORDS 8u
 
 GROTTO_NAMESPACE_BEGIN
 
