@@ -152,12 +152,13 @@ vec3 shadeCached(ivec2 q, uint surface) {
         return objectLight ? shadeSeen(surface, normal, objectPart.x, objectPart.yz, sunlit(q), open)
                            : shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
     bool found;
-    vec4 c = cachedLightAt(q, surfaceFace(surface), found);  // AO, sun, horizon and zenith weights
+    vec2 sunRange;
+    vec4 c = cachedLightAt(q, surfaceFace(surface), found, sunRange);  // AO, sun, horizon and zenith weights
     if (!found) return shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
     // With the cache's sun, the shadow pass holds the objects' alone.
     float sunReach = cachedSun ? c.y * sunlit(q) : sunlit(q);
     float cosSun = dot(normal, frame.sunDirection.xyz);
-    if (shadowEdges && cosSun > 0.0 && cachedSunEdge(lastCachedTaps))
+    if (shadowEdges && cosSun > 0.0 && sunRange.y - sunRange.x > 0.5)  // some texels see the sun, some do not
         listShadowEdge(q, c.y, exposed(albedo[surfaceMaterial(surface) - 1u].rgb * frame.sunRadiance.rgb * (cosSun * sunlit(q))));
     return shadeSeen(surface, normal, max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)), sunReach, open);
 }

@@ -23,24 +23,19 @@ vec3 cachedPointAt(ivec2 q, uint face) {
 // The light cached at that point. With GROTTO_FACE_REQUEST_BINDING (the
 // composite), its texels' faces that have not converged are asked for too, for
 // the next frame's tracer (face_cache_requests.glsl, included before this).
-FaceCacheTaps lastCachedTaps;  // cachedLightAt's last
-vec4 cachedLightAt(ivec2 q, uint face, out bool found) {
+// `sunRange`: the least and most sun visibility of the texels read (a shadow edge
+// crosses them where they differ).
+vec4 cachedLightAt(ivec2 q, uint face, out bool found, out vec2 sunRange) {
     FaceCacheTaps t = faceCacheTaps(cachedPointAt(q, face), frame.cameraCell.xyz, face);
-    lastCachedTaps = t;
 #ifdef GROTTO_FACE_REQUEST_BINDING
     for (int c = 0; c < 4; ++c)
         if (t.weight[c] > 0.0) requestFace(t.face[c], t.cell[c], face);
 #endif
-    return faceCacheBlend(t, found);
+    return faceCacheBlend(t, found, sunRange);
 }
 
-// Do the texels of `t` disagree on the sun: some see it, some do not?
-bool cachedSunEdge(FaceCacheTaps t) {
-    float lo = 1.0, hi = 0.0;
-    for (int c = 0; c < 4; ++c) {
-        if (t.weight[c] <= 0.0) continue;
-        float sun = faceCacheUnpack(faceCacheTexel(t.texel[c])).y;
-        lo = min(lo, sun), hi = max(hi, sun);
-    }
-    return hi - lo > 0.5;
+vec4 cachedLightAt(ivec2 q, uint face, out bool found) {
+    vec2 sunRange;
+    return cachedLightAt(q, face, found, sunRange);
 }
+

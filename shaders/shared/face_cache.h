@@ -22,6 +22,7 @@
 #include "trace.h"
 
 #ifdef __cplusplus
+#include <algorithm>
 #include <bit>
 #include <cmath>
 #define GROTTO_OUT(T) T&
@@ -35,6 +36,8 @@ using glm::ivec3;
 using glm::uvec4;
 inline int bitCount(uint v) { return std::popcount(v); }
 using std::floor;
+using std::max;
+using std::min;
 #endif
 
 #define GROTTO_FACE_RECORD_WORDS 102u  // 6 x 16 mask words, then 6 bases
@@ -149,21 +152,26 @@ GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
 
 // AO, sun visibility and the two sky weights at point `p` (as faceCacheTaps),
 // blended; `found`: false where no tap has a face.
-// The taps blended bilinearly, reweighted where some are missing.
-GROTTO_FUNCTION vec4 faceCacheBlend(FaceCacheTaps t, GROTTO_OUT(bool) found) {
+// The taps blended bilinearly, reweighted where some are missing; `sunRange`: the
+// least and the most sun visibility among them.
+GROTTO_FUNCTION vec4 faceCacheBlend(FaceCacheTaps t, GROTTO_OUT(bool) found, GROTTO_OUT(vec2) sunRange) {
     vec4 sum = vec4(0.0f);
     float weight = 0.0f;
+    sunRange = vec2(1.0f, 0.0f);
     for (int c = 0; c < 4; ++c) {
         if (t.weight[c] <= 0.0f) continue;
-        sum += t.weight[c] * faceCacheUnpack(faceCacheTexel(t.texel[c]));
+        vec4 v = faceCacheUnpack(faceCacheTexel(t.texel[c]));
+        sum += t.weight[c] * v;
         weight += t.weight[c];
+        sunRange = vec2(min(sunRange.x, v.y), max(sunRange.y, v.y));
     }
     found = weight > 0.0f;
     return found ? sum / weight : vec4(1.0f, 1.0f, 0.0f, 0.0f);
 }
 
 GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool) found) {
-    return faceCacheBlend(faceCacheTaps(p, origin, dir), found);
+    vec2 sunRange;
+    return faceCacheBlend(faceCacheTaps(p, origin, dir), found, sunRange);
 }
 
 #endif  // GROTTO_FACE_CACHE_LAYOUT_ONLY
