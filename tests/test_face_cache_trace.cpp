@@ -2,14 +2,14 @@
 //  - texels traced on the GPU are the CPU bake's: the same rays, the same counts,
 //    texel by texel, but for rays that graze a voxel edge in float;
 //  - only faces in view are traced, a face never traced gets its coarse rays at
-//    once (under a pixel: in its first frame; beside one: in the next), and the
-//    budget bounds the faces converged a frame;
+//    once (under a pixel: in its first frame; beside one: once the composite has
+//    asked), and the budget bounds the faces converged a frame;
 //  - a point sun's shadow edges are traced per pixel: the rendered sunlight
 //    agrees with an exact ray from each pixel's point, where the texels alone
 //    (an all but point sun, which the edge rays leave out) blur the edge;
-//  - after an edit, every face in view that it reaches is traced again (under a
-//    pixel in the next frame, beside one in the frame after) and equals a fresh
-//    bake of the edited world; faces it cannot reach keep their bits.
+//  - after an edit, every face in view that it reaches is traced again within a
+//    few frames and equals a fresh bake of the edited world; faces it cannot
+//    reach keep their bits.
 #include "engine/lab/surface_points.h"
 #include "engine/renderer.h"
 #include "engine/scene/live_scene.h"
@@ -129,25 +129,23 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     const size_t underPixels = count(1);
     EXPECT_GT(underPixels, 200u);  // every face under a pixel: coarse at once, whatever the budget
     EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), 0u);  // a budget of one ray converges none
-    // The composite asked for the faces beside them whose texels it read too.
-    const std::vector<uint32_t> after = scene.gpu().faceCache->lastHeader();
-    const uint32_t beside = after[GROTTO_FACE_QUEUE_EMPTY];
+    // The composite asked for faces beside them whose texels it read too.
+    const uint32_t beside = scene.gpu().faceCache->lastHeader()[GROTTO_FACE_QUEUE_EMPTY];
     EXPECT_GT(beside, 0u);
-    EXPECT_EQ(after[GROTTO_FACE_QUEUE_PARTIAL], underPixels);
 
-    // Room for 25 faces at the full rays, less what those faces' coarse rays take.
+    // Room for 25 faces at the full rays, less what those faces' rays take.
     const uint32_t budget = 25 * perFace;
     Renderer renderer(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, budget), 96, 72);
     renderer.render(camera, 1);
     cache.sync();
     const std::vector<uint32_t> plan = scene.gpu().faceCache->lastHeader();
     EXPECT_EQ(plan[GROTTO_FACE_TRACED_EMPTY], beside);
-    EXPECT_EQ(plan[GROTTO_FACE_EMPTY_FULL], 0u);
-    const uint32_t full = (budget - beside * coarse) / perFace;
+    const bool besideFull = plan[GROTTO_FACE_EMPTY_FULL] != 0;
+    EXPECT_EQ(besideFull, beside * perFace <= budget);
+    const uint32_t full = std::min<uint32_t>(uint32_t(underPixels), (budget - beside * (besideFull ? perFace : coarse)) / perFace);
     EXPECT_EQ(plan[GROTTO_FACE_TRACED_PARTIAL], full);
-    EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), full);
-    EXPECT_EQ(count(1), underPixels + beside - full);
-    const size_t inView = underPixels + beside;
+    EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), full + (besideFull ? beside : 0));
+    EXPECT_EQ(count(1), underPixels + (besideFull ? 0 : beside) - full);
     // The coarse texels: 8 rays each, the same sequence's first.
     std::vector<voxel::FaceTexel> cpu(cache.texels().size());
     voxel::FaceBakeSettings coarseSettings = settings;
@@ -157,15 +155,20 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     for (uint8_t& l : coarseOnly) l = l == 1 ? GROTTO_FACE_LEVEL_CONVERGED : 0;
     const Agreement a = compare(cache.texels(), cpu, coarseOnly);
     EXPECT_LT(double(a.differing), 0.01 * double(a.compared));
-    for (int frame = 2; frame < 200 && count(1) > 0; ++frame) {
+    // On until a frame finds nothing in view left: every face traced converges.
+    int frame = 2;
+    for (; frame < 400; ++frame) {
         renderer.render(camera, uint32_t(frame));
-        cache.sync();
+        const std::vector<uint32_t> h = scene.gpu().faceCache->lastHeader();
+        if (h[GROTTO_FACE_ASKED] + h[GROTTO_FACE_QUEUE_EMPTY] + h[GROTTO_FACE_QUEUE_PARTIAL] == 0) break;
     }
+    EXPECT_LT(frame, 400);
+    cache.sync();
     EXPECT_EQ(count(1), 0u);
-    EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), inView);
+    EXPECT_GE(count(GROTTO_FACE_LEVEL_CONVERGED), underPixels + beside);
 }
 
-TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgainAtOnce) {
+TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgain) {
     const voxel::World world = pillars();
     LiveScene scene(ctx(), voxel::World(world));
     const voxel::FaceBakeSettings settings = traceSettings(world);
@@ -185,8 +188,16 @@ TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgainAtOnce) {
     size_t reached = 0;
     for (uint8_t l : stale) reached += l == 0;
     ASSERT_GT(reached, 10u);
-    renderer.render(camera, 1);  // traces those under pixels
-    renderer.render(camera, 2);  // and those beside them the composite read
+    // The faces under pixels are traced in the next frame, those beside them as
+    // the composite asks (a quarter of the pixels a frame): within a few frames
+    // none in view is left.
+    uint32_t frame = 1;
+    for (; frame < 8; ++frame) {
+        renderer.render(camera, frame);
+        const std::vector<uint32_t> h = scene.gpu().faceCache->lastHeader();
+        if (h[GROTTO_FACE_ASKED] + h[GROTTO_FACE_QUEUE_EMPTY] + h[GROTTO_FACE_QUEUE_PARTIAL] == 0) break;
+    }
+    EXPECT_LE(frame, 6u);
     cache.sync();
 
     std::vector<voxel::FaceTexel> fresh(cache.texels().size());
@@ -209,10 +220,6 @@ TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgainAtOnce) {
     }
     EXPECT_GT(stillStale, 0u);  // out of view: left for later
     EXPECT_GT(retraced, 50u);
-    // Those were all the faces in view: the next frame finds none to trace.
-    renderer.render(camera, 3);
-    const std::vector<uint32_t> asked = scene.gpu().faceCache->lastHeader();
-    EXPECT_EQ(asked[GROTTO_FACE_ASKED] + asked[GROTTO_FACE_QUEUE_EMPTY] + asked[GROTTO_FACE_QUEUE_PARTIAL], 0u);
     const Agreement a = compare(cache.texels(), fresh, retracedOnly);
     EXPECT_LT(double(a.differing), 0.02 * double(a.compared)) << a.differing << " of " << a.compared;
 }

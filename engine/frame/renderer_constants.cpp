@@ -18,7 +18,7 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
     if (scene_.faceCache) {
         uniforms.faceCache = {scene_.faceCache->hashMask(), scene_.faceCache->texelsPerSide()};
         const CameraVoxel v = cameraVoxel(camera, scene_.voxelSize, scene_.worldOrigin);
-        uniforms.cameraCell = glm::ivec4(v.cell, 0);
+        uniforms.cameraCell = glm::ivec4(v.cell, int32_t(frameIndex & 0x7fffffffu));
         uniforms.cameraFraction = glm::vec4(v.fraction, float(1.0 / scene_.voxelSize));
     }
     std::memcpy(s.frame.mapped(), &uniforms, sizeof uniforms);

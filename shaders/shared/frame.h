@@ -27,7 +27,7 @@ struct FrameUniforms {
     // Where a pixel's surface is, in voxels (--ao cache): rayOrigin's ray times the
     // view depth, from the camera's place in its voxel.
     vec4 depthAB;        // x, y: view depth = y / (depth buffer value + x)
-    ivec4 cameraCell;    // xyz: the voxel holding the camera (index space)
+    ivec4 cameraCell;    // xyz: the voxel holding the camera (index space); w: the frame's index
     vec4 cameraFraction; // xyz: the camera within that voxel, in voxels; w: 1 / voxel size
 };
 GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16 + 16 * GROTTO_SKY_LIGHT_ROWS + 3 * 16);
