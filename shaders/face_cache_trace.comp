@@ -11,7 +11,7 @@
 layout(local_size_x = GROTTO_FACE_TRACE_GROUP) in;
 layout(push_constant) uniform Push { FaceTraceConstants c; };
 layout(set = 0, binding = 0, std430) readonly buffer Queue { uvec4 queue[]; };
-layout(set = 0, binding = 1, std430) readonly buffer Header { uint header[]; };
+layout(set = 0, binding = 1, std430) buffer Header { uint header[]; };
 layout(set = 0, binding = 2, std430) buffer Levels { uint levels[]; };
 layout(set = 0, binding = 3, std430) buffer FaceTexels { uint faceTexels[]; };
 #define GROTTO_TRACE_BINDING 4
@@ -100,5 +100,6 @@ void main() {
         uint shiftBits = (face & 15u) * 2u;
         atomicAnd(levels[face >> 4u], ~(3u << shiftBits));
         atomicOr(levels[face >> 4u], (full ? GROTTO_FACE_LEVEL_CONVERGED : 1u) << shiftBits);
+        if (full) atomicAdd(header[GROTTO_FACE_UNCONVERGED], uint(-1));  // it was not, or it would not be listed
     }
 }

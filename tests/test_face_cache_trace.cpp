@@ -165,6 +165,8 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     EXPECT_LT(frame, 400);
     cache.sync();
     EXPECT_EQ(count(1), 0u);
+    // The GPU's count of faces not converged is the levels' own.
+    EXPECT_EQ(scene.gpu().faceCache->lastHeader()[GROTTO_FACE_UNCONVERGED], cache.unconverged());
     EXPECT_GE(count(GROTTO_FACE_LEVEL_CONVERGED), underPixels + beside);
 }
 
@@ -176,6 +178,9 @@ TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgain) {
     const Camera camera = viewOf(world);
     Renderer renderer(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, 1'000'000'000u), 96, 72);
     renderer.render(camera, 0);
+    // Baked: nothing left anywhere, so nothing is asked for or traced.
+    const std::vector<uint32_t> baked = scene.gpu().faceCache->lastHeader();
+    EXPECT_EQ(baked[GROTTO_FACE_UNCONVERGED] + baked[GROTTO_FACE_ASKED] + baked[GROTTO_FACE_QUEUE_EMPTY], 0u);
     LiveFaceCache& cache = *scene.faceCache();
     const std::vector<voxel::ExposedFace> facesBefore(cache.faces().begin(), cache.faces().end());
     const std::vector<voxel::FaceTexel> before(cache.texels().begin(), cache.texels().end());

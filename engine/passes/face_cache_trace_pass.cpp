@@ -23,6 +23,7 @@ uint32_t defaultCacheRays(const vk::Context& ctx) {
 
 FaceCacheTracePass::FaceCacheTracePass(vk::Context& ctx)
     : ctx_(ctx),
+      gate_(ctx, "face_cache_gate.comp", {kBuffer}, sizeof(gpu::FaceTraceConstants)),
       request_(ctx, "face_cache_request.comp",
                GpuFaceCache::withRequestBindings(
                    GpuFaceCache::withBindings({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kSampled, kSampled}))),
@@ -47,14 +48,20 @@ void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, Vk
         .epsilon = 1e-4f,
         .capacity = cache.queueCapacity(),
         .texelsPerSide = cache.texelsPerSide(),
-        .budget = budget};
+        .budget = budget,
+        .width = size.width,
+        .height = size.height};
     if (cache.faceCount() == 0) return;
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
-    request_.dispatch(cmd,
-                      cache.withRequestBindings(cache.withBindings({vk::uniformBuffer(frame.buffer),
-                                          vk::sampledImage(ctx_.pointSampler, g.depth.view, ro),
-                                          vk::sampledImage(ctx_.pointSampler, g.surface.view, ro)})),
-                      size, 16);
+    gate_.dispatch(cmd, {vk::storageBuffer(cache.header().buffer)}, {1, 1}, 1, &c);
+    barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,
+            VK_PIPELINE_STAGE_DRAW_INDIRECT_BIT | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+            VK_ACCESS_INDIRECT_COMMAND_READ_BIT | VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT);
+    request_.dispatchIndirect(cmd,
+                              cache.withRequestBindings(cache.withBindings(
+                                  {vk::uniformBuffer(frame.buffer), vk::sampledImage(ctx_.pointSampler, g.depth.view, ro),
+                                   vk::sampledImage(ctx_.pointSampler, g.surface.view, ro)})),
+                              cache.header().buffer, GROTTO_FACE_REQUEST_DISPATCH * sizeof(uint32_t));
     computeToCompute(cmd);
     plan_.dispatch(cmd, {vk::storageBuffer(cache.header().buffer)}, {1, 1}, 1, &c);
     barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,

@@ -6,7 +6,7 @@
 // rays (face_cache_trace.comp), before the composite reads them. A face never
 // traced gets a coarse look at once, whatever the budget, so no surface in view
 // shows a placeholder; the budget then converges them, least converged first.
-// Converged faces cost one read per pixel. Reads the G-buffer's depth and surface
+// Once every face has converged the passes do (almost) nothing. Reads the G-buffer's depth and surface
 // ids, the frame uniforms, the trace constants and the occupancy; writes the
 // cache's texels and levels.
 #include "engine/frame/pass_decl.h"
@@ -34,7 +34,7 @@ public:
 
 private:
     vk::Context& ctx_;
-    ComputePass request_, plan_, trace_;
+    ComputePass gate_, request_, plan_, trace_;
 };
 
 }  // namespace grotto

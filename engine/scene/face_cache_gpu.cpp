@@ -42,7 +42,11 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
                                    true);
         std::memset(header_.mapped(), 0, header_.size);
-        static_cast<uint32_t*>(header_.mapped())[GROTTO_FACE_CAPACITY] = capacity_;
+        uint32_t* header = static_cast<uint32_t*>(header_.mapped());
+        header[GROTTO_FACE_CAPACITY] = capacity_;
+        header[GROTTO_FACE_UNCONVERGED] = levels.empty() ? 0u : uint32_t(std::count_if(levels.begin(), levels.end(), [](uint8_t l) {
+            return (l & 3u) != GROTTO_FACE_LEVEL_CONVERGED;
+        }));
     } catch (...) {
         for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_}) vk::destroy(ctx_, *b);
         throw;

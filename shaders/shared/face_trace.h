@@ -30,7 +30,9 @@
 #define GROTTO_FACE_DISPATCH 5u       // three words: the trace's indirect dispatch
 #define GROTTO_FACE_CAPACITY 8u       // the lists' length, set once
 #define GROTTO_FACE_ASKED 9u          // faces asked for in all, this frame (for the host)
-#define GROTTO_FACE_HEADER_WORDS 10u
+#define GROTTO_FACE_UNCONVERGED 10u   // faces not at level 3, anywhere: none, and nothing is asked
+#define GROTTO_FACE_REQUEST_DISPATCH 11u  // three words: the request pass's dispatch (none when all converged)
+#define GROTTO_FACE_HEADER_WORDS 16u
 #define GROTTO_FACE_TRACE_GROUP 64u
 // The shadow edge list (shadow_edge.comp): its header's words, then the pixels.
 #define GROTTO_EDGE_COUNT 0u     // pixels listed this frame (may pass capacity)
@@ -51,7 +53,8 @@ struct FaceTraceConstants {
     uint capacity;        // the queue's lists' length
     uint texelsPerSide;   // k
     uint budget;          // rays per frame for the second list (and for the first at full rays)
-    uint pad0, pad1, pad2;
+    uint width, height;   // the frame's, for the request pass's dispatch
+    uint pad;
 };
 GROTTO_STATIC_ASSERT(sizeof(FaceTraceConstants) == 64);
 
