@@ -113,6 +113,23 @@ TEST_F(Bake, RenderReadsItsWorldsBakeAndRefusesAnyOther) {
     expectRefused(render + bakeFile.string() + " --radius 2", "AO radius", png);
     expectRefused(render + part.string(), "a part of a bake", png);
     expectRefused(render + bakeFile.string() + " --ao gtao", "--bake", png);
+    expectRefused(render + bakeFile.string() + " --progressive", "--progressive: starts the face cache empty", png);
+}
+
+// --progressive: no bake; the GPU traces what the still sees until none is left,
+// and the image is the bake's (the same rays), to the 8-bit level.
+TEST_F(Bake, AProgressiveStillRendersUntilConvergedAndMatchesTheBake) {
+    const fs::path bakeFile = dir_ / "pillars.gfc", baked = dir_ / "baked.png", traced = dir_ / "traced.png";
+    ASSERT_EQ(runGrotto("bake " + pillars_.string() + " -o " + bakeFile.string()).exitCode, 0);  // the defaults' rays
+    const std::string render = "render " + pillars_.string() + " --size 48x32 -o ";
+    ASSERT_EQ(runGrotto(render + baked.string() + " --bake " + bakeFile.string()).exitCode, 0);
+    const RunResult r = runGrotto(render + traced.string() + " --ao cache --progressive");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out.find(" 1 frame,"), std::string::npos) << r.out;  // it took more than one
+    const std::vector<uint8_t> a = readPixels8(baked);
+    ASSERT_FALSE(a.empty());
+    EXPECT_LE(worstDifference(a, readPixels8(traced)), 1);  // 8-bit sRGB levels
+    expectRefused(render + (dir_ / "refused.png").string() + " --ao gtao --progressive", "--progressive", dir_ / "refused.png");
 }
 
 }  // namespace
