@@ -11,8 +11,9 @@ layout(set = 0, binding = 0, std430) buffer Header { uint header[]; };
 
 void main() {
     uint texels = c.texelsPerSide * c.texelsPerSide;
-    uint empty = min(header[GROTTO_FACE_QUEUE_EMPTY], c.capacity);
-    uint partial = min(header[GROTTO_FACE_QUEUE_PARTIAL], c.capacity);
+    uint capacity = header[GROTTO_FACE_CAPACITY];
+    uint empty = min(header[GROTTO_FACE_QUEUE_EMPTY], capacity);
+    uint partial = min(header[GROTTO_FACE_QUEUE_PARTIAL], capacity);
     uint full = texels * (c.rays + c.sunRays), coarse = texels * (c.coarseRays + c.coarseSunRays);
     // In 64 bits' worth of float: a budget of billions of rays must not wrap.
     bool emptyFull = float(empty) * float(full) <= float(c.budget);

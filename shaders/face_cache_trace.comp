@@ -43,7 +43,7 @@ void main() {
     uint empty = header[GROTTO_FACE_TRACED_EMPTY], taken = header[GROTTO_FACE_TRACED_PARTIAL];
     if (slot >= empty + taken) return;
     bool first = slot < empty;
-    uvec4 e = first ? queue[slot] : queue[c.capacity + slot - empty];
+    uvec4 e = first ? queue[slot] : queue[header[GROTTO_FACE_CAPACITY] + slot - empty];
     bool full = !first || header[GROTTO_FACE_EMPTY_FULL] != 0u;
     uint rays = full ? c.rays : c.coarseRays, sunRays = full ? c.sunRays : c.coarseSunRays;
     ivec3 cell = ivec3(e.xyz);

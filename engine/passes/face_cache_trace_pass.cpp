@@ -46,7 +46,6 @@ void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, Vk
         .coarseSunRays = pointSun ? std::min(s.sunRays, 1u) : std::min<uint32_t>(GROTTO_FACE_COARSE_SUN_RAYS, s.sunRays),
         .radiusVoxels = s.radiusVoxels,
         .epsilon = 1e-4f,
-        .capacity = cache.queueCapacity(),
         .texelsPerSide = cache.texelsPerSide(),
         .budget = budget,
         .width = size.width,

@@ -20,7 +20,8 @@ uint32_t capacityFor(uint32_t faces, uint32_t k) {
 GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Sun sun, FaceCacheRays rays,
                            std::span<const uint8_t> levels)
     : ctx_(ctx), hashMask_(a.hashMask()), texelsPerSide_(a.texelsPerSide), faceCount_(a.faceCount),
-      capacity_(capacityFor(a.faceCount, a.texelsPerSide)), sun_(sun), rays_(rays) {
+      sun_(sun), rays_(rays) {
+    const uint32_t capacity = capacityFor(a.faceCount, a.texelsPerSide);  // the queue's, kept in its header
     // Empty arrays (a world with no faces) still bind: one zero word each.
     const uint32_t zero[4] = {};
     auto upload = [&](const void* data, size_t bytes) {
@@ -29,7 +30,7 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
     std::vector<uint32_t> levelWords((size_t(faceCount_) + 15) / 16, levels.empty() ? ~0u : 0u);
     for (size_t f = 0; f < levels.size(); ++f) levelWords[f / 16] |= uint32_t(levels[f] & 3u) << (2 * (f % 16));
     const std::vector<uint32_t> requested((size_t(faceCount_) + 31) / 32, 0u);
-    const std::vector<glm::uvec4> queue(2 * size_t(capacity_), glm::uvec4(0));
+    const std::vector<glm::uvec4> queue(2 * size_t(capacity), glm::uvec4(0));
     try {
         bricks_ = upload(a.bricks.data(), a.bricks.size() * sizeof(glm::uvec4));
         records_ = upload(a.records.data(), a.records.size() * sizeof(uint32_t));
@@ -43,7 +44,7 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
                                    true);
         std::memset(header_.mapped(), 0, header_.size);
         uint32_t* header = static_cast<uint32_t*>(header_.mapped());
-        header[GROTTO_FACE_CAPACITY] = capacity_;
+        header[GROTTO_FACE_CAPACITY] = capacity;
         header[GROTTO_FACE_UNCONVERGED] = levels.empty() ? 0u : uint32_t(std::count_if(levels.begin(), levels.end(), [](uint8_t l) {
             return (l & 3u) != GROTTO_FACE_LEVEL_CONVERGED;
         }));

@@ -42,9 +42,8 @@ public:
     const Sun& sun() const { return sun_; }
     const FaceCacheRays& rays() const { return rays_; }
     // The cache's own arrays and levels (what `info` and `bench` report); the
-    // tracer's queue and request bits come on top (tracerBytes).
+    // tracer's queue and request bits come on top.
     size_t gpuBytes() const { return size_t(bricks_.size + records_.size + texels_.size + levels_.size); }
-    size_t tracerBytes() const { return size_t(requested_.size + queue_.size + header_.size); }
 
     // Appends the three buffers' bindings (bricks, records, texels) to a pass's own.
     static std::vector<VkDescriptorType> withBindings(std::vector<VkDescriptorType> own);
@@ -61,7 +60,6 @@ public:
     const vk::Buffer& requested() const { return requested_; }
     const vk::Buffer& queue() const { return queue_; }
     const vk::Buffer& header() const { return header_; }  // host-visible
-    uint32_t queueCapacity() const { return capacity_; }
     // The last finished frame's header words (shared/face_trace.h).
     std::vector<uint32_t> lastHeader() const;
 
@@ -76,7 +74,7 @@ public:
 private:
     vk::Context& ctx_;
     vk::Buffer bricks_, records_, texels_, levels_, requested_, queue_, header_;
-    uint32_t hashMask_, texelsPerSide_, faceCount_, capacity_;
+    uint32_t hashMask_, texelsPerSide_, faceCount_;
     Sun sun_;
     FaceCacheRays rays_;
 };

@@ -50,11 +50,10 @@ struct FaceTraceConstants {
     uint coarseSunRays;
     float radiusVoxels;   // AO's R, in voxels
     float epsilon;        // rays leave this far (voxels) in front of the face
-    uint capacity;        // the queue's lists' length
     uint texelsPerSide;   // k
     uint budget;          // rays per frame for the second list (and for the first at full rays)
     uint width, height;   // the frame's, for the request pass's dispatch
-    uint pad;
+    uint pad0, pad1;
 };
 GROTTO_STATIC_ASSERT(sizeof(FaceTraceConstants) == 64);
 
