@@ -36,7 +36,7 @@ layout(set = 0, binding = 7, std140) uniform Objects { ObjectUniforms objects; }
 layout(set = 0, binding = 8, r32f) uniform readonly image2D shadowImage;  // full res: 1 = sunlit (shadow.comp)
 layout(set = 0, binding = 9, rgba16f) uniform readonly image2D bentNormals;  // AO res, world space (vbao)
 #ifdef GROTTO_FACE_CACHE
-uint faceCacheHashMask() { return frame.faceCache.x; }
+uint faceCacheTable() { return frame.faceCache.x; }
 uint faceCacheK() { return frame.faceCache.y; }
 // AO and the sky's horizon and zenith weights: those objects take from a world
 // surface, an object's own on its faces.
@@ -44,10 +44,8 @@ layout(set = 0, binding = 10, rgba16f) uniform readonly image2D objectLightImage
 #define GROTTO_FACE_CACHE_BINDING 11
 #include "face_cache.glsl"
 #include "shared/face_trace.h"
-#define GROTTO_FACE_REQUEST_BINDING 14
-#include "face_cache_requests.glsl"
 #include "face_cache_surface.glsl"
-layout(set = 0, binding = 18, std430) buffer Edges { uint edgeHeader[GROTTO_EDGE_HEADER_WORDS]; uvec4 edges[]; };
+layout(set = 0, binding = 14, std430) buffer Edges { uint edgeHeader[GROTTO_EDGE_HEADER_WORDS]; uvec4 edges[]; };
 
 // Lists pixel q for an exact sun ray (shadow_edge.comp): lit with sun visibility
 // `used`, its sun's light at full visibility is `light` (exposed).
@@ -131,36 +129,41 @@ void compositePixel(AoBlock block, ivec2 h, ivec2 offset) {
 }
 
 #ifdef GROTTO_FACE_CACHE
-// The light on a surface of AO `ao` that sees the sky through the sky colours'
-// weights `sky` (horizon, zenith), blended toward the open sky as the AO strength falls.
-vec3 shadeSeen(uint surface, vec3 normal, float ao, vec2 sky, float sunReach, vec3 open) {
-    if (frame.ambient.w < 0.5) return shadeWith(surface, normal, ao, sunReach, open, 1.0);
-    vec3 seen = frame.ambient.rgb * (sky.x * frame.skyHorizon.rgb + sky.y * frame.skyZenith.rgb);
-    return shadeWith(surface, normal, ao, sunReach, mix(open, seen, frame.aoStrength.x), ao);
-}
-
 // A world surface's light from the cache: its AO, its sun visibility (while the
 // cache's sun is the frame's, times the objects' shadow where the shadow pass ran)
 // and, with the sky's ambient, the sky light it holds, each less what objects take.
 // An object's surface takes its own from the object light pass; one without it, or
-// a face the cache lacks, is lit as without AO.
+// a face the cache lacks, is lit as without AO. The sky light replaces the open
+// sky's ambient as the AO strength rises. One shadeWith for every case: a CPU
+// device runs every branch a group of pixels takes, so each branch costs all.
 vec3 shadeCached(ivec2 q, uint surface) {
     vec3 normal = surfaceNormal(surface);
     vec3 open = ambientLight(normal, q);
     vec4 objectPart = objectLight ? imageLoad(objectLightImage, q) : vec4(0.0);
-    if (surfaceObject(surface) != 0u)
-        return objectLight ? shadeSeen(surface, normal, objectPart.x, objectPart.yz, sunlit(q), open)
-                           : shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
-    bool found;
-    vec2 sunRange;
-    vec4 c = cachedLightAt(q, surfaceFace(surface), found, sunRange);  // AO, sun, horizon and zenith weights
-    if (!found) return shadeWith(surface, normal, 1.0, sunlit(q), open, 1.0);
-    // With the cache's sun, the shadow pass holds the objects' alone.
-    float sunReach = cachedSun ? c.y * sunlit(q) : sunlit(q);
-    float cosSun = dot(normal, frame.sunDirection.xyz);
-    if (shadowEdges && cosSun > 0.0 && sunRange.y - sunRange.x > 0.5)  // some texels see the sun, some do not
-        listShadowEdge(q, c.y, exposed(albedo[surfaceMaterial(surface) - 1u].rgb * frame.sunRadiance.rgb * (cosSun * sunlit(q))));
-    return shadeSeen(surface, normal, max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)), sunReach, open);
+    float sunReach = sunlit(q);
+    bool seen;     // the surface has AO and sky weights of its own
+    vec3 light;    // AO, horizon and zenith weights
+    if (surfaceObject(surface) != 0u) {
+        seen = objectLight;
+        light = objectPart.xyz;
+    } else {
+        vec2 sunRange;
+        vec4 c = cachedLightAt(q, surfaceFace(surface), seen, sunRange);  // AO, sun, horizon and zenith weights
+        // With the cache's sun, the shadow pass holds the objects' alone.
+        float cosSun = dot(normal, frame.sunDirection.xyz);
+        if (shadowEdges && seen && cosSun > 0.0 && sunRange.y - sunRange.x > 0.5)  // some texels see the sun, some do not
+            listShadowEdge(q, c.y, exposed(albedo[surfaceMaterial(surface) - 1u].rgb * frame.sunRadiance.rgb * (cosSun * sunReach)));
+        if (cachedSun && seen) sunReach *= c.y;
+        light = vec3(max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)));
+    }
+    vec3 ambient = open;
+    float aoShare = 1.0;
+    if (seen && frame.ambient.w >= 0.5) {
+        vec3 sky = frame.ambient.rgb * (light.y * frame.skyHorizon.rgb + light.z * frame.skyZenith.rgb);
+        ambient = mix(open, sky, frame.aoStrength.x);
+        aoShare = light.x;
+    }
+    return shadeWith(surface, normal, seen ? light.x : 1.0, sunReach, ambient, aoShare);
 }
 #endif
 

@@ -19,7 +19,7 @@ layout(set = 0, binding = 1) uniform usampler2D surfaceTex;
 layout(set = 0, binding = 2) uniform sampler2D depthBuffer;
 layout(set = 0, binding = 3, r32f) uniform writeonly image2D aoOut;
 layout(set = 0, binding = 4, r32f) uniform image2D sunOut;  // 1x1 without sun shadows; the objects' shadow with
-uint faceCacheHashMask() { return frame.faceCache.x; }
+uint faceCacheTable() { return frame.faceCache.x; }
 uint faceCacheK() { return frame.faceCache.y; }
 layout(set = 0, binding = 5, rgba16f) uniform readonly image2D objectLightImage;  // object_light.comp's
 #define GROTTO_FACE_CACHE_BINDING 6

@@ -4,7 +4,7 @@
 // points, so it can be compared point by point with the CPU's FaceCacheLookup.
 
 layout(local_size_x = 64) in;
-layout(push_constant) uniform Query { uint count, hashMask, k; } query;
+layout(push_constant) uniform Query { uint count, table, k; } query;
 struct CacheQuery {
     vec4 point;    // xyz: voxel index units relative to `origin`
     ivec4 origin;  // xyz: whole voxels taken out of the point; w: the face's direction
@@ -12,7 +12,7 @@ struct CacheQuery {
 layout(set = 0, binding = 0, std430) readonly buffer Queries { CacheQuery queries[]; };
 layout(set = 0, binding = 1, std430) writeonly buffer Results { vec4 results[]; };  // AO, sun, horizon, zenith; then found
 
-uint faceCacheHashMask() { return query.hashMask; }
+uint faceCacheTable() { return query.table; }
 uint faceCacheK() { return query.k; }
 #define GROTTO_FACE_CACHE_BINDING 2
 #include "face_cache.glsl"

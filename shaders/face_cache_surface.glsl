@@ -20,22 +20,10 @@ vec3 cachedPointAt(ivec2 q, uint face) {
     return p;
 }
 
-// The light cached at that point. With GROTTO_FACE_REQUEST_BINDING (the
-// composite), its texels' faces that have not converged are asked for too, for
-// the next frame's tracer (face_cache_requests.glsl, included before this), by a
-// quarter of the pixels each frame, and only while some face has not converged.
-// `sunRange`: the least and most sun visibility of the texels read (a shadow edge
-// crosses them where they differ).
+// The light cached at that point. `sunRange`: the least and most sun visibility
+// of the texels read (a shadow edge crosses them where they differ).
 vec4 cachedLightAt(ivec2 q, uint face, out bool found, out vec2 sunRange) {
-    FaceCacheTaps t = faceCacheTaps(cachedPointAt(q, face), frame.cameraCell.xyz, face);
-#ifdef GROTTO_FACE_REQUEST_BINDING
-    // A pixel of each 2x2 block a frame, in turn: a face beside the view is read
-    // by a strip of pixels, so it is asked for within a frame or a few all the same.
-    if (faceHeader[GROTTO_FACE_UNCONVERGED] > 0u && (uint(q.x & 1) + 2u * uint(q.y & 1)) == (uint(frame.cameraCell.w) & 3u))
-        for (int c = 0; c < 4; ++c)
-            if (t.weight[c] > 0.0) requestFace(t.face[c], t.cell[c], face);
-#endif
-    return faceCacheBlend(t, found, sunRange);
+    return faceCacheBlend(faceCacheTaps(cachedPointAt(q, face), frame.cameraCell.xyz, face), found, sunRange);
 }
 
 vec4 cachedLightAt(ivec2 q, uint face, out bool found) {

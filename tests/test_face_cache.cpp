@@ -6,6 +6,7 @@
 #include "grotto/error.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
+#include "voxel/face_brick_table.h"
 #include "voxel/face_cache_edit.h"
 #include "voxel/face_cache_layout.h"
 #include "voxel/face_cache_lookup.h"
@@ -18,7 +19,7 @@ thread_local const voxel::FaceCacheArrays* gpuTwin = nullptr;
 inline glm::uvec4 faceCacheBrickEntry(uint32_t slot) { return gpuTwin->bricks[slot]; }
 inline uint32_t faceCacheRecordWord(uint32_t word) { return gpuTwin->records[word]; }
 inline uint32_t faceCacheTexelWord(uint32_t word) { return gpuTwin->texels[word]; }
-inline uint32_t faceCacheHashMask() { return gpuTwin->hashMask(); }
+inline uint32_t faceCacheTable() { return gpuTwin->table; }
 inline uint32_t faceCacheK() { return gpuTwin->texelsPerSide; }
 }  // namespace grotto::gpu
 #include "shaders/shared/face_cache.h"
@@ -31,6 +32,7 @@ inline uint32_t faceCacheK() { return gpuTwin->texelsPerSide; }
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <numbers>
 #include <tuple>
 #include <random>
@@ -293,6 +295,55 @@ TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
         }
         EXPECT_EQ(read, 4000u);
         gpu::gpuTwin = nullptr;
+    }
+}
+
+// The bricks' perfect hash, read by the shader's own code: each brick of sets
+// dense and sparse, near the origin and at the coordinates' extremes, is found
+// at its own index, and no brick outside the set (its neighbours, random ones)
+// is found at all; the table holds no more than 9/8 slots a brick.
+TEST(FaceCache, TheBrickTableFindsEachBrickAndNoOther) {
+    std::mt19937 rng(31);
+    std::vector<std::vector<glm::ivec3>> sets(4);
+    sets[1] = {{0, 0, 0}};
+    for (int x = -20; x < 20; ++x)  // dense: 40 x 12 x 40 bricks, every second column
+        for (int y = -6; y < 6; ++y)
+            for (int z = -20; z < 20; z += 1 + ((x + y) & 1)) sets[2].push_back({x, y, z});
+    std::uniform_int_distribution<int> anywhere(std::numeric_limits<int>::min() / 8, std::numeric_limits<int>::max() / 8);
+    for (int i = 0; i < 20000; ++i) sets[3].push_back({anywhere(rng), anywhere(rng), anywhere(rng)});
+    sets[3].push_back({std::numeric_limits<int>::min() / 8, std::numeric_limits<int>::max() / 8, 0});
+    for (std::vector<glm::ivec3>& set : sets) {
+        std::sort(set.begin(), set.end(), [](const glm::ivec3& a, const glm::ivec3& b) {
+            return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+        });
+        set.erase(std::unique(set.begin(), set.end()), set.end());
+        const FaceBrickTable table = layFaceBrickTable(set);
+        EXPECT_LE(table.slots.size(), set.size() * 9 / 8 + 1);
+        EXPECT_EQ(faceBrickTableBytes(set.size()), table.slots.size() * 16 + table.seeds.size() * 4);
+        FaceCacheArrays arrays;
+        arrays.bricks = table.slots;
+        arrays.records = table.seeds;
+        arrays.table = table.shape;
+        gpu::gpuTwin = &arrays;
+        for (size_t i = 0; i < set.size(); ++i) {
+            ASSERT_EQ(gpu::faceCacheRecord(set[i]), i + 1) << set[i].x << " " << set[i].y << " " << set[i].z;
+            for (int d = 0; d < 6; ++d) {
+                glm::ivec3 n = set[i];
+                n[d / 2] += d % 2 ? 1 : -1;
+                if (!std::binary_search(set.begin(), set.end(), n, [](const glm::ivec3& a, const glm::ivec3& b) {
+                        return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+                    }))
+                    ASSERT_EQ(gpu::faceCacheRecord(n), 0u);
+            }
+        }
+        std::uniform_int_distribution<int> near(-30, 30);
+        for (int i = 0; i < 20000; ++i) {
+            const glm::ivec3 b = i % 2 ? glm::ivec3(near(rng), near(rng), near(rng)) : glm::ivec3(anywhere(rng), anywhere(rng), anywhere(rng));
+            const bool in = std::binary_search(set.begin(), set.end(), b, [](const glm::ivec3& a, const glm::ivec3& c) {
+                return std::tie(a.x, a.y, a.z) < std::tie(c.x, c.y, c.z);
+            });
+            ASSERT_EQ(gpu::faceCacheRecord(b) != 0u, in);
+        }
     }
 }
 

@@ -64,7 +64,7 @@ TEST_F(FaceCacheGpu, ReadsAsTheCpuLookup) {
         const ComputePass pass(ctx(), "face_cache_query.comp",
                                GpuFaceCache::withBindings({VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}),
                                3 * sizeof(uint32_t));
-        const uint32_t push[3] = {uint32_t(queries.size()), cache.hashMask(), k};
+        const uint32_t push[3] = {uint32_t(queries.size()), cache.table(), k};
         ctx().submitAndWait([&](VkCommandBuffer cmd) {
             pass.dispatch(cmd, cache.withBindings({vk::storageBuffer(in.buffer), vk::storageBuffer(out.buffer)}),
                           VkExtent2D{push[0], 1}, 64, push);

@@ -1,5 +1,7 @@
 #include "voxel/face_cache_layout.h"
 
+#include "voxel/face_brick_table.h"
+
 #define GROTTO_FACE_CACHE_LAYOUT_ONLY
 #include "shaders/shared/face_cache.h"
 
@@ -17,10 +19,6 @@ uint32_t unorm(double v, uint32_t bits) {
     const double top = double((1u << bits) - 1u);
     return uint32_t(std::lround(std::clamp(v, 0.0, 1.0) * top));
 }
-
-// The bricks' hash table: a power of two, at most three quarters full, so a probe
-// for a brick that is absent ends after a few slots.
-size_t hashSlots(size_t bricks) { return std::bit_ceil(std::max<size_t>((4 * bricks + 2) / 3, 2)); }
 
 struct BrickLess {
     bool operator()(const glm::ivec3& a, const glm::ivec3& b) const {
@@ -64,10 +62,10 @@ size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerS
 }
 
 size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide) {
-    const size_t slots = hashSlots(count.bricks);
+
     const size_t texelWords = (count.faces * texelsPerSide * texelsPerSide * GROTTO_FACE_TEXEL_BYTES + 3) / 4;
     const size_t levelWords = (count.faces + 15) / 16;  // each face's level for the GPU's tracer, 2 bits
-    return slots * 16 + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + texelWords * 4 + levelWords * 4;
+    return faceBrickTableBytes(count.bricks) + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + texelWords * 4 + levelWords * 4;
 }
 
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
@@ -84,7 +82,6 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
     out.texelsPerSide = texelsPerSide;
     out.faceCount = uint32_t(faces.size());
     out.faceOrder.reserve(faces.size());
-    out.bricks.assign(hashSlots(bricks.size()), glm::uvec4(0));
     out.records.reserve(bricks.size() * GROTTO_FACE_RECORD_WORDS);
     out.texels.assign((texels.size() * GROTTO_FACE_TEXEL_BYTES + 3) / 4, 0u);
     size_t byte = 0;  // where the next texel goes
@@ -92,7 +89,8 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
         for (uint32_t b = 0; b < GROTTO_FACE_TEXEL_BYTES; ++b, ++byte)
             out.texels[byte >> 2] |= ((bits >> (8 * b)) & 255u) << (8 * (byte & 3));
     };
-    uint32_t record = 0, next = 0;
+    uint32_t next = 0;
+    std::vector<glm::ivec3> positions;  // record i's brick
     for (auto& [brick, entries] : bricks) {
         std::sort(entries.begin(), entries.end(),
                   [](const Entry& a, const Entry& b) { return std::tie(a.dir, a.bit) < std::tie(b.dir, b.bit); });
@@ -102,14 +100,17 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
             entries.begin(), entries.end(), [d](const Entry& e) { return e.dir < d; }));
         for (const Entry& e : entries) {
             out.records[base + e.dir * 16 + (e.bit >> 5)] |= 1u << (e.bit & 31u);
+            if (e.bit < 256) out.records[base + 102 + e.dir / 3] += 1u << (e.dir % 3 * 9);  // in the first half
             out.faceOrder.push_back(e.face);
             for (uint32_t t = 0; t < perFace; ++t) append(packFaceTexel(texels[size_t(e.face) * perFace + t]));
         }
         next += uint32_t(entries.size());
-        uint32_t slot = gpu::occupancyHash(brick.x, brick.y, brick.z) & out.hashMask();
-        while (out.bricks[slot].w != 0) slot = (slot + 1) & out.hashMask();
-        out.bricks[slot] = glm::uvec4(uint32_t(brick.x), uint32_t(brick.y), uint32_t(brick.z), ++record);
+        positions.push_back(brick);
     }
+    FaceBrickTable table = layFaceBrickTable(positions);
+    out.bricks = std::move(table.slots);
+    out.records.insert(out.records.begin(), table.seeds.begin(), table.seeds.end());  // the seeds first
+    out.table = table.shape;
     return out;
 }
 

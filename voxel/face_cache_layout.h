@@ -1,7 +1,7 @@
 #pragma once
 // The face cache laid out as the GPU reads it (shaders/shared/face_cache.h): a
-// hash table of the bricks with exposed faces, a record of masks and bases per
-// brick, and 3 packed bytes per texel.
+// perfect hash of the bricks with exposed faces (voxel/face_brick_table.h), a
+// record of masks and counts per brick, and 3 packed bytes per texel.
 #include "voxel/face_cache.h"
 
 #include <glm/vec4.hpp>
@@ -13,13 +13,13 @@
 namespace grotto::voxel {
 
 struct FaceCacheArrays {
-    std::vector<glm::uvec4> bricks;  // power-of-two size, at most three quarters full
-    std::vector<uint32_t> records;   // GROTTO_FACE_RECORD_WORDS per brick
+    std::vector<glm::uvec4> bricks;  // the bricks' table's slots (FaceBrickTable)
+    std::vector<uint32_t> records;   // the table's seeds, then GROTTO_FACE_RECORD_WORDS per brick
     std::vector<uint32_t> texels;    // 3 bytes a texel one after another, faces in record order
     std::vector<uint32_t> faceOrder; // the GPU's face i is the listed face faceOrder[i]
     uint32_t texelsPerSide = 0;
     uint32_t faceCount = 0;
-    uint32_t hashMask() const { return uint32_t(bricks.size() - 1); }
+    uint32_t table = 0;              // the table's shape (FaceBrickTable::shape)
     // On the GPU, with each face's level (2 bits, shaders/shared/face_trace.h).
     size_t bytes() const {
         return bricks.size() * 16 + records.size() * 4 + texels.size() * 4 + (size_t(faceCount) + 15) / 16 * 4;

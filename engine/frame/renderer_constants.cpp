@@ -16,7 +16,7 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
     FrameSlot& s = slot();
     gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
     if (scene_.faceCache) {
-        uniforms.faceCache = {scene_.faceCache->hashMask(), scene_.faceCache->texelsPerSide()};
+        uniforms.faceCache = {scene_.faceCache->table(), scene_.faceCache->texelsPerSide()};
         const CameraVoxel v = cameraVoxel(camera, scene_.voxelSize, scene_.worldOrigin);
         uniforms.cameraCell = glm::ivec4(v.cell, int32_t(frameIndex & 0x7fffffffu));
         uniforms.cameraFraction = glm::vec4(v.fraction, float(1.0 / scene_.voxelSize));

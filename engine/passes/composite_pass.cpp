@@ -19,7 +19,7 @@ std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
         VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,          VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     if (!s.faceCache) return b;
     b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the object light
-    b = GpuFaceCache::withRequestBindings(GpuFaceCache::withBindings(std::move(b)));
+    b = GpuFaceCache::withBindings(std::move(b));
     b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);  // the shadow edges' list
     return b;
 }
@@ -47,7 +47,7 @@ void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const v
         b.push_back(vk::storageImage(in.objectLight->view));
         if (shape_.shadowEdges && !in.shadowEdges)
             throw Error::internal("CompositePass", "shadow edges without their list");
-        b = in.faceCache->withRequestBindings(in.faceCache->withBindings(std::move(b)));
+        b = in.faceCache->withBindings(std::move(b));
         // Without edges the binding is never read: any buffer holds its place.
         b.push_back(vk::storageBuffer(in.shadowEdges ? in.shadowEdges->buffer : in.faceCache->header().buffer));
     }

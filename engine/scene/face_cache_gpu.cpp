@@ -19,7 +19,7 @@ uint32_t capacityFor(uint32_t faces, uint32_t k) {
 
 GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Sun sun, FaceCacheRays rays,
                            std::span<const uint8_t> levels)
-    : ctx_(ctx), hashMask_(a.hashMask()), texelsPerSide_(a.texelsPerSide), faceCount_(a.faceCount),
+    : ctx_(ctx), table_(a.table), texelsPerSide_(a.texelsPerSide), faceCount_(a.faceCount),
       sun_(sun), rays_(rays) {
     const uint32_t capacity = capacityFor(a.faceCount, a.texelsPerSide);  // the queue's, kept in its header
     // Empty arrays (a world with no faces) still bind: one zero word each.

@@ -36,7 +36,7 @@ public:
     GpuFaceCache(const GpuFaceCache&) = delete;
     GpuFaceCache& operator=(const GpuFaceCache&) = delete;
 
-    uint32_t hashMask() const { return hashMask_; }
+    uint32_t table() const { return table_; }
     uint32_t texelsPerSide() const { return texelsPerSide_; }
     uint32_t faceCount() const { return faceCount_; }
     const Sun& sun() const { return sun_; }
@@ -74,7 +74,7 @@ public:
 private:
     vk::Context& ctx_;
     vk::Buffer bricks_, records_, texels_, levels_, requested_, queue_, header_;
-    uint32_t hashMask_, texelsPerSide_, faceCount_;
+    uint32_t table_, texelsPerSide_, faceCount_;
     Sun sun_;
     FaceCacheRays rays_;
 };

@@ -1,12 +1,16 @@
 // The face cache as the GPU keeps it (voxel/face_cache.h has what a texel means),
 // written once for GLSL and C++: the C++ side is the twin the tests hold the
 // layout to. Three arrays:
-//   bricks:  a hash table of the 8^3 bricks holding exposed faces, uvec4
-//            (brick x, y, z, record + 1; 0 = free), probed linearly from
-//            occupancyHash(brick) & hashMask;
-//   records: per brick, 6 x 16 mask words (direction d's word w at d * 16 + w; bit
+//   bricks:  a perfect hash of the 8^3 bricks holding exposed faces ("hash and
+//            displace"), uvec4 slots (brick x, y, z, record + 1; 0 = free). A
+//            brick's bucket picks a seed (the records' first words), and the seed
+//            its one slot: a read is two loads and no probing, whether the brick
+//            is there or not (voxel/face_brick_table.h finds the seeds);
+//   records: a seed per bucket, then per brick, 6 x 16 mask words (direction d's word w at d * 16 + w; bit
 //            occupancyBit(voxel) set where that voxel's face looking d is exposed),
-//            then 6 bases: the index of the direction's first face;
+//            then 6 bases: the index of the direction's first face, then 2 words
+//            of the faces in each direction's first 8 mask words, 9 bits each
+//            (directions 0-2, then 3-5), so a face's index counts at most 7 words;
 //   texels:  k x k per face (faces in record, direction, bit order; texel j * k + i),
 //            3 bytes each, packed one after another into uints (texel t at bytes
 //            3t .. 3t + 2, little-endian): from bit 0 up, AO as an 8-bit unorm,
@@ -14,7 +18,8 @@
 //            ray as 5 and 6 bits (zenith light is most of an open floor's).
 // The includer defines, before including it (or GROTTO_FACE_CACHE_LAYOUT_ONLY):
 //   uvec4 faceCacheBrickEntry(uint slot); uint faceCacheRecordWord(uint word);
-//   uint faceCacheTexelWord(uint word); uint faceCacheHashMask(); uint faceCacheK();
+//   uint faceCacheTexelWord(uint word); uint faceCacheK(); and
+//   uint faceCacheTable(): the bricks' table, its slots << 5 | log2(its buckets).
 #ifndef GROTTO_SHARED_FACE_CACHE_H
 #define GROTTO_SHARED_FACE_CACHE_H
 #include "common.h"
@@ -35,38 +40,83 @@ GROTTO_NAMESPACE_BEGIN
 using glm::ivec3;
 using glm::uvec4;
 inline int bitCount(uint v) { return std::popcount(v); }
+inline int findLSB(int v) { return std::countr_zero(uint(v)); }
 using std::floor;
 using std::max;
 using std::min;
 #endif
 
-#define GROTTO_FACE_RECORD_WORDS 102u  // 6 x 16 mask words, then 6 bases
+#define GROTTO_FACE_RECORD_WORDS 104u  // 6 x 16 mask words, 6 bases, 2 words of half counts
 #define GROTTO_FACE_TEXEL_BYTES 3u
+
+// A 32-bit mix (a bijection), so neighbouring bricks scatter over the table.
+GROTTO_INLINE uint faceCacheMix(uint v) {
+    v ^= v >> 16u;
+    v *= 0x7feb352du;
+    v ^= v >> 15u;
+    v *= 0x846ca68bu;
+    return v ^ (v >> 16u);
+}
+
+// The bucket of `brick` among bucketMask + 1.
+GROTTO_INLINE uint faceCacheBucket(int x, int y, int z, uint bucketMask) {
+    return faceCacheMix(occupancyHash(x, y, z)) & bucketMask;
+}
+
+// The high 32 bits of a * b, in 32-bit products (a GPU's 64-bit product costs far more).
+GROTTO_INLINE uint faceCacheMulHigh(uint a, uint b) {
+    uint low = (a & 0xFFFFu) * (b & 0xFFFFu);
+    uint mid = (a >> 16u) * (b & 0xFFFFu) + (low >> 16u);
+    uint mid2 = (a & 0xFFFFu) * (b >> 16u) + (mid & 0xFFFFu);
+    return (a >> 16u) * (b >> 16u) + (mid >> 16u) + (mid2 >> 16u);
+}
+
+// The slot of `brick` among `slots` under `seed`. The seed enters first and each
+// coordinate after it through a bijection, so two bricks land together only by
+// the seed's chance, never for every seed.
+GROTTO_INLINE uint faceCacheSlot(int x, int y, int z, uint seed, uint slots) {
+    uint h = (uint(x) ^ seed) * 0x9E3779B1u;
+    h ^= h >> 16u;
+    h = (h ^ uint(y)) * 0x85EBCA77u;
+    h ^= h >> 13u;
+    h = (h ^ uint(z)) * 0xC2B2AE3Du;
+    return faceCacheMulHigh(h ^ (h >> 16u), slots);
+}
 #ifndef GROTTO_FACE_CACHE_LAYOUT_ONLY  // the layout's builder needs the constants alone
 
 // The record of the brick holding `cell`, + 1; 0 when it has no exposed face.
 GROTTO_FUNCTION uint faceCacheRecord(ivec3 brick) {
-    uint mask = faceCacheHashMask();
-    for (uint i = occupancyHash(brick.x, brick.y, brick.z) & mask, n = 0u; n <= mask; i = (i + 1u) & mask, ++n) {
-        uvec4 e = faceCacheBrickEntry(i);
-        if (e.w == 0u) return 0u;
-        if (int(e.x) == brick.x && int(e.y) == brick.y && int(e.z) == brick.z) return e.w;
-    }
-    return 0u;
+    uint table = faceCacheTable();
+    uint seed = faceCacheRecordWord(faceCacheBucket(brick.x, brick.y, brick.z, (1u << (table & 31u)) - 1u));
+    uvec4 e = faceCacheBrickEntry(faceCacheSlot(brick.x, brick.y, brick.z, seed, table >> 5u));
+    return int(e.x) == brick.x && int(e.y) == brick.y && int(e.z) == brick.z ? e.w : 0u;
+}
+
+// Record `record`'s first word (faceCacheRecord's, > 0): after the seeds.
+GROTTO_FUNCTION uint faceCacheRecordBase(uint record) {
+    return (1u << (faceCacheTable() & 31u)) + (record - 1u) * GROTTO_FACE_RECORD_WORDS;
+}
+
+// The faces looking `dir` before bit `bit` of the record at `base`: the index
+// that bit's face has, or would have.
+GROTTO_FUNCTION uint faceCacheRank(uint base, uint dir, uint bit) {
+    uint index = faceCacheRecordWord(base + 96u + dir);
+    // In the second half, the first half's count; then the own half's words before.
+    uint from = (bit >> 5u) & 8u;
+    if (from != 0u) index += (faceCacheRecordWord(base + 102u + dir / 3u) >> (dir % 3u * 9u)) & 511u;
+    for (uint w = from; w < (bit >> 5u); ++w) index += uint(bitCount(faceCacheRecordWord(base + dir * 16u + w)));
+    uint below = (1u << (bit & 31u)) - 1u;
+    return index + uint(bitCount(faceCacheRecordWord(base + dir * 16u + (bit >> 5u)) & below));
 }
 
 // The index of the exposed face of `cell` looking `dir` in brick record `record`
 // (faceCacheRecord's), or -1 when it is not one.
 GROTTO_FUNCTION int faceCacheFaceIn(uint record, ivec3 cell, uint dir) {
     if (record == 0u) return -1;
-    uint base = (record - 1u) * GROTTO_FACE_RECORD_WORDS;
+    uint base = faceCacheRecordBase(record);
     uint bit = occupancyBit(cell.x, cell.y, cell.z);
-    uint word = faceCacheRecordWord(base + dir * 16u + (bit >> 5u));
-    uint below = (1u << (bit & 31u)) - 1u;
-    if (((word >> (bit & 31u)) & 1u) == 0u) return -1;
-    uint index = faceCacheRecordWord(base + 96u + dir) + uint(bitCount(word & below));
-    for (uint w = 0u; w < (bit >> 5u); ++w) index += uint(bitCount(faceCacheRecordWord(base + dir * 16u + w)));
-    return int(index);
+    if (((faceCacheRecordWord(base + dir * 16u + (bit >> 5u)) >> (bit & 31u)) & 1u) == 0u) return -1;
+    return int(faceCacheRank(base, dir, bit));
 }
 
 // The index of the exposed face of `cell` looking `dir`, or -1 when it is not one.
@@ -112,39 +162,58 @@ GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
     float su = p[ua] * float(k) - 0.5f, sv = p[va] * float(k) - 0.5f;
     float fu = floor(su), fv = floor(sv);
     float wu = su - fu, wv = sv - fv;
-    // The four centres' texel columns and rows, and the faces they lie on: one to
-    // four, most often one or two, each looked up once (and its brick once).
+    // The four centres' texel columns and rows, and the cells they lie on: one to four.
     int I0 = int(fu) + origin[ua] * k, J0 = int(fv) + origin[va] * k;
     int cu0 = faceCacheFloorDiv(I0, k), cu1 = faceCacheFloorDiv(I0 + 1, k);
     int cv0 = faceCacheFloorDiv(J0, k), cv1 = faceCacheFloorDiv(J0 + 1, k);
     FaceCacheTaps t;
-    ivec3 q = cell;
-    q[ua] = cu0;
-    q[va] = cv0;
-    ivec3 brick = ivec3(q.x >> 3, q.y >> 3, q.z >> 3);
+    for (int c = 0; c < 4; ++c) {
+        t.cell[c] = cell;
+        t.cell[c][ua] = (c & 1) != 0 ? cu1 : cu0;
+        t.cell[c][va] = (c >> 1) != 0 ? cv1 : cv0;
+    }
+    // The first cell's brick holds the others but near its sides. There, a cell
+    // one further along u or v is 1, 8 or 64 bits further on in the same mask, so
+    // the first cell's rank and the four mask words from its own count them all.
+    ivec3 brick = ivec3(t.cell[0].x >> 3, t.cell[0].y >> 3, t.cell[0].z >> 3);
     uint record = faceCacheRecord(brick);
-    t.face[0] = faceCacheFaceIn(record, q, dir);
-    t.cell[0] = q;
-    for (int c = 1; c < 4; ++c) {
-        int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
-        q[ua] = cu;
-        q[va] = cv;
-        t.cell[c] = q;
-        if (cu == cu0 && cv == cv0) { t.face[c] = t.face[0]; continue; }
-        if (c == 3 && cu1 == cu0) { t.face[3] = t.face[2]; continue; }
-        if (c == 3 && cv1 == cv0) { t.face[3] = t.face[1]; continue; }
-        ivec3 b = ivec3(q.x >> 3, q.y >> 3, q.z >> 3);
-        if (b.x != brick.x || b.y != brick.y || b.z != brick.z) {
-            brick = b;
-            record = faceCacheRecord(brick);
+    uint bit0 = occupancyBit(t.cell[0].x, t.cell[0].y, t.cell[0].z);
+    uint rank0 = 0u;
+    uvec4 words = uvec4(0u);
+    if (record != 0u) {
+        uint base = faceCacheRecordBase(record), first = base + dir * 16u + (bit0 >> 5u);  // within the record
+        rank0 = faceCacheRank(base, dir, bit0);
+        words = uvec4(faceCacheRecordWord(first), faceCacheRecordWord(first + 1u), faceCacheRecordWord(first + 2u),
+                      faceCacheRecordWord(first + 3u));
+    }
+    uint start = bit0 & 31u;
+    int elsewhere = 0;  // bit c: cell c is in another brick
+    for (int c = 0; c < 4; ++c) {
+        ivec3 q = t.cell[c];
+        if ((q.x >> 3) != brick.x || (q.y >> 3) != brick.y || (q.z >> 3) != brick.z) {
+            elsewhere |= 1 << c;
+            continue;
         }
-        t.face[c] = faceCacheFaceIn(record, q, dir);
+        // Bit `at` of the four words from bit0's (at most 31 + 64 + 8 = 103).
+        uint at = start + occupancyBit(q.x, q.y, q.z) - bit0;
+        uint j = at >> 5u;
+        uint word = j == 0u ? words.x : j == 1u ? words.y : j == 2u ? words.z : words.w;
+        uint between = uint(bitCount(word & ((1u << (at & 31u)) - 1u))) - uint(bitCount(words.x & ((1u << start) - 1u)));
+        between += j > 0u ? uint(bitCount(words.x)) : 0u;
+        between += j > 1u ? uint(bitCount(words.y)) : 0u;
+        between += j > 2u ? uint(bitCount(words.z)) : 0u;
+        t.face[c] = ((word >> (at & 31u)) & 1u) != 0u ? int(rank0 + between) : -1;
+    }
+    // Those in other bricks, looked up whole: a loop that most groups of pixels skip.
+    for (int m = elsewhere; m != 0; m &= m - 1) {
+        int c = findLSB(m);
+        t.face[c] = faceCacheFace(t.cell[c], dir);
     }
     for (int c = 0; c < 4; ++c) {
         float w = ((c & 1) != 0 ? wu : 1.0f - wu) * ((c >> 1) != 0 ? wv : 1.0f - wv);
         t.weight[c] = t.face[c] < 0 ? 0.0f : w;
         int I = I0 + (c & 1), J = J0 + (c >> 1);
-        int cu = (c & 1) != 0 ? cu1 : cu0, cv = (c >> 1) != 0 ? cv1 : cv0;
+        int cu = t.cell[c][ua], cv = t.cell[c][va];
         t.texel[c] = t.face[c] < 0 ? 0u : uint(t.face[c]) * uint(k * k) + uint(J - cv * k) * uint(k) + uint(I - cu * k);
     }
     return t;

@@ -22,7 +22,7 @@ struct FrameUniforms {
     vec4 aoStrength;     // x: 0 = AO off, 1 = full AO
     vec4 exposure;       // x: radiance multiplier (the composite's colour is radiance x this); yzw unused
     uvec2 size;          // full-resolution width, height
-    uvec2 faceCache;     // --ao cache: the face cache's hash mask and texels per face side (shared/face_cache.h)
+    uvec2 faceCache;     // --ao cache: the face cache's table shape and texels per face side (shared/face_cache.h)
     vec4 skyLight[GROTTO_SKY_LIGHT_ROWS];  // rgb: the sky's light on a surface facing height -1 + k / 4
     // Where a pixel's surface is, in voxels (--ao cache): rayOrigin's ray times the
     // view depth, from the camera's place in its voxel.
