@@ -10,6 +10,7 @@
 
 #include "grotto/error.h"
 #include "engine/frame/render_memory.h"
+#include "shaders/shared/face_trace.h"
 #include "voxel/settings_table.h"
 
 #include <chrono>
@@ -73,6 +74,17 @@ CompositeShape Renderer::compositeShape() const {
             .shadowEdges = shadowEdges()};
 }
 
+CompositePass& Renderer::composite() {
+    // The header's count, as the last frame to finish left it.
+    if (!cacheTracing() || scene_.faceCache->lastHeader()[GROTTO_FACE_UNCONVERGED] == 0) return *compositePass_;
+    if (!askingCompositePass_) {
+        CompositeShape asking = compositeShape();
+        asking.askFaces = true;
+        askingCompositePass_ = std::make_unique<CompositePass>(ctx_, asking);
+    }
+    return *askingCompositePass_;
+}
+
 FrameShape Renderer::shapeFor(uint32_t width, uint32_t height, const AoOptions& ao,
                              const voxel::Lighting& lighting) const {
     const bool shadows = lighting.sunShadows && scene_.occupancy;
@@ -129,6 +141,7 @@ void Renderer::release() {
     temporalPass_.reset();
     upsamplePass_.reset();
     compositePass_.reset();
+    askingCompositePass_.reset();
     displayPass_.reset();
     normalsPass_.reset();
     shadowPass_.reset();
@@ -164,6 +177,7 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
     }
     finishFrames();  // before their passes go
     compositePass_.reset();
+    askingCompositePass_.reset();
     shadowPass_.reset();
     faceCacheAovPass_.reset();
     if (!sameAmbient) estimatorPass_.reset();  // VBAO's bent normals follow the ambient's source
@@ -198,6 +212,7 @@ void Renderer::setAo(const AoOptions& ao) {
     const bool bent = bentNormals(old, lighting_) != bentNormals(ao_, lighting_);
     if (chain || bent) {
         compositePass_.reset();
+        askingCompositePass_.reset();
         faceCacheAovPass_.reset();
     }
     if (chain) {
@@ -313,7 +328,7 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
         });
     if (aoChain(ao_)) recordAo(cmd);
     pass(cmd, CompositePass::declare(aoOutput()), [&] {
-        compositePass_->record(cmd, targets_.gbuffer(), image(TargetId::Color),
+        composite().record(cmd, targets_.gbuffer(), image(TargetId::Color),
                                {.aoHalf = image(aoOutput()), .frame = s.frame, .palette = scene_.palette,
                                 .gtaoConstants = s.aoConstants, .objectUniforms = s.objectUniforms,
                                 .shadow = image(TargetId::Shadow), .bentNormals = image(TargetId::AoBentNormal),

@@ -184,6 +184,9 @@ private:
     // surfaces, a sun moved since the bake).
     bool tracedShadows() const { return shadows() && (!cachedSun() || objects_); }
     CompositeShape compositeShape() const;
+    // The composite for this frame: while the cache has faces not converged, the
+    // one that asks for the faces of the texels it reads.
+    CompositePass& composite();
     // A sun of finite size: jittered rays accumulated in a history (shadow_pass.h).
     bool softShadows() const { return tracedShadows() && lighting_.sunAngle > 0.0f; }
     // Objects' AO and sky light over the face cache (object_light_pass.h).
@@ -247,6 +250,7 @@ private:
     std::unique_ptr<TemporalPass> temporalPass_;
     std::unique_ptr<UpsamplePass> upsamplePass_;
     std::unique_ptr<CompositePass> compositePass_;
+    std::unique_ptr<CompositePass> askingCompositePass_;  // made when first needed (composite())
     std::unique_ptr<DisplayPass> displayPass_;
     std::unique_ptr<NormalsPass> normalsPass_;
     std::unique_ptr<ShadowPass> shadowPass_;

@@ -30,8 +30,8 @@ bool RenderSession::faceCacheConverged() {
     if (!renderer_ || !faceCached(ao_) || !scene_->gpu().faceCache) return true;
     renderer_->finishFrames();
     const std::vector<uint32_t> header = scene_->gpu().faceCache->lastHeader();
-    // The frame asked for no face: every texel it read had converged.
-    return header[GROTTO_FACE_ASKED] == 0;
+    // Neither the frame's tracer nor its composite (asking for the next) found one.
+    return header[GROTTO_FACE_ASKED] + header[GROTTO_FACE_QUEUE_EMPTY] + header[GROTTO_FACE_QUEUE_PARTIAL] == 0;
 }
 
 Renderer& RenderSession::renderer() {

@@ -22,6 +22,10 @@ layout(constant_id = 4) const bool withBentNormals = false;  // VBAO's bent norm
 layout(constant_id = 5) const bool cachedSun = false;  // cache: world surfaces take the cache's sun visibility
 layout(constant_id = 6) const bool objectLight = false;  // cache: objects' AO and sky light (object_light.comp)
 layout(constant_id = 7) const bool shadowEdges = false;  // cache, a point sun: list its edges' pixels (shadow_edge.comp)
+// Cache, while faces have not converged: ask for the faces of the texels read, for
+// the next frame's tracer. A separate pipeline: a CPU device runs a branch's code
+// whether or not any pixel takes it, so a bake's frames leave it out.
+layout(constant_id = 8) const bool askFaces = false;
 // The group's side, set by CompositePass: lavapipe runs 16x16 groups of single
 // pixels faster, 8x8 groups of 2x2 blocks (docs/benchmarks.md).
 layout(local_size_x_id = 1, local_size_y_id = 2) in;
@@ -46,6 +50,19 @@ layout(set = 0, binding = 10, rgba16f) uniform readonly image2D objectLightImage
 #include "shared/face_trace.h"
 #include "face_cache_surface.glsl"
 layout(set = 0, binding = 14, std430) buffer Edges { uint edgeHeader[GROTTO_EDGE_HEADER_WORDS]; uvec4 edges[]; };
+#define GROTTO_FACE_REQUEST_BINDING 15
+#include "face_cache_requests.glsl"
+
+// Asks for the faces of texels `t` not converged (at pixel q, on faces looking
+// `dir`): by one pixel of each 2x2 block a frame, in turn. The request pass asked
+// for the face under each pixel before this frame's trace; a face beside the view
+// is read by a strip of pixels, so it is asked for within a frame or a few.
+void askForTaps(ivec2 q, FaceCacheTaps t, uint dir) {
+    if (faceHeader[GROTTO_FACE_UNCONVERGED] == 0u || (uint(q.x & 1) + 2u * uint(q.y & 1)) != (uint(frame.cameraCell.w) & 3u))
+        return;
+    for (int c = 0; c < 4; ++c)
+        if (t.weight[c] > 0.0) requestFace(t.face[c], t.cell[c], dir);
+}
 
 // Lists pixel q for an exact sun ray (shadow_edge.comp): lit with sun visibility
 // `used`, its sun's light at full visibility is `light` (exposed).
@@ -148,7 +165,9 @@ vec3 shadeCached(ivec2 q, uint surface) {
         light = objectPart.xyz;
     } else {
         vec2 sunRange;
-        vec4 c = cachedLightAt(q, surfaceFace(surface), seen, sunRange);  // AO, sun, horizon and zenith weights
+        FaceCacheTaps t = cachedTapsAt(q, surfaceFace(surface));
+        if (askFaces) askForTaps(q, t, surfaceFace(surface));
+        vec4 c = faceCacheBlend(t, seen, sunRange);  // AO, sun, horizon and zenith weights
         // With the cache's sun, the shadow pass holds the objects' alone.
         float cosSun = dot(normal, frame.sunDirection.xyz);
         if (shadowEdges && seen && cosSun > 0.0 && sunRange.y - sunRange.x > 0.5)  // some texels see the sun, some do not

@@ -2,9 +2,8 @@
 #extension GL_GOOGLE_include_directive : require
 // The faces in view whose texels have not converged, listed for the face cache's
 // tracer (shared/face_trace.h): every full-res pixel on a world surface asks for
-// the faces of the texels the composite will read at its point
-// (face_cache_requests.glsl), before the frame's trace, so a face new to the view,
-// or read across the edge of one in view, is traced in the frame it is read.
+// the face its point lies on (face_cache_requests.glsl), before the frame's
+// trace, so a face new to the view is traced in the frame it appears.
 #include "shared/face_trace.h"
 #include "shared/frame.h"
 #include "shared/objects.h"
@@ -27,8 +26,13 @@ void main() {
     if (any(greaterThanEqual(uvec2(q), frame.size))) return;
     uint surface = texelFetch(surfaceTex, q, 0).r;
     if (surface == 0u || surfaceObject(surface) != 0u) return;
+    // The face the pixel's point lies on; the composite asks for the neighbours'
+    // texels it reads across the face's edges, for the next frame.
     uint dir = surfaceFace(surface);
-    FaceCacheTaps t = faceCacheTaps(cachedPointAt(q, dir), frame.cameraCell.xyz, dir);
-    for (int c = 0; c < 4; ++c)
-        if (t.weight[c] > 0.0) requestFace(t.face[c], t.cell[c], dir);
+    vec3 p = cachedPointAt(q, dir);
+    uint axis = faceAxis(dir);
+    ivec3 cell = ivec3(floor(p)) + frame.cameraCell.xyz;
+    cell[axis] = int(round(p[axis])) + frame.cameraCell[axis] - (facePositive(dir) ? 1 : 0);
+    int face = faceCacheFace(cell, dir);
+    if (face >= 0) requestFace(face, cell, dir);
 }

@@ -20,14 +20,14 @@ vec3 cachedPointAt(ivec2 q, uint face) {
     return p;
 }
 
-// The light cached at that point. `sunRange`: the least and most sun visibility
-// of the texels read (a shadow edge crosses them where they differ).
-vec4 cachedLightAt(ivec2 q, uint face, out bool found, out vec2 sunRange) {
-    return faceCacheBlend(faceCacheTaps(cachedPointAt(q, face), frame.cameraCell.xyz, face), found, sunRange);
+// The texels read at that point.
+FaceCacheTaps cachedTapsAt(ivec2 q, uint face) {
+    return faceCacheTaps(cachedPointAt(q, face), frame.cameraCell.xyz, face);
 }
 
+// The light cached at that point.
 vec4 cachedLightAt(ivec2 q, uint face, out bool found) {
     vec2 sunRange;
-    return cachedLightAt(q, face, found, sunRange);
+    return faceCacheBlend(cachedTapsAt(q, face), found, sunRange);
 }
 

@@ -21,7 +21,7 @@ std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
     b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the object light
     b = GpuFaceCache::withBindings(std::move(b));
     b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);  // the shadow edges' list
-    return b;
+    return GpuFaceCache::withRequestBindings(std::move(b));
 }
 }  // namespace
 
@@ -31,7 +31,7 @@ CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
       pass_(ctx, shape.faceCache ? "composite_cache.comp" : "composite.comp", bindings(shape), 0,
             {shape.withAo ? 1u : 0u, group(shape), group(shape), shape.withShadow ? 1u : 0u,
              shape.withBentNormals ? 1u : 0u, shape.cachedSun ? 1u : 0u, shape.objectLight ? 1u : 0u,
-             shape.shadowEdges ? 1u : 0u}) {}
+             shape.shadowEdges ? 1u : 0u, shape.askFaces ? 1u : 0u}) {}
 
 void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& color, const Inputs& in) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
@@ -50,6 +50,7 @@ void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const v
         b = in.faceCache->withBindings(std::move(b));
         // Without edges the binding is never read: any buffer holds its place.
         b.push_back(vk::storageBuffer(in.shadowEdges ? in.shadowEdges->buffer : in.faceCache->header().buffer));
+        b = in.faceCache->withRequestBindings(std::move(b));
     }
     pass_.dispatch(cmd, b, shape_.withAo ? in.aoHalf.extent : color.extent, group(shape_));  // with AO, per AO pixel
 }

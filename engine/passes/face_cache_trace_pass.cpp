@@ -73,13 +73,13 @@ void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, Vk
                                                vk::storageBuffer(cache.texels().buffer)},
                                               traceConstants, occupancy),
                             cache.header().buffer, GROTTO_FACE_DISPATCH * sizeof(uint32_t), &c);
-    // The requests start afresh for the next frame: the counts and the request
-    // bits (the rest of the header is the plan's).
+    // The requests start afresh for the composite, which asks for the next frame:
+    // the counts and the request bits (the rest of the header is the plan's).
     barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_SHADER_READ_BIT,
             VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     vkCmdFillBuffer(cmd, cache.requested().buffer, 0, VK_WHOLE_SIZE, 0);
     vkCmdFillBuffer(cmd, cache.header().buffer, 0, 2 * sizeof(uint32_t), 0);
-    // The composite and the AOVs read the texels next; the host reads the header.
+    // The composite and the AOVs read the texels next and ask anew; the host reads the header.
     barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_TRANSFER_BIT,
             VK_ACCESS_SHADER_WRITE_BIT | VK_ACCESS_TRANSFER_WRITE_BIT,
             VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_HOST_BIT,
