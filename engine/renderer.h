@@ -191,8 +191,8 @@ private:
     bool softShadows() const { return tracedShadows() && lighting_.sunAngle > 0.0f; }
     // Objects' AO and sky light over the face cache (object_light_pass.h).
     bool objectLight() const { return faceCached(ao_) && objects_; }
-    // Exact sun rays on the cache's shadow edges: its sun is the frame's, a point.
-    bool shadowEdges() const { return shadows() && cachedSun() && !(lighting_.sunAngle > 0.0f); }
+    // Exact sun rays on the cache's shadow edges: its sun is the frame's.
+    bool shadowEdges() const { return shadows() && cachedSun(); }
     // The GPU traces the face cache's texels in view that have not converged.
     bool cacheTracing() const { return faceCached(ao_) && scene_.occupancy && scene_.faceCache; }
     // VBAO finds bent normals in every frame: the sky's ambient is lit around them.

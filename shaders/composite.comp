@@ -21,7 +21,7 @@ layout(constant_id = 3) const bool withShadow = true;  // false: the sun reaches
 layout(constant_id = 4) const bool withBentNormals = false;  // VBAO's bent normals light the sky's ambient
 layout(constant_id = 5) const bool cachedSun = false;  // cache: world surfaces take the cache's sun visibility
 layout(constant_id = 6) const bool objectLight = false;  // cache: objects' AO and sky light (object_light.comp)
-layout(constant_id = 7) const bool shadowEdges = false;  // cache, a point sun: list its edges' pixels (shadow_edge.comp)
+layout(constant_id = 7) const bool shadowEdges = false;  // the cache's sun: list its edges' pixels (shadow_edge.comp)
 // Cache, while faces have not converged: ask for the faces of the texels read, for
 // the next frame's tracer. A separate pipeline: a CPU device runs a branch's code
 // whether or not any pixel takes it, so a bake's frames leave it out.
@@ -170,7 +170,7 @@ vec3 shadeCached(ivec2 q, uint surface) {
         vec4 c = faceCacheBlend(t, seen, sunRange);  // AO, sun, horizon and zenith weights
         // With the cache's sun, the shadow pass holds the objects' alone.
         float cosSun = dot(normal, frame.sunDirection.xyz);
-        if (shadowEdges && seen && cosSun > 0.0 && sunRange.y - sunRange.x > 0.5)  // some texels see the sun, some do not
+        if (shadowEdges && seen && cosSun > 0.0 && sunRange.y - sunRange.x > 0.5)  // the texels disagree by over half
             listShadowEdge(q, c.y, exposed(albedo[surfaceMaterial(surface) - 1u].rgb * frame.sunRadiance.rgb * (cosSun * sunReach)));
         if (cachedSun && seen) sunReach *= c.y;
         light = vec3(max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)));

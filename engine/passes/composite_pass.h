@@ -24,7 +24,7 @@ struct CompositeShape {
     bool faceCache = false;        // --ao cache: the face cache instead of an AO chain
     bool cachedSun = false;        // with it: world surfaces take the cache's sun visibility
     bool objectLight = false;      // with it: objects' AO and sky light from the object light pass
-    bool shadowEdges = false;      // with the cache's sun, a point: its shadow edges' pixels listed (shadow_edge_pass.h)
+    bool shadowEdges = false;      // with the cache's sun: its shadow edges' pixels listed (shadow_edge_pass.h)
     bool askFaces = false;         // with it, while faces have not converged: the texels' faces asked for
     bool operator==(const CompositeShape&) const = default;
 };

@@ -1,7 +1,8 @@
 #pragma once
 // Sharp shadow edges over the face cache's sun (shaders/shadow_edge.comp): the
-// composite lists the pixels whose texels disagree on a point sun, and this pass
-// traces one exact sun ray for each and corrects its colour. Reads the G-buffer's
+// composite lists the pixels whose texels disagree on the sun by more than half,
+// and this pass traces exact sun rays for each (one toward a point sun, 16 over a
+// disc) and corrects its colour. Reads the G-buffer's
 // depth and surface ids, the trace constants and the occupancy; writes the colour.
 // Owns the list (a frame's pixels / 8 at most: the rest keep the texels' sun).
 #include "engine/frame/pass_decl.h"
