@@ -60,14 +60,23 @@ std::vector<glm::ivec3> LiveMesh::update(const World& world, const IndexBox& cha
 }
 
 void LiveMesh::weld(const std::vector<glm::ivec3>& origins) {
+    // Each chunk's boundary corners once: a chunk meets up to 26 others.
+    auto neighbour = [](glm::ivec3 origin, int k) { return origin + N * glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1); };
+    std::map<glm::ivec3, size_t, Less> index;
+    std::vector<glm::ivec3> listed;
+    for (const glm::ivec3& o : origins)
+        for (int k = 0; k < 27; ++k)
+            if (const glm::ivec3 n = neighbour(o, k); chunks_.count(n) && index.emplace(n, listed.size()).second)
+                listed.push_back(n);
+    std::vector<std::vector<glm::ivec3>> corners(listed.size());
+    tbb::parallel_for(size_t(0), listed.size(), [&](size_t i) { corners[i] = boundaryCorners(chunks_.at(listed[i])); });
     tbb::parallel_for(size_t(0), origins.size(), [&](size_t i) {
         MeshChunkQuads& chunk = chunks_.at(origins[i]);
-        std::array<const MeshChunkQuads*, 26> neighbours{};
-        for (int k = 0, j = 0; k < 27; ++k) {
-            if (k == 13) continue;  // the chunk itself
-            neighbours[size_t(j++)] = find(chunk.origin + N * glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1));
-        }
-        voxel::weld(chunk, neighbours);
+        std::vector<ChunkBoundary> around;
+        for (int k = 0; k < 27; ++k)
+            if (const auto it = index.find(neighbour(chunk.origin, k)); it != index.end())
+                around.push_back({it->first, &corners[it->second]});
+        voxel::weld(chunk, around);
     });
 }
 

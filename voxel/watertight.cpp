@@ -148,23 +148,25 @@ std::array<glm::ivec3, 4> rectCorners(const gpu::PackedQuad& rect) {
     return {base, base + du, base + du + dv, base + dv};
 }
 
-void weld(MeshChunkQuads& chunk, std::span<const MeshChunkQuads* const> neighbours) {
-    PointSet boundary;
-    auto addBoundary = [&](const MeshChunkQuads& c) {
-        const glm::ivec3 shift = c.origin - chunk.origin;
-        auto add = [&](const std::vector<gpu::PackedQuad>& rects) {
-            for (const gpu::PackedQuad& r : rects)
-                for (const glm::ivec3& p : rectCorners(r)) {
-                    const glm::ivec3 q = p + shift;
-                    if (onBoundary(q.x) || onBoundary(q.y) || onBoundary(q.z)) boundary.add(q);
-                }
-        };
-        add(c.rects);
-        for (const MeshLevel& l : c.coarser) add(l.rects);
+std::vector<glm::ivec3> boundaryCorners(const MeshChunkQuads& chunk) {
+    std::vector<glm::ivec3> corners;
+    auto add = [&](const std::vector<gpu::PackedQuad>& rects) {
+        for (const gpu::PackedQuad& r : rects)
+            for (const glm::ivec3& p : rectCorners(r))
+                if (onBoundary(p.x) || onBoundary(p.y) || onBoundary(p.z)) corners.push_back(p);
     };
-    addBoundary(chunk);
-    for (const MeshChunkQuads* n : neighbours)
-        if (n) addBoundary(*n);
+    add(chunk.rects);
+    for (const MeshLevel& l : chunk.coarser) add(l.rects);
+    return corners;
+}
+
+void weld(MeshChunkQuads& chunk, std::span<const ChunkBoundary> around) {
+    // A corner of another chunk in this one's closed cube lies on both boundaries.
+    PointSet boundary;
+    for (const ChunkBoundary& b : around) {
+        const glm::ivec3 shift = b.origin - chunk.origin;
+        for (const glm::ivec3& p : *b.corners) boundary.add(p + shift);
+    }
     auto level = [&](const std::vector<gpu::PackedQuad>& rects, std::array<uint32_t, 6>& faceCount,
                      std::vector<MeshQuad>& quads) {
         PointSet own;

@@ -12,12 +12,24 @@
 #include "voxel/mesh.h"
 
 #include <span>
+#include <vector>
 
 namespace grotto::voxel {
 
-// Fills chunk.quads (and each coarser level's) from its rectangles, given those of
-// the chunks around it (any of the 26; chunks that are not there have none).
-void weld(MeshChunkQuads& chunk, std::span<const MeshChunkQuads* const> neighbours);
+// The corners of a chunk's rectangles, every level's, that lie on its closed
+// cube's boundary, chunk-relative. Only these can meet another chunk's quads.
+std::vector<glm::ivec3> boundaryCorners(const MeshChunkQuads& chunk);
+
+// A chunk's boundaryCorners, with its origin.
+struct ChunkBoundary {
+    glm::ivec3 origin{0};
+    const std::vector<glm::ivec3>* corners = nullptr;
+};
+
+// Fills chunk.quads (and each coarser level's) from its rectangles, given the
+// boundary corners of the chunk itself and of those around it (any of the 26;
+// chunks that are not there have none).
+void weld(MeshChunkQuads& chunk, std::span<const ChunkBoundary> around);
 
 // The corners of a rectangle, chunk-relative, counter-clockwise about its normal.
 std::array<glm::ivec3, 4> rectCorners(const gpu::PackedQuad& rect);

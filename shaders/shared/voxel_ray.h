@@ -62,6 +62,9 @@ VoxelRayHit voxelRay(VoxelRayStart start, vec3 d, float maxT, ivec3 lo, ivec3 hi
     for (int a = 0; a < 3; ++a)
         if (parallel[a] && (start.voxel[a] < lo[a] || start.voxel[a] > hi[a])) return hit;
     ivec3 isgn = mix(ivec3(-1), ivec3(1), positive);
+    // Integer selects below are products with 0 or 1: GLM leaves its vector mix
+    // out of line, and it was a third of a CPU ray's time.
+    ivec3 ahead = ivec3(positive);  // a voxel's far boundary, from the voxel
     ivec3 r = ivec3(0);  // the voxel the ray is in, relative to the start voxel
     float tIn = 0.0f;    // where it entered that voxel
     int axis = -1;       // across which axis
@@ -80,8 +83,7 @@ VoxelRayHit voxelRay(VoxelRayStart start, vec3 d, float maxT, ivec3 lo, ivec3 hi
         ivec3 blockLo = ((voxel >> k) << k) - start.voxel;
         // The first of the crossings out of the block: where the ray leaves the block
         // on each axis, ties to the later axis.
-        ivec3 last = blockLo + mix(ivec3(0), ivec3(size - 1), positive);  // its last voxel on the way
-        ivec3 ahead = mix(ivec3(0), ivec3(1), positive);  // a voxel's far boundary, from the voxel
+        ivec3 last = blockLo + (size - 1) * ahead;  // its last voxel on the way
         vec3 t = voxelRayLeave(start, step, never, last + ahead);
         int a = t.y <= t.x ? 1 : 0;
         float ta = min(t.x, t.y);
@@ -105,7 +107,8 @@ VoxelRayHit voxelRay(VoxelRayStart start, vec3 d, float maxT, ivec3 lo, ivec3 hi
                            (ivec3(equal(leave, vec3(ta))) & ivec3(greaterThan(ivec3(0, 1, 2), ivec3(a))));
             r = guess + isgn * (before & ivec3(notEqual(guess, last)));
         }
-        r = mix(r, blockLo + mix(ivec3(-1), ivec3(size), positive), equal(ivec3(a), ivec3(0, 1, 2)));
+        // On axis a the ray steps out of the block: to blockLo + size, or blockLo - 1.
+        r += (blockLo + (size + 1) * ahead - 1 - r) * ivec3(equal(ivec3(a), ivec3(0, 1, 2)));
         tIn = ta;
         axis = a;
     }
