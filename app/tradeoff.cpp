@@ -30,8 +30,9 @@ struct Row {
 
 // Every setting measured: the baselines, GTAO, voxel-traced, hybrid AO and VBAO
 // without temporal accumulation, then each method's high preset with it, after
-// enough static frames to fill its history. SSAO's presets are labelled by their
-// sample counts; "vbao/constant" is VBAO with that thickness mode (its own is voxels).
+// enough static frames to fill its history, and last the face cache, baked (it
+// has no presets). SSAO's presets are labelled by their sample counts;
+// "vbao/constant" is VBAO with that thickness mode (its own is voxels).
 struct Setting {
     std::string method, quality, label;
     int temporal;
@@ -48,6 +49,7 @@ const std::vector<Setting> kSettings = {
     {"vbao", "low", "low", 0},      {"vbao", "medium", "medium", 0}, {"vbao", "high", "high", 0},
     {"vbao", "ultra", "ultra", 0},  {"vbao/constant", "high", "high", 0}, {"vbao/distance", "high", "high", 0},
     {"vbao+temporal", "high", "high", 16},
+    {"cache", "high", "baked", 0},
 };
 constexpr int kTemporalFrames = 32;
 
@@ -222,6 +224,7 @@ void addTradeoffCommand(CLI::App& app) {
         int frames = 5, warmup = 2;
         std::vector<double> lodBiases;
         AoFlags detail;  // --lod-bias and --occlusion-culling only
+        std::string bakes;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("tradeoff", "Cost and error against the reference of every AO method and preset");
@@ -236,6 +239,9 @@ void addTradeoffCommand(CLI::App& app) {
     CLI::Option* plot = cmd->add_option("--plot", args->plot, "Also draw error against cost to this PNG (needs gnuplot)");
     cmd->add_option("--markdown", args->markdown, "Also write the rows as a Markdown table to this file");
     addDetailFlags(cmd, args->detail);
+    cmd->add_option("--bakes", args->bakes,
+                    "Folder of the face cache's bakes, WORLD.gfc for each world (grotto bake); a world without one is "
+                    "baked before its cache row");
     cmd->add_option("--lod-biases", args->lodBiases,
                     "Instead of every AO method: the world's AO setting at each of these level-of-detail biases "
                     "(comma-separated, 0 to 64; 0, the exact voxels, is always measured), colour and AO against bias 0")
@@ -258,6 +264,8 @@ void addTradeoffCommand(CLI::App& app) {
             if (!onPath("gnuplot"))
                 throw Error("--plot", "gnuplot is not installed", "install gnuplot-nox (scripts/setup.sh)");
         }
+        if (!args->bakes.empty() && !std::filesystem::is_directory(args->bakes))
+            throw Error(args->bakes, "is not a folder", "name the folder holding WORLD.gfc for each world (--bakes)");
         std::vector<voxel::World> worlds;
         for (const std::string& w : args->worlds) worlds.push_back(voxel::World::load(w));
         for (const voxel::World& w : worlds) w.camera(args->camera, size.aspect());  // a missing camera fails now
@@ -300,6 +308,12 @@ void addTradeoffCommand(CLI::App& app) {
                 flags.set.quality = s.quality;
                 flags.set.temporalHistory = s.temporal;
                 const AoOptions ao = resolveAo(world, flags);
+                if (faceCached(ao)) {  // loaded from --bakes, else baked here
+                    const std::filesystem::path bake = std::filesystem::path(args->bakes) / (name + ".gfc");
+                    if (!args->bakes.empty() && std::filesystem::exists(bake)) flags.bake = bake.string();
+                    session.setAo(ao);
+                    prepareFaceCache(session, flags);
+                }
                 const int frames = std::max(args->warmup + args->frames, s.temporal ? kTemporalFrames : 0);
                 Row row{name, s.method, s.label,
                         measureAo(ctx, session, camera, ao, cullingOptions(detail), ref, frames, args->warmup)};

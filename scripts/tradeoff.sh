@@ -4,6 +4,8 @@
 #    the ray-traced reference (10000 rays per pixel, so every pixel's standard error
 #    is at most 0.005, docs/metrics.md; cached) on the standard worlds at 640x360,
 #    default cameras. CSV in out/tradeoff.csv, plot in docs/images/tradeoff.png.
+#    The face cache's row reads each world's bake from out/bakes (baked there first
+#    when missing: city takes about 7 minutes on 2 cores).
 #  - lod: docs/detail.md's tables: the world's AO at each level-of-detail bias
 #    against the exact voxels (bias 0), at 640x360 (biases 1, 2, 4, 8) and 320x180
 #    (the default bias, 1), on every shipped world's default camera and caves'
@@ -33,9 +35,13 @@ splice() {
 }
 
 if [ "$what" != lod ]; then
+  mkdir -p out/bakes
+  for w in rooms caves thin city; do
+    [ -f "out/bakes/$w.gfc" ] || "$grotto" bake "worlds/$w.json" -o "out/bakes/$w.gfc"
+  done
   "$grotto" tradeoff worlds/rooms.json worlds/caves.json worlds/thin.json worlds/city.json \
     --size 640x360 --spp 10000 --frames 24 --warmup 4 --csv out/tradeoff.csv --markdown out/tradeoff-table.md \
-    --plot docs/images/tradeoff.png
+    --plot docs/images/tradeoff.png --bakes out/bakes
   splice docs/tradeoff.md "tradeoff table" out/tradeoff-table.md
 fi
 

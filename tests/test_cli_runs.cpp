@@ -181,18 +181,28 @@ TEST_F(CliErrors, UnknownAoMethodAndTradeoffNonsense) {
 }
 
 TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
-    const auto world = writeText("cam.json", R"({"grid": {"file": "good.vdb"},
+    // A floor with a block and a pillar on it: corners where the methods differ.
+    writeSolid(dir_ / "corners.vdb", 16, 5, [](int x, int y, int z) { return y == 0 || x < 4 || (x == 10 && z == 10); });
+    const auto world = writeText("cam.json", R"({"grid": {"file": "corners.vdb"},
         "cameras": {"c": {"position": [30, 12, 30], "target": [8, 0, 8]}}})");
-    const fs::path csv = dir_ / "t.csv", markdown = dir_ / "t.md";
-    const test::RunResult r = runGrotto("tradeoff " + world.string() + " --size 32x24 --spp 64 --frames 1 --warmup 0 --csv " +
-                                            csv.string() + " --markdown " + markdown.string(),
-                                        "GROTTO_CACHE_DIR=" + (dir_ / "cache").string());
+    const fs::path csv = dir_ / "t.csv", markdown = dir_ / "t.md", bakes = dir_ / "bakes";
+    const std::string run = "tradeoff " + world.string() + " --size 32x24 --spp 256 --frames 1 --warmup 0 --csv " +
+                            csv.string() + " --markdown " + markdown.string() + " --bakes " + bakes.string();
+    const std::string env = "GROTTO_CACHE_DIR=" + (dir_ / "cache").string();
+    const test::RunResult notFolder = runGrotto(run, env);
+    EXPECT_EQ(notFolder.exitCode, 2);
+    EXPECT_NE(notFolder.err.find(bakes.string() + ": is not a folder"), std::string::npos) << notFolder.err;
+    fs::create_directories(bakes);
+    ASSERT_EQ(runGrotto("bake " + world.string() + " -o " + (bakes / "cam.gfc").string()).exitCode, 0);
+    const test::RunResult r = runGrotto(run, env);
     ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.find("baking the face cache"), std::string::npos) << "the bake in --bakes was not used: " << r.err;
     std::ifstream in(csv);
     std::string line;
     std::getline(in, line);
     EXPECT_EQ(line, "world,method,quality,ms_ao,ms_frame,mae,rmse,psnr,bias,ms_ao_noise");
     int rows = 0;
+    std::map<std::string, double> rmse;  // by method and quality
     while (std::getline(in, line)) {
         ++rows;
         EXPECT_EQ(line.rfind("cam,", 0), 0u) << line;
@@ -201,15 +211,23 @@ TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
         std::string field;
         for (int i = 0; i < 4; ++i) std::getline(fields, field, ',');  // world,method,quality,ms_ao
         EXPECT_GE(std::stod(field), 0.0) << "a negative cost: " << line;
+        std::stringstream all(line);
+        std::vector<std::string> cell;
+        while (std::getline(all, field, ',')) cell.push_back(field);
+        rmse[cell[1] + " " + cell[2]] = std::stod(cell[6]);
     }
     // ssao x3, hbao x4, gtao x4, gtao+temporal, voxel x3, voxel+temporal, hybrid x3, hybrid+temporal,
-    // vbao x4, vbao/constant, vbao/distance, vbao+temporal
-    EXPECT_EQ(rows, 27);
-    // The same rows as a Markdown table (header, rule, 27 rows), SSAO by sample count.
+    // vbao x4, vbao/constant, vbao/distance, vbao+temporal, cache
+    EXPECT_EQ(rows, 28);
+    // The converged cache estimates the reference's own quantity; GTAO approximates it.
+    ASSERT_TRUE(rmse.count("cache baked") && rmse.count("gtao high"));
+    std::printf("[ measured ] rmse: cache %.4f, gtao high %.4f\n", rmse["cache baked"], rmse["gtao high"]);
+    EXPECT_LT(rmse["cache baked"], 0.5 * rmse["gtao high"]);
+    // The same rows as a Markdown table (header, rule, 28 rows), SSAO by sample count.
     std::ifstream md(markdown);
     std::vector<std::string> table;
     while (std::getline(md, line)) table.push_back(line);
-    ASSERT_EQ(table.size(), 29u);
+    ASSERT_EQ(table.size(), 30u);
     EXPECT_EQ(table[0].rfind("| world | method | quality |", 0), 0u);
     EXPECT_EQ(table[2].rfind("| cam | ssao | 8 |", 0), 0u) << table[2];
     EXPECT_EQ(table[13].rfind("| cam | gtao+temporal | high |", 0), 0u) << table[13];
@@ -217,6 +235,7 @@ TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
     EXPECT_EQ(table[21].rfind("| cam | hybrid+temporal | high |", 0), 0u) << table[21];
     EXPECT_EQ(table[26].rfind("| cam | vbao/constant | high |", 0), 0u) << table[26];
     EXPECT_EQ(table[28].rfind("| cam | vbao+temporal | high |", 0), 0u) << table[28];
+    EXPECT_EQ(table[29].rfind("| cam | cache | baked |", 0), 0u) << table[29];
 }
 
 }  // namespace
