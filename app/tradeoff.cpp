@@ -11,6 +11,7 @@
 #include "grotto/error.h"
 #include "engine/lab/reference_view.h"
 #include "engine/frame/render_memory.h"
+#include "voxel/face_cache_file.h"
 
 #include <algorithm>
 #include <cstdio>
@@ -52,6 +53,23 @@ const std::vector<Setting> kSettings = {
     {"cache", "high", "baked", 0},
 };
 constexpr int kTemporalFrames = 32;
+
+// The world's bake in the --bakes folder, WORLD.gfc; empty when there is none.
+std::filesystem::path bakeIn(const std::string& folder, const voxel::World& world) {
+    if (folder.empty()) return {};
+    const std::filesystem::path bake = std::filesystem::path(folder) / (world.desc().source.stem().string() + ".gfc");
+    return std::filesystem::exists(bake) ? bake : std::filesystem::path();
+}
+
+// A bake in --bakes that is not the world's is refused before minutes of rendering.
+void requireMatchingBakeIn(const std::string& folder, const voxel::World& world) {
+    const std::filesystem::path bake = bakeIn(folder, world);
+    if (bake.empty()) return;
+    const voxel::FaceCacheFile file = voxel::loadFaceCache(bake);
+    const double radius = double(resolveAo(world, {}).estimator.radius);
+    voxel::requireMatchingBake(file, voxel::faceCacheKey(world, radius, file.key.texelsPerSide),
+                               voxel::countExposedFaces(world).faces, bake);
+}
 
 bool onPath(const std::string& tool) {
     return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
@@ -248,6 +266,7 @@ void addTradeoffCommand(CLI::App& app) {
         ->delimiter(',')
         ->check(finiteRange(0.0, 64.0))
         ->excludes(cmd->get_option("--lod-bias"))
+        ->excludes(cmd->get_option("--bakes"))
         ->excludes(plot);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -269,6 +288,8 @@ void addTradeoffCommand(CLI::App& app) {
         std::vector<voxel::World> worlds;
         for (const std::string& w : args->worlds) worlds.push_back(voxel::World::load(w));
         for (const voxel::World& w : worlds) w.camera(args->camera, size.aspect());  // a missing camera fails now
+        if (!lod)
+            for (const voxel::World& w : worlds) requireMatchingBakeIn(args->bakes, w);
 
         vk::Context ctx;
         std::vector<Row> rows;
@@ -309,8 +330,7 @@ void addTradeoffCommand(CLI::App& app) {
                 flags.set.temporalHistory = s.temporal;
                 const AoOptions ao = resolveAo(world, flags);
                 if (faceCached(ao)) {  // loaded from --bakes, else baked here
-                    const std::filesystem::path bake = std::filesystem::path(args->bakes) / (name + ".gfc");
-                    if (!args->bakes.empty() && std::filesystem::exists(bake)) flags.bake = bake.string();
+                    flags.bake = bakeIn(args->bakes, world).string();
                     session.setAo(ao);
                     prepareFaceCache(session, flags);
                 }

@@ -193,6 +193,13 @@ TEST_F(CliErrors, TradeoffWritesEveryMethodAndPreset) {
     EXPECT_EQ(notFolder.exitCode, 2);
     EXPECT_NE(notFolder.err.find(bakes.string() + ": is not a folder"), std::string::npos) << notFolder.err;
     fs::create_directories(bakes);
+    // Another world's bake is refused before anything is measured.
+    const auto floor = writeText("floor.json", R"({"grid": {"file": "good.vdb"}})");
+    ASSERT_EQ(runGrotto("bake " + floor.string() + " -o " + (bakes / "cam.gfc").string()).exitCode, 0);
+    const test::RunResult mismatch = runGrotto(run, env);
+    EXPECT_EQ(mismatch.exitCode, 2);
+    EXPECT_NE(mismatch.err.find((bakes / "cam.gfc").string()), std::string::npos) << mismatch.err;
+    EXPECT_EQ(mismatch.out.find("ssao"), std::string::npos) << "measured before the bake was checked";
     ASSERT_EQ(runGrotto("bake " + world.string() + " -o " + (bakes / "cam.gfc").string()).exitCode, 0);
     const test::RunResult r = runGrotto(run, env);
     ASSERT_EQ(r.exitCode, 0) << r.err;
