@@ -36,18 +36,24 @@ AoMeasurement measureAo(vk::Context& ctx, RenderSession& session, const Camera& 
                         int frames, int warmup, bool timed, std::vector<float>* color) {
     // Costs as wall-time differences against the same frames without AO, rendered
     // interleaved: lavapipe's timestamps miss passes that follow a barrier.
-    auto make = [&](const AoOptions& options) {
-        auto r = std::make_unique<Renderer>(ctx, session.scene().gpu(), session.world().desc().lighting, options,
-                                            camera.width, camera.height, session.objects());
+    const voxel::Lighting& lighting = session.world().desc().lighting;
+    auto make = [&](const AoOptions& options, const voxel::Lighting& light) {
+        auto r = std::make_unique<Renderer>(ctx, session.scene().gpu(), light, options, camera.width, camera.height,
+                                            session.objects());
         r->setCulling(culling);
         if (session.objects()) r->setObjectPoses(session.poses());
         return r;
     };
-    const std::unique_ptr<Renderer> renderer = make(ao);
+    const std::unique_ptr<Renderer> renderer = make(ao, lighting);
     AoOptions off = ao;
     off.enabled = false;
+    // The face cache's sun takes the shadow pass's place: its frames without AO
+    // are timed without sun shadows too, so its cost is AO and sun together.
+    voxel::Lighting unshadowed = lighting;
+    unshadowed.sunShadows = false;
+    const bool withSun = faceCached(ao) && lighting.sunShadows;
     std::unique_ptr<Renderer> withoutAo;
-    if (timed) withoutAo = make(off);
+    if (timed) withoutAo = make(off, withSun ? unshadowed : lighting);
     std::vector<double> aoMs, frameMs, gbufferMs;
     FrameStats last;
     for (int i = 0; i < frames; ++i) {
@@ -65,8 +71,8 @@ AoMeasurement measureAo(vk::Context& ctx, RenderSession& session, const Camera& 
         frameMs.push_back(last.wallMs);
     }
     FrameImages img = renderer->readback(camera, true);
-    if (!withoutAo) {
-        withoutAo = make(off);
+    if (!withoutAo || withSun) {  // the image without AO keeps the sun's shadows
+        withoutAo = make(off, lighting);
         withoutAo->render(camera, uint32_t(frames - 1));
     }
     const FrameImages plain = withoutAo->readback(camera, false);

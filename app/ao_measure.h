@@ -15,7 +15,8 @@ namespace grotto::app {
 
 struct AoMeasurement {
     AoError error;        // of the last frame's full-res AO against the reference
-    CostDifference ao;    // all AO costs: prefilter, estimator, denoise, temporal, the composite's upsample
+    CostDifference ao;    // all AO costs: prefilter, estimator, denoise, temporal, the composite's upsample;
+                          // the face cache's: its AO and sun, against a frame without either
     double msFrame = 0.0; // the whole frame
     // How much the AO shows in the image: the mean absolute change of the displayed
     // colour (tone-mapped, sRGB-encoded as a PNG holds it, in [0, 1]), over the RGB
