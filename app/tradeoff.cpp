@@ -54,6 +54,26 @@ const std::vector<Setting> kSettings = {
 };
 constexpr int kTemporalFrames = 32;
 
+std::string baseMethod(const std::string& method) { return method.substr(0, method.find_first_of("+/")); }
+
+// Is the setting among --methods (all when none are given)? A plain name takes
+// its variants too: gtao is also gtao+temporal.
+bool chosen(const Setting& s, const std::vector<std::string>& methods) {
+    if (methods.empty()) return true;
+    return std::find(methods.begin(), methods.end(), s.method) != methods.end() ||
+           std::find(methods.begin(), methods.end(), baseMethod(s.method)) != methods.end();
+}
+
+void requireKnownMethods(const std::vector<std::string>& methods) {
+    std::string known;
+    for (const Setting& s : kSettings)
+        if (known.find(s.method + ",") == std::string::npos) known += s.method + ",";
+    for (const std::string& m : methods)
+        if (std::none_of(kSettings.begin(), kSettings.end(), [&](const Setting& s) { return chosen(s, {m}); }))
+            throw Error("--methods", "'" + m + "' is not a method tradeoff measures",
+                        "accepted: " + known.substr(0, known.size() - 1));
+}
+
 // The world's bake in the --bakes folder, WORLD.gfc; empty when there is none.
 std::filesystem::path bakeIn(const std::string& folder, const voxel::World& world) {
     if (folder.empty()) return {};
@@ -243,6 +263,7 @@ void addTradeoffCommand(CLI::App& app) {
         std::vector<double> lodBiases;
         AoFlags detail;  // --lod-bias and --occlusion-culling only
         std::string bakes;
+        std::vector<std::string> methods;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("tradeoff", "Cost and error against the reference of every AO method and preset");
@@ -257,6 +278,10 @@ void addTradeoffCommand(CLI::App& app) {
     CLI::Option* plot = cmd->add_option("--plot", args->plot, "Also draw error against cost to this PNG (needs gnuplot)");
     cmd->add_option("--markdown", args->markdown, "Also write the rows as a Markdown table to this file");
     addDetailFlags(cmd, args->detail);
+    cmd->add_option("--methods", args->methods,
+                    "Only these methods' rows (comma-separated, as the CSV names them; a plain name takes its variants "
+                    "too: gtao is also gtao+temporal)")
+        ->delimiter(',');
     cmd->add_option("--bakes", args->bakes,
                     "Folder of the face cache's bakes, WORLD.gfc for each world (grotto bake); a world without one is "
                     "baked before its cache row");
@@ -267,6 +292,7 @@ void addTradeoffCommand(CLI::App& app) {
         ->check(finiteRange(0.0, 64.0))
         ->excludes(cmd->get_option("--lod-bias"))
         ->excludes(cmd->get_option("--bakes"))
+        ->excludes(cmd->get_option("--methods"))
         ->excludes(plot);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -288,7 +314,8 @@ void addTradeoffCommand(CLI::App& app) {
         std::vector<voxel::World> worlds;
         for (const std::string& w : args->worlds) worlds.push_back(voxel::World::load(w));
         for (const voxel::World& w : worlds) w.camera(args->camera, size.aspect());  // a missing camera fails now
-        if (!lod)
+        requireKnownMethods(args->methods);
+        if (!lod && chosen({"cache", "high", "baked", 0}, args->methods))
             for (const voxel::World& w : worlds) requireMatchingBakeIn(args->bakes, w);
 
         vk::Context ctx;
@@ -322,8 +349,9 @@ void addTradeoffCommand(CLI::App& app) {
                 continue;
             }
             for (const Setting& s : kSettings) {
+                if (!chosen(s, args->methods)) continue;
                 AoFlags flags;
-                flags.set.method = s.method.substr(0, s.method.find_first_of("+/"));  // "gtao+temporal" is gtao
+                flags.set.method = baseMethod(s.method);  // "gtao+temporal" is gtao
                 if (const size_t slash = s.method.find('/'); slash != std::string::npos)
                     flags.set.thickness = s.method.substr(slash + 1);
                 flags.set.quality = s.quality;

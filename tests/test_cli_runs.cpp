@@ -176,6 +176,7 @@ TEST_F(CliErrors, UnknownAoMethodAndTradeoffNonsense) {
     expectRefused("tradeoff --size 16x8 --csv " + csv.string(), "world", csv);
     const fs::path unwritable = dir_ / "missing-dir" / "t.csv";
     expectRefused("tradeoff " + good_.string() + " --size 16x8 --csv " + unwritable.string(), "missing-dir", unwritable);
+    expectRefused("tradeoff " + good_.string() + " --size 16x8 --methods gtao,sao --csv " + csv.string(), "'sao'", csv);
     expectRefused("tradeoff " + good_.string() + " --size 16x8 --csv " + csv.string() + " --plot " +
                       (dir_ / "p.svg").string(), "p.svg", csv);
 }

@@ -33,18 +33,25 @@ TEST(Compare, MeasuresWhatTradeoffMeasuresForTheSameSetting) {
     const std::string env = "GROTTO_CACHE_DIR=" + dir.path.string();
     const std::string world = (test::worldsDir() / "rooms.json").string();
     const test::RunResult t = test::runGrotto(
-        "tradeoff " + world + " --size 96x54 --spp 128 --frames 2 --warmup 1 --csv " + (dir / "t.csv").string(), env);
+        "tradeoff " + world + " --size 96x54 --spp 128 --frames 2 --warmup 1 --methods gtao --csv " + (dir / "t.csv").string(),
+        env);
     ASSERT_EQ(t.exitCode, 0) << t.err;
     std::ifstream csv(dir / "t.csv");
     std::string line;
     double tradeoffRmse = -1.0;
-    while (std::getline(csv, line))
+    std::vector<std::string> methods;  // of the rows --methods gtao gives
+    std::getline(csv, line);          // the header
+    while (std::getline(csv, line)) {
+        methods.push_back(line.substr(0, line.find(',', line.find(',') + 1)));
         if (line.rfind("rooms,gtao,high,", 0) == 0) {
             std::stringstream fields(line);
             std::string field;
             for (int i = 0; i < 7; ++i) std::getline(fields, field, ',');  // world,method,quality,ms_ao,ms_frame,mae,rmse
             tradeoffRmse = std::stod(field);
         }
+    }
+    EXPECT_EQ(methods, (std::vector<std::string>{"rooms,gtao", "rooms,gtao", "rooms,gtao", "rooms,gtao",
+                                                 "rooms,gtao+temporal"}));
     ASSERT_GT(tradeoffRmse, 0.0) << "no gtao high row";
 
     const test::RunResult c = test::runGrotto(
@@ -86,7 +93,7 @@ TEST(Compare, DrawsAndTracesTheWorldsObjects) {
     EXPECT_GT(drawnQuads(c.out), drawnQuads(b.out)) << c.out << b.out;
     // tradeoff measures against the same reference.
     const test::RunResult t = test::runGrotto(
-        "tradeoff " + yard + view + " --frames 1 --warmup 0 --csv " + (dir / "t.csv").string(), env);
+        "tradeoff " + yard + view + " --frames 1 --warmup 0 --methods gtao+temporal --csv " + (dir / "t.csv").string(), env);
     ASSERT_EQ(t.exitCode, 0) << t.err;
     EXPECT_NE(t.out.find("reference from the cache"), std::string::npos) << t.out;
 }
