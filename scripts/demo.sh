@@ -11,4 +11,4 @@ cmake --build --preset release
 rm -rf out/demo  # a fresh sequence each time (flythrough refuses to mix settings)
 mkdir -p out
 build/grotto bake worlds/demo.json --texels 2 --rays 32 --sun-rays 8 -o out/demo.gfc
-build/grotto flythrough worlds/demo.json --path orbit --bake out/demo.gfc --fps 1 --size 640x360 -o out/demo  # 9 frames
+build/grotto flythrough worlds/demo.json --path orbit --bake out/demo.gfc --fps 1 --frames 1-8 --size 640x360 -o out/demo  # the orbit, 45 degrees a frame
