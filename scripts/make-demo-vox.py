@@ -8,6 +8,7 @@ overhangs and interiors to show. Plain Python, no packages: .vox is a few chunks
   scripts/make-demo-vox.py [OUT]   (default worlds/demo.vox)
 """
 import math
+import os
 import struct
 import sys
 
@@ -164,5 +165,4 @@ if __name__ == "__main__":
     out = sys.argv[1] if len(sys.argv) > 1 else "worlds/demo.vox"
     with open(out + ".tmp", "wb") as f:
         f.write(vox_bytes(build()))
-    import os
-    os.replace(out + ".tmp", out)
+    os.replace(out + ".tmp", out)  # whole or untouched
