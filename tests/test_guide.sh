@@ -36,6 +36,8 @@ if ! (cd "$run" && HOME="$run" bash -euxo pipefail "$scratch/guide.sh") > "$scra
     echo "docs/guide.md: the last command above failed" >&2
     exit 1
 fi
-for f in first.png island.gfc island.png island.mp4 island.glb view.png game.png; do
+outputs="first.png island.gfc island.png island.mp4 island.glb view.png game.png"
+[ "$blender" = no ] || outputs+=" island.blend"
+for f in $outputs; do
     test -s "$run/$f" || { echo "docs/guide.md: its commands wrote no $f" >&2; exit 1; }
 done
