@@ -13,9 +13,10 @@ set_target_properties(grotto_engine PROPERTIES EXPORT_NAME frame)
 set_target_properties(grotto_api PROPERTIES EXPORT_NAME engine)
 set_target_properties(grotto_shaders PROPERTIES EXPORT_NAME shaders)
 set_target_properties(grotto_oiio PROPERTIES EXPORT_NAME oiio)
+set_target_properties(grotto_vdb_deps PROPERTIES EXPORT_NAME vdb_deps)
 
 install(TARGETS grotto RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS grotto_api grotto_common grotto_vdb_read grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_oiio
+install(TARGETS grotto_api grotto_common grotto_vdb_read grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_oiio grotto_vdb_deps
         EXPORT GrottoTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY include/grotto DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates the shipped grids in worlds/ with `grotto mkworld` (deterministic).
+# Regenerates the shipped grids in worlds/ with `grotto mkworld`, and the demo's
+# MagicaVoxel model with scripts/make-demo-vox.py (both deterministic).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 grotto=${GROTTO:-build/grotto}
@@ -9,3 +10,4 @@ grotto=${GROTTO:-build/grotto}
 "$grotto" mkworld city   -o worlds/city.vdb   --seed 1
 "$grotto" mkworld sphere -o worlds/sphere.vdb --seed 1
 "$grotto" mkworld houses -o worlds/houses.vdb --seed 1
+python3 scripts/make-demo-vox.py worlds/demo.vox

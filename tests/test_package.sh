@@ -25,9 +25,25 @@ fi
 printf '#include <grotto/grotto.h>\nint main() { grotto::Engine* e = nullptr; return e == nullptr ? 0 : 1; }\n' > "$scratch/alone.cpp"
 "$cxx" -std=c++20 $cxxflags -I"$scratch/prefix/include" -fsyntax-only "$scratch/alone.cpp" ||
     { echo "<grotto/grotto.h> does not compile with only the prefix, Vulkan and GLM" >&2; exit 1; }
+# A game's find_package(Grotto) looks for Vulkan and GLM alone: nothing of
+# OpenVDB's CMake module (Debian's prints "COMPONENT = openvdb" and a warning
+# about Imath) reaches its configure step or the installed package's files.
 cmake -S "$source/examples/embed" -B "$scratch/build" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" \
       -DCMAKE_BUILD_TYPE=Release \
-      -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_CXX_FLAGS="$cxxflags" -DCMAKE_EXE_LINKER_FLAGS="$ldflags" >/dev/null
+      -DCMAKE_CXX_COMPILER="$cxx" -DCMAKE_CXX_FLAGS="$cxxflags" -DCMAKE_EXE_LINKER_FLAGS="$ldflags" \
+      > "$scratch/configure.log" 2>&1 || { cat "$scratch/configure.log" >&2; exit 1; }
+if grep -nE 'COMPONENT|Imath|OpenVDB|openvdb|TBB|Boost' "$scratch/configure.log" >&2; then
+    echo "find_package(Grotto) printed the above: the package pulls in the libraries behind the API" >&2; exit 1
+fi
+# Its CMake files look for no package but Vulkan and GLM, and name no target
+# but its own and theirs (the libraries behind the API are named by their files).
+package=$(find "$scratch/prefix" -path '*cmake/Grotto/*.cmake')
+if grep -hvE '^\s*#' $package | grep -iE 'find_(dependency|package)\(' | grep -viE 'find_(dependency|package)\((Vulkan|glm)\)'; then
+    echo "the installed package looks for the above: a game needs Vulkan and GLM alone" >&2; exit 1
+fi
+if grep -ohE '\b[A-Za-z][A-Za-z0-9_]*::[A-Za-z0-9_]+' $package | sort -u | grep -vE '^(Grotto::[a-z_]+|Vulkan::Vulkan|glm::glm)$'; then
+    echo "the installed package names the targets above: none of them is Grotto's, Vulkan's or GLM's" >&2; exit 1
+fi
 cmake --build "$scratch/build" >/dev/null
 # Each example runs as the last line of its CMakeLists.txt's usage comment says,
 # in a directory where that line's names resolve (the source's worlds/, the
