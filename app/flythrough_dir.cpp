@@ -120,7 +120,7 @@ bool requireSameRun(const fs::path& dir, const json& manifest, const FrameNames&
     if (holdsFrames(dir, names, previous))
         throw Error(file.string(), "holds frames made with other settings: " + difference, hint);
     // No frames yet: a run of those settings that is still starting holds the
-    // manifest (claimDirectory); one refused or killed before its first frame does not.
+    // manifest (claimDirectory); one killed before its first frame does not.
     if (FileLock::heldElsewhere(file))
         throw Error(file.string(), "is a running flythrough's, made with other settings: " + difference,
                     "wait for it to end, or render into another directory");

@@ -32,7 +32,7 @@ nlohmann::json pathManifest(const voxel::CameraPathDesc& path);
 // there with no manifest), or a live run of them holds it (claimDirectory); and
 // for a stats.json that is not a stats file. Writes nothing: called before the
 // directory is made, every refusal leaves it as it was. Returns whether the
-// manifest is to be written: there is none, or a run refused or killed before its
+// manifest is to be written: there is none, or a run killed before its
 // first frame left one of other settings (its stats go with it).
 bool requireSameRun(const std::filesystem::path& dir, const nlohmann::json& manifest, const FrameNames& names);
 

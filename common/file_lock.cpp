@@ -13,7 +13,9 @@
 namespace grotto {
 
 FileLock::FileLock(const std::filesystem::path& file, Mode mode) {
-    fd_ = open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    // Shared: read-only, so another user's file (a farm's) can be held too.
+    fd_ = mode == Mode::Shared ? open(file.c_str(), O_RDONLY | O_CLOEXEC)
+                               : open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
     if (fd_ < 0) throw Error(file.string(), std::string("cannot be opened as a lock: ") + std::strerror(errno));
     while (flock(fd_, mode == Mode::Shared ? LOCK_SH : LOCK_EX) != 0)
         if (errno != EINTR) {
@@ -39,8 +41,9 @@ bool FileLock::tryHold(const std::filesystem::path& file, int& fd) {
 }
 
 bool FileLock::heldElsewhere(const std::filesystem::path& file) {
-    // Read-write: on NFS flock becomes a POSIX lock, whose exclusive kind needs it.
-    const int fd = open(file.c_str(), O_RDWR | O_CLOEXEC);
+    // Read-write where allowed: on NFS flock becomes a POSIX lock, whose exclusive kind needs it.
+    int fd = open(file.c_str(), O_RDWR | O_CLOEXEC);
+    if (fd < 0) fd = open(file.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return false;
     const bool held = flock(fd, LOCK_EX | LOCK_NB) != 0 && errno == EWOULDBLOCK;
     close(fd);  // releases it if it was taken

@@ -9,7 +9,8 @@ namespace grotto {
 class FileLock {
 public:
     enum class Mode { Exclusive, Shared };
-    // Creates the file if needed and waits for the lock; throws grotto::Error.
+    // Waits for the lock; throws grotto::Error. An exclusive lock creates the
+    // file if needed; a shared one needs it there.
     explicit FileLock(const std::filesystem::path& file, Mode mode = Mode::Exclusive);
     ~FileLock();
     FileLock(FileLock&& other) noexcept;
