@@ -172,8 +172,6 @@ void run(const Args& a) {
     vk::Context ctx;
     const FrameShape shape = worldFrameShape(world.desc(), size.width, size.height, ao);
     requireRenderFits(ctx, shape, "--size");
-    // The world as the path's edits have made it by the first frame rendered;
-    // later edits are applied as their frames come. Objects are drawn at each frame's poses.
     const voxel::CameraDesc lens = world.camera("", size.aspect());
     std::optional<RenderSession> session;
     session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
@@ -221,6 +219,8 @@ void run(const Args& a) {
     std::optional<StatsRecorder> stats;  // this run's frame entries
     if (!a.output.empty()) stats.emplace(dir);
     if (!bakeGiven) prepareFaceCache(*session, a.ao);  // a bake made here: only once frames are to be rendered
+    // The world as the path's edits have made it by the first frame rendered;
+    // later edits are applied as their frames come. Objects are drawn at each frame's poses.
     session->playPath(desc, lens);
     session->startPathAt(double(start - 1) / a.fps);
     {
