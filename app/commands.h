@@ -20,4 +20,9 @@ void addBakeCommand(CLI::App& app);
 void addPathCommand(CLI::App& app);
 void addConvertCommand(CLI::App& app);
 
+// Every option of `app` and of its subcommands that takes a value refuses an
+// empty one, naming the flag (exit 2): CLI11 would take '' as the type's empty
+// value, so `--chunk ''` meant no chunk and `--radius ''` the default.
+void refuseEmptyValues(CLI::App& app);
+
 }  // namespace grotto::app

@@ -12,10 +12,11 @@
 // and recorded in stats.json are skipped, so an interrupted run resumes: it
 // re-renders from K frames before the first missing one (history again) and
 // writes only missing frames.
-// DIR/flythrough.json records the settings so a resume never mixes sequences,
-// and DIR/stats.json keeps every run's frame times, merged by frame number as
-// frames are written (app/flythrough_dir.h). Frames are read back and written
-// while the next ones render (app/frame_writer.h).
+// DIR/flythrough.json records the settings (and the --bake) so a resume never
+// mixes sequences, and DIR/stats.json keeps every run's frame times, merged by
+// frame number as frames are written (app/flythrough_dir.h). Every input is
+// checked before DIR is touched. Frames are read back and written while the
+// next ones render (app/frame_writer.h).
 #include "app/commands.h"
 #include "app/flythrough_dir.h"
 #include "app/frame_names.h"
@@ -30,6 +31,7 @@
 #include "engine/image_output.h"
 #include "engine/frame/render_memory.h"
 #include "engine/session.h"
+#include "voxel/face_cache_file.h"
 #include "voxel/world.h"
 
 #include <nlohmann/json.hpp>
@@ -116,6 +118,22 @@ json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptio
     return m;
 }
 
+// The --bake file as the manifest records it, so chunks never mix bakes. A bake
+// is a deterministic function of the world's solid voxels and of these settings
+// (farm parts join byte for byte into one machine's bake), so they identify it:
+// hashing its texels would read up to gigabytes again on every chunk and tell
+// nothing more. Its rays are the texels' own, which its header does not hold.
+json bakeManifest(RenderSession& session) {
+    const LiveFaceCache& cache = *session.scene().faceCache();
+    const voxel::FaceBakeSettings& s = cache.settings();
+    char voxels[17];
+    std::snprintf(voxels, sizeof voxels, "%016llx", (unsigned long long)voxel::solidVoxelHash(session.world()));
+    return {{"voxels", voxels},        {"faces", cache.faces().size()},
+            {"radius", s.radius},      {"texels", s.texelsPerSide},
+            {"rays", s.rays},          {"sun_rays", s.sunRays},
+            {"sun", {s.sunDirection.x, s.sunDirection.y, s.sunDirection.z}}, {"sun_angle", s.sunAngleDegrees}};
+}
+
 // Host memory one frame in flight holds: decoded images and encoded pixels.
 size_t bytesPerFrame(const FrameShape& shape, const FrameEncoding& encoding, bool exr) {
     const size_t n = size_t(shape.width) * shape.height;
@@ -151,26 +169,33 @@ void run(const Args& a) {
     if (std::find(encoding.exrAovs.begin(), encoding.exrAovs.end(), kBentNormalAov) != encoding.exrAovs.end() &&
         !(ao.enabled && ao.method == AoMethod::Vbao))
         throw Error("--aovs", "bent_normal is VBAO's", "add --ao vbao, or leave bent_normal out");
-    vk::Context ctx;  // first: a size the device cannot hold is refused before the directory is made
+    vk::Context ctx;
     const FrameShape shape = worldFrameShape(world.desc(), size.width, size.height, ao);
     requireRenderFits(ctx, shape, "--size");
+    const voxel::CameraDesc lens = world.camera("", size.aspect());
+    std::optional<RenderSession> session;
+    session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
+    const bool bakeGiven = !a.ao.bake.empty();
+    if (bakeGiven) prepareFaceCache(*session, a.ao);  // refused (not this world's, damaged) before the directory is touched
+    json manifest = runManifest(a, desc, ao, detail, names, encoding);
+    if (bakeGiven) manifest["bake"] = bakeManifest(*session);
 
     // Frames to write: those of the range not in DIR whole and recorded yet. The
     // video takes them all.
     const fs::path dir = a.output;
     std::vector<int> missing;
+    std::optional<FileLock> claim;  // held while the run lasts
     if (!a.output.empty()) {
+        // Every refusal comes before the directory or anything in it is made: a
+        // refused run leaves it as it was.
         std::error_code ec;
+        if (fs::is_directory(dir, ec)) requireSameRun(dir, manifest, names);
         fs::create_directories(dir, ec);
         if (!fs::is_directory(dir)) throw Error(dir.string(), "cannot create the output directory", ec ? ec.message() : "");
-        {
-            // Chunks of one sequence may start together in one directory (a render
-            // farm): they agree on the manifest one at a time, and each clears
-            // only the temporary files of runs that died (a live run's are locked).
-            FileLock lock(dir / kFlythroughLock);
-            requireSameRun(dir, runManifest(a, desc, ao, detail, names, encoding), names);
-            removeAbandonedFiles(dir, names);
-        }
+        // Chunks of one sequence may start together in one directory (a render
+        // farm): they claim it one at a time, and each clears only the temporary
+        // files of runs that died (a live run's are locked).
+        claim.emplace(claimDirectory(dir, manifest, names));
         missing = framesToWrite(dir, names, range.first, range.last, size.width, size.height);
         if (missing.empty() && a.video.empty()) {
             std::printf("all %d frames already in %s\n", range.count(), dir.c_str());
@@ -193,12 +218,9 @@ void run(const Args& a) {
     const int start = std::max(1, first - warmup);
     std::optional<StatsRecorder> stats;  // this run's frame entries
     if (!a.output.empty()) stats.emplace(dir);
+    if (!bakeGiven) prepareFaceCache(*session, a.ao);  // a bake made here: only once frames are to be rendered
     // The world as the path's edits have made it by the first frame rendered;
     // later edits are applied as their frames come. Objects are drawn at each frame's poses.
-    const voxel::CameraDesc lens = world.camera("", size.aspect());
-    std::optional<RenderSession> session;
-    session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
-    prepareFaceCache(*session, a.ao);
     session->playPath(desc, lens);
     session->startPathAt(double(start - 1) / a.fps);
     {

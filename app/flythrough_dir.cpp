@@ -104,25 +104,38 @@ bool holdsFrames(const fs::path& dir, const FrameNames& names, const json& previ
 
 }  // namespace
 
-void requireSameRun(const fs::path& dir, const json& manifest, const FrameNames& names) {
+bool requireSameRun(const fs::path& dir, const json& manifest, const FrameNames& names) {
     const fs::path file = dir / "flythrough.json";
     const std::string hint = "render into another directory, or delete this one to start over";
-    if (fs::exists(file)) {
-        const json previous = readDirectoryJson(file, hint);
-        if (previous == manifest) return;
-        if (holdsFrames(dir, names, previous))
-            throw Error(file.string(), "holds frames made with other settings: " +
-                                           (previous.is_object() ? firstDifference(previous, manifest) : "it does not parse"),
-                        hint);
-        // No frames: a run refused or killed before its first one left the
-        // manifest (and maybe stats of frames since deleted). Start afresh.
-        std::error_code ec;
-        fs::remove(dir / "stats.json", ec);
-    } else if (holdsFrames(dir, names, json())) {
-        throw Error(dir.string(), "already holds frames but no flythrough.json saying how they were made",
-                    "render into another directory");
+    earlierFrames(dir / "stats.json");  // refused here, before anything is written, when it is not a stats file
+    if (!fs::exists(file)) {
+        if (holdsFrames(dir, names, json()))
+            throw Error(dir.string(), "already holds frames but no flythrough.json saying how they were made",
+                        "render into another directory");
+        return true;
     }
-    writeJson(file, manifest);
+    const json previous = readDirectoryJson(file, hint);
+    if (previous == manifest) return false;
+    const std::string difference = previous.is_object() ? firstDifference(previous, manifest) : "it does not parse";
+    if (holdsFrames(dir, names, previous))
+        throw Error(file.string(), "holds frames made with other settings: " + difference, hint);
+    // No frames yet: a run of those settings that is still starting holds the
+    // manifest (claimDirectory); one killed before its first frame does not.
+    if (FileLock::heldElsewhere(file))
+        throw Error(file.string(), "is a running flythrough's, made with other settings: " + difference,
+                    "wait for it to end, or render into another directory");
+    return true;
+}
+
+FileLock claimDirectory(const fs::path& dir, const json& manifest, const FrameNames& names) {
+    FileLock lock(dir / kFlythroughLock);
+    if (requireSameRun(dir, manifest, names)) {
+        std::error_code ec;
+        fs::remove(dir / "stats.json", ec);  // a stale manifest's (or none's): the frames they list are gone
+        writeJson(dir / "flythrough.json", manifest);
+    }
+    removeAbandonedFiles(dir, names);
+    return FileLock(dir / "flythrough.json", FileLock::Mode::Shared);  // taken before `lock` is let go
 }
 
 void removeAbandonedFiles(const fs::path& dir, const FrameNames& names) {

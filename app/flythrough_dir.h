@@ -2,9 +2,11 @@
 // What a flythrough keeps in its output directory beside the frames: the
 // manifest (DIR/flythrough.json: the settings that decide the frames, so a
 // resumed run never mixes sequences), the stats (DIR/stats.json: every run's
-// frame times, merged by frame number) and the lock that serialises the runs
-// sharing the directory while they read and write those two.
+// frame times, merged by frame number), the lock that serialises the runs
+// sharing the directory while they read and write those two, and the shared
+// lock on the manifest by which a run says it is alive.
 #include "app/frame_names.h"
+#include "common/file_lock.h"
 #include "engine/camera_path.h"
 
 #include <nlohmann/json.hpp>
@@ -24,13 +26,22 @@ inline constexpr const char* kFlythroughLock = ".flythrough.lock";
 // The path as the manifest records it: keys, edits and the camera settings.
 nlohmann::json pathManifest(const voxel::CameraPathDesc& path);
 
-// Frames already in `dir` are kept only when they came from the same settings,
-// recorded in dir/flythrough.json; otherwise (or when frames `names` matches are
-// there with no manifest) throws grotto::Error (input) naming the first setting
-// that differs. Writes the manifest when there is none, or when the directory
-// holds no frames (a run refused or killed before its first frame left it; the
-// stats go with it). Call with the lock held.
-void requireSameRun(const std::filesystem::path& dir, const nlohmann::json& manifest, const FrameNames& names);
+// Whether `dir` may take a run of `manifest` (its settings): throws grotto::Error
+// (input) naming the first setting that differs when dir/flythrough.json records
+// others and the directory holds frames of them (or frames `names` matches are
+// there with no manifest), or a live run of them holds it (claimDirectory); and
+// for a stats.json that is not a stats file. Writes nothing: called before the
+// directory is made, every refusal leaves it as it was. Returns whether the
+// manifest is to be written: there is none, or a run killed before its
+// first frame left one of other settings (its stats go with it).
+bool requireSameRun(const std::filesystem::path& dir, const nlohmann::json& manifest, const FrameNames& names);
+
+// Takes `dir` for this run: with the directory's lock held, checks it again
+// (requireSameRun: chunks may have started together), writes the manifest, clears
+// what killed runs left (removeAbandonedFiles), and returns a shared lock on the
+// manifest to hold while the run lasts. That lock tells a run of other settings
+// that this one is alive, though none of its frames may be written yet.
+FileLock claimDirectory(const std::filesystem::path& dir, const nlohmann::json& manifest, const FrameNames& names);
 
 // Removes what killed runs left: temporaries of frames, stats and manifest.
 void removeAbandonedFiles(const std::filesystem::path& dir, const FrameNames& names);

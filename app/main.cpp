@@ -35,6 +35,7 @@ int main(int argc, char** argv) {
     grotto::app::addBakeCommand(app);
     grotto::app::addPathCommand(app);
     grotto::app::addConvertCommand(app);
+    grotto::app::refuseEmptyValues(app);
     // Bare `grotto` is a usage error, but one worth the whole usage: on stdout,
     // with the usual one line on stderr.
     if (argc < 2) {

@@ -1,4 +1,5 @@
 #include "app/options.h"
+#include "app/commands.h"
 
 #include "common/file_kind.h"
 #include "grotto/error.h"
@@ -288,6 +289,18 @@ CLI::Validator wholeRange(int min, int max) {
             return {};
         },
         "INT in " + accepted);
+}
+
+void refuseEmptyValues(CLI::App& app) {
+    // No description: --help shows the options as they were.
+    const CLI::Validator nonEmpty(
+        [](std::string& text) {
+            return text.empty() ? std::string("an empty value is not accepted: give one, or leave the flag out") : "";
+        },
+        "");
+    for (CLI::Option* option : app.get_options())  // first of its checks (transform puts it there): the message says why
+        if (option->get_expected_min() > 0) option->transform(nonEmpty);
+    for (CLI::App* sub : app.get_subcommands({})) refuseEmptyValues(*sub);  // option groups are among them
 }
 
 double median(std::vector<double> v) {
