@@ -97,6 +97,7 @@ TEST_F(HostileBakes, MergeRefusesAPartBakedWithOtherSettings) {
     };
     for (const Other& o : {Other{"", 8, "rays 8"}, Other{"--radius 2", 4, "AO radius 2"}, Other{"--texels 2", 4, "texels per side 2"}}) {
         const fs::path p2 = baked("p2.gfc", std::string("--chunk 2/3 ") + o.flags, o.rays);
+        fs::remove(out);  // what an accepted mix wrote
         expectRefused("bake --merge " + p1.string() + " " + p2.string() + " " + p3.string() + " -o " + out.string(),
                       "p2.gfc: " + std::string(o.setting), out);
     }
