@@ -46,7 +46,7 @@ TEST_F(Bake, PartsJoinedInAnyOrderAreTheWholeBakeByteForByte) {
     const RunResult r = runGrotto("bake --merge " + parts + "-o " + merged.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const std::string a = bytes(whole), b = bytes(merged);
-    EXPECT_GT(a.size(), 88u + 100u * 4u * 24u);  // a header and hundreds of faces of 2 x 2 texels
+    EXPECT_GT(a.size(), 96u + 100u * 4u * 24u);  // a header and hundreds of faces of 2 x 2 texels
     EXPECT_TRUE(a == b);
 }
 
@@ -90,7 +90,7 @@ TEST_F(Bake, BadArgumentsPartsAndFilesAreRefused) {
     for (int i = 0; i < 8; ++i) huge[80 + i] = char(0x7f);
     damaged("huge.gfc", huge, "faces");
     std::string counts = good;  // a texel with more open rays than rays
-    counts[88 + 4] = char(0xff);
+    counts[96 + 4] = char(0xff);
     damaged("counts.gfc", counts, "texel 0");
 }
 
