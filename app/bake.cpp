@@ -30,13 +30,10 @@ std::pair<uint64_t, uint64_t> parseChunk(const std::string& text) {
     return {std::stoull(m[1]), std::stoull(m[2])};
 }
 
-void merge(const std::vector<std::string>& partNames, const std::filesystem::path& out) {
-    std::vector<voxel::FaceCacheFile> parts;
-    std::vector<std::filesystem::path> paths;
-    for (const std::string& p : partNames) parts.push_back(voxel::loadFaceCache(p)), paths.emplace_back(p);
-    const voxel::FaceCacheFile whole = voxel::mergeFaceCaches(std::move(parts), paths);
+void merge(const std::vector<std::string>& parts, const std::filesystem::path& out) {
+    const voxel::FaceCacheFile whole = voxel::mergeFaceCaches({parts.begin(), parts.end()});
     voxel::saveFaceCache(whole, out);
-    std::printf("wrote %s (%zu parts, %llu faces)\n", out.c_str(), paths.size(), (unsigned long long)whole.totalFaces);
+    std::printf("wrote %s (%zu parts, %llu faces)\n", out.c_str(), parts.size(), (unsigned long long)whole.header.totalFaces);
 }
 
 }  // namespace
@@ -65,6 +62,7 @@ void addBakeCommand(CLI::App& app) {
         const std::filesystem::path out = args->output;
         if (out.extension() != ".gfc") throw Error(out.string(), "output must end in .gfc", "a Grotto face cache");
         requireOutputPath(out);
+        removeAbandonedTemporariesOf(out);
         if (!args->merge.empty()) {
             if (!args->world.empty() || !args->chunk.empty())
                 throw Error("--merge", "joins parts alone", "give no WORLD and no --chunk with it");
@@ -81,13 +79,14 @@ void addBakeCommand(CLI::App& app) {
             const auto [k, n] = parseChunk(args->chunk);
             first = faces.size() * (k - 1) / n, count = faces.size() * k / n - first;
         }
-        voxel::FaceCacheFile cache{.key = voxel::faceCacheKey(world, radius, args->texels),
-                                   .totalFaces = faces.size(), .firstFace = first};
-        cache.texels.resize(count * args->texels * args->texels);
         const voxel::Lighting& light = world.desc().lighting;
         const voxel::FaceBakeSettings settings{.radius = radius, .texelsPerSide = args->texels, .rays = args->rays,
                                                .sunRays = args->sunRays, .sunDirection = glm::dvec3(light.sunDirection),
                                                .sunAngleDegrees = double(light.sunAngle)};
+        voxel::FaceCacheFile cache{.header = {.key = voxel::faceCacheKey(world, radius, args->texels),
+                                              .rays = settings.rays, .sunRays = voxel::sunRaysPerTexel(settings),
+                                              .totalFaces = faces.size(), .firstFace = first, .faceCount = count}};
+        cache.texels.resize(cache.header.texelCount());
         // A hundred steps, each a run of faces on every core.
         const int steps = int(std::min<uint64_t>(100, std::max<uint64_t>(count, 1)));
         Progress progress(steps, stderr);

@@ -39,6 +39,7 @@ void addExportMeshCommand(CLI::App& app) {
         if (ext != ".ply" && ext != ".glb" && ext != ".gltf")
             throw Error(out.string(), "output must end in .ply, .glb or .gltf");
         requireOutputPath(out);
+        removeAbandonedTemporariesOf(out);
         const voxel::World world = voxel::World::load(args->world);
         if (ext == ".ply") {
             const voxel::Mesh mesh = world.mesh({.greedy = !args->faces});

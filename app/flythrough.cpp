@@ -203,10 +203,7 @@ void run(const Args& a) {
         }
     }
     const bool video = !a.video.empty();
-    if (video) {  // what killed runs left of this video
-        const fs::path target = a.video, videoDir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
-        removeAbandonedTemporaries(videoDir, [&](const std::string& name) { return name == target.filename().string(); });
-    }
+    if (video) removeAbandonedTemporariesOf(a.video);  // what killed runs left of this video
     // History: start K frames before the first frame to write. A split run's
     // history starts afresh where the whole run's is full; the difference
     // shrinks by (n-1)/n a frame (n = the history length, 16), so measured at

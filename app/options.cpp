@@ -5,6 +5,7 @@
 #include "grotto/error.h"
 #include "common/overloaded.h"
 #include "engine/scene/path_edits.h"
+#include "voxel/face_cache_file.h"
 #include "voxel/gltf/gltf_camera.h"
 #include "voxel/settings_table.h"
 
@@ -182,6 +183,10 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
             shaped |= s.presetShaped && (f.set.*(*m)).has_value();
     });
     if (shaped) o.quality = "custom";
+    // A --bake that is not this world's is refused now, from its header alone,
+    // before a device or any output is made and before its texels are read.
+    if (!f.bake.empty())
+        voxel::requireBakeOf(world, double(o.estimator.radius), voxel::countExposedFaces(world).faces, f.bake);
     return o;
 }
 

@@ -74,7 +74,8 @@ void addDetailFlags(CLI::App* cmd, AoFlags& flags);
 // world's slices, steps and rays): what a viewer starts from.
 voxel::AoDesc aoDescWithFlags(const voxel::AoDesc& world, const AoFlags& flags);
 
-// Preset, world file, then flags; throws grotto::Error (input) for nonsense.
+// Preset, world file, then flags; throws grotto::Error (input) for nonsense,
+// and for a --bake whose header is not this world's (voxel::requireBakeOf).
 AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
 
 // --ao cache's light for the session's world: the --bake file (refused, naming the

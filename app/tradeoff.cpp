@@ -85,10 +85,8 @@ std::filesystem::path bakeIn(const std::string& folder, const voxel::World& worl
 void requireMatchingBakeIn(const std::string& folder, const voxel::World& world) {
     const std::filesystem::path bake = bakeIn(folder, world);
     if (bake.empty()) return;
-    const voxel::FaceCacheFile file = voxel::loadFaceCache(bake);
     const double radius = double(resolveAo(world, {}).estimator.radius);
-    voxel::requireMatchingBake(file, voxel::faceCacheKey(world, radius, file.key.texelsPerSide),
-                               voxel::countExposedFaces(world).faces, bake);
+    voxel::requireBakeOf(world, radius, voxel::countExposedFaces(world).faces, bake);
 }
 
 bool onPath(const std::string& tool) {

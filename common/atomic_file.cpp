@@ -5,6 +5,7 @@
 #include "file_lock.h"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/file.h>
 #include <unistd.h>
 
@@ -142,13 +143,15 @@ void writeAtomically(const fs::path& target, std::string_view bytes) {
 }
 
 int removeAbandonedTemporaries(const fs::path& dir, const std::function<bool(const std::string&)>& ours) {
-    static const std::regex pattern(R"(\.(.*)\.tmp[0-9]+-[0-9]+(\.[^.]*)?)");
+    static const std::regex pattern(R"(\.(.*)\.tmp([0-9]{1,9})-[0-9]+(\.[^.]*)?)");
     int removed = 0;
     std::error_code ec;
     for (const auto& entry : fs::directory_iterator(dir, ec)) {
         const std::string name = entry.path().filename().string();
         std::smatch m;
-        if (!std::regex_match(name, m, pattern) || !ours(m[1].str() + m[2].str())) continue;
+        if (!std::regex_match(name, m, pattern) || !ours(m[1].str() + m[3].str())) continue;
+        if (const pid_t pid = pid_t(std::stol(m[2].str())); pid > 0 && (kill(pid, 0) == 0 || errno == EPERM))
+            continue;  // its process lives: between creating the file and locking it, or still writing
         int fd = -1;
         if (!FileLock::tryHold(entry.path(), fd)) continue;  // a live run is writing it
         std::error_code rm;
@@ -156,6 +159,11 @@ int removeAbandonedTemporaries(const fs::path& dir, const std::function<bool(con
         close(fd);
     }
     return removed;
+}
+
+int removeAbandonedTemporariesOf(const fs::path& target) {
+    const fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    return removeAbandonedTemporaries(dir, [name = target.filename().string()](const std::string& t) { return t == name; });
 }
 
 }  // namespace grotto

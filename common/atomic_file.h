@@ -51,9 +51,12 @@ private:
 };
 
 // Removes the temporary files in `dir` that PendingFile left behind when its
-// process died, for targets whose file name `ours` accepts; files that a live
-// writer still holds are kept. Returns how many were removed.
+// process died (kill -9, a crash), for targets whose file name `ours` accepts.
+// One is kept while the process named in it lives or anyone holds its lock: a
+// live writer's, or one just created and not yet locked. Returns how many were removed.
 int removeAbandonedTemporaries(const std::filesystem::path& dir,
                                const std::function<bool(const std::string& target)>& ours);
+// The same for one output: what killed runs writing `target` left beside it.
+int removeAbandonedTemporariesOf(const std::filesystem::path& target);
 
 }  // namespace grotto

@@ -22,6 +22,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
             std::fprintf(stderr, "an accepted texel is inconsistent\n");
             std::abort();
         }
-    if (cache.firstFace + cache.faceCount() > cache.totalFaces) std::abort();
+    const grotto::voxel::FaceCacheHeader& h = cache.header;
+    if (h.firstFace + h.faceCount > h.totalFaces || cache.texels.size() != h.texelCount()) std::abort();
     return 0;
 }

@@ -19,8 +19,9 @@ int main(int argc, char** argv) {
         const grotto::voxel::BrickTable table(world);
         const auto faces = grotto::voxel::exposedFaces(table, world);
         for (uint32_t k : {1u, 2u}) {
-            grotto::voxel::FaceCacheFile cache{.key = grotto::voxel::faceCacheKey(world, 4.0, k), .totalFaces = faces.size()};
-            cache.texels.resize(faces.size() * k * k);
+            grotto::voxel::FaceCacheFile cache{.header = {.key = grotto::voxel::faceCacheKey(world, 4.0, k), .rays = 4,
+                                                          .sunRays = 1, .totalFaces = faces.size(), .faceCount = faces.size()}};
+            cache.texels.resize(cache.header.texelCount());
             grotto::voxel::bakeFaces(table, world, faces, {.texelsPerSide = k, .rays = 4, .sunRays = 1}, cache.texels);
             grotto::voxel::saveFaceCache(cache, dir / (kind + "-k" + std::to_string(k) + ".gfc"));
         }

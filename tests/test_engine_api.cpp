@@ -162,8 +162,9 @@ TEST(EngineApi, LoadsAWorldsBakeAndRefusesAnotherWorlds) {
     auto writeBake = [&](const voxel::World& w, const std::filesystem::path& file) {
         const voxel::BrickTable table(w);
         const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, w);
-        voxel::FaceCacheFile cache{.key = voxel::faceCacheKey(w, radius, 2), .totalFaces = faces.size()};
-        cache.texels.resize(faces.size() * 4);
+        voxel::FaceCacheFile cache{.header = {.key = voxel::faceCacheKey(w, radius, 2), .rays = 8, .sunRays = 1,
+                                              .totalFaces = faces.size(), .faceCount = faces.size()}};
+        cache.texels.resize(cache.header.texelCount());
         voxel::bakeFaces(table, w, faces,
                          {.radius = radius, .texelsPerSide = 2, .rays = 8, .sunRays = 1,
                           .sunDirection = glm::dvec3(w.desc().lighting.sunDirection)},

@@ -58,7 +58,7 @@ class TexelTracer {
 public:
     TexelTracer(const BrickTable& table, const World& world, const FaceBakeSettings& s)
         : table_(table), s_(s), tAo_(s.radius / world.voxelSize()), sun_(glm::normalize(s.sunDirection)),
-          pointSun_(!(s.sunAngleDegrees > 0.0)), sunRays_(pointSun_ ? std::min(s.sunRays, 1u) : s.sunRays),
+          pointSun_(!(s.sunAngleDegrees > 0.0)), sunRays_(sunRaysPerTexel(s)),
           cosHalf_(std::cos(0.5 * s.sunAngleDegrees * std::numbers::pi / 180.0)) {
         if (!(s.radius > 0.0 && std::isfinite(s.radius)))
             throw Error("radius", std::to_string(s.radius) + " is out of range", "accepted: > 0 world units");

@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -27,6 +28,11 @@ struct FaceBakeSettings {
     double sunAngleDegrees = 0.0;    // the disc's angular diameter; 0: a point
     double epsilon = 1e-4;           // rays leave this far (voxels) in front of the face
 };
+
+// The rays a texel gets over the sun's disc: one for a point sun, whatever sunRays says.
+inline uint32_t sunRaysPerTexel(const FaceBakeSettings& s) {
+    return s.sunAngleDegrees > 0.0 ? s.sunRays : std::min(s.sunRays, 1u);
+}
 
 // Adds `rays` and `sunRays` more to each texel of `faces` (texels: faces.size() x
 // k x k, face-major, then j, then i), continuing each texel's sequence from the

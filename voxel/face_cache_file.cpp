@@ -4,18 +4,20 @@
 #include "grotto/error.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
-#include <sstream>
+#include <optional>
 
 namespace grotto::voxel {
 
 namespace {
 
 constexpr char kMagic[8] = {'G', 'R', 'O', 'T', 'T', 'O', 'F', 'C'};
-constexpr uint32_t kVersion = 1;
-constexpr size_t kHeaderBytes = 88;
+constexpr uint32_t kVersion = 2;  // 2: the rays a texel recorded
+constexpr size_t kHeaderBytes = 96;
 constexpr size_t kTexelBytes = 24;
 constexpr uint32_t kMaxTexelsPerSide = 16;
 
@@ -34,10 +36,35 @@ template <class T> T take(const std::string& in, size_t& at) {
     return v;
 }
 
-std::string fmt(glm::dvec3 v) {
-    std::ostringstream s;
-    s << "(" << v.x << ", " << v.y << ", " << v.z << ")";
-    return s.str();
+// A double in its shortest exact form: equal texts are equal values.
+std::string exact(double v) {
+    char text[32];
+    return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
+}
+
+// What two headers record differently, first of: the world (its voxels, its
+// faces), then every setting the texels were baked with.
+struct Difference {
+    std::string setting, value, other;
+};
+std::optional<Difference> firstDifference(const FaceCacheHeader& a, const FaceCacheHeader& b) {
+    auto settings = [](const FaceCacheHeader& h) -> std::vector<std::pair<std::string, std::string>> {
+        const glm::dvec3 s = h.key.sunDirection;
+        char hash[20];
+        std::snprintf(hash, sizeof hash, "%016llx", (unsigned long long)h.key.voxelHash);
+        return {{"voxel hash", hash},
+                {"world's faces", std::to_string(h.totalFaces)},
+                {"AO radius", exact(h.key.radiusVoxels) + " voxels"},
+                {"texels per side", std::to_string(h.key.texelsPerSide)},
+                {"sun direction", "(" + exact(s.x) + ", " + exact(s.y) + ", " + exact(s.z) + ")"},
+                {"sun angle", exact(h.key.sunAngleDegrees) + " degrees"},
+                {"rays", std::to_string(h.rays) + " a texel"},
+                {"sun rays", std::to_string(h.sunRays) + " a texel"}};
+    };
+    const auto x = settings(a), y = settings(b);
+    for (size_t k = 0; k < x.size(); ++k)
+        if (x[k].second != y[k].second) return Difference{x[k].first, x[k].second, y[k].second};
+    return std::nullopt;
 }
 
 }  // namespace
@@ -66,18 +93,24 @@ FaceCacheKey faceCacheKey(const World& world, double radius, uint32_t texelsPerS
 }
 
 void saveFaceCache(const FaceCacheFile& c, const std::filesystem::path& path) {
+    const FaceCacheHeader& h = c.header;
+    if (c.texels.size() != h.texelCount())
+        throw Error::internal(path.string(), "a face cache of " + std::to_string(c.texels.size()) + " texels where its header says " +
+                                                 std::to_string(h.texelCount()));
     std::string out;
     out.reserve(kHeaderBytes + c.texels.size() * kTexelBytes);
     out.append(kMagic, sizeof kMagic);
     put(out, kVersion);
-    put(out, c.key.texelsPerSide);
-    put(out, c.key.voxelHash);
-    put(out, c.key.radiusVoxels);
-    for (int a = 0; a < 3; ++a) put(out, c.key.sunDirection[a]);
-    put(out, c.key.sunAngleDegrees);
-    put(out, c.totalFaces);
-    put(out, c.firstFace);
-    put(out, c.faceCount());
+    put(out, h.key.texelsPerSide);
+    put(out, h.key.voxelHash);
+    put(out, h.key.radiusVoxels);
+    for (int a = 0; a < 3; ++a) put(out, h.key.sunDirection[a]);
+    put(out, h.key.sunAngleDegrees);
+    put(out, h.totalFaces);
+    put(out, h.firstFace);
+    put(out, h.faceCount);
+    put(out, h.rays);
+    put(out, h.sunRays);
     for (const FaceTexel& t : c.texels) {
         put(out, t.samples), put(out, t.open), put(out, t.skyHorizon), put(out, t.skyZenith);
         put(out, t.sunSamples), put(out, t.sunOpen);
@@ -85,7 +118,7 @@ void saveFaceCache(const FaceCacheFile& c, const std::filesystem::path& path) {
     writeAtomically(path, out);
 }
 
-FaceCacheFile loadFaceCache(const std::filesystem::path& path) {
+FaceCacheHeader readFaceCacheHeader(const std::filesystem::path& path) {
     const std::string name = path.string();
     std::error_code ec;
     const uintmax_t size = std::filesystem::file_size(path, ec);
@@ -98,90 +131,132 @@ FaceCacheFile loadFaceCache(const std::filesystem::path& path) {
     size_t at = sizeof kMagic;
     if (const uint32_t v = take<uint32_t>(head, at); v != kVersion)
         throw Error(name, "version " + std::to_string(v) + " is not this Grotto's", "accepted: " + std::to_string(kVersion) + "; bake it again");
-    FaceCacheFile c;
-    c.key.texelsPerSide = take<uint32_t>(head, at);
-    if (c.key.texelsPerSide == 0 || c.key.texelsPerSide > kMaxTexelsPerSide)
-        throw Error(name, "texels per side " + std::to_string(c.key.texelsPerSide) + " is out of range", "accepted: 1 to 16");
-    c.key.voxelHash = take<uint64_t>(head, at);
-    c.key.radiusVoxels = take<double>(head, at);
-    for (int a = 0; a < 3; ++a) c.key.sunDirection[a] = take<double>(head, at);
-    c.key.sunAngleDegrees = take<double>(head, at);
-    if (!(c.key.radiusVoxels > 0.0 && std::isfinite(c.key.radiusVoxels)))
+    FaceCacheHeader h;
+    h.key.texelsPerSide = take<uint32_t>(head, at);
+    if (h.key.texelsPerSide == 0 || h.key.texelsPerSide > kMaxTexelsPerSide)
+        throw Error(name, "texels per side " + std::to_string(h.key.texelsPerSide) + " is out of range", "accepted: 1 to 16");
+    h.key.voxelHash = take<uint64_t>(head, at);
+    h.key.radiusVoxels = take<double>(head, at);
+    for (int a = 0; a < 3; ++a) h.key.sunDirection[a] = take<double>(head, at);
+    h.key.sunAngleDegrees = take<double>(head, at);
+    if (!(h.key.radiusVoxels > 0.0 && std::isfinite(h.key.radiusVoxels)))
         throw Error(name, "radius: not a positive number of voxels");
-    if (!std::isfinite(c.key.sunDirection.x + c.key.sunDirection.y + c.key.sunDirection.z + c.key.sunAngleDegrees))
+    if (!std::isfinite(h.key.sunDirection.x + h.key.sunDirection.y + h.key.sunDirection.z + h.key.sunAngleDegrees))
         throw Error(name, "sun: not finite");
-    c.totalFaces = take<uint64_t>(head, at);
-    c.firstFace = take<uint64_t>(head, at);
-    const uint64_t count = take<uint64_t>(head, at);
-    if (c.firstFace > c.totalFaces || count > c.totalFaces - c.firstFace)
-        throw Error(name, "faces: the run " + std::to_string(c.firstFace) + " + " + std::to_string(count) +
-                              " lies outside the world's " + std::to_string(c.totalFaces));
-    const uint64_t perFace = uint64_t(c.key.texelsPerSide) * c.key.texelsPerSide;
-    // Checked before allocating: the texels must be exactly the rest of the file.
-    if (count > (size - kHeaderBytes) / (perFace * kTexelBytes) || size - kHeaderBytes != count * perFace * kTexelBytes)
+    h.totalFaces = take<uint64_t>(head, at);
+    h.firstFace = take<uint64_t>(head, at);
+    h.faceCount = take<uint64_t>(head, at);
+    if (h.firstFace > h.totalFaces || h.faceCount > h.totalFaces - h.firstFace)
+        throw Error(name, "faces: the run " + std::to_string(h.firstFace) + " + " + std::to_string(h.faceCount) +
+                              " lies outside the world's " + std::to_string(h.totalFaces));
+    h.rays = take<uint32_t>(head, at);
+    h.sunRays = take<uint32_t>(head, at);
+    if (h.rays == 0 || h.sunRays == 0) throw Error(name, "rays: " + std::to_string(h.rays) + " a texel and " +
+                                                         std::to_string(h.sunRays) + " over the sun's disc; a bake casts at least 1");
+    const uint64_t perFace = uint64_t(h.key.texelsPerSide) * h.key.texelsPerSide;
+    // The texels must be exactly the rest of the file (checked without overflow).
+    if (h.faceCount > (size - kHeaderBytes) / (perFace * kTexelBytes) || size - kHeaderBytes != h.faceCount * perFace * kTexelBytes)
         throw Error(name, "texels: the file holds " + std::to_string(size - kHeaderBytes) + " bytes after its header, " +
-                              std::to_string(count) + " faces need " + std::to_string(count * perFace * kTexelBytes));
-    std::string body(size - kHeaderBytes, '\0');
-    if (!in.read(body.data(), std::streamsize(body.size()))) throw Error(name, "texels: cannot read them");
-    c.texels.resize(count * perFace);
-    at = 0;
-    for (FaceTexel& t : c.texels) {
-        t.samples = take<uint32_t>(body, at), t.open = take<uint32_t>(body, at);
-        t.skyHorizon = take<float>(body, at), t.skyZenith = take<float>(body, at);
-        t.sunSamples = take<uint32_t>(body, at), t.sunOpen = take<uint32_t>(body, at);
-        if (t.open > t.samples || t.sunOpen > t.sunSamples || !(t.skyHorizon >= 0.0f && t.skyZenith >= 0.0f) ||
-            !std::isfinite(t.skyHorizon + t.skyZenith) || t.skyHorizon + t.skyZenith > 1.0001f * float(t.open))
-            throw Error(name, "texel " + std::to_string(&t - c.texels.data()) + ": counts or sky sums out of range");
+                              std::to_string(h.faceCount) + " faces need " + std::to_string(h.faceCount * perFace * kTexelBytes));
+    return h;
+}
+
+void readFaceCacheTexels(const std::filesystem::path& path, const FaceCacheHeader& h, std::span<FaceTexel> texels) {
+    const std::string name = path.string();
+    if (texels.size() != h.texelCount())
+        throw Error::internal(name, "room for " + std::to_string(texels.size()) + " texels, the header says " +
+                                        std::to_string(h.texelCount()));
+    std::ifstream in(path, std::ios::binary);
+    in.seekg(std::streamoff(kHeaderBytes));
+    constexpr size_t kBlock = size_t(1) << 16;  // texels a read: the file is never held whole beside them
+    std::string block;
+    for (size_t first = 0; first < texels.size(); first += kBlock) {
+        const std::span<FaceTexel> run = texels.subspan(first, std::min(kBlock, texels.size() - first));
+        block.resize(run.size() * kTexelBytes);
+        if (!in.read(block.data(), std::streamsize(block.size()))) throw Error(name, "texels: cannot read them");
+        size_t at = 0;
+        for (FaceTexel& t : run) {
+            t.samples = take<uint32_t>(block, at), t.open = take<uint32_t>(block, at);
+            t.skyHorizon = take<float>(block, at), t.skyZenith = take<float>(block, at);
+            t.sunSamples = take<uint32_t>(block, at), t.sunOpen = take<uint32_t>(block, at);
+            if (t.samples != h.rays || t.sunSamples != h.sunRays || t.open > t.samples || t.sunOpen > t.sunSamples ||
+                !(t.skyHorizon >= 0.0f && t.skyZenith >= 0.0f) || !std::isfinite(t.skyHorizon + t.skyZenith) ||
+                t.skyHorizon + t.skyZenith > 1.0001f * float(t.open))
+                throw Error(name, "texel " + std::to_string(first + size_t(&t - run.data())) +
+                                      ": counts or sky sums out of range, or rays other than the header's");
+        }
     }
+}
+
+FaceCacheFile loadFaceCache(const std::filesystem::path& path) {
+    FaceCacheFile c{.header = readFaceCacheHeader(path)};
+    c.texels.resize(c.header.texelCount());
+    readFaceCacheTexels(path, c.header, c.texels);
     return c;
 }
 
-void requireMatchingBake(const FaceCacheFile& c, const FaceCacheKey& expected, uint64_t totalFaces,
+void requireMatchingBake(const FaceCacheHeader& h, const FaceCacheKey& expected, uint64_t totalFaces,
                          const std::filesystem::path& path) {
     const std::string name = path.string();
     const std::string again = "bake it again for this world and these settings";
-    if (c.key.voxelHash != expected.voxelHash || c.totalFaces != totalFaces)
+    if (h.key.voxelHash != expected.voxelHash || h.totalFaces != totalFaces)
         throw Error(name, "baked for other voxels than this world's", again);
-    if (c.key.radiusVoxels != expected.radiusVoxels)
-        throw Error(name, "AO radius: baked for " + std::to_string(c.key.radiusVoxels) + " voxels, the world asks " +
-                              std::to_string(expected.radiusVoxels), again);
-    if (c.key.texelsPerSide != expected.texelsPerSide)
-        throw Error(name, "texels per side: baked with " + std::to_string(c.key.texelsPerSide) + ", asked for " +
-                              std::to_string(expected.texelsPerSide), again);
-    if (c.key.sunDirection != expected.sunDirection || c.key.sunAngleDegrees != expected.sunAngleDegrees)
-        throw Error(name, "sun: baked for " + fmt(c.key.sunDirection) + " at " + std::to_string(c.key.sunAngleDegrees) +
-                              " degrees, the world's is " + fmt(expected.sunDirection) + " at " +
-                              std::to_string(expected.sunAngleDegrees), again);
-    if (c.firstFace != 0 || c.faceCount() != totalFaces)
-        throw Error(name, "a part of a bake (faces " + std::to_string(c.firstFace) + " to " +
-                              std::to_string(c.firstFace + c.faceCount()) + " of " + std::to_string(totalFaces) + ")",
+    FaceCacheHeader wanted = h;
+    wanted.key = expected;
+    if (const auto d = firstDifference(h, wanted))
+        throw Error(name, d->setting + ": baked for " + d->value + ", the world asks " + d->other, again);
+    if (h.firstFace != 0 || h.faceCount != totalFaces)
+        throw Error(name, "a part of a bake (faces " + std::to_string(h.firstFace) + " to " +
+                              std::to_string(h.firstFace + h.faceCount) + " of " + std::to_string(totalFaces) + ")",
                     "join the parts with grotto bake --merge");
 }
 
-FaceCacheFile mergeFaceCaches(std::vector<FaceCacheFile> parts, const std::vector<std::filesystem::path>& paths) {
-    if (parts.empty()) throw Error("bake --merge", "no parts to join");
+FaceCacheHeader requireBakeOf(const World& world, double radius, uint64_t totalFaces, const std::filesystem::path& path) {
+    const FaceCacheHeader h = readFaceCacheHeader(path);
+    requireMatchingBake(h, faceCacheKey(world, radius, h.key.texelsPerSide), totalFaces, path);
+    return h;
+}
+
+FaceCacheFile mergeFaceCaches(const std::vector<std::filesystem::path>& paths) {
+    if (paths.empty()) throw Error("bake --merge", "no parts to join");
+    std::vector<FaceCacheHeader> parts;
+    for (const std::filesystem::path& p : paths) parts.push_back(readFaceCacheHeader(p));
+    // The others are compared with the part most of them agree with (the first
+    // given of those), so the one unlike the rest is named, whatever its place.
+    size_t ref = 0, most = 0;
+    for (size_t a = 0; a < parts.size(); ++a) {
+        const size_t alike = size_t(std::count_if(parts.begin(), parts.end(), [&](const FaceCacheHeader& b) {
+            return !firstDifference(parts[a], b);
+        }));
+        if (alike > most) most = alike, ref = a;
+    }
+    for (size_t k = 0; k < parts.size(); ++k)
+        if (const auto d = firstDifference(parts[k], parts[ref]))
+            throw Error(paths[k].string(), d->setting + " " + d->value + ", where " + paths[ref].string() + " has " + d->other,
+                        "bake every part of one world with the same settings");
     std::vector<size_t> order(parts.size());
     for (size_t k = 0; k < order.size(); ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) { return parts[a].firstFace < parts[b].firstFace; });
-    FaceCacheFile out;
-    out.key = parts[order[0]].key;
-    out.totalFaces = parts[order[0]].totalFaces;
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return parts[a].firstFace < parts[b].firstFace; });
     uint64_t next = 0;
     for (size_t k : order) {
-        FaceCacheFile& p = parts[k];
-        const std::string name = paths[k].string();
-        if (!(p.key == out.key) || p.totalFaces != out.totalFaces)
-            throw Error(name, "baked for another world or other settings than " + paths[order[0]].string());
+        const FaceCacheHeader& p = parts[k];
         if (p.firstFace != next)
-            throw Error(name, "faces " + std::to_string(p.firstFace) + " to " + std::to_string(p.firstFace + p.faceCount()) +
-                                  (p.firstFace < next ? " overlap the part before" : " leave a gap after face " + std::to_string(next)));
-        next += p.faceCount();
-        out.texels.insert(out.texels.end(), p.texels.begin(), p.texels.end());
-        p.texels = {};
+            throw Error(paths[k].string(), "faces " + std::to_string(p.firstFace) + " to " + std::to_string(p.firstFace + p.faceCount) +
+                                               (p.firstFace < next ? " overlap the part before" : " leave a gap after face " + std::to_string(next)));
+        next += p.faceCount;
     }
-    if (next != out.totalFaces)
+    if (next != parts[ref].totalFaces)
         throw Error(paths[order.back()].string(), "the parts end at face " + std::to_string(next) + " of " +
-                                                      std::to_string(out.totalFaces), "a part is missing");
+                                                      std::to_string(parts[ref].totalFaces), "a part is missing");
+    // Every header agrees and the runs tile the world: the texels, read into place.
+    FaceCacheFile out{.header = parts[ref]};
+    out.header.firstFace = 0, out.header.faceCount = out.header.totalFaces;
+    out.texels.resize(out.header.texelCount());
+    size_t at = 0;
+    for (size_t k : order) {
+        readFaceCacheTexels(paths[k], parts[k], std::span(out.texels).subspan(at, parts[k].texelCount()));
+        at += parts[k].texelCount();
+    }
     return out;
 }
 

@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <span>
 #include <vector>
 
 namespace grotto::voxel {
@@ -25,12 +26,21 @@ struct FaceCacheKey {
     bool operator==(const FaceCacheKey&) const = default;
 };
 
-struct FaceCacheFile {
+// A bake's header: what its texels were baked for and with, and the run of faces
+// the file holds.
+struct FaceCacheHeader {
     FaceCacheKey key;
-    uint64_t totalFaces = 0;       // exposed faces in the world
-    uint64_t firstFace = 0;        // this file's run: faces [first, first + count)
-    std::vector<FaceTexel> texels; // count x k x k, as bakeFaces lays them out
-    uint64_t faceCount() const { return texels.size() / (uint64_t(key.texelsPerSide) * key.texelsPerSide); }
+    uint32_t rays = 0;         // cosine-weighted rays a texel (AO and sky)
+    uint32_t sunRays = 0;      // rays a texel over the sun's disc (1 for a point sun)
+    uint64_t totalFaces = 0;   // exposed faces in the world
+    uint64_t firstFace = 0;    // this file's run: faces [first, first + count)
+    uint64_t faceCount = 0;
+    uint64_t texelCount() const { return faceCount * key.texelsPerSide * key.texelsPerSide; }
+};
+
+struct FaceCacheFile {
+    FaceCacheHeader header;
+    std::vector<FaceTexel> texels; // header.texelCount(), as bakeFaces lays them out
 };
 
 // The key a bake of `world` with AO radius `radius` (world units) and k texels a
@@ -43,15 +53,33 @@ uint64_t solidVoxelHash(const World& world);
 
 // Written atomically. Throws grotto::Error on a failed write.
 void saveFaceCache(const FaceCacheFile& cache, const std::filesystem::path& path);
-// Throws grotto::Error (input) naming the file and field for anything malformed:
-// sizes are checked against the file's before anything is allocated.
+
+// Reading is in two steps, so that a header which does not match (another
+// world's, a bigger world's, other settings) is refused before its texels cost
+// anything. Each throws grotto::Error (input) naming the file and the field.
+// The header, checked in itself and against the file's size, which must be
+// exactly its texels' (so the texels it claims are there to be read).
+FaceCacheHeader readFaceCacheHeader(const std::filesystem::path& path);
+// The texels `header` (read from `path`) claims, read a block at a time into
+// `texels` (header.texelCount() of them), each checked.
+void readFaceCacheTexels(const std::filesystem::path& path, const FaceCacheHeader& header, std::span<FaceTexel> texels);
+// Both: the whole file.
 FaceCacheFile loadFaceCache(const std::filesystem::path& path);
-// Throws grotto::Error (input) naming `path` and the first field in which `cache`
-// differs from what `expected` and the world's face count require.
-void requireMatchingBake(const FaceCacheFile& cache, const FaceCacheKey& expected, uint64_t totalFaces,
+
+// Throws grotto::Error (input) naming `path` and the first field in which
+// `header` differs from what `expected` and the world's face count require, or
+// when it holds only a part of the bake.
+void requireMatchingBake(const FaceCacheHeader& header, const FaceCacheKey& expected, uint64_t totalFaces,
                          const std::filesystem::path& path);
-// Parts of one bake, in any order, joined: they must share the key and cover
-// every face exactly once. Throws grotto::Error (input) naming the part at fault.
-FaceCacheFile mergeFaceCaches(std::vector<FaceCacheFile> parts, const std::vector<std::filesystem::path>& paths);
+// The header of `path`, required to be a whole bake of `world` at AO radius
+// `radius` (world units; any k) with `totalFaces` exposed faces.
+FaceCacheHeader requireBakeOf(const World& world, double radius, uint64_t totalFaces, const std::filesystem::path& path);
+
+// Parts of one bake, in any order, joined. Every part's header is read and
+// compared first: they must agree in every setting they record (the part unlike
+// the most others is named, with the setting) and cover every face exactly once;
+// only then are the texels read, straight into the whole. Throws grotto::Error
+// (input) naming the part at fault.
+FaceCacheFile mergeFaceCaches(const std::vector<std::filesystem::path>& parts);
 
 }  // namespace grotto::voxel

@@ -35,16 +35,15 @@ LiveFaceCache::LiveFaceCache(GpuScene& scene, std::vector<voxel::ExposedFace> fa
 
 LiveFaceCache LiveFaceCache::load(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
                                   double radius, const std::filesystem::path& bake) {
-    voxel::FaceCacheFile file = voxel::loadFaceCache(bake);
     std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
-    voxel::requireMatchingBake(file, voxel::faceCacheKey(world, radius, file.key.texelsPerSide), faces.size(), bake);
-    voxel::FaceBakeSettings settings = worldBakeSettings(world, radius, file.key.texelsPerSide);
+    // The header first: another world's file costs nothing more.
+    const voxel::FaceCacheHeader header = voxel::requireBakeOf(world, radius, faces.size(), bake);
+    std::vector<voxel::FaceTexel> texels(header.texelCount());
+    voxel::readFaceCacheTexels(bake, header, texels);
+    voxel::FaceBakeSettings settings = worldBakeSettings(world, radius, header.key.texelsPerSide);
     // Faces traced after an edit get as many rays as the bake gave its texels.
-    uint32_t rays = 0, sunRays = 0;
-    for (const voxel::FaceTexel& t : file.texels) rays = std::max(rays, t.samples), sunRays = std::max(sunRays, t.sunSamples);
-    if (rays) settings.rays = rays;
-    if (sunRays) settings.sunRays = sunRays;
-    return LiveFaceCache(scene, std::move(faces), std::move(file.texels), settings, world.voxelSize());
+    settings.rays = header.rays, settings.sunRays = header.sunRays;
+    return LiveFaceCache(scene, std::move(faces), std::move(texels), settings, world.voxelSize());
 }
 
 LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
