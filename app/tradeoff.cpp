@@ -75,10 +75,14 @@ void requireKnownMethods(const std::vector<std::string>& methods) {
 }
 
 // The world's bake in the --bakes folder, WORLD.gfc; empty when there is none.
+// One that cannot even be looked at (a symbolic link loop) is refused, not skipped.
 std::filesystem::path bakeIn(const std::string& folder, const voxel::World& world) {
     if (folder.empty()) return {};
     const std::filesystem::path bake = std::filesystem::path(folder) / (world.desc().source.stem().string() + ".gfc");
-    return std::filesystem::exists(bake) ? bake : std::filesystem::path();
+    std::error_code ec;
+    const bool exists = std::filesystem::exists(bake, ec);
+    if (ec) throw Error(bake.string(), "cannot be read: " + ec.message(), "a bake from grotto bake (--bakes)");
+    return exists ? bake : std::filesystem::path();
 }
 
 // A bake in --bakes that is not the world's is refused before minutes of rendering.
@@ -307,8 +311,14 @@ void addTradeoffCommand(CLI::App& app) {
             if (!onPath("gnuplot"))
                 throw Error("--plot", "gnuplot is not installed", "install gnuplot-nox (scripts/setup.sh)");
         }
-        if (!args->bakes.empty() && !std::filesystem::is_directory(args->bakes))
-            throw Error(args->bakes, "is not a folder", "name the folder holding WORLD.gfc for each world (--bakes)");
+        if (!args->bakes.empty()) {
+            std::error_code ec;  // set for a missing folder, and for a symbolic link loop
+            const std::filesystem::file_type type = std::filesystem::status(args->bakes, ec).type();
+            const bool unreadable = ec && type != std::filesystem::file_type::not_found;
+            if (type != std::filesystem::file_type::directory)
+                throw Error(args->bakes, unreadable ? "cannot be read: " + ec.message() : "is not a folder",
+                            "name the folder holding WORLD.gfc for each world (--bakes)");
+        }
         std::vector<voxel::World> worlds;
         for (const std::string& w : args->worlds) worlds.push_back(voxel::World::load(w));
         for (const voxel::World& w : worlds) w.camera(args->camera, size.aspect());  // a missing camera fails now

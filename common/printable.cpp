@@ -57,4 +57,11 @@ std::string printable(std::string_view text) {
     return out;
 }
 
+std::string printableExcerpt(std::string_view text, size_t limit) {
+    if (text.size() <= limit) return printable(text);
+    size_t cut = limit;
+    while (cut > 0 && ((unsigned char)text[cut] & 0xC0u) == 0x80u) --cut;  // not inside a UTF-8 sequence
+    return printable(text.substr(0, cut)) + "... (" + std::to_string(text.size()) + " bytes)";
+}
+
 }  // namespace grotto

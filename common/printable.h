@@ -10,4 +10,9 @@ namespace grotto {
 
 std::string printable(std::string_view text);
 
+// printable() of at most the first `limit` bytes (cut between characters), with
+// "... (N bytes)" after when there were more: text quoted from a file can be
+// megabytes long, and an error stays one short line.
+std::string printableExcerpt(std::string_view text, size_t limit = 160);
+
 }  // namespace grotto

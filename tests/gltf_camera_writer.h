@@ -25,8 +25,11 @@ struct GltfSampler {
 struct GltfCameraScene {
     glm::vec3 parentTranslation{0.0f};
     glm::quat parentRotation{1.0f, 0.0f, 0.0f, 0.0f};
+    double parentScale = 1.0;  // uniform
     double yfov = 0.8, znear = 0.1, zfar = 0.0;  // zfar 0: infinite
     std::vector<GltfSampler> samplers;
+    std::string assetVersion = "2.0";
+    std::string bufferUri;  // .gltf: the buffer in a file of this name, relative to it; empty: embedded
 };
 
 inline int addFloats(tinygltf::Model& m, const std::vector<float>& values, int type, size_t count) {
@@ -53,8 +56,11 @@ inline int addFloats(tinygltf::Model& m, const std::vector<float>& values, int t
 
 inline tinygltf::Model gltfCameraModel(const GltfCameraScene& s) {
     tinygltf::Model m;
-    m.asset.version = "2.0";
-    if (!s.samplers.empty()) m.buffers.resize(1);  // glTF has no empty buffers
+    m.asset.version = s.assetVersion;
+    if (!s.samplers.empty()) {  // glTF has no empty buffers
+        m.buffers.resize(1);
+        m.buffers[0].uri = s.bufferUri;
+    }
     tinygltf::Camera cam;
     cam.type = "perspective";
     cam.name = "shot";
@@ -67,6 +73,7 @@ inline tinygltf::Model gltfCameraModel(const GltfCameraScene& s) {
     parent.name = "rig";
     parent.translation = {s.parentTranslation.x, s.parentTranslation.y, s.parentTranslation.z};
     parent.rotation = {s.parentRotation.x, s.parentRotation.y, s.parentRotation.z, s.parentRotation.w};
+    if (s.parentScale != 1.0) parent.scale = {s.parentScale, s.parentScale, s.parentScale};
     parent.children = {1};
     camera.name = "Camera";
     camera.camera = 0;
@@ -98,7 +105,7 @@ inline bool writeGltfCamera(const GltfCameraScene& s, const std::filesystem::pat
     const tinygltf::Model m = gltfCameraModel(s);
     tinygltf::TinyGLTF writer;
     const bool binary = file.extension() == ".glb";
-    return writer.WriteGltfSceneToFile(&m, file.string(), true, true, !binary, binary);
+    return writer.WriteGltfSceneToFile(&m, file.string(), true, s.bufferUri.empty(), !binary, binary);
 }
 
 }  // namespace grotto::test

@@ -29,11 +29,12 @@ protected:
         expectCommandRefusedWithinCaps("info " + file.string(), mention);
     }
     // Any command; `output` is what it must not have written.
-    void expectCommandRefusedWithinCaps(const std::string& args, const std::string& mention,
-                                        const fs::path& output = {}) {
+    RunResult expectCommandRefusedWithinCaps(const std::string& args, const std::string& mention,
+                                             const fs::path& output = {}) {
         SCOPED_TRACE(args);
         const RunResult r = expectRefused(args, mention, output.empty() ? dir_ / "no-output" : output, "", kCaps);
         if (!kAddressSanitizer) EXPECT_LE(r.peakMiB, goodWorldMiB() + kReadingMiB);
+        return r;
     }
 
     // What `grotto info` of a small good world takes, measured once.

@@ -27,5 +27,12 @@ TEST(Printable, EscapesBytesThatAreNotUtf8) {
     EXPECT_EQ(printable("\xED\xA0\x80"), "\\xED\\xA0\\x80");  // a surrogate
 }
 
+TEST(Printable, AnExcerptIsBoundedAndCutBetweenCharacters) {
+    EXPECT_EQ(printableExcerpt("short", 8), "short");
+    EXPECT_EQ(printableExcerpt(std::string(1000000, 'A'), 4), "AAAA... (1000000 bytes)");
+    EXPECT_EQ(printableExcerpt("ab\xC3\xB6" "cd", 3), "ab... (6 bytes)");  // not half of the o-umlaut
+    EXPECT_EQ(printableExcerpt("\x1b\x1b\x1b", 2), "\\x1B\\x1B... (3 bytes)");
+}
+
 }  // namespace
 }  // namespace grotto

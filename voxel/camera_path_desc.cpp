@@ -15,13 +15,13 @@ PathKey parseKey(Reader r) {
     if (!r.has("time")) r.fail("time", "missing", "seconds from the start of the path");
     k.time = r.number("time", 0.0, 0.0, 1e7);
     if (!r.has("position")) r.fail("position", "missing");
-    k.position = r.vec3("position", k.position);
+    k.position = r.vec3("position", k.position, -kMaxPathCoordinate, kMaxPathCoordinate);
     const bool target = r.has("target"), rotation = r.has("quaternion");
     if (target == rotation)
         r.fail(target ? "quaternion" : "target", target ? "given with 'target'" : "missing",
                "each key gives either a look-at 'target' or a 'quaternion', not both");
     if (target) {
-        k.target = r.vec3("target", k.position);
+        k.target = r.vec3("target", k.position, -kMaxPathCoordinate, kMaxPathCoordinate);
         if (glm::length(*k.target - k.position) < 1e-9) r.fail("target", "equals position", "a camera must look somewhere");
     } else {
         k.rotation = r.quaternion("quaternion");

@@ -16,6 +16,10 @@ namespace grotto::voxel {
 
 class Reader;
 
+// A key's position and target: each coordinate within ±kMaxPathCoordinate (world
+// units), for paths read from JSON and imported from glTF alike.
+inline constexpr double kMaxPathCoordinate = 1e12;
+
 struct PathKey {
     double time = 0.0;                   // seconds; strictly increasing, >= 0
     glm::dvec3 position{0.0};

@@ -1,5 +1,6 @@
 #include "voxel/gltf/gltf_camera.h"
 
+#include "common/printable.h"
 #include "grotto/error.h"
 #include "voxel/gltf/gltf_file.h"
 
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 #include <optional>
 
@@ -93,6 +95,7 @@ double angleBetween(const glm::dquat& a, glm::dquat b) {
 
 struct GltfCameraAnimation::Data {
     std::string file;
+    std::string camera;  // the camera's node, as errors name it
     std::vector<int> chain;  // root first, the camera's node last
     std::vector<NodeRest> rest;  // per chain entry
     std::vector<Channel> channels;
@@ -109,7 +112,7 @@ using Data = GltfCameraAnimation::Data;
 
 std::string nodeName(const tinygltf::Model& m, int node) {
     const std::string& n = m.nodes[size_t(node)].name;
-    return "node " + std::to_string(node) + (n.empty() ? "" : " '" + n + "'");
+    return "node " + std::to_string(node) + (n.empty() ? "" : " '" + printableExcerpt(n, 60) + "'");
 }
 
 // Each node's parent, refusing a child listed twice or a cycle.
@@ -173,13 +176,13 @@ Channel readChannel(const tinygltf::Model& m, const tinygltf::Animation& anim, c
     if (c.target_path == "translation") ch.property = Property::Translation;
     else if (c.target_path == "rotation") ch.property = Property::Rotation, ch.width = 4;
     else if (c.target_path == "scale") ch.property = Property::Scale;
-    else d.fail(where + " animates '" + c.target_path + "' of a camera's node", "a camera moves by translation, rotation and scale");
+    else d.fail(where + " animates '" + printableExcerpt(c.target_path, 40) + "' of a camera's node", "a camera moves by translation, rotation and scale");
     if (c.sampler < 0 || size_t(c.sampler) >= anim.samplers.size()) d.fail(where + " names sampler " + std::to_string(c.sampler) + ", which does not exist");
     const tinygltf::AnimationSampler& s = anim.samplers[size_t(c.sampler)];
     if (s.interpolation == "STEP") ch.interpolation = Interpolation::Step;
     else if (s.interpolation == "LINEAR" || s.interpolation.empty()) ch.interpolation = Interpolation::Linear;
     else if (s.interpolation == "CUBICSPLINE") ch.interpolation = Interpolation::Cubic;
-    else d.fail(where + "'s sampler has interpolation '" + s.interpolation + "'", "accepted: STEP, LINEAR, CUBICSPLINE");
+    else d.fail(where + "'s sampler has interpolation '" + printableExcerpt(s.interpolation, 40) + "'", "accepted: STEP, LINEAR, CUBICSPLINE");
     ch.times = gltfFloats(m, s.input, 1, d.file, where + " input");
     ch.values = gltfFloats(m, s.output, ch.width, d.file, where + " output");
     if (ch.times.empty()) d.fail(where + "'s sampler has no keys");
@@ -231,6 +234,7 @@ GltfCameraAnimation::GltfCameraAnimation(const fs::path& path, const GltfCameraC
     const tinygltf::Model m = readGltf(path);
     const std::vector<int> parent = parents(m, d);
     const int node = findCameraNode(m, choice, parent, d);
+    d.camera = nodeName(m, node);
     d.chain = chainTo(node, parent, m, d);
     for (int n : d.chain) d.rest.push_back(restOf(m.nodes[size_t(n)], d, nodeName(m, n)));
     std::vector<int> chainIndex(m.nodes.size(), -1);  // a node's place in the chain, -1 off it
@@ -238,8 +242,8 @@ GltfCameraAnimation::GltfCameraAnimation(const fs::path& path, const GltfCameraC
     auto onChain = [&](int n) { return n >= 0 && size_t(n) < m.nodes.size() && chainIndex[size_t(n)] >= 0; };
 
     const tinygltf::Camera& cam = m.cameras[size_t(m.nodes[size_t(node)].camera)];
-    const std::string camName = "camera " + std::to_string(m.nodes[size_t(node)].camera) + (cam.name.empty() ? "" : " '" + cam.name + "'");
-    if (cam.type != "perspective") d.fail(camName + " is '" + cam.type + "'", "a path needs a perspective camera");
+    const std::string camName = "camera " + std::to_string(m.nodes[size_t(node)].camera) + (cam.name.empty() ? "" : " '" + printableExcerpt(cam.name, 60) + "'");
+    if (cam.type != "perspective") d.fail(camName + " is '" + printableExcerpt(cam.type, 40) + "'", "a path needs a perspective camera");
     d.fov = cam.perspective.yfov * 180.0 / std::numbers::pi;
     if (!(d.fov >= 1.0 && d.fov <= 170.0)) d.fail(camName + " 'yfov' is " + std::to_string(cam.perspective.yfov) + " radians", "accepted: 1 to 170 degrees");
     d.nearPlane = cam.perspective.znear;
@@ -273,7 +277,7 @@ GltfCameraAnimation::GltfCameraAnimation(const fs::path& path, const GltfCameraC
             d.fail(where + " animates " + nodeName(m, c.target_node) + ", which is given by a matrix", "glTF animates only nodes given by translation, rotation and scale");
         const std::string property = std::to_string(c.target_node) + "/" + c.target_path;
         if (std::find(animatedProperties.begin(), animatedProperties.end(), property) != animatedProperties.end())
-            d.fail(where + " animates '" + c.target_path + "' of " + nodeName(m, c.target_node) + " again", "glTF animates each property of a node once per animation");
+            d.fail(where + " animates '" + printableExcerpt(c.target_path, 40) + "' of " + nodeName(m, c.target_node) + " again", "glTF animates each property of a node once per animation");
         animatedProperties.push_back(property);
         // The keys are bounded before any is read: channels may share one huge sampler.
         if (c.sampler >= 0 && size_t(c.sampler) < chosen->samplers.size()) {
@@ -342,6 +346,18 @@ struct Sampled {
     GltfCameraAnimation::Pose pose;
 };
 
+// A path file's ranges hold for an imported path too: what `path import` writes
+// must read back, and flythrough must not render from 1e300.
+void requireInPathRange(const Data& d, const glm::dvec3& p, double time, size_t key) {
+    const double m = kMaxPathCoordinate;
+    if (std::abs(p.x) <= m && std::abs(p.y) <= m && std::abs(p.z) <= m) return;
+    char text[160];
+    std::snprintf(text, sizeof text, " (the camera) is at (%g, %g, %g) at %g s, path key %zu", p.x, p.y, p.z, time, key);
+    char hint[96];
+    std::snprintf(hint, sizeof hint, "accepted: coordinates %g to %g, as in a path file's 'position'", -m, m);
+    d.fail(d.camera + text, hint);
+}
+
 GltfCameraAnimation::Pose between(const GltfCameraAnimation::Pose& a, const GltfCameraAnimation::Pose& b, double u) {
     return {glm::mix(a.position, b.position, u), glm::slerp(a.rotation, b.rotation, u)};
 }
@@ -374,6 +390,7 @@ CameraPathDesc GltfCameraAnimation::path() const {
         if (path.keys.size() >= kMaxImportedPathKeys)
             d_->fail("the camera's animation needs more than " + std::to_string(kMaxImportedPathKeys) + " path keys",
                      "bake fewer, smoother keys");
+        requireInPathRange(*d_, p.position, time, path.keys.size());
         PathKey k;
         k.time = time;
         k.position = p.position;
