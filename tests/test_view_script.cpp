@@ -200,7 +200,7 @@ TEST_F(ViewScriptFiles, RefusesBadInputNamingFileAndField) {
 
     // Look and wheel: finite numbers in range.
     expectError(script("look3.json", R"({"frame": 0, "look": [1, 2, 3]})"), {"look3.json", "actions[0].look", "array of 2 numbers"});
-    expectError(script("lookstr.json", R"({"frame": 0, "look": ["1", 2]})"), {"lookstr.json", "actions[0].look", "2 finite numbers"});
+    expectError(script("lookstr.json", R"({"frame": 0, "look": ["1", 2]})"), {"lookstr.json", "actions[0].look", "look[0] (x) is not a finite number"});
     expectError(script("lookfar.json", R"({"frame": 0, "look": [0, 1e300]})"), {"lookfar.json", "actions[0].look", "out of range"});
     expectError(script("wheelfar.json", R"({"frame": 0, "wheel": 1e9})"), {"wheelfar.json", "actions[0].wheel", "out of range"});
     expectError(script("wheelnull.json", R"({"frame": 0, "wheel": null})"), {"wheelnull.json", "actions[0].wheel", "finite number"});
