@@ -9,11 +9,11 @@
 namespace grotto::app {
 namespace {
 
-// Kelly's colours of maximum contrast (white and the near-white ones left out):
-// gnuplot's own cycle repeats after eight.
+// Kelly's colours of maximum contrast (white and the near-white ones left out,
+// the pale blue last): gnuplot's own cycle repeats after eight.
 constexpr std::array<const char*, 16> kColours = {
-    "#222222", "#e6a100", "#875692", "#f38400", "#0067a5", "#be0032", "#008856", "#e68fac",
-    "#848482", "#604e97", "#882d17", "#8db600", "#a1caf1", "#b3446c", "#654522", "#2b3d26"};
+    "#222222", "#e6a100", "#875692", "#0067a5", "#be0032", "#008856", "#f38400", "#e68fac",
+    "#848482", "#604e97", "#882d17", "#8db600", "#2b3d26", "#b3446c", "#654522", "#a1caf1"};
 // pngcairo's point types: filled square, circle, triangles up and down, diamond,
 // pentagon, then their outlines, then +, x and *.
 constexpr std::array<int, 15> kPoints = {5, 7, 9, 11, 13, 15, 4, 6, 8, 10, 12, 14, 1, 2, 3};
