@@ -207,7 +207,7 @@ TEST_F(ViewScriptFiles, RefusesBadInputNamingFileAndField) {
 
     // Window sizes as `render --size` takes them; clicks inside that.
     expectError(script("resize0.json", R"({"frame": 0, "resize": [0, 360]})"), {"resize0.json", "actions[0].resize", "1 to 16384"});
-    expectError(script("resizebig.json", R"({"frame": 0, "resize": [640, 16385]})"), {"resizebig.json", "actions[0].resize", "1 to 16384"});
+    expectError(script("resizebig.json", R"({"frame": 0, "resize": [640, 16385]})"), {"resizebig.json", "actions[0].resize", "resize[1] (height) = 16385 is out of range", "1 to 16384"});
     expectError(script("resizefrac.json", R"({"frame": 0, "resize": [640.5, 360]})"), {"resizefrac.json", "actions[0].resize", "whole numbers"});
     expectError(script("resize1.json", R"({"frame": 0, "resize": 640})"), {"resize1.json", "actions[0].resize", "array of 2"});
     expectError(script("clickneg.json", R"({"frame": 0, "click": [-1, 5]})"), {"clickneg.json", "actions[0].click", "out of range"});
