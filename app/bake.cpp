@@ -87,17 +87,10 @@ void addBakeCommand(CLI::App& app) {
                                               .rays = settings.rays, .sunRays = voxel::sunRaysPerTexel(settings),
                                               .totalFaces = faces.size(), .firstFace = first, .faceCount = count}};
         cache.texels.resize(cache.header.texelCount());
-        // A hundred steps, each a run of faces on every core.
-        const int steps = int(std::min<uint64_t>(100, std::max<uint64_t>(count, 1)));
-        Progress progress(steps, stderr);
         const auto start = std::chrono::steady_clock::now();
-        const uint64_t perFace = uint64_t(args->texels) * args->texels;
-        for (int s = 0; s < steps; ++s) {
-            const uint64_t a = count * s / steps, b = count * (s + 1) / steps;
-            voxel::bakeFaces(table, world, std::span(faces).subspan(first + a, b - a), settings,
-                             std::span(cache.texels).subspan(a * perFace, (b - a) * perFace));
-            progress.step(std::to_string(b) + " of " + std::to_string(count) + " faces");
-        }
+        FaceBakeProgress progress(stderr);
+        voxel::bakeFacesInSteps(table, world, std::span(faces).subspan(first, count), settings, cache.texels,
+                                std::ref(progress));
         progress.finish();
         voxel::saveFaceCache(cache, out);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,6 +2,7 @@
 // and a world file beside it whose materials are the model's palette.
 #include "app/commands.h"
 #include "common/file_kind.h"
+#include "common/plural.h"
 #include "grotto/error.h"
 #include "voxel/world.h"
 
@@ -21,8 +22,8 @@ void addConvertCommand(CLI::App& app) {
         if (out.extension() != ".vdb") throw Error(out.string(), "output must end in .vdb", "the world file goes beside it as .json");
         const voxel::World world = voxel::World::load(in);
         const voxel::World::SavedFiles saved = world.save(out);
-        std::printf("wrote %s and %s (%llu voxels, %zu materials)\n", saved.grid.c_str(), saved.world.c_str(),
-                    static_cast<unsigned long long>(world.stats().solidVoxels), world.desc().materials.size());
+        std::printf("wrote %s and %s (%s, %s)\n", saved.grid.c_str(), saved.world.c_str(),
+                    counted(world.stats().solidVoxels, "voxel").c_str(), counted(world.desc().materials.size(), "material").c_str());
     });
 }
 

@@ -1,6 +1,7 @@
 // grotto info WORLD: what a world holds and what it costs, without a GPU. Names
 // from the file are printed escaped (common/printable.h).
 #include "app/commands.h"
+#include "common/plural.h"
 #include "common/printable.h"
 #include "engine/scene/scene.h"
 #include "voxel/face_bake.h"
@@ -111,10 +112,28 @@ void addInfoCommand(CLI::App& app) {
                         (unsigned long long)objects[i].stats().solidVoxels, objects[i].mesh().quads.size(), olo.x,
                         olo.y, olo.z, ohi.x, ohi.y, ohi.z, objectMotion(o).c_str());
         }
+        // The materials drawn, by the world and its objects; the rest of the palette
+        // (most of a .vox model's colours are never placed) only counted.
+        std::vector<uint64_t> drawn = w.voxelsByMaterial();
+        for (const voxel::World& o : objects) {
+            const std::vector<uint64_t> own = o.voxelsByMaterial();
+            drawn.resize(std::max(drawn.size(), own.size()), 0);
+            for (size_t id = 0; id < own.size(); ++id) drawn[id] += own[id];
+        }
+        size_t unused = 0;
         for (size_t i = 0; i < d.materials.size(); ++i) {
             const voxel::Material& m = d.materials[i];
-            std::printf("material %-5zu %s: albedo (%g %g %g)\n", i + 1, printable(m.name).c_str(), m.albedo.r, m.albedo.g, m.albedo.b);
+            const uint64_t voxels = i + 1 < drawn.size() ? drawn[i + 1] : 0;
+            if (voxels == 0) {
+                ++unused;
+                continue;
+            }
+            std::printf("material %-5zu %s: albedo (%g %g %g), %s\n", i + 1, printable(m.name).c_str(), m.albedo.r,
+                        m.albedo.g, m.albedo.b, counted(voxels, "voxel").c_str());
         }
+        if (unused)
+            std::printf("materials      %zu used; the palette holds %zu more that no voxel uses (not listed)\n",
+                        d.materials.size() - unused, unused);
     });
 }
 

@@ -2,15 +2,13 @@
 // 1 internal failure, 3 a measurement worse than its baseline (stability
 // --baseline); errors are one line, never a raw exception trace.
 #include "app/commands.h"
-#include "common/closest_name.h"
+#include "app/subcommand_check.h"
 #include "grotto/error.h"
 #include "common/printable.h"
 
-#include <algorithm>
 #include <cstdio>
 #include <exception>
 #include <string>
-#include <vector>
 
 int main(int argc, char** argv) {
     CLI::App app{"grotto: voxel deferred renderer with temporal GTAO", "grotto"};
@@ -36,24 +34,12 @@ int main(int argc, char** argv) {
     grotto::app::addPathCommand(app);
     grotto::app::addConvertCommand(app);
     grotto::app::refuseEmptyValues(app);
-    // Bare `grotto` is a usage error, but one worth the whole usage: on stdout,
-    // with the usual one line on stderr.
-    if (argc < 2) {
-        std::fputs(app.help().c_str(), stdout);
-        std::fprintf(stderr, "grotto: error: a subcommand is required (usage above)\n");
-        return 2;
-    }
-    // CLI11 takes an unknown first word for a stray argument and asks for a
-    // subcommand: name the word instead, and the subcommand it was likely meant to be.
-    const std::vector<CLI::App*> subcommands = app.get_subcommands({});
-    const std::string word = argv[1];
-    if (!word.empty() && word[0] != '-' &&
-        std::none_of(subcommands.begin(), subcommands.end(), [&](CLI::App* sub) { return sub->check_name(word); })) {
-        std::vector<std::string> names;
-        for (const CLI::App* sub : subcommands) names.push_back(sub->get_name());
-        const std::string meant = grotto::closestName(word, names);
-        const std::string hint = meant.empty() ? "see --help for the subcommands" : "did you mean '" + meant + "'? see --help";
-        std::fprintf(stderr, "grotto: error: unknown subcommand '%s' (%s)\n", grotto::printable(word).c_str(), hint.c_str());
+    // An unknown or missing subcommand at any level, named with those accepted
+    // there (app/subcommand_check.h). Bare `grotto` is worth the whole usage
+    // besides: on stdout, with the same one line on stderr.
+    if (const std::string usage = grotto::app::subcommandError(app, argc, argv); !usage.empty()) {
+        if (argc < 2) std::fputs(app.help().c_str(), stdout);
+        std::fprintf(stderr, "grotto: error: %s\n", usage.c_str());
         return 2;
     }
     try {

@@ -1,5 +1,7 @@
 #include "app/progress.h"
 
+#include "voxel/face_bake.h"
+
 #include <unistd.h>
 
 #include <cmath>
@@ -38,6 +40,16 @@ void Progress::step(const std::string& what) {
 void Progress::finish() {
     if (terminal_ && done_ > 0) std::fprintf(out_, "\n");
     std::fflush(out_);
+}
+
+void FaceBakeProgress::operator()(size_t done, size_t total) {
+    // Started by the first call, before the first run of faces, so its ETA counts every run.
+    if (!bar_) return void(bar_.emplace(voxel::bakeSteps(total), out_));
+    bar_->step(std::to_string(done) + " of " + std::to_string(total) + " faces");
+}
+
+void FaceBakeProgress::finish() {
+    if (bar_) bar_->finish();
 }
 
 }  // namespace grotto::app

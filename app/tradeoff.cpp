@@ -7,6 +7,7 @@
 #include "app/ao_measure.h"
 #include "app/commands.h"
 #include "app/options.h"
+#include "app/tradeoff_plot.h"
 #include "common/atomic_file.h"
 #include "grotto/error.h"
 #include "engine/lab/reference_view.h"
@@ -16,9 +17,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
-#include <map>
 #include <string>
-#include <tuple>
 #include <vector>
 
 namespace grotto::app {
@@ -190,39 +189,16 @@ const char* const kLodMarkdownHeader =
 std::string lodMarkdownLine(const LodRow& r) { return "| " + joined(lodCells(r, true), " | ") + " |\n"; }
 
 // RMSE against AO-chain time, both averaged over the worlds, one line per method
-// through its presets: the Pareto view. Drawn by gnuplot, into a temporary file.
+// through its presets: the Pareto view (app/tradeoff_plot.h).
 void writePlot(const std::filesystem::path& file, const std::vector<Row>& rows, size_t worlds) {
-    // method -> its presets in measuring order, each (label, ms, rmse)
-    std::map<std::string, std::vector<std::tuple<std::string, double, double>>> mean;
+    PlotSeries mean;
     for (const Row& r : rows) {
         auto& presets = mean[r.method];
-        auto it = std::find_if(presets.begin(), presets.end(), [&](auto& p) { return std::get<0>(p) == r.quality; });
+        auto it = std::find_if(presets.begin(), presets.end(), [&](const PlotPoint& p) { return p.label == r.quality; });
         if (it == presets.end()) it = presets.insert(presets.end(), {r.quality, 0.0, 0.0});
-        std::get<1>(*it) += r.m.ao.ms / worlds, std::get<2>(*it) += r.m.error.rmse / worlds;
+        it->ms += r.m.ao.ms / double(worlds), it->rmse += r.m.error.rmse / double(worlds);
     }
-    // gnuplot writes the image itself: committed once it has succeeded.
-    PendingFile image(file);
-    std::string script = "set terminal pngcairo size 900,600\nset output '" + image.tmp().string() + "'\n"
-                         "set xlabel 'AO chain ms (wall time over the frame without AO; median, mean over worlds)'\n"
-                         "set ylabel 'RMSE against the reference (mean over worlds)'\n"
-                         "set title 'AO error against cost'\nset grid\nset key top right\n";
-    std::string plot = "plot", data;
-    int index = 0;
-    for (const auto& [method, presets] : mean) {
-        data += "$m" + std::to_string(index) + " << EOD\n";
-        for (const auto& [label, ms, rmse] : presets)
-            data += std::to_string(ms) + " " + std::to_string(rmse) + " " + label + "\n";
-        data += "EOD\n";
-        plot += std::string(index ? "," : "") + " $m" + std::to_string(index) + " using 1:2 with linespoints pt 7 title '" +
-                method + "', $m" + std::to_string(index) + " using 1:2:3 with labels offset 1,0.6 font ',8' notitle";
-        ++index;
-    }
-    FILE* gp = popen("gnuplot", "w");
-    if (!gp) throw Error::internal("gnuplot", "could not be started");
-    const std::string all = script + data + plot + "\n";
-    std::fwrite(all.data(), 1, all.size(), gp);
-    if (pclose(gp) != 0) throw Error::internal("gnuplot", "failed drawing " + file.string(), "its message is above");
-    image.commit();
+    drawTradeoffPlot(file, mean);
 }
 
 // The world's AO setting at bias 0 and at each of `biases`, each against the exact

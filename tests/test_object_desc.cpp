@@ -129,7 +129,7 @@ TEST(ObjectDesc, ErrorsNameFileAndField) {
         {"[{" + box + key + R"(, "spin": 1}])", "field 'objects[0].spin': unknown field"},
         {R"([{"generator": {"kind": "cube"}, )" + key + "}]", "field 'objects[0].generator.kind': unknown generator 'cube'"},
         {R"([{"generator": {"kind": "box", "size": [0, 1, 1]}, )" + key + "}]",
-         "field 'objects[0].generator.size': component 0 is out of range"},
+         "field 'objects[0].generator.size': size[0] (x) = 0 is out of range"},
         {"[{\"name\": \"a\", " + box + key + "}, {\"name\": \"a\", " + box + key + "}]",
          "field 'objects[1].name': 'a' names an earlier object too"},
     };

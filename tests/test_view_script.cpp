@@ -200,14 +200,14 @@ TEST_F(ViewScriptFiles, RefusesBadInputNamingFileAndField) {
 
     // Look and wheel: finite numbers in range.
     expectError(script("look3.json", R"({"frame": 0, "look": [1, 2, 3]})"), {"look3.json", "actions[0].look", "array of 2 numbers"});
-    expectError(script("lookstr.json", R"({"frame": 0, "look": ["1", 2]})"), {"lookstr.json", "actions[0].look", "2 finite numbers"});
+    expectError(script("lookstr.json", R"({"frame": 0, "look": ["1", 2]})"), {"lookstr.json", "actions[0].look", "look[0] (x) is not a finite number"});
     expectError(script("lookfar.json", R"({"frame": 0, "look": [0, 1e300]})"), {"lookfar.json", "actions[0].look", "out of range"});
     expectError(script("wheelfar.json", R"({"frame": 0, "wheel": 1e9})"), {"wheelfar.json", "actions[0].wheel", "out of range"});
     expectError(script("wheelnull.json", R"({"frame": 0, "wheel": null})"), {"wheelnull.json", "actions[0].wheel", "finite number"});
 
     // Window sizes as `render --size` takes them; clicks inside that.
     expectError(script("resize0.json", R"({"frame": 0, "resize": [0, 360]})"), {"resize0.json", "actions[0].resize", "1 to 16384"});
-    expectError(script("resizebig.json", R"({"frame": 0, "resize": [640, 16385]})"), {"resizebig.json", "actions[0].resize", "1 to 16384"});
+    expectError(script("resizebig.json", R"({"frame": 0, "resize": [640, 16385]})"), {"resizebig.json", "actions[0].resize", "resize[1] (height) = 16385 is out of range", "1 to 16384"});
     expectError(script("resizefrac.json", R"({"frame": 0, "resize": [640.5, 360]})"), {"resizefrac.json", "actions[0].resize", "whole numbers"});
     expectError(script("resize1.json", R"({"frame": 0, "resize": 640})"), {"resize1.json", "actions[0].resize", "array of 2"});
     expectError(script("clickneg.json", R"({"frame": 0, "click": [-1, 5]})"), {"clickneg.json", "actions[0].click", "out of range"});

@@ -14,9 +14,10 @@ glm::ivec3 voxelIndex(Reader& r, const std::string& key) {
     if (!v.is_array() || v.size() != 3) r.fail(key, "expected " + accepted);
     glm::ivec3 out;
     for (int i = 0; i < 3; ++i) {
-        if (!v[i].is_number_integer()) r.fail(key, "expected " + accepted);
+        const std::string component = key + "[" + std::to_string(i) + "] (" + "ijk"[i] + ")";
+        if (!v[i].is_number_integer()) r.fail(key, component + " is not a whole number", accepted);
         const int64_t c = v[i].get<int64_t>();
-        if (c < -kMaxVoxelIndex || c >= kMaxVoxelIndex) r.fail(key, "component " + v[i].dump() + " is out of range", accepted);
+        if (c < -kMaxVoxelIndex || c >= kMaxVoxelIndex) r.fail(key, component + " = " + v[i].dump() + " is out of range", accepted);
         out[i] = int(c);
     }
     return out;

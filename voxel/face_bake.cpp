@@ -80,7 +80,7 @@ public:
             const glm::dvec3 d = t1 * l.x + t2 * l.y + n * l.z;
             if (table_.hitWithin(p, d, tAo_)) continue;  // within R: neither AO nor sky
             ++t.open;
-            if (!leaves(p, d)) continue;
+            if (!s_.light || !leaves(p, d)) continue;
             const SkyWeights w = skyWeights(d.y);
             horizon += w.horizon, zenith += w.zenith;
         }
@@ -129,6 +129,21 @@ void bakeFaces(const BrickTable& table, const World& world, std::span<const Expo
                                  texelSeed(face, i, j));
         }
     });
+}
+
+int bakeSteps(size_t faces) { return int(std::clamp<size_t>(faces, 1, 100)); }
+
+void bakeFacesInSteps(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
+                      const FaceBakeSettings& s, std::span<FaceTexel> texels, const BakeProgress& progress) {
+    const size_t count = faces.size(), perFace = size_t(s.texelsPerSide) * s.texelsPerSide;
+    if (texels.size() != count * perFace) throw Error::internal("bakeFacesInSteps", "texels and faces differ in count");
+    if (progress) progress(0, count);
+    const int steps = bakeSteps(count);
+    for (int step = 0; step < steps; ++step) {
+        const size_t a = count * size_t(step) / size_t(steps), b = count * size_t(step + 1) / size_t(steps);
+        bakeFaces(table, world, faces.subspan(a, b - a), s, texels.subspan(a * perFace, (b - a) * perFace));
+        if (progress) progress(b, count);
+    }
 }
 
 std::vector<FaceTexel> tracePoints(const BrickTable& table, const World& world, std::span<const glm::dvec3> points,

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -27,10 +28,15 @@ struct FaceBakeSettings {
     glm::dvec3 sunDirection{0.0, 1.0, 0.0};  // toward the sun, unit length
     double sunAngleDegrees = 0.0;    // the disc's angular diameter; 0: a point
     double epsilon = 1e-4;           // rays leave this far (voxels) in front of the face
+    // false: the AO alone, no sky or sun (a mesh export's vertex AO): each ray
+    // open within R is not followed out of the world, and no sun ray is traced.
+    bool light = true;
 };
 
-// The rays a texel gets over the sun's disc: one for a point sun, whatever sunRays says.
+// The rays a texel gets over the sun's disc: one for a point sun, whatever sunRays
+// says; none for a bake without light.
 inline uint32_t sunRaysPerTexel(const FaceBakeSettings& s) {
+    if (!s.light) return 0;
     return s.sunAngleDegrees > 0.0 ? s.sunRays : std::min(s.sunRays, 1u);
 }
 
@@ -40,6 +46,16 @@ inline uint32_t sunRaysPerTexel(const FaceBakeSettings& s) {
 // k 0 or a texel span of the wrong size.
 void bakeFaces(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
                const FaceBakeSettings& settings, std::span<FaceTexel> texels);
+
+// Told the faces baked so far and their total: with 0 before the first run of
+// faces, then after each of bakeSteps(total) runs (a long bake's progress).
+using BakeProgress = std::function<void(size_t done, size_t total)>;
+// A hundred runs, or one a face when there are fewer.
+int bakeSteps(size_t faces);
+// bakeFaces in bakeSteps(faces.size()) runs of faces, each on every core,
+// telling `progress` (when given) of each.
+void bakeFacesInSteps(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
+                      const FaceBakeSettings& settings, std::span<FaceTexel> texels, const BakeProgress& progress);
 
 // The same rays from arbitrary points on face planes (voxel index units) looking
 // `dirs`, each turned by a hash of `seed` and its index: a reference for what the

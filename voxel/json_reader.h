@@ -11,6 +11,7 @@
 #include <glm/vec4.hpp>
 #include <nlohmann/json.hpp>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -74,25 +75,31 @@ public:
         if (!obj_.at(key).is_string()) fail(key, "expected a string");
         return obj_.at(key).get<std::string>();
     }
-    glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback, double lo = -1e12,
-                    double hi = 1e12) {
-        return vec<3>(key, fallback, lo, hi);
+    // What a message calls each component of an array: "albedo[2] (blue)".
+    using ComponentNames = std::array<const char*, 4>;
+    static constexpr ComponentNames kAxes{"x", "y", "z", "w"};
+    static constexpr ComponentNames kChannels{"red", "green", "blue", "alpha"};
+
+    glm::dvec3 vec3(const std::string& key, glm::dvec3 fallback, double lo = -1e12, double hi = 1e12,
+                    const ComponentNames& names = kAxes) {
+        return vec<3>(key, fallback, lo, hi, names);
     }
-    // A JSON array of N finite numbers, each within [lo, hi].
+    // A JSON array of N finite numbers, each within [lo, hi]; one that is not is
+    // named by index and name with its value.
     template <glm::length_t N>
-    glm::vec<N, double> vec(const std::string& key, glm::vec<N, double> fallback, double lo, double hi) {
+    glm::vec<N, double> vec(const std::string& key, glm::vec<N, double> fallback, double lo, double hi,
+                            const ComponentNames& names = kAxes) {
         if (!has(key)) return fallback;
         const json& v = obj_.at(key);
-        const std::string n = std::to_string(N);
-        if (!v.is_array() || v.size() != size_t(N)) fail(key, "expected an array of " + n + " numbers");
+        const std::string accepted = "accepted: an array of " + std::to_string(N) + " numbers, each " + format(lo) + " to " + format(hi);
+        if (!v.is_array() || v.size() != size_t(N)) fail(key, "expected an array of " + std::to_string(N) + " numbers", accepted);
         glm::vec<N, double> r;
         for (glm::length_t i = 0; i < N; ++i) {
+            const std::string component = key + "[" + std::to_string(i) + "] (" + names[size_t(i)] + ")";
             if (!v[i].is_number() || !std::isfinite(v[i].get<double>()))
-                fail(key, "expected an array of " + n + " finite numbers");
+                fail(key, component + " is not a finite number", accepted);
             r[i] = v[i].get<double>();
-            if (r[i] < lo || r[i] > hi)
-                fail(key, "component " + v[i].dump() + " is out of range",
-                     "accepted: " + format(lo) + " to " + format(hi));
+            if (r[i] < lo || r[i] > hi) fail(key, component + " = " + v[i].dump() + " is out of range", accepted);
         }
         return r;
     }

@@ -98,6 +98,9 @@ public:
 
     // Material id of a voxel, 0 when empty.
     int material(glm::ivec3 voxel) const;
+    // How many solid voxels each material id draws, indexed by id (at least id 0,
+    // which counts none): which of the palette a world uses.
+    std::vector<uint64_t> voxelsByMaterial() const;
 
     // A named camera, or the default one when name is empty: the world's default
     // camera, else one framing the bounds tightly in an image of `aspect`

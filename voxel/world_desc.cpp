@@ -89,8 +89,8 @@ void readSetting(Reader& r, const std::string& name, const Setting& s, WorldDesc
                    [&](float Lighting::*m) { w.lighting.*m = float(r.number(name, w.lighting.*m, s.lo, s.hi)); },
                    [&](bool Lighting::*m) { w.lighting.*m = r.boolean(name, w.lighting.*m); },
                    [&](glm::vec3 Lighting::*m) {
-                       const glm::dvec3 v = r.vec3(name, glm::dvec3(w.lighting.*m), s.lo, s.hi);
                        const bool direction = s.type == SettingType::Direction;
+                       const glm::dvec3 v = r.vec3(name, glm::dvec3(w.lighting.*m), s.lo, s.hi, direction ? Reader::kAxes : Reader::kChannels);
                        if (direction && glm::length(v) < 1e-9) r.fail(name, "must not be zero");
                        w.lighting.*m = glm::vec3(direction ? glm::normalize(v) : v);
                    },
@@ -162,7 +162,7 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
             Reader mr(file, m[i], "materials[" + std::to_string(i) + "]");
             Material mat;
             mat.name = mr.string("name", "material" + std::to_string(i + 1));
-            mat.albedo = glm::vec3(mr.vec3("albedo", glm::dvec3(mat.albedo), 0.0, 1.0));
+            mat.albedo = glm::vec3(mr.vec3("albedo", glm::dvec3(mat.albedo), 0.0, 1.0, Reader::kChannels));
             mat.ao = float(mr.number("ao", mat.ao, 0.0, 1.0));
             w.materials.push_back(mat);
         }

@@ -124,7 +124,7 @@ std::optional<ScriptAction> readAction(Reader& r) {
     case Kind::Wheel: a.wheel = r.number("wheel", 0, -kMaxWheelNotches, kMaxWheelNotches); break;
     case Kind::Set: readSettings(r, a); break;
     case Kind::Resize:
-        a.vec = r.vec<2>("resize", {}, 1, kMaxWindowSide);
+        a.vec = r.vec<2>("resize", {}, 1, kMaxWindowSide, {"width", "height"});
         if (a.vec != glm::floor(a.vec)) r.fail("resize", "expected whole numbers", "[width, height] in pixels");
         break;
     case Kind::Minimize:

@@ -63,14 +63,14 @@ double interpolateCornerAo(const std::array<uint8_t, 4>& c, double u, double v) 
     return ao / 255.0;
 }
 
-AoMesh buildAoMesh(const World& world, const FaceBakeSettings& bake) {
+AoMesh buildAoMesh(const World& world, const FaceBakeSettings& bake, const BakeProgress& progress) {
     const BrickTable table(world);
     AoMesh mesh;
     mesh.faces = exposedFaces(table, world);
     const uint32_t k = bake.texelsPerSide;
     mesh.texelsPerSide = k;
     mesh.texels.resize(mesh.faces.size() * k * k);
-    bakeFaces(table, world, mesh.faces, bake, mesh.texels);
+    bakeFacesInSteps(table, world, mesh.faces, bake, mesh.texels, progress);
     const FaceCacheLookup lookup(mesh.faces, mesh.texels, k);
 
     const IndexBox bounds = world.bounds();

@@ -41,8 +41,9 @@ struct AoMesh {
 // The AO the mesh's two triangles give at (u, v) in [0,1]^2 on a face with these corners.
 double interpolateCornerAo(const std::array<uint8_t, 4>& corners, double u, double v);
 
-// Bakes the face cache with `bake` (every core) and builds the mesh.
-AoMesh buildAoMesh(const World& world, const FaceBakeSettings& bake);
+// Bakes the face cache with `bake` (every core), telling `progress` of each run
+// of faces, and builds the mesh.
+AoMesh buildAoMesh(const World& world, const FaceBakeSettings& bake, const BakeProgress& progress = {});
 
 // Writes `mesh` as FILE.glb (binary) or FILE.gltf (JSON, buffers embedded),
 // atomically. Throws grotto::Error (input) for another extension or an unwritable path.
