@@ -267,6 +267,8 @@ void VideoPipe::drain() {
     // them, within the same bounds as a write, before waiting for it to finish.
     auto progress = std::chrono::steady_clock::now();
     for (size_t unread = unreadBytes(input_), before = unread; unread > 0; before = unread, unread = unreadBytes(input_)) {
+        pollfd reader{input_, 0, 0};
+        if (poll(&reader, 1, 0) > 0 && (reader.revents & POLLERR)) return;  // ffmpeg has gone: its exit status says why
         if (unread < before) progress = std::chrono::steady_clock::now();
         const int seconds = taken() ? timeoutSeconds_ : std::min(timeoutSeconds_, kStartSeconds);
         if (std::chrono::steady_clock::now() - progress >= std::chrono::seconds(seconds)) stalled(seconds);
