@@ -6,6 +6,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <spawn.h>
+#include <sys/ioctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -51,6 +52,16 @@ int videoTimeoutSeconds() {
         throw Error("GROTTO_VIDEO_TIMEOUT", "'" + std::string(text) + "' is not a number of seconds",
                     "accepted: a whole number from 1 to " + std::to_string(kMost));
     return int(seconds);
+}
+
+// ffmpeg reads its input as soon as it starts: one that has taken nothing of the
+// first frame by then never will, whatever GROTTO_VIDEO_TIMEOUT allows once it runs.
+constexpr int kStartSeconds = 10;
+
+// The bytes written to a pipe that its reader has not taken yet.
+size_t unreadBytes(int pipe) {
+    int n = 0;
+    return ioctl(pipe, FIONREAD, &n) == 0 && n > 0 ? size_t(n) : 0;
 }
 
 // The container ffmpeg writes for an extension, and whether it holds VP9 rather than H.264.
@@ -223,12 +234,11 @@ void VideoPipe::write(const std::vector<uint8_t>& rgb) {
         const ssize_t n = ::write(input_, rgb.data() + done, rgb.size() - done);
         if (n > 0) {
             done += size_t(n);
+            written_ += size_t(n);
         } else if (n < 0 && errno == EAGAIN) {
             pollfd ready{input_, POLLOUT, 0};
-            if (poll(&ready, 1, timeoutSeconds_ * 1000) == 0) {
-                kill(child_, SIGKILL);
-                failed("ffmpeg took no frame data for " + std::to_string(timeoutSeconds_) + " s (GROTTO_VIDEO_TIMEOUT)");
-            }
+            const int seconds = taken() ? timeoutSeconds_ : std::min(timeoutSeconds_, kStartSeconds);
+            if (poll(&ready, 1, seconds * 1000) == 0) stalled(seconds);
         } else if (n < 0 && errno != EINTR) {
             failed(errno == EPIPE ? "ffmpeg stopped reading frames"
                                   : std::string("cannot pipe a frame to ffmpeg: ") + std::strerror(errno));
@@ -242,6 +252,28 @@ void VideoPipe::frame(int index, std::vector<uint8_t> rgb) {
     waiting_[index] = std::move(rgb);
     for (auto it = waiting_.begin(); it != waiting_.end() && it->first == next_; it = waiting_.erase(it), ++next_)
         write(it->second);
+}
+
+bool VideoPipe::taken() const { return written_ > unreadBytes(input_); }
+
+void VideoPipe::stalled(int seconds) {
+    kill(child_, SIGKILL);
+    failed(seconds < timeoutSeconds_ ? "ffmpeg read none of its input in the " + std::to_string(seconds) + " s after it started"
+                                     : "ffmpeg took no frame data for " + std::to_string(seconds) + " s (GROTTO_VIDEO_TIMEOUT)");
+}
+
+void VideoPipe::drain() {
+    // Frames that fit in the pipe are written at once: wait until ffmpeg has taken
+    // them, within the same bounds as a write, before waiting for it to finish.
+    auto progress = std::chrono::steady_clock::now();
+    for (size_t unread = unreadBytes(input_), before = unread; unread > 0; before = unread, unread = unreadBytes(input_)) {
+        pollfd reader{input_, 0, 0};
+        if (poll(&reader, 1, 0) > 0 && (reader.revents & POLLERR)) return;  // ffmpeg has gone: its exit status says why
+        if (unread < before) progress = std::chrono::steady_clock::now();
+        const int seconds = taken() ? timeoutSeconds_ : std::min(timeoutSeconds_, kStartSeconds);
+        if (std::chrono::steady_clock::now() - progress >= std::chrono::seconds(seconds)) stalled(seconds);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
 }
 
 int VideoPipe::probeFrames() {
@@ -259,6 +291,7 @@ int VideoPipe::probeFrames() {
 void VideoPipe::finish() {
     std::lock_guard lock(mutex_);
     if (!waiting_.empty()) failed("frame " + std::to_string(next_) + " never came");
+    drain();
     close(input_);
     input_ = -1;
     status_ = waitFor(child_, timeoutSeconds_);

@@ -6,7 +6,8 @@
 // exits 0 and ffprobe finds every frame in what it wrote, so nothing
 // half-written is ever left under the target's name. ffmpeg gets a bounded time
 // (GROTTO_VIDEO_TIMEOUT seconds, 300 by default) to take each part of a frame and
-// to finish, so one that stops reading cannot hold the run forever.
+// to finish, and 10 s (or that, if less) to take the first of them, so one that
+// stops reading or never starts cannot hold the run.
 #include "common/atomic_file.h"
 
 #include <sys/types.h>
@@ -65,6 +66,9 @@ public:
 
 private:
     void write(const std::vector<uint8_t>& rgb);  // with the mutex held
+    bool taken() const;                           // has ffmpeg read any of the frames yet?
+    [[noreturn]] void stalled(int seconds);       // stops ffmpeg: it took nothing for that long
+    void drain();                                 // waits (bounded) for ffmpeg to take what the pipe holds
     [[noreturn]] void failed(const std::string& what);
     int probeFrames();  // frames ffprobe counts in the temporary file, -1 when it cannot read it
 
@@ -77,6 +81,7 @@ private:
     int status_ = 0;
     std::string failure_;  // the first failure's message: later frames report it too, whichever thread sees them
     int input_ = -1;            // the pipe to ffmpeg's stdin
+    size_t written_ = 0;        // bytes written to it
     std::FILE* log_ = nullptr;  // ffmpeg's stderr, an unnamed temporary file
     int first_, next_;          // the first frame, the next frame to pipe
     std::map<int, std::vector<uint8_t>> waiting_;

@@ -225,10 +225,22 @@ VoxelRayHit traceHit(VoxelRayStart start, vec3 d, float tMax, bool openStart) {
 // an incremental DDA, one compare and one add per voxel, with no skipping of empty
 // bricks, which short rays rarely cross.
 float traceShortWorldRay(VoxelRayStart start, vec3 d, float tMax) {
+    if (trace.boundsHi.w != 0) return -1.0;  // nothing solid
     vec3 dir = mix(d, vec3(1e-30), equal(d, vec3(0.0)));
     vec3 invAbs = 1.0 / abs(dir);
     bvec3 up = greaterThan(dir, vec3(0.0));
     ivec3 stepI = mix(ivec3(-1), ivec3(1), up);
+    // Past the world's bounds nothing is solid: the ray ends where it leaves them,
+    // so a radius of any length costs the world's size at most. The margin is wider
+    // than the sums below can round (4096 steps), so a hit within them is unchanged.
+    ivec3 ahead = mix(start.voxel - trace.boundsLo.xyz, trace.boundsHi.xyz + 1 - start.voxel, up);
+    vec3 room = vec3(ahead) + mix(start.fraction, -start.fraction, up);
+    for (int a = 0; a < 3; ++a)  // past them already, or beside them running along them: no hit
+        if (room[a] < 0.0 || (d[a] == 0.0 && (start.voxel[a] < trace.boundsLo[a] || start.voxel[a] > trace.boundsHi[a])))
+            return -1.0;
+    vec3 leave = room * invAbs;
+    float leaveT = min(leave.x, min(leave.y, leave.z));
+    tMax = min(tMax, leaveT + 2.0 + 1e-3 * leaveT);
     // Distance to the first face crossed on each axis, then from face to face.
     vec3 next = mix(start.fraction, 1.0 - start.fraction, up) * invAbs;
     ivec3 cell = start.voxel;

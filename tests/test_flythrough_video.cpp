@@ -162,6 +162,20 @@ TEST_F(FlythroughVideo, AnFfmpegThatNeverReadsIsGivenUp) {
     expectRefused(flythrough("--video " + video().string()), "GROTTO_VIDEO_TIMEOUT", video(), "GROTTO_VIDEO_TIMEOUT=soon");
 }
 
+// One that never reads at all is given up 10 s after it started, whatever
+// GROTTO_VIDEO_TIMEOUT (300 s by default) allows an ffmpeg that is reading.
+TEST_F(FlythroughVideo, AnFfmpegThatNeverStartsReadingIsGivenUpSoon) {
+    const std::string path = fakeFfmpeg("exec sleep 600");
+    for (const char* size : {"320x240", "48x32"}) {  // a write that waits; frames that all fit in the pipe
+        const test::RunResult r = runGrotto(flythrough("--video " + video().string(), size), path, {.hangSeconds = 60});
+        EXPECT_EQ(r.exitCode, 1) << size << ": " << r.err;
+        EXPECT_NE(r.err.find("read none of its input in the 10 s after it started"), std::string::npos) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_FALSE(fs::exists(video()));
+        expectNoTemporaries();
+    }
+}
+
 // ffmpeg exiting 0 is not trusted: the video must read back with every frame.
 TEST_F(FlythroughVideo, AVideoThatDoesNotReadBackIsNotCommitted) {
     // Writes a file that is not a video, and says all went well.

@@ -117,9 +117,33 @@ uint32_t BrickTable::newSlot() {
     return uint32_t(masks_.size() / 8 - 1);
 }
 
+double BrickTable::leaveRange(glm::dvec3 p, glm::dvec3 d) const {
+    if (dims_.x == 0) return -1.0;
+    const glm::dvec3 lo = glm::dvec3(lo_) * 8.0, hi = glm::dvec3(lo_ + dims_) * 8.0;
+    double enter = 0.0, leave = kInf;
+    for (int i = 0; i < 3; ++i) {
+        if (d[i] == 0.0) {
+            if (p[i] < lo[i] || p[i] >= hi[i]) return -1.0;  // beside the range, running along it
+            continue;
+        }
+        double t0 = (lo[i] - p[i]) / d[i], t1 = (hi[i] - p[i]) / d[i];
+        if (t0 > t1) std::swap(t0, t1);
+        enter = std::max(enter, t0);
+        leave = std::min(leave, t1);
+    }
+    if (enter > leave) return -1.0;
+    // A margin wider than the walk's own rounding (its crossings are sums), so a
+    // ray that hits within the range hits at the same t as without the clip.
+    return leave + 2.0 + 1e-6 * leave;
+}
+
 // Amanatides & Woo per voxel inside occupied bricks; an empty brick is crossed in
 // one step by advancing every axis's crossing count to where the ray leaves it.
 bool BrickTable::hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const {
+    // Past the table's range nothing is solid: the walk ends where the ray leaves
+    // it, so a radius of any length costs the world's size at most.
+    tMax = std::min(tMax, leaveRange(p, d));
+    if (!(tMax >= 0.0)) return false;
     glm::ivec3 cell(std::floor(p.x), std::floor(p.y), std::floor(p.z)), step;
     glm::dvec3 tNext, tDelta;
     for (int i = 0; i < 3; ++i) {

@@ -36,6 +36,9 @@ public:
     // as open: it is the empty cell in front of a visible face, and at concave
     // edges rounding may put p a hair inside the neighbouring voxel.
     bool hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const;
+    // Beyond which t (plus a margin) the ray from p along d is past the table's
+    // brick range for good; -1 when it never enters it.
+    double leaveRange(glm::dvec3 p, glm::dvec3 d) const;
 
     bool dense() const { return !dense_.empty(); }
 

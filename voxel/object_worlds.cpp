@@ -42,7 +42,7 @@ void requireGeneratedFits(const WorldDesc& world, const ObjectDesc& o, const std
         throw asObjectField(world, field, e);
     }
     const double bytes = s.bricks * double(kBytesPerBrick) + s.leaves * double(s.leafBytes + kMaskLeafBytes);
-    if (bytes > double(world.memoryBudgetBytes))
+    if (bytes > double(memoryRoom(world.memoryBudgetBytes)))
         throw Error(world.source.string(),
                     "field '" + field + ".generator.size': object '" + o.name + "' could make " +
                         overBudget(s.bricks, bytes, world.memoryBudgetBytes),

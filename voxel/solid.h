@@ -40,8 +40,14 @@ constexpr uint64_t kValueLeafBytes = sizeof(openvdb::Int32Tree::LeafNodeType) + 
 // bricks World::bricks() splits it into. Leaves are counted, not walked.
 uint64_t brickCount(const openvdb::MaskTree& tree);
 
-// "N bricks of 8^3 voxels, an estimated X MiB, more than the memory budget of Y MiB":
-// the figures every refusal over the budget gives.
+// The memory a world's work may take: its budget, or less when the process may
+// not map that much more (an address-space limit, `ulimit -v`), so an estimate
+// past what would fail anyway is refused before the work instead of after it.
+size_t memoryRoom(size_t budget);
+
+// "N bricks of 8^3 voxels, an estimated X MiB, more than the memory budget of Y MiB"
+// (or "... than the Y MiB of address space this process may still map"): the
+// figures every refusal over memoryRoom(budget) gives.
 std::string overBudget(double bricks, double bytes, size_t budget);
 
 // Opens desc.gridFile and reads the named grid (or the first): readGridUnguarded,

@@ -52,7 +52,7 @@ openvdb::GridBase::Ptr voxGrid(const VoxScene& scene, const WorldDesc& desc) {
     }
     // Each brick touched holds an int32 leaf and a mask leaf too, as the grid is built.
     const double bytes = bricks * double(kBytesPerBrick + kValueLeafBytes + kMaskLeafBytes);
-    if (bytes > double(desc.memoryBudgetBytes))
+    if (bytes > double(memoryRoom(desc.memoryBudgetBytes)))
         throw Error(file, "the scene could fill " + overBudget(bricks, bytes, desc.memoryBudgetBytes),
                     "raise 'memory_budget_mib' in a world file naming it, or hide layers in MagicaVoxel");
     initializeOpenVdb();

@@ -1,3 +1,4 @@
+#include "common/address_space.h"
 #include "grotto/error.h"
 #include "voxel/object_worlds.h"
 #include "voxel/camera_frame.h"
@@ -90,16 +91,20 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     // expands into full bricks here: refused before any of them is made.
     const uint64_t bricks = brickCount(impl->solid->tree());
     const double bytes = double(bricks) * double(kBytesPerBrick);
-    if (bytes > double(impl->desc.memoryBudgetBytes))
+    if (bytes > double(memoryRoom(impl->desc.memoryBudgetBytes)))
         throw Error(file, "grid '" + grid->getName() + "' is solid over " + overBudget(double(bricks), bytes, impl->desc.memoryBudgetBytes),
                     "raise 'memory_budget_mib' in the world file, or make the grid smaller or sparser");
     return World(std::move(impl));
 }
 
+size_t memoryRoom(size_t budget) { return std::min(budget, addressSpaceLeft().value_or(budget)); }
+
 std::string overBudget(double bricks, double bytes, size_t budget) {
-    char figures[160];
-    std::snprintf(figures, sizeof figures, "%.0f bricks of 8^3 voxels, an estimated %.1f MiB, more than the memory budget of %.1f MiB",
-                  bricks, bytes / (1 << 20), double(budget) / (1 << 20));
+    const size_t room = memoryRoom(budget);
+    char figures[200];
+    std::snprintf(figures, sizeof figures, "%.0f bricks of 8^3 voxels, an estimated %.1f MiB, more than the %s%.1f MiB%s",
+                  bricks, bytes / (1 << 20), room < budget ? "" : "memory budget of ", double(room) / (1 << 20),
+                  room < budget ? " of address space this process may still map (ulimit -v)" : "");
     return figures;
 }
 

@@ -243,7 +243,7 @@ void requireEditFits(const Edit& e, const IndexBox& region, const World::Impl& w
     const double leafBytes = double(kMaskLeafBytes + (w.materials || newMaterials ? kValueLeafBytes : 0));
     const double bytes = bricks * double(kBytesPerBrick) + leaves * leafBytes +
                          (newMaterials ? worldLeaves * double(kValueLeafBytes) : 0.0);
-    if (bytes > double(w.desc.memoryBudgetBytes))
+    if (bytes > double(memoryRoom(w.desc.memoryBudgetBytes)))
         throw Error("edit '" + describe(e) + "'", "could make the world " + overBudget(bricks, bytes, w.desc.memoryBudgetBytes),
                     "edit a smaller region, or raise 'memory_budget_mib' in the world file");
 }
