@@ -122,7 +122,7 @@ json runManifest(const Args& a, const voxel::CameraPathDesc& path, const AoOptio
 // is a deterministic function of the world's solid voxels and of these settings
 // (farm parts join byte for byte into one machine's bake), so they identify it:
 // hashing its texels would read up to gigabytes again on every chunk and tell
-// nothing more. Its rays are the texels' own, which its header does not hold.
+// nothing more. Its rays are the ones its header records.
 json bakeManifest(RenderSession& session) {
     const LiveFaceCache& cache = *session.scene().faceCache();
     const voxel::FaceBakeSettings& s = cache.settings();

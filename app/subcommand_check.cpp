@@ -11,7 +11,9 @@ std::string subcommandError(CLI::App& app, int argc, const char* const* argv) {
     CLI::App* command = &app;
     std::string chain = app.get_name();
     for (int i = 1;; ++i) {
-        const std::vector<CLI::App*> subcommands = command->get_subcommands({});
+        // Option groups are nameless subcommands to CLI11: not words a user types.
+        const std::vector<CLI::App*> subcommands =
+            command->get_subcommands([](CLI::App* sub) { return !sub->get_name().empty(); });
         if (subcommands.empty()) return "";
         std::vector<std::string> names;
         std::string list;
