@@ -53,11 +53,12 @@ constexpr int kFlythroughPngLevel = 2;
 constexpr int kDefaultVideoQuality = 18;
 
 struct Args {
-    std::string world, path, size = "640x360", output, format = "png", frames, chunk, name = kDefaultFramePattern,
+    std::string world, path, size = "640x360", output, format = "png", frames, name = kDefaultFramePattern,
                 aovs, exrType = "float", video;
     int fps = 24, startNumber = 1, pngLevel = kFlythroughPngLevel, videoQuality = kDefaultVideoQuality;
     std::optional<int> warmup;  // default: four times the temporal history
     bool quiet = false;
+    ChunkFlags chunk;
     AoFlags ao;
     CLI::App* cmd = nullptr;
     bool given(const std::string& flag) const { return cmd->count(flag) > 0; }
@@ -157,11 +158,12 @@ void run(const Args& a) {
     const voxel::CameraPathDesc desc = findCameraPath(world, a.path);
     const CameraPath path(desc, world.camera("", size.aspect()));
     const int count = pathFrameCount(path, a.fps, a.path);
-    const FrameRange range = !a.chunk.empty()   ? parseChunk(a.chunk, count)
+    const std::optional<ChunkOfN> chunk = resolveChunk(a.chunk);
+    const FrameRange range = chunk              ? chunkFrames(*chunk, count)
                              : a.frames.empty() ? FrameRange{1, count}
                                                 : parseFrameRange(a.frames, count);
     if (range.count() == 0) {
-        std::printf("chunk %s has no frames: the path has %d, fewer than the chunks\n", a.chunk.c_str(), count);
+        std::printf("chunk %s has no frames: the path has %d, fewer than the chunks\n", chunk->text().c_str(), count);
         return;
     }
     const AoOptions ao = resolveAo(world, a.ao);
@@ -278,8 +280,7 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based, or N for the first N (default: the whole path)");
-    cmd->add_option("--chunk", args->chunk,
-                    "K/N: the K-th of N equal contiguous parts of the path's frames (a render farm's task K of N)");
+    addChunkOptions(cmd, args->chunk, "the K-th of N equal contiguous parts of the path's frames");
     cmd->add_option("--warmup", args->warmup,
                     "Frames rendered but not written before the first one written; the default (four times the "
                     "temporal history, 64; 0 with --ao cache, which keeps none) keeps a split run within 2/255 of "
