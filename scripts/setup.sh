@@ -16,6 +16,7 @@ packages=(
   libglfw3-dev libimgui-dev                                       # grotto view
   libtinygltf-dev                                                 # glTF in (cameras) and out (meshes)
   xvfb xauth                                                      # the viewer's tests, headless
+  slurm-wlm munge                                                 # docs/farm.md's Slurm recipes, on a one-node cluster
   "$@"
 )
 
