@@ -17,6 +17,7 @@ packages=(
   libtinygltf-dev                                                 # glTF in (cameras) and out (meshes)
   xvfb xauth                                                      # the viewer's tests, headless
   slurm-wlm munge                                                 # docs/farm.md's Slurm recipes, on a one-node cluster
+  python3-yaml nodejs                                             # examples/farm/'s job templates and job types, checked
   "$@"
 )
 
