@@ -36,6 +36,7 @@ void addBakeCommand(CLI::App& app) {
         std::vector<std::string> merge;
         uint32_t rays = voxel::kDefaultBakeRays, sunRays = voxel::kDefaultBakeSunRays, texels = voxel::kDefaultBakeTexels;
         AoFlags ao;
+        ProgressFormat progress = ProgressFormat::Auto;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("bake", "Converge the AO, sky light and sun cached on every exposed voxel face");
@@ -50,6 +51,7 @@ void addBakeCommand(CLI::App& app) {
     cmd->add_option("--texels", args->texels, "Texels per face side (k x k per face)")
         ->capture_default_str()->check(CLI::Range(1u, 16u));
     cmd->add_option("--radius", args->ao.set.radius, "AO radius R in world units (default: the world's)");
+    addProgressOption(cmd, args->progress);
     cmd->callback([args] {
         const std::filesystem::path out = args->output;
         if (out.extension() != ".gfc") throw Error(out.string(), "output must end in .gfc", "a Grotto face cache");
@@ -78,7 +80,8 @@ void addBakeCommand(CLI::App& app) {
                                               .totalFaces = faces.size(), .firstFace = first, .faceCount = count}};
         cache.texels.resize(cache.header.texelCount());
         const auto start = std::chrono::steady_clock::now();
-        FaceBakeProgress progress(stderr);
+        FaceBakeProgress progress(stderr, args->progress,
+                                  chunk ? nlohmann::ordered_json{{"chunk", chunk->text()}} : nlohmann::ordered_json::object());
         voxel::bakeFacesInSteps(table, world, std::span(faces).subspan(first, count), settings, cache.texels,
                                 std::ref(progress));
         progress.finish();

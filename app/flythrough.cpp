@@ -1,5 +1,5 @@
 // grotto flythrough WORLD --path NAME [--size WxH] [--fps N] [--frames A-B | --chunk K/N]
-//                   [--warmup K] [--format png|exr] [-o DIR] [--video FILE.mp4] [--quiet]
+//                   [--warmup K] [--format png|exr] [-o DIR] [--video FILE.mp4] [--quiet | --progress jsonl]
 // Renders a camera path to DIR/frame.NNNN.png (or .exr with AOVs; --name and
 // --start-number choose the names) and DIR/stats.json, and with --video pipes
 // the frames to ffmpeg as well (or instead, without -o). Frame i (1-based)
@@ -37,6 +37,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
@@ -58,6 +59,7 @@ struct Args {
     int fps = 24, startNumber = 1, pngLevel = kFlythroughPngLevel, videoQuality = kDefaultVideoQuality;
     std::optional<int> warmup;  // default: four times the temporal history
     bool quiet = false;
+    ProgressFormat progress = ProgressFormat::Auto;
     ChunkFlags chunk;
     AoFlags ao;
     CLI::App* cmd = nullptr;
@@ -90,6 +92,8 @@ std::vector<std::string> exrAovs(const Args& a) {
 void requireConsistentFlags(const Args& a) {
     if (a.output.empty() && a.video.empty())
         throw Error("--output", "is required (or --video FILE.mp4 for a video alone)", "e.g. -o out/frames");
+    if (a.quiet && a.given("--progress"))
+        throw Error("--progress", "cannot be combined with --quiet", "--quiet prints no progress at all");
     if (a.given("--chunk") && a.given("--frames"))
         throw Error("--chunk", "cannot be combined with --frames", "--chunk K/N picks the frames itself");
     const bool png = a.format == "png";
@@ -228,7 +232,7 @@ void run(const Args& a) {
         const bool exr = a.format == "exr";
         FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(shape, encoding, exr)));
         std::optional<Progress> progress;
-        if (!a.quiet) progress.emplace(end - start + 1, stdout);
+        if (!a.quiet) progress.emplace(end - start + 1, stdout, a.progress);
         for (int i = start; i <= end; ++i) {
             const double time = double(i - 1) / a.fps;
             const Camera camera = session->pathFrame(time, size.width, size.height).camera;
@@ -250,10 +254,12 @@ void run(const Args& a) {
                 });
             if (stats && !write) stats->add(entry);
             if (stats) stats->mergeIfDue();
+            const char* state = write ? "written" : toVideo ? "to video" : "warm-up";
             char what[96];
-            std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i,
-                          write ? "written" : toVideo ? "to video" : "warm-up", frameStats.wallMs);
-            if (progress) progress->step(what);
+            std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i, state, frameStats.wallMs);
+            nlohmann::ordered_json fields = {{"frame", i}, {"state", state}, {"wall_ms", std::round(frameStats.wallMs * 10) / 10}};
+            if (chunk) fields["chunk"] = chunk->text();
+            if (progress) progress->step(what, fields);
         }
         writer.finish();
         if (pipe) pipe->finish();
@@ -310,6 +316,7 @@ void addFlythroughCommand(CLI::App& app) {
         ->capture_default_str()
         ->check(wholeRange(0, 51));
     cmd->add_flag("--quiet", args->quiet, "No progress lines, only the results");
+    addProgressOption(cmd, args->progress);
     addAoFlags(cmd, args->ao);
     cmd->callback([args] { run(*args); });
 }
