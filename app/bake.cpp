@@ -1,9 +1,10 @@
-// grotto bake WORLD -o FILE [--chunk K/N] [--rays N] [--texels K]
+// grotto bake WORLD -o FILE [--chunk K/N | --chunk auto] [--rays N] [--texels K]
 // grotto bake --merge PART... -o FILE
 // Converges the face cache (voxel/face_cache.h) of every exposed face on every
 // core, with progress and an ETA, and writes it tied to the world and settings
 // (voxel/face_cache_file.h). --chunk K/N bakes the K-th of N equal runs of faces
-// (1 <= K <= N, as flythrough counts chunks), for a farm; --merge joins the parts
+// (1 <= K <= N, as flythrough counts chunks; auto: from the scheduler,
+// app/farm_chunk.h), for a farm; --merge joins the parts
 // into the file one machine's bake writes.
 #include "app/commands.h"
 #include "app/options.h"
@@ -16,19 +17,9 @@
 
 #include <chrono>
 #include <cstdio>
-#include <regex>
 
 namespace grotto::app {
 namespace {
-
-// "K/N" with 1 <= K <= N, as flythrough --chunk counts.
-std::pair<uint64_t, uint64_t> parseChunk(const std::string& text) {
-    static const std::regex form(R"((\d{1,9})/(\d{1,9}))");
-    std::smatch m;
-    if (!std::regex_match(text, m, form) || std::stoull(m[1]) == 0 || std::stoull(m[1]) > std::stoull(m[2]))
-        throw Error("--chunk", "'" + text + "' is not K/N", "accepted: K/N with 1 <= K <= N, e.g. 3/8");
-    return {std::stoull(m[1]), std::stoull(m[2])};
-}
 
 void merge(const std::vector<std::string>& parts, const std::filesystem::path& out) {
     const voxel::FaceCacheFile whole = voxel::mergeFaceCaches({parts.begin(), parts.end()});
@@ -40,16 +31,18 @@ void merge(const std::vector<std::string>& parts, const std::filesystem::path& o
 
 void addBakeCommand(CLI::App& app) {
     struct Args {
-        std::string world, output, chunk;
+        std::string world, output;
+        ChunkFlags chunk;
         std::vector<std::string> merge;
         uint32_t rays = voxel::kDefaultBakeRays, sunRays = voxel::kDefaultBakeSunRays, texels = voxel::kDefaultBakeTexels;
         AoFlags ao;
+        ProgressFormat progress = ProgressFormat::Auto;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("bake", "Converge the AO, sky light and sun cached on every exposed voxel face");
     cmd->add_option("world", args->world, "World .json or .vdb");
     cmd->add_option("-o,--output", args->output, "Output face cache (.gfc)")->required();
-    cmd->add_option("--chunk", args->chunk, "Bake only the K-th of N equal runs of faces (K/N, 1 <= K <= N), for a farm");
+    addChunkOptions(cmd, args->chunk, "bake only the K-th of N equal runs of faces");
     cmd->add_option("--merge", args->merge, "Join these parts (bake --chunk) into one cache")->expected(1, -1);
     cmd->add_option("--rays", args->rays, "Cosine-weighted rays per texel (AO and sky)")
         ->capture_default_str()->check(CLI::Range(1u, 1u << 20));
@@ -58,27 +51,26 @@ void addBakeCommand(CLI::App& app) {
     cmd->add_option("--texels", args->texels, "Texels per face side (k x k per face)")
         ->capture_default_str()->check(CLI::Range(1u, 16u));
     cmd->add_option("--radius", args->ao.set.radius, "AO radius R in world units (default: the world's)");
+    addProgressOption(cmd, args->progress);
     cmd->callback([args] {
         const std::filesystem::path out = args->output;
         if (out.extension() != ".gfc") throw Error(out.string(), "output must end in .gfc", "a Grotto face cache");
         requireOutputPath(out);
         removeAbandonedTemporariesOf(out);
         if (!args->merge.empty()) {
-            if (!args->world.empty() || !args->chunk.empty())
+            if (!args->world.empty() || !args->chunk.chunk.empty() || args->chunk.chunks)
                 throw Error("--merge", "joins parts alone", "give no WORLD and no --chunk with it");
             merge(args->merge, out);
             return;
         }
         if (args->world.empty()) throw Error("bake", "a WORLD is required", "or --merge PART...");
+        const std::optional<ChunkOfN> chunk = resolveChunk(args->chunk);  // refused before the world is read
         const voxel::World world = voxel::World::load(args->world);
         const double radius = double(resolveAo(world, args->ao).estimator.radius);
         const voxel::BrickTable table(world);
         const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
         uint64_t first = 0, count = faces.size();
-        if (!args->chunk.empty()) {
-            const auto [k, n] = parseChunk(args->chunk);
-            first = faces.size() * (k - 1) / n, count = faces.size() * k / n - first;
-        }
+        if (chunk) first = faces.size() * (chunk->k - 1) / chunk->n, count = faces.size() * chunk->k / chunk->n - first;
         const voxel::Lighting& light = world.desc().lighting;
         const voxel::FaceBakeSettings settings{.radius = radius, .texelsPerSide = args->texels, .rays = args->rays,
                                                .sunRays = args->sunRays, .sunDirection = glm::dvec3(light.sunDirection),
@@ -88,7 +80,8 @@ void addBakeCommand(CLI::App& app) {
                                               .totalFaces = faces.size(), .firstFace = first, .faceCount = count}};
         cache.texels.resize(cache.header.texelCount());
         const auto start = std::chrono::steady_clock::now();
-        FaceBakeProgress progress(stderr);
+        FaceBakeProgress progress(stderr, args->progress,
+                                  chunk ? nlohmann::ordered_json{{"chunk", chunk->text()}} : nlohmann::ordered_json::object());
         voxel::bakeFacesInSteps(table, world, std::span(faces).subspan(first, count), settings, cache.texels,
                                 std::ref(progress));
         progress.finish();

@@ -1,5 +1,5 @@
 // grotto flythrough WORLD --path NAME [--size WxH] [--fps N] [--frames A-B | --chunk K/N]
-//                   [--warmup K] [--format png|exr] [-o DIR] [--video FILE.mp4] [--quiet]
+//                   [--warmup K] [--format png|exr] [-o DIR] [--video FILE.mp4] [--quiet | --progress jsonl]
 // Renders a camera path to DIR/frame.NNNN.png (or .exr with AOVs; --name and
 // --start-number choose the names) and DIR/stats.json, and with --video pipes
 // the frames to ffmpeg as well (or instead, without -o). Frame i (1-based)
@@ -37,6 +37,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 
@@ -53,11 +54,13 @@ constexpr int kFlythroughPngLevel = 2;
 constexpr int kDefaultVideoQuality = 18;
 
 struct Args {
-    std::string world, path, size = "640x360", output, format = "png", frames, chunk, name = kDefaultFramePattern,
+    std::string world, path, size = "640x360", output, format = "png", frames, name = kDefaultFramePattern,
                 aovs, exrType = "float", video;
     int fps = 24, startNumber = 1, pngLevel = kFlythroughPngLevel, videoQuality = kDefaultVideoQuality;
     std::optional<int> warmup;  // default: four times the temporal history
     bool quiet = false;
+    ProgressFormat progress = ProgressFormat::Auto;
+    ChunkFlags chunk;
     AoFlags ao;
     CLI::App* cmd = nullptr;
     bool given(const std::string& flag) const { return cmd->count(flag) > 0; }
@@ -89,6 +92,8 @@ std::vector<std::string> exrAovs(const Args& a) {
 void requireConsistentFlags(const Args& a) {
     if (a.output.empty() && a.video.empty())
         throw Error("--output", "is required (or --video FILE.mp4 for a video alone)", "e.g. -o out/frames");
+    if (a.quiet && a.given("--progress"))
+        throw Error("--progress", "cannot be combined with --quiet", "--quiet prints no progress at all");
     if (a.given("--chunk") && a.given("--frames"))
         throw Error("--chunk", "cannot be combined with --frames", "--chunk K/N picks the frames itself");
     const bool png = a.format == "png";
@@ -157,11 +162,12 @@ void run(const Args& a) {
     const voxel::CameraPathDesc desc = findCameraPath(world, a.path);
     const CameraPath path(desc, world.camera("", size.aspect()));
     const int count = pathFrameCount(path, a.fps, a.path);
-    const FrameRange range = !a.chunk.empty()   ? parseChunk(a.chunk, count)
+    const std::optional<ChunkOfN> chunk = resolveChunk(a.chunk);
+    const FrameRange range = chunk              ? chunkFrames(*chunk, count)
                              : a.frames.empty() ? FrameRange{1, count}
                                                 : parseFrameRange(a.frames, count);
     if (range.count() == 0) {
-        std::printf("chunk %s has no frames: the path has %d, fewer than the chunks\n", a.chunk.c_str(), count);
+        std::printf("chunk %s has no frames: the path has %d, fewer than the chunks\n", chunk->text().c_str(), count);
         return;
     }
     const AoOptions ao = resolveAo(world, a.ao);
@@ -226,7 +232,7 @@ void run(const Args& a) {
         const bool exr = a.format == "exr";
         FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(shape, encoding, exr)));
         std::optional<Progress> progress;
-        if (!a.quiet) progress.emplace(end - start + 1, stdout);
+        if (!a.quiet) progress.emplace(end - start + 1, stdout, a.progress);
         for (int i = start; i <= end; ++i) {
             const double time = double(i - 1) / a.fps;
             const Camera camera = session->pathFrame(time, size.width, size.height).camera;
@@ -248,10 +254,12 @@ void run(const Args& a) {
                 });
             if (stats && !write) stats->add(entry);
             if (stats) stats->mergeIfDue();
+            const char* state = write ? "written" : toVideo ? "to video" : "warm-up";
             char what[96];
-            std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i,
-                          write ? "written" : toVideo ? "to video" : "warm-up", frameStats.wallMs);
-            if (progress) progress->step(what);
+            std::snprintf(what, sizeof what, "frame %04d %s %.0f ms", i, state, frameStats.wallMs);
+            nlohmann::ordered_json fields = {{"frame", i}, {"state", state}, {"wall_ms", std::round(frameStats.wallMs * 10) / 10}};
+            if (chunk) fields["chunk"] = chunk->text();
+            if (progress) progress->step(what, fields);
         }
         writer.finish();
         if (pipe) pipe->finish();
@@ -278,8 +286,7 @@ void addFlythroughCommand(CLI::App& app) {
     cmd->add_option("--size", args->size, "Image size WxH")->capture_default_str();
     cmd->add_option("--fps", args->fps, "Frames per second of path time")->capture_default_str()->check(CLI::Range(1, 1000));
     cmd->add_option("--frames", args->frames, "Frames A-B to write, 1-based, or N for the first N (default: the whole path)");
-    cmd->add_option("--chunk", args->chunk,
-                    "K/N: the K-th of N equal contiguous parts of the path's frames (a render farm's task K of N)");
+    addChunkOptions(cmd, args->chunk, "the K-th of N equal contiguous parts of the path's frames");
     cmd->add_option("--warmup", args->warmup,
                     "Frames rendered but not written before the first one written; the default (four times the "
                     "temporal history, 64; 0 with --ao cache, which keeps none) keeps a split run within 2/255 of "
@@ -309,6 +316,7 @@ void addFlythroughCommand(CLI::App& app) {
         ->capture_default_str()
         ->check(wholeRange(0, 51));
     cmd->add_flag("--quiet", args->quiet, "No progress lines, only the results");
+    addProgressOption(cmd, args->progress);
     addAoFlags(cmd, args->ao);
     cmd->callback([args] { run(*args); });
 }

@@ -49,19 +49,10 @@ FrameRange parseFrameRange(const std::string& text, int count, const std::string
     return {a, b};
 }
 
-FrameRange parseChunk(const std::string& text, int count, const std::string& option) {
-    const std::string accepted = "expected K/N with 1 <= K <= N <= " + std::to_string(kMaxPathFrames) + ", e.g. 2/8";
-    const size_t slash = text.find('/');
-    auto isNumber = [](const std::string& t) {
-        return !t.empty() && t.size() <= 9 && std::all_of(t.begin(), t.end(), [](char c) { return c >= '0' && c <= '9'; });
-    };
-    if (slash == std::string::npos || !isNumber(text.substr(0, slash)) || !isNumber(text.substr(slash + 1)))
-        throw Error(option, "'" + text + "' is not a chunk", accepted);
-    const int k = std::stoi(text.substr(0, slash)), n = std::stoi(text.substr(slash + 1));
-    if (n < 1 || n > kMaxPathFrames || k < 1 || k > n) throw Error(option, "'" + text + "' is out of range", accepted);
-    const int base = count / n, longer = count % n;  // chunks 1..longer have base + 1 frames
-    const int first = 1 + (k - 1) * base + std::min(k - 1, longer);
-    return {first, first + base + (k <= longer ? 1 : 0) - 1};
+FrameRange chunkFrames(const ChunkOfN& chunk, int count) {
+    const int base = count / chunk.n, longer = count % chunk.n;  // chunks 1..longer have base + 1 frames
+    const int first = 1 + (chunk.k - 1) * base + std::min(chunk.k - 1, longer);
+    return {first, first + base + (chunk.k <= longer ? 1 : 0) - 1};
 }
 
 int pathFrameCount(const CameraPath& path, int fps, const std::string& name) {

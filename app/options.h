@@ -1,5 +1,6 @@
 #pragma once
 // Small pieces the subcommands share: image sizes and the checks that end a run.
+#include "app/farm_chunk.h"
 #include "engine/ao_settings.h"
 #include "engine/camera_path.h"
 #include "engine/frame/chunk_culling.h"
@@ -33,11 +34,10 @@ struct FrameRange {
 };
 FrameRange parseFrameRange(const std::string& text, int count, const std::string& option = "--frames");
 
-// "K/N": the K-th (1-based) of N contiguous ranges that split frames 1..count as
-// evenly as can be (the first count % N ranges one frame longer than the rest);
-// empty (count() 0) when N > count leaves chunk K without frames. Throws
-// grotto::Error (input) naming the option.
-FrameRange parseChunk(const std::string& text, int count, const std::string& option = "--chunk");
+// The K-th (1-based) of N contiguous ranges that split frames 1..count as evenly
+// as can be (the first count % N ranges one frame longer than the rest); empty
+// (count() 0) when N > count leaves chunk K without frames.
+FrameRange chunkFrames(const ChunkOfN& chunk, int count);
 
 // The most frames a path may have (11.5 hours at 24 fps): frame numbers stay
 // well inside int, and a typo in --fps or a key time is caught before rendering.

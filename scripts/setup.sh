@@ -16,6 +16,8 @@ packages=(
   libglfw3-dev libimgui-dev                                       # grotto view
   libtinygltf-dev                                                 # glTF in (cameras) and out (meshes)
   xvfb xauth                                                      # the viewer's tests, headless
+  slurm-wlm munge                                                 # docs/farm.md's Slurm recipes, on a one-node cluster
+  python3-yaml nodejs                                             # examples/farm/'s job templates and job types, checked
   "$@"
 )
 

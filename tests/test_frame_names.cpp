@@ -1,6 +1,6 @@
 // How a flythrough names and splits its frames: --name patterns with one
 // integer conversion and a start number (app/frame_names.h), and --chunk K/N
-// ranges that cover the path exactly once (app/options.h).
+// ranges that cover the path exactly once (app/options.h, app/farm_chunk.h).
 #include "app/frame_names.h"
 #include "app/options.h"
 #include "grotto/error.h"
@@ -47,22 +47,22 @@ TEST(Chunks, CoverThePathOnceInOrder) {
         for (int n : {1, 2, 3, 4, 7, 12}) {
             int next = 1;
             for (int k = 1; k <= n; ++k) {
-                const FrameRange r = parseChunk(std::to_string(k) + "/" + std::to_string(n), count);
+                const FrameRange r = chunkFrames({k, n}, count);
                 EXPECT_EQ(r.first, next) << k << "/" << n << " of " << count;
                 EXPECT_GE(r.count(), count / n);
                 EXPECT_LE(r.count(), count / n + 1);
-                if (k > 1 && r.count() > 0) EXPECT_LE(r.count(), parseChunk(std::to_string(k - 1) + "/" + std::to_string(n), count).count());
+                if (k > 1 && r.count() > 0) EXPECT_LE(r.count(), chunkFrames({k - 1, n}, count).count());
                 next = r.last + 1;
             }
             EXPECT_EQ(next, count + 1) << n << " chunks of " << count;
         }
-    EXPECT_EQ(parseChunk("3/3", 10).first, 8);  // 4, 3, 3
-    EXPECT_EQ(parseChunk("5/8", 3).count(), 0);  // more chunks than frames: nothing to do
+    EXPECT_EQ(chunkFrames(parseKOfN("3/3"), 10).first, 8);  // 4, 3, 3
+    EXPECT_EQ(chunkFrames(parseKOfN("5/8"), 3).count(), 0);  // more chunks than frames: nothing to do
 }
 
 TEST(Chunks, RefusesWhatIsNotKOfN) {
     for (const char* bad : {"0/3", "4/3", "3", "a/b", "1/0", "-1/3", "1/3x", " 1/3", "1/ 3", "1//3", "/3", "1/2000000"})
-        test::inputErrorOf([&] { parseChunk(bad, 100); }, {"--chunk"});
+        test::inputErrorOf([&] { parseKOfN(bad); }, {"--chunk"});
 }
 
 }  // namespace
