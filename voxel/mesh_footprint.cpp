@@ -85,8 +85,8 @@ MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options)
     for (size_t i = 0; i < origins.size(); ++i)
         if (corners[i]) {
             index.emplace(origins[i], i);
-            cornerBytes += sizeof(std::vector<glm::ivec3>) +
-                           vectorBytes<glm::ivec3>(grownCapacity(corners[i]->size()), corners[i]->size());
+            // Resident whole: this count's own corners, freed, are what LiveMesh's reuse.
+            cornerBytes += sizeof(std::vector<glm::ivec3>) + heapBytes(corners[i]->capacity() * sizeof(glm::ivec3));
         }
     // Second pass: each chunk meshed again, welded to its neighbours as LiveMesh
     // welds it, measured and dropped.
