@@ -40,7 +40,6 @@ uint64_t grownCapacity(uint64_t reserved, uint64_t size) {
 
 MeshFootprint measure(const MeshChunkQuads& c) {
     MeshFootprint f;
-    f.chunks = 1;
     // In LiveMesh: a map node; rects as meshCells grew them, quads as weld grew them
     // from a reserve of the rects; the levels pushed back one by one.
     const uint64_t levels = c.coarser.size();
@@ -60,7 +59,6 @@ MeshFootprint measure(const MeshChunkQuads& c) {
 }
 
 MeshFootprint sum(MeshFootprint a, const MeshFootprint& b) {
-    a.chunks += b.chunks;
     a.quads += b.quads;
     a.liveBytes += b.liveBytes;
     a.listBytes += b.listBytes;

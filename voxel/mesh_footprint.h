@@ -14,7 +14,6 @@ namespace grotto::voxel {
 uint64_t heapBytes(uint64_t bytes);
 
 struct MeshFootprint {
-    uint64_t chunks = 0;     // with quads
     uint64_t quads = 0;      // every level's
     uint64_t liveBytes = 0;  // a LiveMesh of them: its map, and each chunk's vectors at the capacity they grow to
     uint64_t listBytes = 0;  // LiveMesh::list()'s copy of them (exact capacities)

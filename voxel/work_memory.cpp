@@ -36,7 +36,7 @@ void requireWorkFits(const World& world, const WorkMemory& estimate) {
     if (double(estimate.total()) <= double(room)) return;
     char figures[300];
     std::snprintf(figures, sizeof figures,
-                  "loading and meshing it needs an estimated %.1f MiB (grids %.1f MiB, %llu quads %.1f MiB), more than the %s%.1f MiB%s",
+                  "loading and meshing it needs an estimated %.1f MiB (grids %.1f MiB, a mesh of %llu quads %.1f MiB), more than the %s%.1f MiB%s",
                   double(estimate.total()) / (1 << 20), double(estimate.gridBytes) / (1 << 20),
                   (unsigned long long)estimate.quads, double(estimate.meshBytes) / (1 << 20),
                   room < budget ? "" : "memory budget of ", double(room) / (1 << 20),
