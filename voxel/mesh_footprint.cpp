@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_reduce.h>
 
+#include <atomic>
 #include <bit>
 #include <map>
 #include <optional>
@@ -70,14 +71,27 @@ MeshFootprint sum(MeshFootprint a, const MeshFootprint& b) {
 
 uint64_t heapBytes(uint64_t bytes) { return bytes ? std::max<uint64_t>(32, (bytes + 8 + 15) & ~uint64_t(15)) : 0; }
 
-MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options) {
+MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options, uint64_t stopAbove) {
     const std::vector<glm::ivec3> origins = world.chunkOrigins();
-    // First pass: which chunks have rectangles, and their boundary corners.
+    // What the chunks counted so far take at least, in either pass: past stopAbove, the rest is skipped.
+    std::atomic<uint64_t> counted{0};
+    auto stopped = [&] { return counted.load(std::memory_order_relaxed) > stopAbove; };
+    // First pass: which chunks have rectangles, and their boundary corners (and
+    // their rectangles' bytes, in LiveMesh and in its copy: a part of the whole).
     std::vector<std::optional<std::vector<glm::ivec3>>> corners(origins.size());
     tbb::parallel_for(size_t(0), origins.size(), [&](size_t i) {
+        if (stopped()) return;
         const MeshChunkQuads c = world.meshChunk(origins[i], options);
-        if (!c.rects.empty()) corners[i] = boundaryCorners(c);
+        if (c.rects.empty()) return;
+        corners[i] = boundaryCorners(c);
+        auto bytes = [](const std::vector<gpu::PackedQuad>& r) {
+            return vectorBytes<gpu::PackedQuad>(grownCapacity(r.size()), r.size()) + vectorBytes<gpu::PackedQuad>(r.size(), r.size());
+        };
+        counted += bytes(c.rects);
+        for (const MeshLevel& l : c.coarser) counted += bytes(l.rects);
     });
+    if (stopped()) return {.liveBytes = counted, .complete = false};
+    counted = 0;
     std::map<glm::ivec3, size_t, LiveMesh::Less> index;
     uint64_t cornerBytes = 0;
     for (size_t i = 0; i < origins.size(); ++i)
@@ -91,7 +105,7 @@ MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options)
     MeshFootprint total = tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, origins.size()), MeshFootprint{},
         [&](const tbb::blocked_range<size_t>& range, MeshFootprint f) {
-            for (size_t i = range.begin(); i != range.end(); ++i) {
+            for (size_t i = range.begin(); i != range.end() && !stopped(); ++i) {
                 if (!corners[i]) continue;
                 MeshChunkQuads c = world.meshChunk(origins[i], options);
                 std::vector<ChunkBoundary> around;
@@ -100,12 +114,15 @@ MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options)
                     if (const auto it = index.find(n); it != index.end()) around.push_back({n, &*corners[it->second]});
                 }
                 weld(c, around);
-                f = sum(f, measure(c));
+                const MeshFootprint one = measure(c);
+                counted += one.liveBytes + one.listBytes;
+                f = sum(f, one);
             }
             return f;
         },
         sum);
     total.cornerBytes = cornerBytes;
+    total.complete = !stopped();
     return total;
 }
 

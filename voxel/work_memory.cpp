@@ -10,9 +10,10 @@
 
 namespace grotto::voxel {
 
-WorkMemory estimateWorkMemory(const World& world) {
+WorkMemory estimateWorkMemory(const World& world, uint64_t stopAbove) {
     const WorldStats s = world.stats();
-    const MeshFootprint mesh = countMeshFootprint(world, {.coarseLevels = kMaxCoarseLevels});
+    const MeshFootprint mesh = countMeshFootprint(world, {.coarseLevels = kMaxCoarseLevels},
+                                                  stopAbove > s.hostBytes ? stopAbove - s.hostBytes : 0);
     // countExposedFaces: the bricks listed, and a hash map of them (a node with
     // its cached hash, and a bucket, each).
     const uint64_t faceCount = heapBytes(s.bricks * sizeof(Brick)) + s.bricks * (heapBytes(40) + 8);
@@ -28,17 +29,25 @@ WorkMemory estimateWorkMemory(const World& world) {
     // copy outlives it; the face count reuses its memory once it is gone.
     m.meshBytes = std::max({mesh.liveBytes + std::max(mesh.cornerBytes, mesh.listBytes), mesh.listBytes + faceCount});
     m.quads = mesh.quads;
+    m.complete = mesh.complete;
     return m;
 }
 
-void requireWorkFits(const World& world, const WorkMemory& estimate) {
+WorkMemory requireWorkFits(const World& world) {
     const size_t budget = world.desc().memoryBudgetBytes, room = memoryRoom(budget);
-    if (double(estimate.total()) <= double(room)) return;
-    char figures[300];
-    std::snprintf(figures, sizeof figures,
-                  "loading and meshing it needs an estimated %.1f MiB (grids %.1f MiB, a mesh of %llu quads %.1f MiB), more than the %s%.1f MiB%s",
-                  double(estimate.total()) / (1 << 20), double(estimate.gridBytes) / (1 << 20),
-                  (unsigned long long)estimate.quads, double(estimate.meshBytes) / (1 << 20),
+    const WorkMemory estimate = estimateWorkMemory(world, room);
+    if (estimate.complete && estimate.total() <= room) return estimate;
+    char counted[160];
+    if (estimate.complete)
+        std::snprintf(counted, sizeof counted, "an estimated %.1f MiB (grids %.1f MiB, a mesh of %llu quads %.1f MiB)",
+                      double(estimate.total()) / (1 << 20), double(estimate.gridBytes) / (1 << 20),
+                      (unsigned long long)estimate.quads, double(estimate.meshBytes) / (1 << 20));
+    else  // counting stopped there
+        std::snprintf(counted, sizeof counted, "at least an estimated %.1f MiB (grids %.1f MiB, and %.1f MiB of mesh counted before it stopped)",
+                      double(estimate.total()) / (1 << 20), double(estimate.gridBytes) / (1 << 20),
+                      double(estimate.meshBytes) / (1 << 20));
+    char figures[400];
+    std::snprintf(figures, sizeof figures, "loading and meshing it needs %s, more than the %s%.1f MiB%s", counted,
                   room < budget ? "" : "memory budget of ", double(room) / (1 << 20),
                   room < budget ? " of address space this process may still map (ulimit -v)" : "");
     throw Error(world.desc().gridFile.string(), figures,

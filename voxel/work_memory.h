@@ -16,14 +16,17 @@ struct WorkMemory {
     uint64_t gridBytes = 0;  // the solid and material grids
     uint64_t meshBytes = 0;  // beside them, the mesh at its peak: while welded, copied, or faces counted
     uint64_t quads = 0;      // every level's
+    bool complete = true;    // false: counting stopped past stopAbove; total() is a lower bound
     uint64_t total() const { return std::max(readBytes, gridBytes + meshBytes); }
 };
 
-// Meshes every chunk once more to count it (memory bounded by a chunk per thread).
-WorkMemory estimateWorkMemory(const World& world);
+// Meshes every chunk once more to count it (memory bounded by a chunk per
+// thread), stopping once the estimate passes `stopAbove`.
+WorkMemory estimateWorkMemory(const World& world, uint64_t stopAbove = UINT64_MAX);
 
-// Throws grotto::Error (input) naming the world's grid file when the estimate is
-// over its memory budget (or the address space left): before the work, not after.
-void requireWorkFits(const World& world, const WorkMemory& estimate);
+// The estimate, when it is within the world's memory budget (or the address
+// space left); else throws grotto::Error (input) naming the world's grid file:
+// before the work, not after.
+WorkMemory requireWorkFits(const World& world);
 
 }  // namespace grotto::voxel

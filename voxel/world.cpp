@@ -124,9 +124,7 @@ World World::load(const std::filesystem::path& path) {
     // A .vox's few bytes can place a model many times over, and its mesh, not its
     // grid, is most of what it costs: the whole work is estimated before it is done.
     if (isVoxFile(world.desc().gridFile)) {
-        const WorkMemory estimate = estimateWorkMemory(world);
-        requireWorkFits(world, estimate);
-        world.impl_->workBytesEstimate = estimate.total();
+        world.impl_->workBytesEstimate = requireWorkFits(world).total();
     }
     return world;
 }
