@@ -73,6 +73,9 @@ void addInfoCommand(CLI::App& app) {
         std::printf("quads          %zu (coarser levels of detail: %zu more)\n", quads, coarse);
         std::printf("host bytes     %zu (grid as loaded: %zu)\n", host, s.sourceGridBytes);
         std::printf("gpu bytes      %zu\n", gpu);
+        if (s.workBytesEstimate)  // .vox worlds (voxel/work_memory.h): what this command takes beyond itself
+            std::printf("memory         an estimated %.1f MiB to load and mesh (budget %zu MiB)\n",
+                        double(s.workBytesEstimate) / (1 << 20), w.desc().memoryBudgetBytes >> 20);
         {  // what a bake at the default k adds (--ao cache, docs/face-cache.md)
             const voxel::ExposedFaceCount faces = voxel::countExposedFaces(w);
             const size_t bytes = voxel::faceCacheGpuBytes(faces, voxel::kDefaultBakeTexels);

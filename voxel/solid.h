@@ -19,6 +19,7 @@ struct World::Impl {
     double voxelSize = 1.0;
     glm::dvec3 origin{0.0};
     size_t sourceGridBytes = 0;
+    uint64_t workBytesEstimate = 0;          // WorldStats::workBytesEstimate
     // What save() writes back: the source grid's name, type and metadata.
     std::string gridName = "solid";
     std::string sourceType;                  // openvdb type name, e.g. "Tree_bool_5_4_3"

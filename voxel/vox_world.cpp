@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <limits>
+#include <unordered_set>
 
 namespace grotto::voxel {
 
@@ -15,6 +17,13 @@ bool isVoxFile(const std::filesystem::path& path) {
 }
 
 namespace {
+
+struct BrickKeyHash {
+    size_t operator()(glm::ivec3 b) const {
+        return size_t(uint32_t(b.x)) * 0x9E3779B97F4A7C15ull ^ size_t(uint32_t(b.y)) * 0xC2B2AE3D27D4EB4Full ^
+               size_t(uint32_t(b.z)) * 0x165667B19E3779F9ull;
+    }
+};
 
 float linearFromSrgb(uint8_t byte) {
     const double c = byte / 255.0;
@@ -41,19 +50,21 @@ std::vector<Material> voxMaterials(const VoxScene& scene) {
 
 openvdb::GridBase::Ptr voxGrid(const VoxScene& scene, const WorldDesc& desc) {
     const std::string file = desc.gridFile.string();
-    // Bricks the voxels can touch at most: per instance, its voxels or the
-    // bricks its model's box spans, whichever is fewer.
-    double bricks = 0.0;
-    for (const VoxInstance& inst : scene.instances) {
-        const VoxModel& model = scene.models[inst.model];
-        double box = 1.0;
-        for (int a = 0; a < 3; ++a) box *= double(model.size[a] + 7) / 8 + 1;
-        bricks += std::min(double(model.voxels.size()), box);
-    }
-    // Each brick touched holds an int32 leaf and a mask leaf too, as the grid is built.
-    const double bytes = bricks * double(kBytesPerBrick + kValueLeafBytes + kMaskLeafBytes);
+    // The bricks the placed voxels touch, each once (a model's voxels mostly
+    // come brick by brick: the last one is not looked up again).
+    std::unordered_set<glm::ivec3, BrickKeyHash> touched;
+    glm::ivec3 last(std::numeric_limits<int>::min());
+    for (const VoxInstance& inst : scene.instances)
+        for (const auto& v : scene.models[inst.model].voxels)
+            if (const glm::ivec3 brick = placeVoxel(scene, inst, v) >> 3; brick != last) touched.insert(last = brick);
+    const double bricks = double(touched.size());
+    // Each brick becomes an int32 leaf and a mask leaf, beside the voxels as parsed
+    // (the whole work, its mesh included, is estimated once the grid is built).
+    double voxels = 0.0;
+    for (const VoxModel& model : scene.models) voxels += double(model.voxels.size());
+    const double bytes = bricks * double(kValueLeafBytes + kMaskLeafBytes) + voxels * 4.0;  // x, y, z, colour
     if (bytes > double(memoryRoom(desc.memoryBudgetBytes)))
-        throw Error(file, "the scene could fill " + overBudget(bricks, bytes, desc.memoryBudgetBytes),
+        throw Error(file, "the scene fills " + overBudget(bricks, bytes, desc.memoryBudgetBytes),
                     "raise 'memory_budget_mib' in a world file naming it, or hide layers in MagicaVoxel");
     initializeOpenVdb();
     auto grid = openvdb::Int32Grid::create(0);

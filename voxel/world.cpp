@@ -3,6 +3,8 @@
 #include "voxel/object_worlds.h"
 #include "voxel/camera_frame.h"
 #include "voxel/solid.h"
+#include "voxel/vox_world.h"
+#include "voxel/work_memory.h"
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -119,6 +121,11 @@ World World::load(const std::filesystem::path& path) {
         throw Error(world.desc().gridFile.string(), "grid '" + grid->getName() + "' has no solid voxels",
                     std::string("the solid rule is '") + solidRuleName(world.desc().rule) +
                         "'; check 'grid.rule' and 'grid.threshold' in the world file");
+    // A .vox's few bytes can place a model many times over, and its mesh, not its
+    // grid, is most of what it costs: the whole work is estimated before it is done.
+    if (isVoxFile(world.desc().gridFile)) {
+        world.impl_->workBytesEstimate = requireWorkFits(world).total();
+    }
     return world;
 }
 
@@ -151,6 +158,7 @@ WorldStats World::stats() const {
     s.bricks = brickCount(tree);
     s.hostBytes = impl_->solid->memUsage() + (impl_->materials ? impl_->materials->memUsage() : 0);
     s.sourceGridBytes = impl_->sourceGridBytes;
+    s.workBytesEstimate = impl_->workBytesEstimate;
     return s;
 }
 

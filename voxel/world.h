@@ -51,6 +51,9 @@ struct WorldStats {
     uint64_t bricks = 0;
     size_t hostBytes = 0;        // our solid + material grids
     size_t sourceGridBytes = 0;  // OpenVDB's memUsage() of the grid as loaded
+    // A .vox world's estimate of loading and meshing it (voxel/work_memory.h),
+    // checked against its memory budget on load; 0 for other worlds.
+    uint64_t workBytesEstimate = 0;
 };
 
 // A world is live: edits change its grid in place. Copies are deep (an edited

@@ -1,0 +1,166 @@
+// A .vox world's memory estimate (voxel/work_memory.h) against the peak it
+// predicts, on shapes that stress different parts of it: grids (a dense block),
+// quads (scattered voxels), few quads over many bricks (a hollow shell), a model
+// placed many times turned every way, and several models. "Peak" here: the largest
+// resident set of `grotto info FILE` (the child's getrusage), less that of
+// `grotto info` of a model of 64 voxels far apart (the program meshing on every
+// thread, with next to nothing to mesh): what loading and meshing the world adds. `info` prints the estimate it checked. And a model over its
+// budget is refused by the estimate before the work, within a CPU-second cap.
+#include "tests/cli_fixture.h"
+#include "tests/vox_writer.h"
+
+#include <glm/geometric.hpp>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <regex>
+#include <set>
+
+namespace grotto {
+namespace {
+
+using voxel::test::VoxWriter;
+namespace fs = std::filesystem;
+using Voxels = std::vector<std::array<uint8_t, 4>>;
+
+constexpr double kTolerance = 0.10;
+
+// A 40^3 box, 30% filled at random in 30 colours: nearly every face its own quad.
+Voxels speckledBox(std::mt19937& rng) {
+    Voxels v;
+    for (uint8_t x = 0; x < 40; ++x)
+        for (uint8_t y = 0; y < 40; ++y)
+            for (uint8_t z = 0; z < 40; ++z)
+                if (rng() % 10 < 3) v.push_back({x, y, z, uint8_t(1 + (x * 7 + z) % 30)});
+    return v;
+}
+
+class VoxMemory : public test::CliErrors {
+protected:
+    fs::path writeVox(const std::string& name, const VoxWriter& vox) {
+        const std::vector<uint8_t> bytes = vox.bytes();
+        std::ofstream(dir_ / name, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        return dir_ / name;
+    }
+
+    // Models placed side by side (each at `spacing` along x, then y, then z, in
+    // rows of 4), turned by the rotation bytes given in turn.
+    static VoxWriter placed(const std::vector<std::pair<glm::ivec3, Voxels>>& models, int instances, int spacing,
+                            const std::vector<uint8_t>& turns) {
+        VoxWriter vox;
+        for (const auto& [size, voxels] : models) vox.model(size, voxels);
+        std::vector<int32_t> children;
+        for (int32_t i = 0; i < instances; ++i) children.push_back(2 + 2 * i);
+        vox.transform(0, 1).group(1, children);
+        for (int32_t i = 0; i < instances; ++i)
+            vox.transform(2 + 2 * i, 3 + 2 * i, spacing * glm::ivec3(i % 4, i / 4 % 4, i / 16), turns[size_t(i) % turns.size()])
+                .shape(3 + 2 * i, int32_t(size_t(i) % models.size()));
+        return vox;
+    }
+
+    // Which thread meshes which chunk, and so which heap holds it, moves a run's
+    // peak by up to about 2.5 MiB: the shapes whose peak is mostly mesh take 50 MiB and more.
+    static test::RunResult info(const fs::path& world) {
+        test::RunResult r = test::runGrotto("info " + world.string());
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r;
+    }
+
+    // `grotto info`'s printed estimate and its measured peak over the baseline's, in MiB.
+    std::pair<double, double> estimateAndPeak(const fs::path& world) {
+        const test::RunResult r = info(world);
+        std::smatch m;
+        EXPECT_TRUE(std::regex_search(r.out, m, std::regex("memory +an estimated ([0-9.]+) MiB"))) << r.out;
+        return {m.empty() ? 0.0 : std::stod(m[1]), r.peakMiB - baselineMiB()};
+    }
+
+    // 64 voxels 64 apart, each in a chunk of its own: the program as it meshes
+    // in parallel (every worker thread started), with next to nothing to mesh.
+    double baselineMiB() {
+        static const double mib = [&] {
+            Voxels sparse;
+            for (uint8_t x = 0; x < 4; ++x)
+                for (uint8_t y = 0; y < 4; ++y)
+                    for (uint8_t z = 0; z < 4; ++z) sparse.push_back({uint8_t(x * 64), uint8_t(y * 64), uint8_t(z * 64), 1});
+            return info(writeVox("sparse.vox", VoxWriter().model({256, 256, 256}, sparse))).peakMiB;
+        }();
+        return mib;
+    }
+
+    void expectWithinTolerance(const fs::path& world) {
+        SCOPED_TRACE(world.filename().string());
+        if (test::kAddressSanitizer) GTEST_SKIP() << "AddressSanitizer inflates resident memory";
+        const auto [estimate, peak] = estimateAndPeak(world);
+        EXPECT_NEAR(estimate, peak, kTolerance * peak) << "estimated " << estimate << " MiB, peak " << peak << " MiB";
+    }
+};
+
+TEST_F(VoxMemory, DenseBlockIsEstimatedWithinTenPercent) {
+    Voxels v;  // 128^3, eight colours in diagonal stripes
+    for (uint8_t x = 0; x < 128; ++x)
+        for (uint8_t y = 0; y < 128; ++y)
+            for (uint8_t z = 0; z < 128; ++z) v.push_back({x, y, z, uint8_t(1 + (x + y + z) % 8)});
+    expectWithinTolerance(writeVox("dense.vox", VoxWriter().model({128, 128, 128}, v)));
+}
+
+TEST_F(VoxMemory, ScatteredVoxelsAreEstimatedWithinTenPercent) {
+    std::mt19937 rng(3);
+    std::set<std::array<uint8_t, 3>> at;
+    while (at.size() < 40000) at.insert({uint8_t(rng()), uint8_t(rng()), uint8_t(rng())});
+    Voxels v;
+    for (const auto& p : at) v.push_back({p[0], p[1], p[2], uint8_t(1 + rng() % 200)});
+    expectWithinTolerance(writeVox("scattered.vox", VoxWriter().model({256, 256, 256}, v)));
+}
+
+TEST_F(VoxMemory, HollowShellIsEstimatedWithinTenPercentAndFitsItsBudget) {
+    Voxels v;  // 256^3, one voxel thick: many bricks, few quads
+    for (int x = 0; x < 256; ++x)
+        for (int y = 0; y < 256; ++y)
+            for (int z = 0; z < 256; ++z)
+                if (x % 255 == 0 || y % 255 == 0 || z % 255 == 0) v.push_back({uint8_t(x), uint8_t(y), uint8_t(z), 2});
+    const fs::path shell = writeVox("shell.vox", VoxWriter().model({256, 256, 256}, v));
+    expectWithinTolerance(shell);
+    // It needs about 19 MiB: a budget of 32 holds it (the bricks its box spans once asked for 90).
+    const test::RunResult r = test::runGrotto("info " + writeText("shell.json", R"({"grid": {"file": "shell.vox"}, "memory_budget_mib": 32})").string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
+TEST_F(VoxMemory, ModelPlacedManyTimesIsEstimatedWithinTenPercent) {
+    std::mt19937 rng(5);
+    const uint8_t turns[] = {VoxWriter::kIdentity, 17, 40, 98};  // identity, turns and a mirror
+    expectWithinTolerance(writeVox("instances.vox", placed({{{40, 40, 40}, speckledBox(rng)}}, 12, 50, {turns, turns + 4})));
+}
+
+TEST_F(VoxMemory, SeveralModelsAreEstimatedWithinTenPercent) {
+    std::mt19937 rng(7);
+    std::vector<std::pair<glm::ivec3, Voxels>> models;
+    for (int k = 0; k < 4; ++k) {  // balls of 60 to 120 voxels across, rough-edged, one colour each
+        const int n = 60 + 20 * k;
+        Voxels v;
+        for (int x = 0; x < n; ++x)
+            for (int y = 0; y < n; ++y)
+                for (int z = 0; z < n; ++z) {
+                    const glm::vec3 d = glm::vec3(x, y, z) - glm::vec3(n / 2.0f);
+                    if (glm::dot(d, d) < n * n / 4.0f * (0.8f + 0.2f * float(rng() % 2)))
+                        v.push_back({uint8_t(x), uint8_t(y), uint8_t(z), uint8_t(1 + k)});
+                }
+        models.push_back({{n, n, n}, v});
+    }
+    expectWithinTolerance(writeVox("models.vox", placed(models, 4, 130, {VoxWriter::kIdentity})));
+}
+
+TEST_F(VoxMemory, ModelOverItsBudgetIsRefusedBeforeTheWork) {
+    std::mt19937 rng(5);
+    writeVox("big.vox", placed({{{40, 40, 40}, speckledBox(rng)}}, 12, 50, {VoxWriter::kIdentity}));
+    // About 56 MiB of mesh over 10 MiB of grids: refused by the mesh count, which stops past the budget.
+    const fs::path world = writeText("big.json", R"({"grid": {"file": "big.vox"}, "memory_budget_mib": 32})");
+    const test::RunResult r = expectRefused("info " + world.string(), "big.vox", dir_ / "no-output", "",
+                                            {.cpuSeconds = test::kAddressSanitizer ? 8 : 2});  // 0.4 s in a release build
+    for (const char* mention : {"loading and meshing it needs at least an estimated", "more than the memory budget of 32.0 MiB"})
+        EXPECT_NE(r.err.find(mention), std::string::npos) << mention << " in: " << r.err;
+    if (!test::kAddressSanitizer) EXPECT_LT(r.peakMiB - baselineMiB(), 32.0);
+}
+
+}  // namespace
+}  // namespace grotto
