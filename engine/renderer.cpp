@@ -74,7 +74,6 @@ CompositePass& Renderer::composite() {
 void Renderer::updateTargets(const FramePlan& plan) {
     finishFrames();  // no GPU work of ours may use the targets freed
     if (!targets_.update(plan)) return;
-    historyIndex_ = 0;
     surfaceCamera_.reset();
 }
 
@@ -158,7 +157,7 @@ void Renderer::setAo(const AoOptions& ao) {
 
 TargetRef Renderer::aoOutput() const {
     if (!plan_.chain) return TargetId::AoRaw;  // the 1x1 placeholder the composite binds
-    return plan_.temporal ? TargetRef{TargetId::AoHistory, historyIndex_} : denoisedTarget(ao_.chain.denoisePasses);
+    return plan_.temporal ? TargetId::AoHistory : denoisedTarget(ao_.chain.denoisePasses);
 }
 
 void Renderer::pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record) {
@@ -219,6 +218,7 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
                              0, nullptr, 0, nullptr);
     }
     targets_.beginFrame(!inFlight);
+    targets_.advanceHistories(plan_);
     scene_.recordUploads(cmd, s.staging);  // edits since the last frame, with their barrier to vertex input
     FrameStats stats = inFlight ? recordGBufferInFlight(cmd, camera) : recordGBuffer(cmd, camera);
     stats.passMs = std::move(unread);
@@ -228,19 +228,17 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
                                     *scene_.occupancy, *scene_.faceCache,
                                     ao_.chain.cacheRays ? ao_.chain.cacheRays : defaultCacheRays(ctx_));
         });
-    const uint32_t history = surfaceHistoryIndex_;
-    if (plan_.surfaceHistory) surfaceHistoryIndex_ = 1 - surfaceHistoryIndex_;  // reads the last, writes the other
     if (plan_.tracedShadows)
-        pass(cmd, passes_.get<ShadowPass>().declare(history), [&] {
+        pass(cmd, passes_.get<ShadowPass>().declare(), [&] {
             passes_.get<ShadowPass>().record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::Shadow), s.traceConstants,
-                                *scene_.occupancy, objectGrids_.buffer, &image({TargetId::ShadowHistory, history}),
-                                &image({TargetId::ShadowHistory, surfaceHistoryIndex_}));
+                                *scene_.occupancy, objectGrids_.buffer, &image({TargetId::ShadowHistory, Copy::Previous}),
+                                &image(TargetId::ShadowHistory));
         });
     if (plan_.objectLight)
-        pass(cmd, ObjectLightPass::declare(history), [&] {
+        pass(cmd, ObjectLightPass::declare(), [&] {
             passes_.get<ObjectLightPass>().record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::ObjectLight),
-                                     image({TargetId::ObjectLightHistory, history}),
-                                     image({TargetId::ObjectLightHistory, surfaceHistoryIndex_}), s.traceConstants,
+                                     image({TargetId::ObjectLightHistory, Copy::Previous}),
+                                     image(TargetId::ObjectLightHistory), s.traceConstants,
                                      *scene_.occupancy, objectGrids_.buffer);
         });
     if (plan_.chain) recordAo(cmd);
@@ -366,12 +364,10 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
         pass(cmd, DenoisePass::declare(i), [&] { passes_.get<DenoisePass>().record(cmd, ao, passes, i, slot().aoConstants); });
     slot().timestamps.end(cmd);
     if (!plan_.temporal) return;
-    // Reads the last output, writes the other image, which becomes the last.
-    const uint32_t previous = historyIndex_;
-    historyIndex_ = 1 - historyIndex_;
+    // Reads the last output, writes this frame's.
     TemporalPass& temporal = passes_.get<TemporalPass>();
-    pass(cmd, temporal.declare(previous, plan_.motion), [&] {
-        temporal.record(cmd, ao, image({TargetId::AoHistory, previous}), image({TargetId::AoHistory, historyIndex_}),
+    pass(cmd, temporal.declare(plan_.motion), [&] {
+        temporal.record(cmd, ao, image({TargetId::AoHistory, Copy::Previous}), image(TargetId::AoHistory),
                         slot().aoConstants, slot().temporalConstants, &slot().objectUniforms,
                         &image(plan_.motion ? TargetId::Motion : TargetId::Depth));
     });

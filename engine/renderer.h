@@ -188,9 +188,8 @@ private:
     bool normalsOn_ = false;
     bool aoAov_ = false;  // a read-back asked for the AO AOVs: their full-res target is kept from then on
     // The full-res histories of a soft sun and of objects' light over the face
-    // cache: which image holds the last, and the camera and frame index of their
-    // last frame (none: the next frame starts afresh).
-    uint32_t surfaceHistoryIndex_ = 0;
+    // cache: the camera and frame index of their last frame (none: the next frame
+    // starts afresh). Their images are the targets' (FrameTargets::advanceHistories).
     std::optional<Camera> surfaceCamera_;
     uint32_t surfaceFrame_ = 0;
     // Objects: their poses now and at the last frame rendered (with its camera),
@@ -201,9 +200,8 @@ private:
     std::vector<const GpuScene*> objectScenes_;
     GpuObjectGrids objectGrids_;      // the objects' voxels for rays, as of objectGridsVersion_
     uint64_t objectGridsVersion_ = 0;
-    // Temporal state: which history image holds the last output, and the camera
-    // and frame index it was rendered with (none after a cut).
-    uint32_t historyIndex_ = 0;
+    // Temporal state: the camera and frame index the AO history's last output was
+    // rendered with (none after a cut).
     std::optional<Camera> previousCamera_;
     uint32_t previousFrame_ = 0;
     HistoryBoxes invalidated_;  // edits since the last frame

@@ -13,6 +13,7 @@ constexpr VkFormat kRgba32f = VK_FORMAT_R32G32B32A32_SFLOAT, kR32f = VK_FORMAT_R
 
 bool always(const FramePlan&) { return true; }
 bool chainOn(const FramePlan& s) { return s.chain; }
+bool surfaceHistory(const FramePlan& s) { return s.surfaceHistory; }  // a soft sun's and objects' light advance together
 
 // Colour, display and the G-buffer are read by a game too (include/grotto/grotto.h):
 // sampled, and transfer sources for a window's blit and the read-backs. The AO
@@ -32,12 +33,12 @@ constexpr TargetRow kRows[] = {
     {TargetId::Shadow, kR32f, TargetSize::Frame, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
      [](const FramePlan& s) { return s.shadows; }, true, 1, kGeneral},
     {TargetId::ShadowHistory, kRgba32f, TargetSize::Frame, kStorage,
-     [](const FramePlan& s) { return s.shadowHistory; }, false, 2, kGeneral},
+     [](const FramePlan& s) { return s.shadowHistory; }, false, 2, kGeneral, surfaceHistory},
     // The composite with the face cache binds it (a placeholder) with or without objects.
     {TargetId::ObjectLight, VK_FORMAT_R16G16B16A16_SFLOAT, TargetSize::Frame, kStorage,
      [](const FramePlan& s) { return s.objectLight; }, true, 1, kGeneral},
     {TargetId::ObjectLightHistory, VK_FORMAT_R32G32B32A32_UINT, TargetSize::Frame, kStorage,
-     [](const FramePlan& s) { return s.objectLight; }, false, 2, kGeneral},
+     [](const FramePlan& s) { return s.objectLight; }, false, 2, kGeneral, surfaceHistory},
     {TargetId::AoDepthAtlas, kR32f, TargetSize::DepthAtlas, kStorage | kRead, chainOn, false, 1, kGeneral},
     // VBAO binds it whatever its thickness mode; only the voxels mode fills it.
     {TargetId::AoThickness, kR32f, TargetSize::DepthAtlas, kStorage,
@@ -54,7 +55,7 @@ constexpr TargetRow kRows[] = {
     {TargetId::AoSpatial1, kRgba32f, TargetSize::Ao, kStorage | kRead,
      [](const FramePlan& s) { return s.chain && s.ao.chain.denoisePasses >= 2; }, false, 1, kGeneral},
     {TargetId::AoHistory, kRgba32f, TargetSize::Ao, kStorage | kRead, [](const FramePlan& s) { return s.temporal; },
-     false, 2, kGeneral},
+     false, 2, kGeneral, [](const FramePlan& s) { return s.temporal; }},
     // Frames do not store the upsampled AO (the composite upsamples for itself) or
     // the face cache's AO: only a read-back with AOVs makes it.
     {TargetId::AoFull, kR32f, TargetSize::Frame, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
@@ -75,9 +76,8 @@ VkExtent2D targetExtent(const TargetRow& row, const FramePlan& plan) {
     return {0, 0};
 }
 
-vk::Image& FrameTargets::slot(TargetRef target) {
-    const uint32_t copy = target.copy;
-    switch (target.id) {
+vk::Image& FrameTargets::slot(TargetId id, uint32_t copy) {
+    switch (id) {
     case TargetId::Depth: return gbuffer_.depth;
     case TargetId::Surface: return gbuffer_.surface;
     case TargetId::Motion: return gbuffer_.motion;
@@ -100,18 +100,26 @@ vk::Image& FrameTargets::slot(TargetRef target) {
     throw Error::internal("FrameTargets", "no such target");
 }
 
-const vk::Image& FrameTargets::image(TargetRef target) const { return const_cast<FrameTargets*>(this)->slot(target); }
+const vk::Image& FrameTargets::image(TargetRef target) const {
+    return const_cast<FrameTargets*>(this)->slot(target.id, index(target));
+}
+
+void FrameTargets::advanceHistories(const FramePlan& plan) {
+    for (const TargetRow& row : kRows)
+        if (row.advances && row.advances(plan)) current_[size_t(row.id)] ^= 1u;
+}
 
 bool FrameTargets::update(const FramePlan& plan) {
     bool changed = false;
     for (const TargetRow& row : kRows) {
         const VkExtent2D extent = targetExtent(row, plan);
         for (uint32_t c = 0; c < row.copies; ++c) {
-            vk::Image& image = slot({row.id, c});
+            vk::Image& image = slot(row.id, c);
             if (image.extent.width == extent.width && image.extent.height == extent.height) continue;
             changed = true;
+            current_[size_t(row.id)] = 0;
             vk::destroy(ctx_, image);
-            state({row.id, c}) = {};
+            state(row.id, c) = {};
             if (extent.width != 0) image = vk::createImage(ctx_, extent, row.format, row.usage);
         }
     }
@@ -124,7 +132,7 @@ bool FrameTargets::changes(const FramePlan& plan) const {
     for (const TargetRow& row : kRows) {
         const VkExtent2D extent = targetExtent(row, plan);
         for (uint32_t c = 0; c < row.copies; ++c) {
-            const VkExtent2D now = image({row.id, c}).extent;
+            const VkExtent2D now = const_cast<FrameTargets*>(this)->slot(row.id, c).extent;
             if (now.width != extent.width || now.height != extent.height) return true;
         }
     }
@@ -134,9 +142,10 @@ bool FrameTargets::changes(const FramePlan& plan) const {
 void FrameTargets::release() {
     for (const TargetRow& row : kRows)
         for (uint32_t c = 0; c < row.copies; ++c) {
-            vk::destroy(ctx_, slot({row.id, c}));
-            state({row.id, c}) = {};
+            vk::destroy(ctx_, slot(row.id, c));
+            state(row.id, c) = {};
         }
+    current_ = {};
     ao_.half = {};
     plan_ = {};
 }
@@ -144,7 +153,7 @@ void FrameTargets::release() {
 size_t FrameTargets::bytes() const {
     size_t n = 0;
     for (const TargetRow& row : kRows)
-        for (uint32_t c = 0; c < row.copies; ++c) n += image({row.id, c}).memory.size;
+        for (uint32_t c = 0; c < row.copies; ++c) n += const_cast<FrameTargets*>(this)->slot(row.id, c).memory.size;
     return n;
 }
 

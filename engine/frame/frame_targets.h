@@ -35,6 +35,7 @@ struct TargetRow {
     // the AO chain's images, what a game may read between frames); UNDEFINED, its
     // contents are dropped at each frame's start (the G-buffer, the colour).
     VkImageLayout initial;
+    bool (*advances)(const FramePlan&) = nullptr;  // a history: whether a frame of the plan writes it (flips its copies)
 };
 
 std::span<const TargetRow> targetRows();
@@ -69,6 +70,9 @@ public:
     // when the last frame has finished (`lastFinished`) nothing before needs a
     // barrier, else each image's first use waits for every command before.
     void beginFrame(bool lastFinished);
+    // At a frame's start: the histories the plan writes flip, this frame's copy
+    // becoming the last. A history whose images are made afresh starts at copy 0.
+    void advanceHistories(const FramePlan& plan);
     // Records the layout transitions and barriers a pass using `uses` needs after
     // everything recorded before, in one vkCmdPipelineBarrier (none when nothing is needed).
     void recordBarriers(VkCommandBuffer cmd, const std::vector<TargetUse>& uses);
@@ -81,12 +85,18 @@ private:
         VkPipelineStageFlags writeStage = 0, readStages = 0, visibleTo = 0;  // the last write; reads since; where it is visible
         VkAccessFlags writeAccess = 0;
     };
-    vk::Image& slot(TargetRef target);
-    ImageState& state(TargetRef target) { return states_[size_t(target.id)][target.copy]; }
+    uint32_t index(TargetRef target) const {  // the copy's image
+        const uint32_t current = current_[size_t(target.id)];
+        return target.copy == Copy::Previous ? 1 - current : current;
+    }
+    vk::Image& slot(TargetId id, uint32_t index);
+    ImageState& state(TargetId id, uint32_t index) { return states_[size_t(id)][index]; }
+    ImageState& state(TargetRef target) { return state(target.id, index(target)); }
 
     vk::Context& ctx_;
     FramePlan plan_;
     std::array<std::array<ImageState, 2>, kTargetCount> states_{};
+    std::array<uint32_t, kTargetCount> current_{};  // each history's image this frame writes
     GBufferTargets gbuffer_;
     AoTargets ao_;
     vk::Image color_, display_, normals_, shadow_, objectLight_;

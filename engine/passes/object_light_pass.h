@@ -19,7 +19,7 @@ public:
     explicit ObjectLightPass(vk::Context& ctx);
     static bool runs(const FramePlan& plan) { return plan.objectLight; }
     // Reads history image `history`, writes the other.
-    static PassDecl declare(uint32_t history);
+    static PassDecl declare();
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& objectUniforms,
                 const vk::Image& light, const vk::Image& history, const vk::Image& nextHistory,
                 const vk::Buffer& traceConstants, const GpuOccupancy& occupancy, const vk::Buffer& objectGrids);

@@ -24,7 +24,7 @@ public:
     static bool runs(const FramePlan& plan) { return plan.tracedShadows; }
     static auto key(const FramePlan& plan) { return std::tuple(plan.softShadows, plan.cachedSun); }
     // A soft sun's pass reads history image `history` and writes the other.
-    PassDecl declare(uint32_t history) const;
+    PassDecl declare() const;
     // A soft pass needs `history` (read) and `nextHistory` (written), both in GENERAL.
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& objectUniforms,
                 const vk::Image& shadow, const vk::Buffer& traceConstants, const GpuOccupancy& occupancy,

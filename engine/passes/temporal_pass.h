@@ -24,7 +24,7 @@ public:
     static auto key(const FramePlan& plan) { return std::tuple(plan.ao.chain.denoisePasses, plan.objects, plan.motion); }
     // Reads history image `previous`, writes the other; with objects, samples the
     // motion target where objects move (else the depth, which it ignores).
-    PassDecl declare(uint32_t previous, bool motion) const;
+    PassDecl declare(bool motion) const;
     // With objects, `objectUniforms` and `motion` (the motion target, or any
     // sampled float image when nothing moves; SHADER_READ_ONLY_OPTIMAL) are read too.
     void record(VkCommandBuffer cmd, const AoTargets& ao, const vk::Image& history, const vk::Image& target,
