@@ -258,6 +258,10 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
         pass(cmd, DisplayPass::declare(), [&] {
             passes_.get<DisplayPass>().record(cmd, image(TargetId::Color), image(TargetId::Display), toneMapCurve(lighting_.toneMap));
         });
+    if (plan_.normals)
+        pass(cmd, NormalsPass::declare(), [&] {
+            passes_.get<NormalsPass>().record(cmd, targets_.gbuffer().surface, s.objectUniforms, image(TargetId::Normals));
+        });
     if (copy) recordCopy(cmd, *copy, camera);
     return stats;
 }

@@ -107,9 +107,9 @@ TEST(FramePlan, TheEstimatorIsRemadeOnlyForWhatItIsCompiledFrom) {
 
 TEST(FramePlan, WhatTheCallerAskedForRunsItsPasses) {
     const FramePlan none = planFrame(8, 8, method("gtao"), {}, world());
-    EXPECT_FALSE(DisplayPass::runs(none) || FaceCacheAovPass::runs(none));
+    EXPECT_FALSE(DisplayPass::runs(none) || NormalsPass::runs(none) || FaceCacheAovPass::runs(none));
     const FramePlan asked = planFrame(8, 8, method("gtao"), {}, world(), {.display = true, .normals = true, .aoAov = true});
-    EXPECT_TRUE(DisplayPass::runs(asked));
+    EXPECT_TRUE(DisplayPass::runs(asked) && NormalsPass::runs(asked));
     EXPECT_FALSE(FaceCacheAovPass::runs(asked));  // the chain's AOVs need no pass of the cache's
 }
 

@@ -12,6 +12,7 @@
 #include "engine/passes/face_cache_trace_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/passes/hiz_pass.h"
+#include "engine/passes/normals_pass.h"
 #include "engine/passes/object_light_pass.h"
 #include "engine/passes/shadow_edge_pass.h"
 #include "engine/passes/shadow_pass.h"
@@ -21,7 +22,7 @@
 namespace grotto {
 
 using FramePasses =
-    PassSet<GBufferPass, HizPass, CompositePass, AskingCompositePass, DisplayPass, ShadowPass,
+    PassSet<GBufferPass, HizPass, CompositePass, AskingCompositePass, DisplayPass, NormalsPass, ShadowPass,
             ObjectLightPass, FaceCacheTracePass, DepthPrefilterPass, EstimatorPass, BentNormalsPass, DenoisePass,
             UpsamplePass, TemporalPass, FaceCacheAovPass, ShadowEdgePass>;
 
