@@ -11,7 +11,6 @@
 #include "grotto/error.h"
 #include "engine/frame/render_memory.h"
 #include "shaders/shared/face_trace.h"
-#include "voxel/settings_table.h"
 
 #include <chrono>
 #include <utility>
@@ -114,8 +113,12 @@ void Renderer::release() {
 void Renderer::resize(uint32_t width, uint32_t height) {
     const FramePlan plan = planFor(width, height, ao_, lighting_);
     requireRenderFits(ctx_, plan, "image size");
-    updateTargets(plan);
+    restart(plan);
+}
+
+void Renderer::restart(const FramePlan& plan) {
     applyPlan(plan);
+    updateTargets(plan);
     resetHistory();
 }
 
@@ -130,9 +133,7 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
     }
     requireRenderFits(ctx_, plan, "lighting");  // a soft sun's history may not fit
     lighting_ = lighting;
-    applyPlan(plan);
-    updateTargets(plan);
-    resetHistory();
+    restart(plan);
 }
 
 void Renderer::requireOccupancy(const AoOptions& ao) const {
@@ -150,9 +151,7 @@ void Renderer::setAo(const AoOptions& ao) {
     const FramePlan plan = planFor(width(), height(), ao, lighting_);
     requireRenderFits(ctx_, plan, "AO settings");
     ao_ = ao;
-    applyPlan(plan);
-    updateTargets(plan);
-    resetHistory();
+    restart(plan);
 }
 
 TargetRef Renderer::aoOutput() const {

@@ -150,6 +150,7 @@ private:
     uint32_t width() const { return plan_.width; }
     uint32_t height() const { return plan_.height; }
     void updateTargets(const FramePlan& plan);  // restarts the histories when targets change
+    void restart(const FramePlan& plan);  // a plan whose frames start afresh: its passes, targets, no history
     void release();  // frees whatever exists; null handles are skipped
     // Records a pass: the barriers its declaration calls for, then `record` within its timestamp.
     void pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record);
