@@ -3,7 +3,7 @@
 // objects' light (with the face cache: first its rays for the faces in view not
 // converged), then with AO the depth prefilter, the estimator, spatial denoise
 // and temporal accumulation at AO resolution, then the composite (which upsamples
-// the AO itself), the display image and the read-backs (frame/renderer_copy.cpp).
+// the AO itself), the display image and the read-backs (renderer_copy.cpp).
 // Each pass declares what it reads and writes; the barriers follow from that.
 // render() waits for its frame; submit() keeps two in flight.
 #include "engine/renderer.h"
