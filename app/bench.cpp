@@ -70,7 +70,7 @@ void addBenchCommand(CLI::App& app) {
         const AoOptions ao = resolveAo(world, args->ao);
 
         vk::Context ctx;
-        requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");
+        requireRenderFits(ctx, planWorldFrame(world.desc(), size.width, size.height, ao), "--size");
         const size_t quadCount = mesh.quads.size();
         const std::optional<voxel::MeshChunkQuads> busiest = busiestChunk(mesh);
         mesh = {};  // the GPU holds the quads now

@@ -96,7 +96,7 @@ void addCompareCommand(CLI::App& app) {
         // The reference's R is the radius the method is given, before GTAO's multiplier.
         const double radius = double(ao.estimator.radius);
         vk::Context ctx;
-        requireRenderFits(ctx, worldFrameShape(loaded.desc(), size.width, size.height, ao), "--size");  // before minutes of tracing
+        requireRenderFits(ctx, planWorldFrame(loaded.desc(), size.width, size.height, ao), "--size");  // before minutes of tracing
         const voxel::Detail detail = resolveDetail(loaded, args->ao);
         // The world and its objects at time 0, drawn and traced alike.
         std::optional<RenderSession> session;

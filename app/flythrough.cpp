@@ -140,10 +140,10 @@ json bakeManifest(RenderSession& session) {
 }
 
 // Host memory one frame in flight holds: decoded images and encoded pixels.
-size_t bytesPerFrame(const FrameShape& shape, const FrameEncoding& encoding, bool exr) {
-    const size_t n = size_t(shape.width) * shape.height;
+size_t bytesPerFrame(const FramePlan& plan, const FrameEncoding& encoding, bool exr) {
+    const size_t n = size_t(plan.width) * plan.height;
     if (!exr) return 16 * n + 2 * 3 * n;  // colour, sRGB for the file and the video
-    const size_t images = encoding.exrAovs.empty() ? 16 * n : readbackHostBytes(shape);
+    const size_t images = encoding.exrAovs.empty() ? 16 * n : readbackHostBytes(plan);
     return images + 4 * 18 * n + 3 * n;  // at most 18 channels of float pixels
 }
 
@@ -176,8 +176,8 @@ void run(const Args& a) {
         !(ao.enabled && ao.method == AoMethod::Vbao))
         throw Error("--aovs", "bent_normal is VBAO's", "add --ao vbao, or leave bent_normal out");
     vk::Context ctx;
-    const FrameShape shape = worldFrameShape(world.desc(), size.width, size.height, ao);
-    requireRenderFits(ctx, shape, "--size");
+    const FramePlan plan = planWorldFrame(world.desc(), size.width, size.height, ao);
+    requireRenderFits(ctx, plan, "--size");
     const voxel::CameraDesc lens = world.camera("", size.aspect());
     std::optional<RenderSession> session;
     session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
@@ -230,7 +230,7 @@ void run(const Args& a) {
         std::optional<VideoPipe> pipe;
         if (video) pipe.emplace(*videoTools, a.video, size.width, size.height, a.fps, a.videoQuality, range.first);
         const bool exr = a.format == "exr";
-        FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(shape, encoding, exr)));
+        FrameWriter writer(ctx, exr && !encoding.exrAovs.empty(), FrameWriter::threadsFor(bytesPerFrame(plan, encoding, exr)));
         std::optional<Progress> progress;
         if (!a.quiet) progress.emplace(end - start + 1, stdout, a.progress);
         for (int i = start; i <= end; ++i) {

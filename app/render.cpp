@@ -26,9 +26,10 @@ constexpr uint32_t kMaxProgressiveFrames = 4096;
 // --accumulate where that is longer, so every frame counts. Asking for more than
 // one frame without one is refused: it would render the same single-frame
 // estimate, whatever the flag says.
-uint32_t framesToAccumulate(const std::optional<int>& requested, const AoFlags& flags, AoOptions& ao, bool objects) {
-    const bool temporal = aoChain(ao) && ao.chain.temporalHistory > 0;
-    const bool objectLight = faceCached(ao) && objects;
+uint32_t framesToAccumulate(const std::optional<int>& requested, const AoFlags& flags, AoOptions& ao,
+                            const voxel::WorldDesc& world) {
+    const FramePlan plan = planWorldFrame(world, 1, 1, ao);
+    const bool temporal = plan.temporal, objectLight = plan.objectLight;
     if (!requested)
         return temporal ? ao.chain.temporalHistory : objectLight ? std::max(ao.chain.temporalHistory, kDefaultTemporalHistory) : 1;
     const uint32_t frames = uint32_t(*requested);
@@ -85,10 +86,10 @@ void addRenderCommand(CLI::App& app) {
         voxel::World world = voxel::World::load(args->world);
         const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         AoOptions ao = resolveAo(world, args->ao);
-        const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao, !world.desc().objects.empty());
+        const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao, world.desc());
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
-        requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");
+        requireRenderFits(ctx, planWorldFrame(world.desc(), size.width, size.height, ao), "--size");
         const voxel::Detail detail = resolveDetail(world, args->ao);
         uint32_t rendered = 0;
         {

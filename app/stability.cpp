@@ -112,7 +112,7 @@ void addStabilityCommand(CLI::App& app) {
         const json baseline = args->baseline.empty() ? json() : loadBaseline(args->baseline, run);
 
         vk::Context ctx;
-        requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, ao), "--size");
+        requireRenderFits(ctx, planWorldFrame(world.desc(), size.width, size.height, ao), "--size");
         // The path's edits due before the first frame measured are the world it starts from.
         const voxel::CameraDesc lens = world.camera("", size.aspect());
         const voxel::Detail detail = resolveDetail(world, args->ao);

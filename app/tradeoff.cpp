@@ -311,7 +311,7 @@ void addTradeoffCommand(CLI::App& app) {
             // R is GTAO's radius before its multiplier, as for `grotto reference`.
             const AoOptions worldAo = resolveAo(loaded, {});
             const double radius = double(worldAo.estimator.radius);
-            requireRenderFits(ctx, worldFrameShape(loaded.desc(), size.width, size.height, worldAo), "--size");  // before minutes of tracing
+            requireRenderFits(ctx, planWorldFrame(loaded.desc(), size.width, size.height, worldAo), "--size");  // before minutes of tracing
             const voxel::Detail detail = resolveDetail(loaded, args->detail);
             // The world and its objects at time 0, drawn and traced alike.
             RenderSession session(ctx, std::move(loaded), worldAo, detail, size.width, size.height);

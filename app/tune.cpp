@@ -86,7 +86,7 @@ void addTuneCommand(CLI::App& app) {
         for (const voxel::World& world : worlds) {
             Target t{world.desc().source.stem().string(), &world,
                      worldCamera(world, args->camera, size.width, size.height), {}, {}};
-            requireRenderFits(ctx, worldFrameShape(world.desc(), size.width, size.height, resolveAo(world, {})),
+            requireRenderFits(ctx, planWorldFrame(world.desc(), size.width, size.height, resolveAo(world, {})),
                               "--size");  // before minutes of tracing
             t.session = std::make_unique<RenderSession>(ctx, world, resolveAo(world, {}), resolveDetail(world, {}),
                                                         size.width, size.height);

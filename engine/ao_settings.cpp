@@ -127,14 +127,6 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
     return o;
 }
 
-bool differIn(const AoOptions& a, const AoOptions& b, unsigned parts) {
-    for (const voxel::Setting& row : voxel::settingsTable())
-        if ((row.invalidates & parts) && !std::holds_alternative<std::monostate>(row.value) &&
-            settingNumber(row, {}, a.estimator, a.chain) != settingNumber(row, {}, b.estimator, b.chain))
-            return true;
-    return false;
-}
-
 gpu::GtaoSettings gpuSettings(const AoOptions& ao) {
     const voxel::EstimatorSettings& e = ao.estimator;
     const voxel::ChainSettings& c = ao.chain;

@@ -79,10 +79,6 @@ AoOptions aoOptionsFor(const voxel::AoDesc& desc, double voxelSize, const std::s
 inline const std::string kCommandLine = "command line";
 void validateAo(const AoOptions& ao, const std::string& where);
 
-// Whether `a` and `b` differ in a setting held in the estimator's or the chain's
-// settings whose change makes any of `parts` stale (voxel::Invalidates).
-bool differIn(const AoOptions& a, const AoOptions& b, unsigned parts);
-
 // The settings as the shaders take them (shaders/shared/gtao.h).
 gpu::GtaoSettings gpuSettings(const AoOptions& ao);
 

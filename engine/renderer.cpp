@@ -3,7 +3,7 @@
 // objects' light (with the face cache: first its rays for the faces in view not
 // converged), then with AO the depth prefilter, the estimator, spatial denoise
 // and temporal accumulation at AO resolution, then the composite (which upsamples
-// the AO itself), the display image and the read-backs (frame/renderer_copy.cpp).
+// the AO itself), the display image and the read-backs (renderer_copy.cpp).
 // Each pass declares what it reads and writes; the barriers follow from that.
 // render() waits for its frame; submit() keeps two in flight.
 #include "engine/renderer.h"
@@ -11,7 +11,6 @@
 #include "grotto/error.h"
 #include "engine/frame/render_memory.h"
 #include "shaders/shared/face_trace.h"
-#include "voxel/settings_table.h"
 
 #include <chrono>
 #include <utility>
@@ -20,85 +19,60 @@ namespace grotto {
 
 Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                    uint32_t width, uint32_t height, const SceneObjects* objects)
-    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), targets_(ctx), objects_(objects) {
+    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), targets_(ctx), objects_(objects), passes_(ctx) {
     if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
         validateAo(ao_, "AO settings");
         requireOccupancy(ao_);
         // Before any allocation can fail halfway.
-        requireRenderFits(ctx, shapeFor(width, height, ao_, lighting_), "image size");
+        const FramePlan plan = planFor(width, height, ao_, lighting_);
+        requireRenderFits(ctx, plan, "image size");
         for (auto& s : slots_) s = std::make_unique<FrameSlot>(ctx);
         VkSemaphoreTypeCreateInfo type{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO,
                                        .semaphoreType = VK_SEMAPHORE_TYPE_TIMELINE};
         const VkSemaphoreCreateInfo sci{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_CREATE_INFO, .pNext = &type};
         VK_CHECK(vkCreateSemaphore(ctx.device, &sci, nullptr, &timeline_));
-        createPasses();
-        targets_.update(shapeFor(width, height, ao_, lighting_));
+        applyPlan(plan);
+        targets_.update(plan);
     } catch (...) {  // e.g. a shader that fails to load: free what was made before it
         release();
         throw;
     }
 }
 
-void Renderer::createPasses() {
-    vk::Context& ctx = ctx_;
-    if (!gbufferPass_)
-        gbufferPass_ = std::make_unique<GBufferPass>(
-            ctx, motion() ? GBufferMode::Motion : objects_ ? GBufferMode::Objects : GBufferMode::World);
-    if (!hizPass_) hizPass_ = std::make_unique<HizPass>(ctx);
-    if (!compositePass_) compositePass_ = std::make_unique<CompositePass>(ctx, compositeShape());
-    if (displayOn_ && !displayPass_) displayPass_ = std::make_unique<DisplayPass>(ctx);
-    if (normalsOn_ && !normalsPass_) normalsPass_ = std::make_unique<NormalsPass>(ctx);
-    if (tracedShadows() && !shadowPass_) shadowPass_ = std::make_unique<ShadowPass>(ctx, softShadows(), compositeShape().cachedSun);
-    if (objectLight() && !objectLightPass_) objectLightPass_ = std::make_unique<ObjectLightPass>(ctx);
-    if (faceCached(ao_) && scene_.occupancy && !cacheTracePass_) cacheTracePass_ = std::make_unique<FaceCacheTracePass>(ctx);
-    if (!aoChain(ao_)) return;
-    if (!prefilterPass_) prefilterPass_ = std::make_unique<DepthPrefilterPass>(ctx, voxelThickness(ao_));
-    if (!estimatorPass_) estimatorPass_ = std::make_unique<EstimatorPass>(ctx, ao_, bentNormals(ao_, lighting_));
-    if (!denoisePass_) denoisePass_ = std::make_unique<DenoisePass>(ctx);
-    if (!upsamplePass_) upsamplePass_ = std::make_unique<UpsamplePass>(ctx);
-    if (temporal() && !temporalPass_)
-        temporalPass_ = std::make_unique<TemporalPass>(ctx, ao_.chain.denoisePasses, objects_ != nullptr, motion());
+FramePlan Renderer::planFor(uint32_t width, uint32_t height, const AoOptions& ao,
+                            const voxel::Lighting& lighting) const {
+    SceneFacts facts{.occupancy = scene_.occupancy != nullptr, .objects = objects_ != nullptr,
+                     .movingObjects = objects_ && objects_->moving};
+    if (scene_.faceCache) facts.faceCache = {scene_.faceCache->sun().direction, scene_.faceCache->sun().angleDegrees};
+    return planFrame(width, height, ao, lighting, facts, {.display = displayOn_, .normals = normalsOn_, .aoAov = aoAov_});
 }
 
-bool Renderer::cachedSun() const {
-    if (!faceCached(ao_) || !scene_.faceCache) return false;
-    const GpuFaceCache::Sun& baked = scene_.faceCache->sun();
-    return glm::length(glm::normalize(baked.direction) - glm::normalize(lighting_.sunDirection)) < 1e-6f &&
-           baked.angleDegrees == lighting_.sunAngle;
+void Renderer::applyPlan(const FramePlan& plan) {
+    if (passes_.changes(plan)) finishFrames();  // no frame in flight may use a pass freed
+    passes_.update(plan);
+    plan_ = plan;
 }
 
-CompositeShape Renderer::compositeShape() const {
-    return {.withAo = aoChain(ao_), .withShadow = tracedShadows(), .withBentNormals = bentNormals(ao_, lighting_),
-            .faceCache = faceCached(ao_), .cachedSun = shadows() && cachedSun(), .objectLight = objectLight(),
-            .shadowEdges = shadowEdges()};
+void Renderer::planAovs() {
+    if (aoAov_ || !(plan_.faceCache || plan_.chain)) return;
+    aoAov_ = true;
+    const FramePlan plan = wantedPlan();
+    targets_.update(plan);  // the AO AOV's target, no history: the histories go on
+    applyPlan(plan);
 }
 
 CompositePass& Renderer::composite() {
     // The header's count, as the last frame to finish left it.
-    if (!cacheTracing() || scene_.faceCache->lastHeader()[GROTTO_FACE_UNCONVERGED] == 0) return *compositePass_;
-    if (!askingCompositePass_) {
-        CompositeShape asking = compositeShape();
-        asking.askFaces = true;
-        askingCompositePass_ = std::make_unique<CompositePass>(ctx_, asking);
-    }
-    return *askingCompositePass_;
-}
-
-FrameShape Renderer::shapeFor(uint32_t width, uint32_t height, const AoOptions& ao,
-                             const voxel::Lighting& lighting) const {
-    const bool shadows = lighting.sunShadows && scene_.occupancy;
-    return {.width = width, .height = height, .ao = ao, .shadows = shadows,
-            .softShadows = shadows && lighting.sunAngle > 0.0f, .objectLight = faceCached(ao) && objects_,
-            .movingObjects = objects_ && objects_->moving,
-            .display = displayOn_, .normals = normalsOn_, .aoAov = aoAov_};
+    if (plan_.cacheTracing && scene_.faceCache->lastHeader()[GROTTO_FACE_UNCONVERGED] != 0)
+        return passes_.get<AskingCompositePass>();
+    return passes_.get<CompositePass>();
 }
 
 // Histories in new images start afresh.
-void Renderer::updateTargets(const FrameShape& shape) {
+void Renderer::updateTargets(const FramePlan& plan) {
     finishFrames();  // no GPU work of ours may use the targets freed
-    if (!targets_.update(shape)) return;
-    historyIndex_ = 0;
+    if (!targets_.update(plan)) return;
     surfaceCamera_.reset();
 }
 
@@ -111,18 +85,16 @@ void Renderer::setGameImage(bool& flag, bool on, const char* what) {
     flag = on;
     if (on) {
         try {
-            requireRenderFits(ctx_, wantedShape(), what);
+            requireRenderFits(ctx_, wantedPlan(), what);
         } catch (...) {
             flag = false;
             throw;
         }
-        createPasses();
     } else {
         vkDeviceWaitIdle(ctx_.device);  // a game may still read it
-        if (!displayOn_) displayPass_.reset();
-        if (!normalsOn_) normalsPass_.reset();
     }
-    targets_.update(wantedShape());
+    applyPlan(wantedPlan());
+    targets_.update(plan_);
 }
 
 Renderer::~Renderer() { release(); }
@@ -133,58 +105,35 @@ void Renderer::release() {
     vkDestroySemaphore(ctx_.device, timeline_, nullptr);
     timeline_ = VK_NULL_HANDLE;
     for (auto& s : slots_) s.reset();
-    gbufferPass_.reset();
-    prefilterPass_.reset();
-    estimatorPass_.reset();
-    bentPass_.reset();
-    denoisePass_.reset();
-    temporalPass_.reset();
-    upsamplePass_.reset();
-    compositePass_.reset();
-    askingCompositePass_.reset();
-    displayPass_.reset();
-    normalsPass_.reset();
-    shadowPass_.reset();
-    objectLightPass_.reset();
-    faceCacheAovPass_.reset();
-    cacheTracePass_.reset();
-    shadowEdgePass_.reset();
+    passes_.release();
     targets_.release();
     vk::destroy(ctx_, objectGrids_.buffer);
 }
 
 void Renderer::resize(uint32_t width, uint32_t height) {
-    const FrameShape shape = shapeFor(width, height, ao_, lighting_);
-    requireRenderFits(ctx_, shape, "image size");
-    updateTargets(shape);
+    const FramePlan plan = planFor(width, height, ao_, lighting_);
+    requireRenderFits(ctx_, plan, "image size");
+    restart(plan);
+}
+
+void Renderer::restart(const FramePlan& plan) {
+    applyPlan(plan);
+    updateTargets(plan);
     resetHistory();
 }
 
 void Renderer::setLighting(const voxel::Lighting& lighting) {
-    const bool hadShadows = shadows(), wasSoft = softShadows();
-    const CompositeShape wasComposite = compositeShape();  // with the shadow pass's presence
-    const voxel::Lighting old = std::exchange(lighting_, lighting);
-    const bool sameAmbient = old.ambientFrom == lighting_.ambientFrom;
-    if (hadShadows == shadows() && wasSoft == softShadows() && sameAmbient && wasComposite == compositeShape()) {  // uniforms only
-        if (old.sunDirection != lighting_.sunDirection || old.sunAngle != lighting_.sunAngle) surfaceCamera_.reset();
+    const FramePlan plan = planFor(width(), height(), ao_, lighting);
+    // Uniforms only, unless passes or targets change or the ambient's source (its light everywhere).
+    if (!passes_.changes(plan) && !targets_.changes(plan) && lighting.ambientFrom == lighting_.ambientFrom) {
+        if (lighting.sunDirection != lighting_.sunDirection || lighting.sunAngle != lighting_.sunAngle) surfaceCamera_.reset();
+        lighting_ = lighting;
+        plan_ = plan;
         return;
     }
-    try {  // a soft sun's history may not fit
-        requireRenderFits(ctx_, wantedShape(), "lighting");
-    } catch (...) {
-        lighting_ = old;
-        throw;
-    }
-    finishFrames();  // before their passes go
-    compositePass_.reset();
-    askingCompositePass_.reset();
-    shadowPass_.reset();
-    faceCacheAovPass_.reset();
-    if (!sameAmbient) estimatorPass_.reset();  // VBAO's bent normals follow the ambient's source
-    bentPass_.reset();
-    createPasses();
-    updateTargets(wantedShape());
-    resetHistory();
+    requireRenderFits(ctx_, plan, "lighting");  // a soft sun's history may not fit
+    lighting_ = lighting;
+    restart(plan);
 }
 
 void Renderer::requireOccupancy(const AoOptions& ao) const {
@@ -199,46 +148,15 @@ void Renderer::requireOccupancy(const AoOptions& ao) const {
 void Renderer::setAo(const AoOptions& ao) {
     validateAo(ao, "AO settings");
     requireOccupancy(ao);
-    const FrameShape shape = shapeFor(width(), height(), ao, lighting_);
-    requireRenderFits(ctx_, shape, "AO settings");
-    finishFrames();  // before passes go
-    const AoOptions old = std::exchange(ao_, ao);
-    const bool wasTemporal = old.enabled && old.chain.temporalHistory > 0;
-    // What each pass and target is made from (its shader's specialisation, its size).
-    const bool chain = old.enabled != ao_.enabled || faceCached(old) != faceCached(ao_);
-    const bool estimator = old.method != ao_.method || old.estimator.ssaoSamples != ao_.estimator.ssaoSamples ||
-                           differIn(old, ao_, voxel::kEstimatorPipeline);  // its loop shape: the settings table's column
-    const bool denoise = old.chain.denoisePasses != ao_.chain.denoisePasses;
-    const bool bent = bentNormals(old, lighting_) != bentNormals(ao_, lighting_);
-    if (chain || bent) {
-        compositePass_.reset();
-        askingCompositePass_.reset();
-        faceCacheAovPass_.reset();
-    }
-    if (chain) {
-        shadowPass_.reset();  // the cache may give the sun's shadows
-        objectLightPass_.reset();
-    }
-    if (chain || estimator || bent) estimatorPass_.reset();
-    bentPass_.reset();
-    if (voxelThickness(old) != voxelThickness(ao_)) prefilterPass_.reset();
-    if (chain || denoise || wasTemporal != temporal()) temporalPass_.reset();
-    // Moving objects get motion vectors only with the temporal pass: its G-buffer pass and target follow it.
-    const bool motionChanged = objects_ && objects_->moving && wasTemporal != temporal();
-    if (motionChanged) gbufferPass_.reset();
-    if (!aoChain(ao_)) {
-        prefilterPass_.reset();
-        denoisePass_.reset();
-        upsamplePass_.reset();
-    }
-    createPasses();
-    updateTargets(shape);
-    resetHistory();
+    const FramePlan plan = planFor(width(), height(), ao, lighting_);
+    requireRenderFits(ctx_, plan, "AO settings");
+    ao_ = ao;
+    restart(plan);
 }
 
 TargetRef Renderer::aoOutput() const {
-    if (!aoChain(ao_)) return TargetId::AoRaw;  // the 1x1 placeholder the composite binds
-    return temporal() ? TargetRef{TargetId::AoHistory, historyIndex_} : denoisedTarget(ao_.chain.denoisePasses);
+    if (!plan_.chain) return TargetId::AoRaw;  // the 1x1 placeholder the composite binds
+    return plan_.temporal ? TargetId::AoHistory : denoisedTarget(ao_.chain.denoisePasses);
 }
 
 void Renderer::pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record) {
@@ -251,6 +169,7 @@ void Renderer::pass(VkCommandBuffer cmd, const PassDecl& decl, const std::functi
 FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy* copy) {
     const auto start = std::chrono::steady_clock::now();
     finishFrames();  // frames submitted in flight before: this one starts on an idle queue
+    if (copy && copy->aovs()) planAovs();
     FrameStats stats = recordFrame(camera, frameIndex, copy, false);
     submitAndWait(slot().cmd);
     stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -264,6 +183,7 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy
 
 FrameStats Renderer::submit(const Camera& camera, uint32_t frameIndex, const FrameSync& sync, FrameCopy* copy) {
     const auto start = std::chrono::steady_clock::now();
+    if (copy && copy->aovs()) planAovs();
     FrameStats stats = recordFrame(camera, frameIndex, copy, true);
     submitCommands(slot().cmd, sync.waits);
     slot().timesUnread = true;
@@ -276,13 +196,8 @@ FrameStats Renderer::submit(const Camera& camera, uint32_t frameIndex, const Fra
 
 // The frame, top to bottom; each pass's barriers follow from what it declares.
 FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, FrameCopy* copy, bool inFlight) {
-    if (shadowEdges() && (!shadowEdgePass_ || edgeSize_.width != width() || edgeSize_.height != height())) {
-        finishFrames();  // no frame in flight may still use the list
-        shadowEdgePass_.reset();
-        shadowEdgePass_ = std::make_unique<ShadowEdgePass>(ctx_, width(), height());
-        edgeSize_ = {width(), height()};
-    }
-    if (tracedShadows() || objectLight() || (aoChain(ao_) && tracesVoxels(ao_.method))) refreshObjectGrids();
+    applyPlan(wantedPlan());  // the scene's face cache may have come or changed its sun
+    if (plan_.objectRays) refreshObjectGrids();
     slotIndex_ = 1 - slotIndex_;
     FrameSlot& s = slot();
     waitFor(s.done);  // the frame two before: its slot's buffers are the CPU's again
@@ -302,50 +217,49 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
                              0, nullptr, 0, nullptr);
     }
     targets_.beginFrame(!inFlight);
+    targets_.advanceHistories(plan_);
     scene_.recordUploads(cmd, s.staging);  // edits since the last frame, with their barrier to vertex input
     FrameStats stats = inFlight ? recordGBufferInFlight(cmd, camera) : recordGBuffer(cmd, camera);
     stats.passMs = std::move(unread);
-    if (cacheTracing())
+    if (plan_.cacheTracing)
         pass(cmd, FaceCacheTracePass::declare(), [&] {
-            cacheTracePass_->record(cmd, targets_.gbuffer(), {width(), height()}, s.frame, s.traceConstants,
+            passes_.get<FaceCacheTracePass>().record(cmd, targets_.gbuffer(), {width(), height()}, s.frame, s.traceConstants,
                                     *scene_.occupancy, *scene_.faceCache,
                                     ao_.chain.cacheRays ? ao_.chain.cacheRays : defaultCacheRays(ctx_));
         });
-    const uint32_t history = surfaceHistoryIndex_;
-    if (softShadows() || objectLight()) surfaceHistoryIndex_ = 1 - surfaceHistoryIndex_;  // reads the last, writes the other
-    if (tracedShadows())
-        pass(cmd, shadowPass_->declare(history), [&] {
-            shadowPass_->record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::Shadow), s.traceConstants,
-                                *scene_.occupancy, objectGrids_.buffer, &image({TargetId::ShadowHistory, history}),
-                                &image({TargetId::ShadowHistory, surfaceHistoryIndex_}));
+    if (plan_.tracedShadows)
+        pass(cmd, passes_.get<ShadowPass>().declare(), [&] {
+            passes_.get<ShadowPass>().record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::Shadow), s.traceConstants,
+                                *scene_.occupancy, objectGrids_.buffer, &image({TargetId::ShadowHistory, Copy::Previous}),
+                                &image(TargetId::ShadowHistory));
         });
-    if (objectLight())
-        pass(cmd, ObjectLightPass::declare(history), [&] {
-            objectLightPass_->record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::ObjectLight),
-                                     image({TargetId::ObjectLightHistory, history}),
-                                     image({TargetId::ObjectLightHistory, surfaceHistoryIndex_}), s.traceConstants,
+    if (plan_.objectLight)
+        pass(cmd, ObjectLightPass::declare(), [&] {
+            passes_.get<ObjectLightPass>().record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::ObjectLight),
+                                     image({TargetId::ObjectLightHistory, Copy::Previous}),
+                                     image(TargetId::ObjectLightHistory), s.traceConstants,
                                      *scene_.occupancy, objectGrids_.buffer);
         });
-    if (aoChain(ao_)) recordAo(cmd);
+    if (plan_.chain) recordAo(cmd);
     pass(cmd, CompositePass::declare(aoOutput()), [&] {
         composite().record(cmd, targets_.gbuffer(), image(TargetId::Color),
                                {.aoHalf = image(aoOutput()), .frame = s.frame, .palette = scene_.palette,
                                 .gtaoConstants = s.aoConstants, .objectUniforms = s.objectUniforms,
                                 .shadow = image(TargetId::Shadow), .bentNormals = image(TargetId::AoBentNormal),
                                 .faceCache = scene_.faceCache.get(), .objectLight = &image(TargetId::ObjectLight),
-                                .shadowEdges = shadowEdgePass_ ? &shadowEdgePass_->edges() : nullptr});
+                                .shadowEdges = plan_.shadowEdges ? &passes_.get<ShadowEdgePass>().edges() : nullptr});
     });
-    if (shadowEdges())
+    if (plan_.shadowEdges)
         pass(cmd, ShadowEdgePass::declare(), [&] {
-            shadowEdgePass_->record(cmd, targets_.gbuffer(), image(TargetId::Color), s.traceConstants, *scene_.occupancy);
+            passes_.get<ShadowEdgePass>().record(cmd, targets_.gbuffer(), image(TargetId::Color), s.traceConstants, *scene_.occupancy);
         });
-    if (displayOn_)
+    if (plan_.display)
         pass(cmd, DisplayPass::declare(), [&] {
-            displayPass_->record(cmd, image(TargetId::Color), image(TargetId::Display), toneMapCurve(lighting_.toneMap));
+            passes_.get<DisplayPass>().record(cmd, image(TargetId::Color), image(TargetId::Display), toneMapCurve(lighting_.toneMap));
         });
-    if (normalsOn_)
+    if (plan_.normals)
         pass(cmd, NormalsPass::declare(), [&] {
-            normalsPass_->record(cmd, targets_.gbuffer().surface, s.objectUniforms, image(TargetId::Normals));
+            passes_.get<NormalsPass>().record(cmd, targets_.gbuffer().surface, s.objectUniforms, image(TargetId::Normals));
         });
     if (copy) recordCopy(cmd, *copy, camera);
     return stats;
@@ -358,22 +272,23 @@ FrameStats Renderer::recordGBuffer(VkCommandBuffer cmd, const Camera& camera) {
     const GBufferObjects drawObjects{objectScenes_, poses_, lastCamera_ ? lastPoses_ : poses_,
                                      lastCamera_ ? &*lastCamera_ : &camera};
     const GBufferObjects* drawn = objects_ ? &drawObjects : nullptr;
-    const PassDecl gbuffer = gbufferPass_->declare();
+    GBufferPass& gbufferPass = passes_.get<GBufferPass>();
+    const PassDecl gbuffer = gbufferPass.declare();
     FrameStats stats;
     FrameSlot& s = slot();
     targets_.recordBarriers(cmd, gbuffer.uses);
     s.timestamps.begin(cmd, gbuffer.timestamp);
     const std::vector<QuadDraw>& early = culling_.begin(scene_, camera, cullingOptions_);
-    stats.quadsDrawn = gbufferPass_->record(cmd, targets_.gbuffer(), scene_, s.frame, camera, early, true, drawn,
+    stats.quadsDrawn = gbufferPass.record(cmd, targets_.gbuffer(), scene_, s.frame, camera, early, true, drawn,
                                             !cullingOptions_.occlusion);
     s.hizWritten = false;  // these tiles hold the first phase only
     if (cullingOptions_.occlusion) {
-        pass(cmd, HizPass::declare(), [&] { hizPass_->record(cmd, image(TargetId::Depth), s.hiz); });
+        pass(cmd, HizPass::declare(), [&] { passes_.get<HizPass>().record(cmd, image(TargetId::Depth), s.hiz); });
         submitAndWait(cmd);
         const std::vector<QuadDraw>& late = culling_.late(s.hiz.tiles());
         beginCommands();
         targets_.recordBarriers(cmd, gbuffer.uses);
-        stats.quadsDrawn += gbufferPass_->record(cmd, targets_.gbuffer(), scene_, s.frame, camera, late, false, drawn);
+        stats.quadsDrawn += gbufferPass.record(cmd, targets_.gbuffer(), scene_, s.frame, camera, late, false, drawn);
     }
     stats.culling = culling_.stats();
     s.timestamps.end(cmd);
@@ -386,7 +301,8 @@ FrameStats Renderer::recordGBuffer(VkCommandBuffer cmd, const Camera& camera) {
 FrameStats Renderer::recordGBufferInFlight(VkCommandBuffer cmd, const Camera& camera) {
     const GBufferObjects drawObjects{objectScenes_, poses_, lastCamera_ ? lastPoses_ : poses_,
                                      lastCamera_ ? &*lastCamera_ : &camera};
-    const PassDecl gbuffer = gbufferPass_->declare();
+    GBufferPass& gbufferPass = passes_.get<GBufferPass>();
+    const PassDecl gbuffer = gbufferPass.declare();
     FrameStats stats;
     FrameSlot& s = slot();
     targets_.recordBarriers(cmd, gbuffer.uses);
@@ -396,11 +312,11 @@ FrameStats Renderer::recordGBufferInFlight(VkCommandBuffer cmd, const Camera& ca
         const std::vector<QuadDraw>& late = culling_.late(reusableTiles(camera));
         draws.insert(draws.end(), late.begin(), late.end());
     }
-    stats.quadsDrawn = gbufferPass_->record(cmd, targets_.gbuffer(), scene_, s.frame, camera, draws, true,
+    stats.quadsDrawn = gbufferPass.record(cmd, targets_.gbuffer(), scene_, s.frame, camera, draws, true,
                                             objects_ ? &drawObjects : nullptr);
     s.hizWritten = cullingOptions_.occlusion;
     if (s.hizWritten) {
-        pass(cmd, HizPass::declare(), [&] { hizPass_->record(cmd, image(TargetId::Depth), s.hiz); });
+        pass(cmd, HizPass::declare(), [&] { passes_.get<HizPass>().record(cmd, image(TargetId::Depth), s.hiz); });
         s.hizViewProj = camera.viewProjRelativeDouble();
         s.hizPosition = camera.position;
         s.hizSceneUpdates = scene_.updates;
@@ -430,27 +346,29 @@ DepthTiles Renderer::reusableTiles(const Camera& camera) const {
 
 void Renderer::recordAo(VkCommandBuffer cmd) {
     const AoTargets& ao = targets_.ao();
-    pass(cmd, prefilterPass_->declare(), [&] {
-        prefilterPass_->record(cmd, image(TargetId::Depth), image(TargetId::Surface), ao, slot().aoConstants,
+    DepthPrefilterPass& prefilter = passes_.get<DepthPrefilterPass>();
+    EstimatorPass& estimator = passes_.get<EstimatorPass>();
+    pass(cmd, prefilter.declare(), [&] {
+        prefilter.record(cmd, image(TargetId::Depth), image(TargetId::Surface), ao, slot().aoConstants,
                                slot().traceConstants, scene_.occupancy.get());
     });
-    pass(cmd, estimatorPass_->declare(), [&] {
-        estimatorPass_->record(cmd, image(TargetId::Surface), ao, slot().aoConstants, slot().traceConstants,
+    pass(cmd, estimator.declare(), [&] {
+        estimator.record(cmd, image(TargetId::Surface), ao, slot().aoConstants, slot().traceConstants,
                                scene_.occupancy.get(), &objectGrids_.buffer);
     });
     // With the temporal pass, the final blur is part of it.
-    const uint32_t passes = ao_.chain.denoisePasses, blurs = temporal() && passes > 0 ? passes - 1 : passes;
+    const uint32_t passes = ao_.chain.denoisePasses, blurs = plan_.temporal && passes > 0 ? passes - 1 : passes;
     slot().timestamps.begin(cmd, DenoisePass::kTimestamp);
     for (uint32_t i = 0; i < blurs; ++i)
-        pass(cmd, DenoisePass::declare(i), [&] { denoisePass_->record(cmd, ao, passes, i, slot().aoConstants); });
+        pass(cmd, DenoisePass::declare(i), [&] { passes_.get<DenoisePass>().record(cmd, ao, passes, i, slot().aoConstants); });
     slot().timestamps.end(cmd);
-    if (!temporal()) return;
-    // Reads the last output, writes the other image, which becomes the last.
-    const uint32_t previous = historyIndex_;
-    historyIndex_ = 1 - historyIndex_;
-    pass(cmd, temporalPass_->declare(previous, motion()), [&] {
-        temporalPass_->record(cmd, ao, image({TargetId::AoHistory, previous}), image({TargetId::AoHistory, historyIndex_}),
-                              slot().aoConstants, slot().temporalConstants, &slot().objectUniforms, &image(motion() ? TargetId::Motion : TargetId::Depth));
+    if (!plan_.temporal) return;
+    // Reads the last output, writes this frame's.
+    TemporalPass& temporal = passes_.get<TemporalPass>();
+    pass(cmd, temporal.declare(plan_.motion), [&] {
+        temporal.record(cmd, ao, image({TargetId::AoHistory, Copy::Previous}), image(TargetId::AoHistory),
+                        slot().aoConstants, slot().temporalConstants, &slot().objectUniforms,
+                        &image(plan_.motion ? TargetId::Motion : TargetId::Depth));
     });
 }
 

@@ -8,23 +8,9 @@
 #include "engine/frame/frame_slot.h"
 #include "engine/frame/frame_targets.h"
 #include "engine/frame/frame_images.h"
+#include "engine/frame/frame_passes.h"
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/history_boxes.h"
-#include "engine/passes/ao_targets.h"
-#include "engine/passes/composite_pass.h"
-#include "engine/passes/denoise_pass.h"
-#include "engine/passes/depth_prefilter_pass.h"
-#include "engine/passes/display_pass.h"
-#include "engine/passes/normals_pass.h"
-#include "engine/passes/gbuffer_pass.h"
-#include "engine/passes/estimator_pass.h"
-#include "engine/passes/face_cache_aov_pass.h"
-#include "engine/passes/face_cache_trace_pass.h"
-#include "engine/passes/hiz_pass.h"
-#include "engine/passes/object_light_pass.h"
-#include "engine/passes/shadow_edge_pass.h"
-#include "engine/passes/shadow_pass.h"
-#include "engine/passes/temporal_pass.h"
-#include "engine/passes/upsample_pass.h"
 #include "engine/scene/scene.h"
 #include "engine/scene/scene_objects.h"
 #include "engine/vk/timestamps.h"
@@ -146,20 +132,25 @@ public:
     const vk::Image& aoImage() const { return image(aoOutput()); }
 
     size_t targetBytes() const { return targets_.bytes(); }
-    // What its targets are made for now (frame_targets.h).
-    const FrameShape& shape() const { return targets_.shape(); }
+    // What its frames do now: their passes and targets (frame_plan.h).
+    const FramePlan& plan() const { return plan_; }
     const AoOptions& ao() const { return ao_; }
 
 private:
-    void createPasses();  // those ao_ needs and that do not exist yet
     // Turns an image only a game or a window reads on or off (`flag`: displayOn_ or normalsOn_).
     void setGameImage(bool& flag, bool on, const char* what);
-    // The targets' shape at a size with these settings (and the display and AO AOV as now).
-    FrameShape shapeFor(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting) const;
-    FrameShape wantedShape() const { return shapeFor(width(), height(), ao_, lighting_); }  // at the current size
-    uint32_t width() const { return targets_.shape().width; }
-    uint32_t height() const { return targets_.shape().height; }
-    void updateTargets(const FrameShape& shape);  // restarts the histories when targets change
+    // The frame at a size with these settings, this scene and what the caller asked for.
+    FramePlan planFor(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting) const;
+    FramePlan wantedPlan() const { return planFor(width(), height(), ao_, lighting_); }  // at the current size
+    // Takes `plan` as the frame's: its passes made, dropped or remade (once no
+    // frame in flight uses those it frees).
+    void applyPlan(const FramePlan& plan);
+    // A read-back with AOVs: its target and passes made before the frame is recorded, kept from then on.
+    void planAovs();
+    uint32_t width() const { return plan_.width; }
+    uint32_t height() const { return plan_.height; }
+    void updateTargets(const FramePlan& plan);  // restarts the histories when targets change
+    void restart(const FramePlan& plan);  // a plan whose frames start afresh: its passes, targets, no history
     void release();  // frees whatever exists; null handles are skipped
     // Records a pass: the barriers its declaration calls for, then `record` within its timestamp.
     void pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record);
@@ -175,30 +166,9 @@ private:
     void recordAo(VkCommandBuffer cmd);
     // The last frame's images into `copy`, after everything recorded before.
     void recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera);
-    bool temporal() const { return aoChain(ao_) && ao_.chain.temporalHistory > 0; }
-    // Sun shadows need the scene's occupancy; a scene uploaded from a mesh alone has none.
-    bool shadows() const { return lighting_.sunShadows && scene_.occupancy; }
-    // The face cache's sun visibility is the frame's: its sun is the lighting's.
-    bool cachedSun() const;
-    // The shadow pass runs: sun shadows the face cache does not give (objects'
-    // surfaces, a sun moved since the bake).
-    bool tracedShadows() const { return shadows() && (!cachedSun() || objects_); }
-    CompositeShape compositeShape() const;
     // The composite for this frame: while the cache has faces not converged, the
     // one that asks for the faces of the texels it reads.
     CompositePass& composite();
-    // A sun of finite size: jittered rays accumulated in a history (shadow_pass.h).
-    bool softShadows() const { return tracedShadows() && lighting_.sunAngle > 0.0f; }
-    // Objects' AO and sky light over the face cache (object_light_pass.h).
-    bool objectLight() const { return faceCached(ao_) && objects_; }
-    // Exact sun rays on the cache's shadow edges: its sun is the frame's.
-    bool shadowEdges() const { return shadows() && cachedSun(); }
-    // The GPU traces the face cache's texels in view that have not converged.
-    bool cacheTracing() const { return faceCached(ao_) && scene_.occupancy && scene_.faceCache; }
-    // VBAO finds bent normals in every frame: the sky's ambient is lit around them.
-    static bool bentNormals(const AoOptions& ao, const voxel::Lighting& lighting) {
-        return ao.enabled && ao.method == AoMethod::Vbao && lighting.ambientFrom == voxel::AmbientSource::Sky;
-    }
     void writeTraceConstants(const Camera& camera, uint32_t frameIndex);
     // Uploads the objects' grids for rays again when they changed (or were never uploaded).
     void refreshObjectGrids();
@@ -219,9 +189,8 @@ private:
     bool normalsOn_ = false;
     bool aoAov_ = false;  // a read-back asked for the AO AOVs: their full-res target is kept from then on
     // The full-res histories of a soft sun and of objects' light over the face
-    // cache: which image holds the last, and the camera and frame index of their
-    // last frame (none: the next frame starts afresh).
-    uint32_t surfaceHistoryIndex_ = 0;
+    // cache: the camera and frame index of their last frame (none: the next frame
+    // starts afresh). Their images are the targets' (FrameTargets::advanceHistories).
     std::optional<Camera> surfaceCamera_;
     uint32_t surfaceFrame_ = 0;
     // Objects: their poses now and at the last frame rendered (with its camera),
@@ -232,33 +201,15 @@ private:
     std::vector<const GpuScene*> objectScenes_;
     GpuObjectGrids objectGrids_;      // the objects' voxels for rays, as of objectGridsVersion_
     uint64_t objectGridsVersion_ = 0;
-    bool motion() const { return objects_ && objects_->moving && temporal(); }
-    // Temporal state: which history image holds the last output, and the camera
-    // and frame index it was rendered with (none after a cut).
-    uint32_t historyIndex_ = 0;
+    // Temporal state: the camera and frame index the AO history's last output was
+    // rendered with (none after a cut).
     std::optional<Camera> previousCamera_;
     uint32_t previousFrame_ = 0;
     HistoryBoxes invalidated_;  // edits since the last frame
-    std::unique_ptr<GBufferPass> gbufferPass_;
-    std::unique_ptr<HizPass> hizPass_;
     ChunkCulling culling_;
     CullingOptions cullingOptions_ = cullingOptions(voxel::Detail{});
-    std::unique_ptr<DepthPrefilterPass> prefilterPass_;
-    std::unique_ptr<EstimatorPass> estimatorPass_;
-    std::unique_ptr<EstimatorPass> bentPass_;  // VBAO with bent normals, for read-backs of frames without them
-    std::unique_ptr<DenoisePass> denoisePass_;
-    std::unique_ptr<TemporalPass> temporalPass_;
-    std::unique_ptr<UpsamplePass> upsamplePass_;
-    std::unique_ptr<CompositePass> compositePass_;
-    std::unique_ptr<CompositePass> askingCompositePass_;  // made when first needed (composite())
-    std::unique_ptr<DisplayPass> displayPass_;
-    std::unique_ptr<NormalsPass> normalsPass_;
-    std::unique_ptr<ShadowPass> shadowPass_;
-    std::unique_ptr<ObjectLightPass> objectLightPass_;
-    std::unique_ptr<FaceCacheAovPass> faceCacheAovPass_;  // --ao cache's AOVs, for read-backs
-    std::unique_ptr<FaceCacheTracePass> cacheTracePass_;  // --ao cache's rays for the faces in view not converged
-    std::unique_ptr<ShadowEdgePass> shadowEdgePass_;      // its list sized for edgeSize_
-    VkExtent2D edgeSize_{};
+    FramePlan plan_;       // what the frames do now
+    FramePasses passes_;   // the passes plan_ runs
     // The two frames in flight: each frame takes the other slot than the last.
     std::array<std::unique_ptr<FrameSlot>, 2> slots_;
     uint32_t slotIndex_ = 1;

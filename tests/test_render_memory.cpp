@@ -53,8 +53,9 @@ TEST_F(GpuTest, RenderMemoryEstimateMatchesTheTargetsOfEveryShape) {
                     const std::string name = std::string(sunAngle > 0 ? "soft" : "hard") + " shadows, " +
                                              (moving ? "moving objects, " : "no objects, ") + method +
                                              (fullResolution ? " full-res" : " half-res");
-                    FrameShape shape = worldFrameShape(desc, w, h, ao, moving);
-                    shape.softShadows = sunAngle > 0;
+                    voxel::WorldDesc lit = desc;
+                    lit.lighting = lighting;
+                    FramePlan shape = planWorldFrame(lit, w, h, ao, moving);
                     auto expectMatch = [&](const char* stage) {
                         const double estimate = double(estimateRenderMemory(ctx(), shape).targetBytes);
                         const double actual = double(renderer.targetBytes());
@@ -62,9 +63,10 @@ TEST_F(GpuTest, RenderMemoryEstimateMatchesTheTargetsOfEveryShape) {
                     };
                     expectMatch("as made");
                     // What the renderer was made for is what the caller can say beforehand.
-                    EXPECT_EQ(renderer.shape().shadows, shape.shadows) << name;
-                    EXPECT_EQ(renderer.shape().softShadows, shape.softShadows) << name;
-                    EXPECT_EQ(renderer.shape().motion(), shape.motion()) << name;
+                    EXPECT_EQ(renderer.plan().shadows, shape.shadows) << name;
+                    EXPECT_EQ(renderer.plan().shadowHistory, shape.shadowHistory) << name;
+                    EXPECT_EQ(renderer.plan().softShadows, shape.softShadows) << name;
+                    EXPECT_EQ(renderer.plan().motion, shape.motion) << name;
                     renderer.setDisplayImage(true);
                     shape.display = true;
                     expectMatch("with the display image");
@@ -86,8 +88,9 @@ TEST_F(GpuTest, SoftSunSetLaterMakesItsHistoryAsTheEstimateSays) {
     lighting.sunAngle = 1.0f;
     renderer.setLighting(lighting);  // checked against the device, then two history images more
     EXPECT_GE(renderer.targetBytes(), hard + 2 * 16 * 8 * 8);
-    FrameShape shape = worldFrameShape(desc, 8, 8, ao);
-    shape.softShadows = true;
+    voxel::WorldDesc soft = desc;
+    soft.lighting = lighting;
+    const FramePlan shape = planWorldFrame(soft, 8, 8, ao);
     EXPECT_NEAR(double(estimateRenderMemory(ctx(), shape).targetBytes), double(renderer.targetBytes()),
                 0.02 * double(renderer.targetBytes()));
 }
@@ -106,7 +109,7 @@ TEST_F(GpuTest, SizeBeyondTheDeviceIsRefusedBeforeAllocating) {
         EXPECT_EQ(e.where(), "image size");
         EXPECT_NE(e.problem().find("16384x16384 is too large"), std::string::npos) << e.what();
     }
-    EXPECT_NO_THROW(requireRenderFits(ctx(), worldFrameShape(world.desc(), 3840, 2160, ao), "--size"));
+    EXPECT_NO_THROW(requireRenderFits(ctx(), planWorldFrame(world.desc(), 3840, 2160, ao), "--size"));
 }
 
 }  // namespace

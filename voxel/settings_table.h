@@ -25,19 +25,6 @@ enum class SettingType {
     Direction,  // three numbers, each in [lo, hi], not all zero; kept normalised
 };
 
-// What a change of a setting makes stale, beyond the uniforms each frame writes.
-enum Invalidates : unsigned {
-    kUniformsOnly = 0,
-    kEstimatorPipeline = 1u << 0,  // the estimator's specialisation (method, loop shape)
-    kTemporalPipeline = 1u << 1,   // the temporal pass (it runs the last denoise pass)
-    kCompositePipeline = 1u << 2,  // the composite (AO on or off, shadows on or off)
-    kShadowPipeline = 1u << 3,     // the shadow pass (hard or soft)
-    kTargets = 1u << 4,            // the render targets: which exist, their sizes
-    kHistory = 1u << 5,            // the temporal histories (AO, soft shadows) restart
-    kReferenceKey = 1u << 6,       // a cached reference's key (it traces within the radius)
-    kCulling = 1u << 7,            // the G-buffer's culling and levels of detail
-};
-
 // Where a setting lives in a world's description (AO: unset = the preset's).
 using DescMember = std::variant<std::string AoDesc::*, std::optional<double> AoDesc::*, std::optional<int> AoDesc::*,
                                 std::optional<bool> AoDesc::*, float Lighting::*, bool Lighting::*,
@@ -60,7 +47,6 @@ struct Setting {
     std::string_view accepted = {};     // the range as errors state it; empty: "lo to hi"
     std::string_view defaultNote = {};  // the default where it depends on the world or preset
     std::string_view manifest = {};     // its key in manifests and stability baselines; empty: none
-    unsigned invalidates = kUniformsOnly;
     std::span<const std::string_view> choices = {};
     bool presetShaped = false;  // the quality preset sets it: naming a preset replaces it
     bool tracingOnly = false;   // only the methods that trace voxels use it

@@ -43,7 +43,7 @@ constexpr VkAccessFlags kWrites =
 void FrameTargets::beginFrame(bool lastFinished) {
     for (const TargetRow& row : targetRows())
         for (uint32_t c = 0; c < row.copies; ++c) {
-            ImageState& s = state({row.id, c});
+            ImageState& s = state(row.id, c);
             s.writeStage = 0;
             s.readStages = lastFinished ? 0 : VK_PIPELINE_STAGE_ALL_COMMANDS_BIT;
             s.writeAccess = 0;
@@ -92,7 +92,7 @@ void FrameTargets::recordBarriers(VkCommandBuffer cmd, const std::vector<TargetU
 }
 
 VkImageLayout FrameTargets::layout(TargetRef target) const {
-    return states_[size_t(target.id)][target.copy].layout;
+    return states_[size_t(target.id)][index(target)].layout;
 }
 
 }  // namespace grotto

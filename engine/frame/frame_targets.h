@@ -5,7 +5,7 @@
 // all read these rows, so a target added here is counted everywhere; the barriers
 // and layout transitions between passes follow from what each pass declares it
 // uses (pass_decl.h).
-#include "engine/ao_settings.h"
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/gbuffer_pass.h"
@@ -17,33 +17,9 @@
 
 namespace grotto {
 
-// What decides which targets a frame has, and their sizes.
-struct FrameShape {
-    uint32_t width = 0, height = 0;
-    AoOptions ao;
-    bool shadows = false;        // sun shadows (the lighting asks for them and the scene has occupancy)
-    bool softShadows = false;    // a sun of finite size: its shadow keeps a history
-    bool objectLight = false;    // --ao cache with objects: their AO and sky light per pixel, with a history
-    bool movingObjects = false;  // with the temporal pass: motion vectors
-    bool display = false;        // the tone-mapped display image (Renderer::setDisplayImage)
-    bool normals = false;        // the world-space normals image (Renderer::setNormalsImage)
-    bool aoAov = false;          // the full-resolution AO a read-back with AOVs upsamples into
-
-    bool temporal() const { return aoChain(ao) && ao.chain.temporalHistory > 0; }
-    bool motion() const { return movingObjects && temporal(); }
-    VkExtent2D frame() const { return {width, height}; }
-    VkExtent2D aoExtent() const;  // the AO chain's resolution: the frame's, or half of it rounded up
-};
-
-// The shape of a world's frames at a size, as the commands render them: from a
-// scene uploaded from the world (so with occupancy, and sun shadows where the
-// lighting has them), with its objects when `objects`.
-FrameShape worldFrameShape(const voxel::WorldDesc& desc, uint32_t width, uint32_t height, const AoOptions& ao,
-                           bool objects = true);
-
 enum class TargetSize {
     Frame,       // the frame's pixels
-    Ao,          // the AO chain's resolution (FrameShape::aoExtent)
+    Ao,          // the AO chain's resolution (FramePlan::aoExtent)
     DepthAtlas,  // every depth MIP of the AO resolution side by side (depthMipLayout)
 };
 
@@ -52,18 +28,19 @@ struct TargetRow {
     VkFormat format;
     TargetSize size;
     VkImageUsageFlags usage;
-    bool (*exists)(const FrameShape&);
+    bool (*exists)(const FramePlan&);
     bool placeholder;  // where it does not exist, a 1x1 image stands in: its pass binds it regardless
     uint32_t copies;   // 2: a history, this frame's and the last, ping-ponged
     // The layout a frame finds it in: GENERAL, kept from the frame before (histories,
     // the AO chain's images, what a game may read between frames); UNDEFINED, its
     // contents are dropped at each frame's start (the G-buffer, the colour).
     VkImageLayout initial;
+    bool (*advances)(const FramePlan&) = nullptr;  // a history: whether a frame of the plan writes it (flips its copies)
 };
 
 std::span<const TargetRow> targetRows();
-// The row's image size in `shape`: 1x1 for a placeholder, {0, 0} where it has none.
-VkExtent2D targetExtent(const TargetRow& row, const FrameShape& shape);
+// The row's image size in `plan`: 1x1 for a placeholder, {0, 0} where it has none.
+VkExtent2D targetExtent(const TargetRow& row, const FramePlan& plan);
 
 // The images themselves, made and freed by the rows, kept under the names the
 // passes take them by.
@@ -74,14 +51,15 @@ public:
     FrameTargets(const FrameTargets&) = delete;
     FrameTargets& operator=(const FrameTargets&) = delete;
 
-    // Makes the images `shape` has and frees those it lacks, keeping those whose
+    // Makes the images `plan` has and frees those it lacks, keeping those whose
     // size stays (new ones are laid out by the first pass that uses them). The
     // caller sees that the GPU uses none of the freed ones. Returns whether
     // anything was made or freed.
-    bool update(const FrameShape& shape);
+    bool update(const FramePlan& plan);
+    bool changes(const FramePlan& plan) const;  // whether update(plan) would make or free any
     void release();
 
-    const FrameShape& shape() const { return shape_; }
+    const FramePlan& plan() const { return plan_; }
     size_t bytes() const;  // the device memory of every image
     const vk::Image& image(TargetRef target) const;
     const GBufferTargets& gbuffer() const { return gbuffer_; }
@@ -92,6 +70,9 @@ public:
     // when the last frame has finished (`lastFinished`) nothing before needs a
     // barrier, else each image's first use waits for every command before.
     void beginFrame(bool lastFinished);
+    // At a frame's start: the histories the plan writes flip, this frame's copy
+    // becoming the last. A history whose images are made afresh starts at copy 0.
+    void advanceHistories(const FramePlan& plan);
     // Records the layout transitions and barriers a pass using `uses` needs after
     // everything recorded before, in one vkCmdPipelineBarrier (none when nothing is needed).
     void recordBarriers(VkCommandBuffer cmd, const std::vector<TargetUse>& uses);
@@ -104,12 +85,18 @@ private:
         VkPipelineStageFlags writeStage = 0, readStages = 0, visibleTo = 0;  // the last write; reads since; where it is visible
         VkAccessFlags writeAccess = 0;
     };
-    vk::Image& slot(TargetRef target);
-    ImageState& state(TargetRef target) { return states_[size_t(target.id)][target.copy]; }
+    uint32_t index(TargetRef target) const {  // the copy's image
+        const uint32_t current = current_[size_t(target.id)];
+        return target.copy == Copy::Previous ? 1 - current : current;
+    }
+    vk::Image& slot(TargetId id, uint32_t index);
+    ImageState& state(TargetId id, uint32_t index) { return states_[size_t(id)][index]; }
+    ImageState& state(TargetRef target) { return state(target.id, index(target)); }
 
     vk::Context& ctx_;
-    FrameShape shape_;
+    FramePlan plan_;
     std::array<std::array<ImageState, 2>, kTargetCount> states_{};
+    std::array<uint32_t, kTargetCount> current_{};  // each history's image this frame writes
     GBufferTargets gbuffer_;
     AoTargets ao_;
     vk::Image color_, display_, normals_, shadow_, objectLight_;

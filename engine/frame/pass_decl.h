@@ -14,11 +14,16 @@ enum class TargetId {
 };
 inline constexpr int kTargetCount = int(TargetId::AoFull) + 1;
 
-// One image of a target: `copy` picks this frame's or the last in a history.
+// Which image of a history (a target with two copies): the one this frame writes,
+// or the one the frame before wrote. The targets flip them at each frame's start
+// (FrameTargets::advanceHistories); a target of one copy has only Current.
+enum class Copy : uint8_t { Current, Previous };
+
+// One image of a target.
 struct TargetRef {
     TargetId id;
-    uint32_t copy = 0;
-    constexpr TargetRef(TargetId target, uint32_t historyCopy = 0) : id(target), copy(historyCopy) {}
+    Copy copy = Copy::Current;
+    constexpr TargetRef(TargetId target, Copy which = Copy::Current) : id(target), copy(which) {}
 };
 
 // The AO after `passes` spatial denoise passes: the raw AO when there are none,

@@ -9,28 +9,28 @@
 
 namespace grotto {
 
-RenderMemory estimateRenderMemory(const vk::Context& ctx, const FrameShape& shape) {
+RenderMemory estimateRenderMemory(const vk::Context& ctx, const FramePlan& plan) {
     RenderMemory r;
     for (const TargetRow& row : targetRows()) {
-        const VkExtent2D extent = targetExtent(row, shape);
+        const VkExtent2D extent = targetExtent(row, plan);
         if (extent.width == 0) continue;
         const uint64_t bytes = vk::imageBytes(ctx, extent, row.format, row.usage);
         r.targetBytes += row.copies * bytes;
         r.largestBytes = std::max(r.largestBytes, bytes);
     }
-    r.stagingBytes = 16 * uint64_t(shape.width) * shape.height;  // the colour, RGBA32F
+    r.stagingBytes = 16 * uint64_t(plan.width) * plan.height;  // the colour, RGBA32F
     r.largestBytes = std::max(r.largestBytes, r.stagingBytes);
-    r.hostBytes = readbackHostBytes(shape);
+    r.hostBytes = readbackHostBytes(plan);
     return r;
 }
 
-uint64_t readbackHostBytes(const FrameShape& shape) {
+uint64_t readbackHostBytes(const FramePlan& plan) {
     // FrameImages with AOVs: colour 16, depth, raw depth and ids 10, normal and
     // albedo 24, six AO AOVs 24, the shadow 4 bytes a pixel (and the motion 16 where
     // objects move), the packed half-res AO 8 per AO pixel.
-    const uint64_t n = uint64_t(shape.width) * shape.height;
-    const VkExtent2D ao = shape.aoExtent();
-    return (78 + (shape.motion() ? 16 : 0)) * n + 8 * uint64_t(ao.width) * ao.height;
+    const uint64_t n = uint64_t(plan.width) * plan.height;
+    const VkExtent2D ao = plan.aoExtent();
+    return (78 + (plan.motion ? 16 : 0)) * n + 8 * uint64_t(ao.width) * ao.height;
 }
 
 namespace {
@@ -80,14 +80,14 @@ std::string whyNot(const DeviceMemory& d, const RenderMemory& r) {
 
 }  // namespace
 
-void requireRenderFits(const vk::Context& ctx, const FrameShape& shape, const std::string& where) {
+void requireRenderFits(const vk::Context& ctx, const FramePlan& plan, const std::string& where) {
     const DeviceMemory d = deviceMemory(ctx);
-    FrameShape at = shape;
+    FramePlan at = plan;
     at.aoAov = true;
     const std::string why = whyNot(d, estimateRenderMemory(ctx, at));
     if (why.empty()) return;
-    // The largest size of the same shape that fits, for the hint.
-    const uint32_t width = shape.width, height = shape.height;
+    // The largest size of the same plan that fits, for the hint.
+    const uint32_t width = plan.width, height = plan.height;
     uint32_t lo = 1, hi = width;
     while (lo < hi) {
         at.width = (lo + hi + 1) / 2;

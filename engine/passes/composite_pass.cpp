@@ -25,6 +25,12 @@ std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
 }
 }  // namespace
 
+CompositeShape CompositePass::shapeFor(const FramePlan& plan, bool askFaces) {
+    return {.withAo = plan.chain, .withShadow = plan.tracedShadows, .withBentNormals = plan.bentNormals,
+            .faceCache = plan.faceCache, .cachedSun = plan.cachedSun, .objectLight = plan.objectLight,
+            .shadowEdges = plan.shadowEdges, .askFaces = askFaces};
+}
+
 CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
     : ctx_(ctx),
       shape_(shape),

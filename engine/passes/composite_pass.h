@@ -10,10 +10,13 @@
 // AO chain: world surfaces take AO, sky light and, while its sun is the frame's,
 // sun visibility from the cache at each pixel's point (composite_cache.comp), less
 // what objects take, and objects' own from the object light pass.
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/scene/face_cache_gpu.h"
+
+#include <tuple>
 
 namespace grotto {
 
@@ -32,6 +35,10 @@ struct CompositeShape {
 class CompositePass {
 public:
     CompositePass(vk::Context& ctx, const CompositeShape& shape);
+    // Every frame has one; while the face cache has faces not converged, AskingCompositePass instead.
+    static bool runs(const FramePlan&) { return true; }
+    static std::tuple<CompositeShape> key(const FramePlan& plan) { return {shapeFor(plan, false)}; }
+    static CompositeShape shapeFor(const FramePlan& plan, bool askFaces);
     // `ao`: the AO chain's output (or its 1x1 placeholder without AO).
     static PassDecl declare(TargetRef ao) {
         return {"composite", {{TargetId::Surface, Access::Sampled}, {TargetId::Color, Access::Write}, {ao, Access::Read},
@@ -59,6 +66,15 @@ private:
     vk::Context& ctx_;
     CompositeShape shape_;
     ComputePass pass_;
+};
+
+// The composite while the face cache has faces in view not converged: it asks for
+// the faces of the texels it reads (the frame picks it by the cache's last count).
+class AskingCompositePass : public CompositePass {
+public:
+    using CompositePass::CompositePass;
+    static bool runs(const FramePlan& plan) { return plan.cacheTracing; }
+    static std::tuple<CompositeShape> key(const FramePlan& plan) { return {shapeFor(plan, true)}; }
 };
 
 }  // namespace grotto

@@ -4,6 +4,7 @@
 // With the temporal pass on, that pass runs the final blur itself (temporal.comp),
 // so the frame records only the passes before it; the final pass alone
 // reproduces its output on demand (the AO_spatial AOV).
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/ao_targets.h"
 #include "engine/passes/compute_pass.h"
@@ -13,6 +14,7 @@ namespace grotto {
 class DenoisePass {
 public:
     explicit DenoisePass(vk::Context& ctx);
+    static bool runs(const FramePlan& plan) { return plan.chain; }
     // Every pass of a frame is timed together under this name.
     static constexpr const char* kTimestamp = "denoise";
     // Pass `index` reads denoised(index) and writes denoised(index + 1).

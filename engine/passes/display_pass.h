@@ -5,6 +5,7 @@
 // an sRGB target encodes it. No history. A pass of its own: writing the display
 // image from the composite's invocations cost 2.5 times as much on lavapipe
 // (docs/benchmarks.md).
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/vk/resources.h"
@@ -14,6 +15,7 @@ namespace grotto {
 class DisplayPass {
 public:
     explicit DisplayPass(vk::Context& ctx);
+    static bool runs(const FramePlan& plan) { return plan.display; }
     static PassDecl declare() { return {"display", {{TargetId::Color, Access::Read}, {TargetId::Display, Access::Write}}}; }
     // `curve`: GROTTO_TONE_MAP_FILMIC or GROTTO_TONE_MAP_CLAMP.
     void record(VkCommandBuffer cmd, const vk::Image& color, const vk::Image& display, uint32_t curve);

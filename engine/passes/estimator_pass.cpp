@@ -4,9 +4,8 @@
 #include <bit>
 
 namespace grotto {
-namespace {
 
-std::vector<uint32_t> specialization(const AoOptions& ao, bool bentNormals) {
+std::vector<uint32_t> EstimatorPass::constants(const AoOptions& ao, bool bentNormals) {
     const voxel::EstimatorSettings& s = ao.estimator;
     switch (ao.method) {
     case AoMethod::Ssao: return {s.ssaoSamples};
@@ -20,6 +19,8 @@ std::vector<uint32_t> specialization(const AoOptions& ao, bool bentNormals) {
     }
 }
 
+namespace {
+
 std::vector<VkDescriptorType> bindingTypes(AoMethod method) {
     std::vector<VkDescriptorType> own = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
                                          VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
@@ -32,11 +33,11 @@ std::vector<VkDescriptorType> bindingTypes(AoMethod method) {
 
 }  // namespace
 
-EstimatorPass::EstimatorPass(vk::Context& ctx, const AoOptions& ao, bool bentNormals)
+EstimatorPass::EstimatorPass(vk::Context& ctx, AoMethod method, const std::vector<uint32_t>& constants)
     : ctx_(ctx),
-      method_(ao.method),
-      traces_(tracesVoxels(ao.method)),
-      pass_(ctx, std::string(aoMethodName(ao.method)) + ".comp", bindingTypes(ao.method), 0, specialization(ao, bentNormals)) {}
+      method_(method),
+      traces_(tracesVoxels(method)),
+      pass_(ctx, std::string(aoMethodName(method)) + ".comp", bindingTypes(method), 0, constants) {}
 
 PassDecl EstimatorPass::declare() const {
     PassDecl d{aoMethodName(method_), {{TargetId::AoDepthAtlas, Access::Read}, {TargetId::Surface, Access::Sampled},

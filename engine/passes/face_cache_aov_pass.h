@@ -6,16 +6,22 @@
 // is less what objects take, and objects' own on their faces (`objectLight`: the
 // object light pass's image). Reads the G-buffer's depth and surface ids, the frame
 // uniforms and the cache.
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/scene/face_cache_gpu.h"
+
+#include <tuple>
 
 namespace grotto {
 
 class FaceCacheAovPass {
 public:
     FaceCacheAovPass(vk::Context& ctx, bool cachedSun, bool tracedShadows, bool objectLight);
+    // For read-backs with AOVs.
+    static bool runs(const FramePlan& plan) { return plan.faceCache && plan.aoAov; }
+    static auto key(const FramePlan& plan) { return std::tuple(plan.cachedSun, plan.tracedShadows, plan.objectLight); }
     // Untimed: a read-back's work, not the frame's.
     static PassDecl declare() {
         return {nullptr, {{TargetId::Surface, Access::Sampled}, {TargetId::Depth, Access::Sampled},

@@ -9,6 +9,7 @@
 // Once every face has converged the passes do (almost) nothing. Reads the G-buffer's depth and surface
 // ids, the frame uniforms, the trace constants and the occupancy; writes the
 // cache's texels and levels.
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
@@ -25,6 +26,7 @@ uint32_t defaultCacheRays(const vk::Context& ctx);
 class FaceCacheTracePass {
 public:
     explicit FaceCacheTracePass(vk::Context& ctx);
+    static bool runs(const FramePlan& plan) { return plan.cacheTracing; }
     static PassDecl declare() {
         return {"cache trace", {{TargetId::Depth, Access::Sampled}, {TargetId::Surface, Access::Sampled}}};
     }

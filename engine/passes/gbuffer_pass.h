@@ -10,11 +10,14 @@
 // frame's and the last frame's transforms and a motion target is written too.
 #include "engine/camera.h"
 #include "engine/frame/chunk_culling.h"
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/scene/scene.h"
 #include "voxel/object_pose.h"
 
 #include <span>
+
+#include <tuple>
 
 namespace grotto {
 
@@ -45,6 +48,10 @@ enum class GBufferMode {
 class GBufferPass {
 public:
     explicit GBufferPass(vk::Context& ctx, GBufferMode mode = GBufferMode::World);
+    static bool runs(const FramePlan&) { return true; }
+    static auto key(const FramePlan& plan) {
+        return std::tuple(plan.motion ? GBufferMode::Motion : plan.objects ? GBufferMode::Objects : GBufferMode::World);
+    }
     ~GBufferPass();
 
     // Draws `draws` of the scene, then the objects when `drawObjects`, clearing

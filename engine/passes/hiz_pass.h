@@ -3,6 +3,7 @@
 // Writes: the farthest depth of each tile into a host-visible buffer (a frame
 // slot's, HizReadback) the CPU reads once the submission has finished
 // (engine/frame/chunk_culling.h tests boxes against it).
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/vk/resources.h"
@@ -30,6 +31,7 @@ struct HizReadback {
 class HizPass {
 public:
     explicit HizPass(vk::Context& ctx);
+    static bool runs(const FramePlan&) { return true; }
 
     // Samples the depth; timed as part of the G-buffer.
     static PassDecl declare() { return {nullptr, {{TargetId::Depth, Access::Sampled}}}; }

@@ -4,6 +4,7 @@
 // table. Writes: RGBA16F, xyz the world-space unit normal of the face seen (an
 // object's turned by its pose), w 1 on a surface and 0 where the sky is (normal 0).
 // No history.
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/vk/resources.h"
@@ -13,6 +14,7 @@ namespace grotto {
 class NormalsPass {
 public:
     explicit NormalsPass(vk::Context& ctx);
+    static bool runs(const FramePlan& plan) { return plan.normals; }
     static PassDecl declare() {
         return {"normals", {{TargetId::Surface, Access::Sampled}, {TargetId::Normals, Access::Write}}};
     }

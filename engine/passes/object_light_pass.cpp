@@ -13,13 +13,13 @@ ObjectLightPass::ObjectLightPass(vk::Context& ctx)
                               true),
             0, {kRays}) {}
 
-PassDecl ObjectLightPass::declare(uint32_t history) {
+PassDecl ObjectLightPass::declare() {
     return {"object light",
             {{TargetId::Depth, Access::Sampled},
              {TargetId::Surface, Access::Sampled},
              {TargetId::ObjectLight, Access::Write},
-             {{TargetId::ObjectLightHistory, history}, Access::Read},
-             {{TargetId::ObjectLightHistory, 1 - history}, Access::Write}}};
+             {{TargetId::ObjectLightHistory, Copy::Previous}, Access::Read},
+             {TargetId::ObjectLightHistory, Access::Write}}};
 }
 
 void ObjectLightPass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Buffer& objectUniforms,

@@ -5,6 +5,7 @@
 // G-buffer's depth and surface ids, the objects' normal tables, the trace constants,
 // the occupancy and the objects' grids, and the last frame's RGBA32UI history.
 // Writes: RGBA16F light (AO, horizon and zenith sky weights) and the next history.
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
@@ -16,8 +17,9 @@ class ObjectLightPass {
 public:
     static constexpr uint32_t kRays = 8;  // per pixel in view of an object, per frame
     explicit ObjectLightPass(vk::Context& ctx);
+    static bool runs(const FramePlan& plan) { return plan.objectLight; }
     // Reads history image `history`, writes the other.
-    static PassDecl declare(uint32_t history);
+    static PassDecl declare();
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& objectUniforms,
                 const vk::Image& light, const vk::Image& history, const vk::Image& nextHistory,
                 const vk::Buffer& traceConstants, const GpuOccupancy& occupancy, const vk::Buffer& objectGrids);

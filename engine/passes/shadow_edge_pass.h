@@ -5,16 +5,21 @@
 // disc) and corrects its colour. Reads the G-buffer's
 // depth and surface ids, the trace constants and the occupancy; writes the colour.
 // Owns the list (a frame's pixels / 8 at most: the rest keep the texels' sun).
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/scene/occupancy.h"
+
+#include <tuple>
 
 namespace grotto {
 
 class ShadowEdgePass {
 public:
     ShadowEdgePass(vk::Context& ctx, uint32_t width, uint32_t height);
+    static bool runs(const FramePlan& plan) { return plan.shadowEdges; }
+    static auto key(const FramePlan& plan) { return std::tuple(plan.width, plan.height); }  // its list's size
     ~ShadowEdgePass();
     ShadowEdgePass(const ShadowEdgePass&) = delete;
     ShadowEdgePass& operator=(const ShadowEdgePass&) = delete;

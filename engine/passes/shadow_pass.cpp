@@ -19,12 +19,12 @@ ShadowPass::ShadowPass(vk::Context& ctx, bool soft, bool objectsOnlyOnWorld)
     : ctx_(ctx), soft_(soft),
       pass_(ctx, soft ? "soft_shadow.comp" : "shadow.comp", bindings(soft), 0, {objectsOnlyOnWorld ? 1u : 0u}) {}
 
-PassDecl ShadowPass::declare(uint32_t history) const {
+PassDecl ShadowPass::declare() const {
     PassDecl d{"shadow", {{TargetId::Depth, Access::Sampled}, {TargetId::Surface, Access::Sampled},
                           {TargetId::Shadow, Access::Write}}};
     if (soft_)
-        d.uses.insert(d.uses.end(), {{{TargetId::ShadowHistory, history}, Access::Read},
-                                     {{TargetId::ShadowHistory, 1 - history}, Access::Write}});
+        d.uses.insert(d.uses.end(), {{{TargetId::ShadowHistory, Copy::Previous}, Access::Read},
+                                     {TargetId::ShadowHistory, Access::Write}});
     return d;
 }
 

@@ -9,17 +9,22 @@
 // and also reads the last frame's RGBA32F history and writes the next; the shadow
 // is the accumulated visibility.
 #include "engine/scene/occupancy.h"
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
+
+#include <tuple>
 
 namespace grotto {
 
 class ShadowPass {
 public:
     ShadowPass(vk::Context& ctx, bool soft, bool objectsOnlyOnWorld);
+    static bool runs(const FramePlan& plan) { return plan.tracedShadows; }
+    static auto key(const FramePlan& plan) { return std::tuple(plan.softShadows, plan.cachedSun); }
     // A soft sun's pass reads history image `history` and writes the other.
-    PassDecl declare(uint32_t history) const;
+    PassDecl declare() const;
     // A soft pass needs `history` (read) and `nextHistory` (written), both in GENERAL.
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& objectUniforms,
                 const vk::Image& shadow, const vk::Buffer& traceConstants, const GpuOccupancy& occupancy,

@@ -24,10 +24,10 @@ TemporalPass::TemporalPass(vk::Context& ctx, uint32_t denoisePasses, bool object
             objects ? std::vector<uint32_t>{denoisePasses >= 1 ? 1u : 0u, denoisePasses <= 1 ? 1u : 0u, motion ? 1u : 0u}
                     : std::vector<uint32_t>{denoisePasses >= 1 ? 1u : 0u, denoisePasses <= 1 ? 1u : 0u}) {}  // blur, sourceIsRaw[, motion]
 
-PassDecl TemporalPass::declare(uint32_t previous, bool motion) const {
+PassDecl TemporalPass::declare(bool motion) const {
     PassDecl d{"temporal", {{denoisedTarget(std::max(denoisePasses_, 1u) - 1), Access::Read},
-                            {{TargetId::AoHistory, previous}, Access::Read},
-                            {{TargetId::AoHistory, 1 - previous}, Access::Write},
+                            {{TargetId::AoHistory, Copy::Previous}, Access::Read},
+                            {TargetId::AoHistory, Access::Write},
                             {TargetId::AoRaw, Access::Read}}};
     if (objects_) d.uses.push_back({motion ? TargetId::Motion : TargetId::Depth, Access::Sampled});
     return d;

@@ -22,12 +22,12 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
         uniforms.cameraFraction = glm::vec4(v.fraction, float(1.0 / scene_.voxelSize));
     }
     std::memcpy(s.frame.mapped(), &uniforms, sizeof uniforms);
-    if (aoChain(ao_)) {
+    if (plan_.chain) {
         const uint32_t scale = ao_.chain.fullResolution ? 1 : 2;
         gpu::GtaoConstants constants = gtaoConstants(camera, gpuSettings(ao_), frameIndex, scale);
         if (objects_) normalTable(constants.viewNormals, glm::transpose(camera.basis), poses_);
         std::memcpy(s.aoConstants.mapped(), &constants, sizeof constants);
-        if (temporal()) {
+        if (plan_.temporal) {
             // A frame index that does not follow the last (wrapping) starts a new
             // sequence. A zoom or new clip planes need no reset: the history is
             // reprojected through the previous projection and holds linear depth.
@@ -68,7 +68,7 @@ void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
                         scene_.worldOrigin);
     t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
     t.frameIndex = frameIndex;
-    if (softShadows() || objectLight()) {
+    if (plan_.surfaceHistory) {
         // As the AO's history: consecutive frames only. An edit anywhere may move a
         // shadow anywhere along the sun's rays (or change what an object hides), so
         // it restarts the whole history.

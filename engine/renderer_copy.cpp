@@ -8,7 +8,7 @@ namespace grotto {
 
 void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& camera) {
     copy.begin({.width = width(), .height = height(), .half = targets_.ao().half,
-                .scale = ao_.chain.fullResolution ? 1u : 2u, .ao = ao_.enabled, .chain = aoChain(ao_), .toneMap = toneMapCurve(lighting_.toneMap),
+                .scale = ao_.chain.fullResolution ? 1u : 2u, .ao = ao_.enabled, .chain = plan_.chain, .toneMap = toneMapCurve(lighting_.toneMap),
                 .camera = camera, .poses = poses_, .albedo = scene_.albedo});
     auto copyPart = [&](FrameCopy::Part part, TargetRef target, uint32_t bytesPerPixel) {
         const vk::Image& from = image(target);
@@ -16,65 +16,54 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
         vk::recordImageCopy(cmd, from, targets_.layout(target), bytesPerPixel, copy.reserve(part, bytes), 0);
     };
     copyPart(FrameCopy::Color, TargetId::Color, 16);
-    if (copy.aovs() && faceCached(ao_)) {
+    if (copy.aovs() && plan_.faceCache) {
         // The cache's AO and sun at each pixel, as the composite read them.
-        if (!aoAov_) {
-            aoAov_ = true;
-            targets_.update(wantedShape());
-        }
-        if (!faceCacheAovPass_)
-            faceCacheAovPass_ =
-                std::make_unique<FaceCacheAovPass>(ctx_, compositeShape().cachedSun, tracedShadows(), objectLight());
         pass(cmd, FaceCacheAovPass::declare(), [&] {
-            faceCacheAovPass_->record(cmd, targets_.gbuffer(), slot().frame, *scene_.faceCache,
+            passes_.get<FaceCacheAovPass>().record(cmd, targets_.gbuffer(), slot().frame, *scene_.faceCache,
                                       image(TargetId::AoFull), image(TargetId::Shadow), image(TargetId::ObjectLight));
         });
     }
     if (copy.aovs()) {
-        if (shadows()) copyPart(FrameCopy::Shadow, TargetId::Shadow, 4);
+        if (plan_.shadows) copyPart(FrameCopy::Shadow, TargetId::Shadow, 4);
         copyPart(FrameCopy::Depth, TargetId::Depth, 4);
         copyPart(FrameCopy::Surface, TargetId::Surface, 2);
-        if (motion()) copyPart(FrameCopy::Motion, TargetId::Motion, 16);
+        if (plan_.motion) copyPart(FrameCopy::Motion, TargetId::Motion, 16);
     }
-    if (copy.aovs() && faceCached(ao_)) copyPart(FrameCopy::AoFull, TargetId::AoFull, 4);
-    if (copy.aovs() && aoChain(ao_)) {
+    if (copy.aovs() && plan_.faceCache) copyPart(FrameCopy::AoFull, TargetId::AoFull, 4);
+    if (copy.aovs() && plan_.chain) {
         // What the frame computed on the way without storing: the full-res AO (the
         // composite upsamples for itself) and, when the temporal pass blurs for
         // itself, the spatial AO. The same shaders on the same inputs give the same values.
-        if (!aoAov_) {  // its target is made on first use: frames do not store it
-            aoAov_ = true;
-            targets_.update(wantedShape());
-        }
         // VBAO's bent normals, where the frame did not find them: its estimator again
         // with them (the same kernel on the same inputs and noise).
-        if (ao_.method == AoMethod::Vbao && !bentNormals(ao_, lighting_)) {
-            if (!bentPass_) bentPass_ = std::make_unique<EstimatorPass>(ctx_, ao_, true);
-            PassDecl untimed = bentPass_->declare();
+        if (BentNormalsPass* bent = passes_.find<BentNormalsPass>()) {
+            PassDecl untimed = bent->declare();
             untimed.timestamp = nullptr;  // not the frame's cost
             pass(cmd, untimed, [&] {
-                bentPass_->record(cmd, image(TargetId::Surface), targets_.ao(), slot().aoConstants,
+                bent->record(cmd, image(TargetId::Surface), targets_.ao(), slot().aoConstants,
                                   slot().traceConstants, scene_.occupancy.get(), &objectGrids_.buffer);
             });
         }
         const uint32_t passes = ao_.chain.denoisePasses;
-        if (temporal() && passes > 0)
+        if (plan_.temporal && passes > 0)
             pass(cmd, DenoisePass::declare(passes - 1),
-                 [&] { denoisePass_->record(cmd, targets_.ao(), passes, passes - 1, slot().aoConstants); });
+                 [&] { passes_.get<DenoisePass>().record(cmd, targets_.ao(), passes, passes - 1, slot().aoConstants); });
         pass(cmd, UpsamplePass::declare(aoOutput()), [&] {
-            upsamplePass_->record(cmd, image(TargetId::Depth), image(TargetId::Surface), image(aoOutput()),
+            passes_.get<UpsamplePass>().record(cmd, image(TargetId::Depth), image(TargetId::Surface), image(aoOutput()),
                                   image(TargetId::AoFull), slot().aoConstants);
         });
         copyPart(FrameCopy::AoFull, TargetId::AoFull, 4);
         copyPart(FrameCopy::Raw, TargetId::AoRaw, 16);
         if (ao_.method == AoMethod::Vbao) copyPart(FrameCopy::BentNormal, TargetId::AoBentNormal, 8);
         copyPart(FrameCopy::Spatial, denoisedTarget(passes), 16);
-        if (temporal()) copyPart(FrameCopy::History, aoOutput(), 16);
+        if (plan_.temporal) copyPart(FrameCopy::History, aoOutput(), 16);
     }
     vk::recordHostRead(cmd);
 }
 
 FrameImages Renderer::readback(const Camera& camera, bool aovs) {
     finishFrames();
+    if (aovs) planAovs();
     FrameCopy copy(ctx_, aovs);
     ctx_.submitAndWait([&](VkCommandBuffer cmd) { recordCopy(cmd, copy, camera); });
     return copy.decode();

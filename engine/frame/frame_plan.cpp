@@ -1,0 +1,56 @@
+#include "engine/frame/frame_plan.h"
+
+#include <algorithm>
+
+namespace grotto {
+namespace {
+
+// The cache's sun is the lighting's: the same direction and size.
+bool sameSun(const SceneFacts::CacheSun& baked, const voxel::Lighting& lighting) {
+    return glm::length(glm::normalize(baked.direction) - glm::normalize(lighting.sunDirection)) < 1e-6f &&
+           baked.angleDegrees == lighting.sunAngle;
+}
+
+}  // namespace
+
+VkExtent2D FramePlan::aoExtent() const {
+    return ao.chain.fullResolution ? frame() : VkExtent2D{(width + 1) / 2, (height + 1) / 2};
+}
+
+FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting,
+                    const SceneFacts& scene, const FrameRequest& request) {
+    FramePlan p{.width = width, .height = height, .ao = ao,
+                .display = request.display, .normals = request.normals, .aoAov = request.aoAov};
+    p.chain = aoChain(ao);
+    p.temporal = p.chain && ao.chain.temporalHistory > 0;
+    p.faceCache = faceCached(ao);
+    p.cacheTracing = p.faceCache && scene.occupancy && scene.faceCache;
+    p.bentNormals = ao.enabled && ao.method == AoMethod::Vbao && lighting.ambientFrom == voxel::AmbientSource::Sky;
+
+    p.objects = scene.objects;
+    p.movingObjects = scene.objects && scene.movingObjects;
+    p.motion = p.movingObjects && p.temporal;
+    p.objectLight = p.faceCache && p.objects;
+
+    p.shadows = lighting.sunShadows && scene.occupancy;
+    p.shadowHistory = p.shadows && lighting.sunAngle > 0.0f;
+    p.cachedSun = p.shadows && p.faceCache && scene.faceCache && sameSun(*scene.faceCache, lighting);
+    p.tracedShadows = p.shadows && (!p.cachedSun || p.objects);
+    p.softShadows = p.tracedShadows && lighting.sunAngle > 0.0f;
+    p.shadowEdges = p.cachedSun;
+
+    p.objectRays = p.tracedShadows || p.objectLight || (p.chain && tracesVoxels(ao.method));
+    p.surfaceHistory = p.softShadows || p.objectLight;
+    return p;
+}
+
+FramePlan planWorldFrame(const voxel::WorldDesc& desc, uint32_t width, uint32_t height, const AoOptions& ao,
+                         bool objects, const FrameRequest& request) {
+    SceneFacts scene{.occupancy = true};
+    if (faceCached(ao)) scene.faceCache = SceneFacts::CacheSun{desc.lighting.sunDirection, desc.lighting.sunAngle};
+    scene.objects = objects && !desc.objects.empty();
+    scene.movingObjects = scene.objects && std::any_of(desc.objects.begin(), desc.objects.end(), [](const auto& o) { return o.moves(); });
+    return planFrame(width, height, ao, desc.lighting, scene, request);
+}
+
+}  // namespace grotto
