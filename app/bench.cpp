@@ -13,6 +13,7 @@
 #include "app/cost_difference.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
+#include "common/elapsed.h"
 #include "grotto/error.h"
 #include "engine/frame/render_memory.h"
 #include "engine/session.h"
@@ -28,13 +29,6 @@
 #include <optional>
 
 namespace grotto::app {
-namespace {
-
-double msSince(std::chrono::steady_clock::time_point t) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t).count();
-}
-
-}  // namespace
 
 void addBenchCommand(CLI::App& app) {
     struct Args {

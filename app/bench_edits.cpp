@@ -3,6 +3,7 @@
 #include "app/bench_edits.h"
 
 #include "app/options.h"
+#include "common/elapsed.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_cache_layout.h"
 #include "voxel/live_mesh.h"
@@ -18,8 +19,6 @@ namespace grotto::app {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 // The world with the mesh and table a renderer keeps beside it.
 struct LiveWorld {

@@ -1,6 +1,7 @@
 #include "app/bench_scene_update.h"
 
 #include "app/options.h"
+#include "common/elapsed.h"
 
 #include <chrono>
 #include <cstdio>
@@ -26,7 +27,7 @@ SceneUpdateCost measureSceneUpdate(GpuScene& scene, const voxel::MeshChunkQuads&
     for (int i = 0; i < updates; ++i) {
         const auto start = std::chrono::steady_clock::now();
         scene.updateChunks({&chunk, 1}, {});
-        ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        ms.push_back(msSince(start));
         cost.stagedBytes = scene.stagedBytesLast;
         scene.ctx.submitAndWait([&](VkCommandBuffer cmd) { scene.recordUploads(cmd, staging); });
     }

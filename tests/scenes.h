@@ -1,6 +1,9 @@
 #pragma once
 // Small worlds built in memory for the renderer tests.
+#include "voxel/object_pose.h"
 #include "voxel/world.h"
+
+#include <glm/gtc/quaternion.hpp>
 
 #include <functional>
 
@@ -17,6 +20,12 @@ voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bo
 voxel::World floorWorld(const std::function<bool(int, int, int)>& extra = {});
 // A solid box of voxels [0, size) as an object's grid (local units = voxels).
 voxel::World boxWorld(glm::ivec3 size);
+
+// An object's pose on no axis: moved, turned 35 degrees about a tilted axis, about a
+// pivot inside its box.
+inline const voxel::ObjectPose kTurned{glm::dvec3(2.0, 3.5, 1.0),
+                                       glm::angleAxis(glm::radians(35.0), glm::normalize(glm::dvec3(0.3, 1.0, 0.2))),
+                                       glm::dvec3(1.5, 2.5, 2.0)};
 
 // A camera at `position` looking at `target` with a vertical field of view in degrees.
 voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov = 60.0);

@@ -12,11 +12,6 @@
 namespace grotto::test {
 namespace {
 
-std::string bytes(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
-
 class Bake : public CliErrors {
 protected:
     void SetUp() override {
@@ -45,7 +40,7 @@ TEST_F(Bake, PartsJoinedInAnyOrderAreTheWholeBakeByteForByte) {
     const fs::path merged = dir_ / "merged.gfc";
     const RunResult r = runGrotto("bake --merge " + parts + "-o " + merged.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const std::string a = bytes(whole), b = bytes(merged);
+    const std::string a = fileBytes(whole), b = fileBytes(merged);
     EXPECT_GT(a.size(), 96u + 100u * 4u * 24u);  // a header and hundreds of faces of 2 x 2 texels
     EXPECT_TRUE(a == b);
 }
@@ -69,7 +64,7 @@ TEST_F(Bake, BadArgumentsPartsAndFilesAreRefused) {
     expectRefused("bake --merge " + p0 + " " + other.string() + " " + p2 + " -o " + out.string(), "other.gfc", out);
 
     // Damaged files: each refused naming the file and the field.
-    const std::string good = bytes(parts[1]);
+    const std::string good = fileBytes(parts[1]);
     // Alone, the part's gap is `alone`: every header is compared before texels are read.
     auto damaged = [&](const std::string& name, const std::string& content, const std::string& field,
                        const std::string& alone = "") {

@@ -20,11 +20,6 @@ std::string slurmTask(int id, int first, int last) {
            " SLURM_ARRAY_TASK_COUNT=" + std::to_string(last - first + 1) + " SLURM_ARRAY_TASK_STEP=1";
 }
 
-std::string bytes(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return {std::istreambuf_iterator<char>(in), {}};
-}
-
 class ChunkAutoRuns : public CliErrors {
 protected:
     std::string flythrough(const fs::path& out, const std::string& chunk) {
@@ -50,8 +45,8 @@ TEST_F(ChunkAutoRuns, KubernetesIndexBakesTheSamePartAsKOfN) {
     const RunResult r = runGrotto(bake(byIndex, "--chunk auto --chunks 3"), kNoScheduler + " JOB_COMPLETION_INDEX=1");
     ASSERT_EQ(r.exitCode, 0) << r.err;
     ASSERT_EQ(runGrotto(bake(byHand, "--chunk 2/3")).exitCode, 0);
-    EXPECT_EQ(bytes(byIndex), bytes(byHand));
-    EXPECT_GT(bytes(byIndex).size(), 0u);
+    EXPECT_EQ(fileBytes(byIndex), fileBytes(byHand));
+    EXPECT_GT(fileBytes(byIndex).size(), 0u);
 }
 
 TEST_F(ChunkAutoRuns, RefusedOutsideAScheduler) {

@@ -2,6 +2,7 @@
 // everywhere, one --frames syntax, info listing what --camera and --path accept
 // and the objects, costs never negative, stability's and flythrough's progress and
 // --quiet, and the reference's standard-error verdict with --require-stderr.
+#include "tests/json_file.h"
 #include "tests/cli_fixture.h"
 
 #include <gtest/gtest.h>
@@ -17,11 +18,6 @@ namespace fs = std::filesystem;
 using nlohmann::json;
 using test::CliErrors;
 using test::runGrotto;
-
-json readJson(const fs::path& file) {
-    std::ifstream in(file);
-    return json::parse(in);
-}
 
 TEST(CliUsage, VersionAndBareUsage) {
     const test::RunResult version = runGrotto("--version");
@@ -113,15 +109,15 @@ TEST_F(CliErrors, FramesMeanTheSameInEveryCommand) {
     const std::string stability = "stability " + world.string() + " --path p --fps 8 --size 32x16 --spp 4 --reference-every 2 --json ";
     r = runGrotto(stability + out.string() + " --frames 3-6");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const json j = readJson(out);
+    const json j = test::readJsonFile(out);
     EXPECT_EQ(j["frames"], "3-6");
     ASSERT_EQ(j["error"].size(), 4u);
     EXPECT_EQ(j["error"][0]["frame"].get<int>(), 3);
     EXPECT_EQ(j["error"][3]["frame"].get<int>(), 6);
     r = runGrotto(stability + out.string() + " --frames 3");
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(readJson(out)["frames"], 3);
-    EXPECT_EQ(readJson(out)["error"][0]["frame"].get<int>(), 1);
+    EXPECT_EQ(test::readJsonFile(out)["frames"], 3);
+    EXPECT_EQ(test::readJsonFile(out)["error"][0]["frame"].get<int>(), 1);
     const fs::path none = dir_ / "none.json";
     for (const char* single : {"1", "5-5"}) expectRefused(stability + none.string() + " --frames " + single, "at least 2", none);
     for (const char* bad : {"0", "3-2", "1-10", "x"}) expectRefused(stability + none.string() + " --frames " + bad, "--frames", none);
@@ -155,7 +151,7 @@ TEST_F(CliErrors, StabilityProgressQuietAndCostsNeverNegative) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_NE(r.out.find("1/4 frame 1 + reference (ETA "), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("4/4 frame 4"), std::string::npos) << r.out;
-    const json cost = readJson(out)["cost_ms"];
+    const json cost = test::readJsonFile(out)["cost_ms"];
     for (const char* difference : {"ao_chain_wall", "temporal_wall"}) {
         ASSERT_TRUE(cost.contains(difference)) << difference;
         EXPECT_GE(cost[difference].get<double>(), 0.0) << difference;
@@ -206,7 +202,7 @@ TEST_F(CliErrors, BenchCostsNeverNegative) {
     const fs::path out = dir_ / "b.json";
     const test::RunResult r = runGrotto("bench " + good_.string() + " --size 32x16 --frames 5 --warmup 0 --json " + out.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const json j = readJson(out);
+    const json j = test::readJsonFile(out);
     for (const char* difference : {"ao_chain_wall_ms", "temporal_wall_ms"}) {
         EXPECT_GE(j[std::string(difference) + "_median"].get<double>(), 0.0) << difference;
         EXPECT_GE(j[std::string(difference) + "_noise"].get<double>(), 0.0) << difference;

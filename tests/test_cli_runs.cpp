@@ -1,5 +1,6 @@
 // The commands that render paths and trace references (flythrough, reference,
 // tradeoff, stability): what they write, how they resume, and what they refuse.
+#include "tests/json_file.h"
 #include "tests/cli_fixture.h"
 
 #include <OpenImageIO/imageio.h>
@@ -251,11 +252,6 @@ namespace {
 
 using nlohmann::json;
 
-json readJson(const fs::path& file) {
-    std::ifstream in(file);
-    return json::parse(in);
-}
-
 // `grotto stability` on a tiny run: every metric of docs/metrics.md is there, finite and in range.
 TEST_F(CliErrors, StabilityReportsEveryMetric) {
     const fs::path out = dir_ / "stability.json";
@@ -263,7 +259,7 @@ TEST_F(CliErrors, StabilityReportsEveryMetric) {
                                         " --path orbit --size 160x90 --frames 4 --spp 16 --reference-every 2 --json " +
                                         out.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const json j = readJson(out);
+    const json j = test::readJsonFile(out);
     for (const char* which : {"raw", "spatial", "temporal", "reference"}) {
         const double f = j["flicker"][which].get<double>();
         EXPECT_GT(f, 0.0) << which;  // noisy AO and a 16-spp reference both change between frames
@@ -462,7 +458,7 @@ TEST_F(CliErrors, FlythroughResumeKeepsEarlierStats) {
     const std::string base = "flythrough " + world.string() + " --path p --size 16x8 --fps 2 -o " + seq.string();
     auto framesOf = [&] {
         std::map<int, nlohmann::json> byFrame;
-        const nlohmann::json stats = readJson(seq / "stats.json");
+        const nlohmann::json stats = test::readJsonFile(seq / "stats.json");
         for (const nlohmann::json& f : stats["frames"]) byFrame[f["frame"].get<int>()] = f;
         return byFrame;
     };

@@ -65,7 +65,7 @@ TEST(GltfExport, TheFileReadsBackWithTheWorldsMaterialsBoundsNormalsAndAo) {
     const World world = floorAndBlock();
     const FaceBakeSettings bake{.radius = 2.0, .texelsPerSide = 3, .rays = 256, .sunRays = 1};
     const AoMesh mesh = buildAoMesh(world, bake);
-    const test::ScratchDir dir;
+    const grotto::test::ScratchDir dir;
     const auto file = dir / "world.glb";
     const uintmax_t bytes = writeGltfMesh(world, mesh, file);
     EXPECT_EQ(bytes, std::filesystem::file_size(file));
@@ -146,7 +146,7 @@ TEST(GltfExport, TheFileReadsBackWithTheWorldsMaterialsBoundsNormalsAndAo) {
 TEST(GltfExport, TextGltfEmbedsItsBufferAndOtherNamesAreRefused) {
     const World world = floorAndBlock();
     const AoMesh mesh = buildAoMesh(world, {.radius = 1.0, .texelsPerSide = 1, .rays = 16, .sunRays = 1});
-    const test::ScratchDir dir;
+    const grotto::test::ScratchDir dir;
     writeGltfMesh(world, mesh, dir / "world.gltf");
     const tinygltf::Model m = readGltf(dir / "world.gltf");
     EXPECT_EQ(m.meshes.at(0).primitives.size(), 2u);

@@ -25,7 +25,7 @@ namespace {
 using Face = std::tuple<int, int, int, int>;  // voxel x, y, z and face 0..5
 
 // Brute force: every face of a solid voxel whose neighbour is empty.
-std::set<Face> exposedFaces(const World& w) {
+std::set<Face> exposedFaceSet(const World& w) {
     std::set<Face> faces;
     const IndexBox b = w.bounds();
     for (int x = b.min.x; x <= b.max.x; ++x)
@@ -124,7 +124,7 @@ World randomWorld(uint32_t seed, double fill, glm::ivec3 lo = {-20, -5, -40}, gl
 TEST(Mesher, OneQuadPerExposedFace) {
     for (uint32_t seed : {1u, 2u, 3u}) {
         const World w = randomWorld(seed, seed == 3 ? 0.7 : 0.25);
-        const std::set<Face> expected = exposedFaces(w);
+        const std::set<Face> expected = exposedFaceSet(w);
         const Mesh mesh = w.mesh({.greedy = false});
         EXPECT_EQ(mesh.quads.size(), expected.size()) << "seed " << seed;
         size_t overlaps = 0;
@@ -136,7 +136,7 @@ TEST(Mesher, OneQuadPerExposedFace) {
 TEST(Mesher, GreedyCoversTheSameFacesWithFewerQuads) {
     for (uint32_t seed : {4u, 5u}) {
         const World w = randomWorld(seed, 0.6);
-        const std::set<Face> expected = exposedFaces(w);
+        const std::set<Face> expected = exposedFaceSet(w);
         const Mesh mesh = w.mesh({.greedy = true});
         size_t overlaps = 0, partial = 0;
         EXPECT_EQ(meshFaces(mesh, overlaps, &partial), expected) << "seed " << seed;
@@ -157,7 +157,7 @@ TEST(Mesher, ChunkQuadsAreSortedByFace) {
 
 TEST(Mesher, PlyHoldsExactlyTheQuads) {
     const Mesh mesh = randomWorld(11, 0.3).mesh();
-    test::ScratchDir dir;
+    grotto::test::ScratchDir dir;
     writePly(mesh, dir / "m.ply");
     std::ifstream in(dir / "m.ply", std::ios::binary);
     std::string line;

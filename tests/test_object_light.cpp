@@ -28,9 +28,7 @@ using ObjectLight = test::GpuTest;
 constexpr double kRadius = 2.0;
 constexpr uint32_t kW = 96, kH = 72;
 
-const voxel::ObjectPose kTurned{glm::dvec3(2.0, 3.5, 1.0),
-                                glm::angleAxis(glm::radians(35.0), glm::normalize(glm::dvec3(0.3, 1.0, 0.2))),
-                                glm::dvec3(1.5, 2.5, 2.0)};
+using test::kTurned;
 
 // The world with its face cache baked, and one box object whose keys are `poses`
 // (one per second).

@@ -70,9 +70,7 @@ ShadowCount compareShadows(vk::Context& ctx, GpuScene& scene, const voxel::World
     return c;
 }
 
-const voxel::ObjectPose kTurned{glm::dvec3(2.0, 3.5, 1.0),
-                                glm::angleAxis(glm::radians(35.0), glm::normalize(glm::dvec3(0.3, 1.0, 0.2))),
-                                glm::dvec3(1.5, 2.5, 2.0)};
+using test::kTurned;
 
 TEST_F(ObjectShadows, ATurnedBoxShadowsTheFloorAndItselfExactly) {
     const voxel::World world = test::floorWorld();

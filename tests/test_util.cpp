@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -116,5 +117,10 @@ void SmallDisk::fillLeaving(size_t bytes) {
 void SmallDisk::makeRoom() { fs::remove(dir_.path / ".filler"); }
 
 fs::path worldsDir() { return fs::path(GROTTO_SOURCE_DIR) / "worlds"; }
+
+std::string fileBytes(const std::filesystem::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), {}};
+}
 
 }  // namespace grotto::test

@@ -71,4 +71,7 @@ private:
 // The source tree's worlds/ directory.
 std::filesystem::path worldsDir();
 
+// A file's bytes, all of them (empty when it cannot be read).
+std::string fileBytes(const std::filesystem::path& file);
+
 }  // namespace grotto::test

@@ -20,7 +20,7 @@ namespace fs = std::filesystem;
 
 TEST(VdbReader, LoadsWhileOtherThreadsHoldOpenVdbsRegistries) {
     openvdb::initialize();
-    test::ScratchDir dir;
+    grotto::test::ScratchDir dir;
     const std::vector<uint8_t> ids(12 * 9 * 7, 1);
     World::fromDense({12, 9, 7}, ids.data(), 1.0, {0.0, 0.0, 0.0}).save(dir / "small.vdb");
 

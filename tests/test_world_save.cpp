@@ -129,7 +129,7 @@ TEST(WorldFromGrid, CopiesTheGridAndChecksIt) {
 
 TEST(WorldSave, Int32WorldRoundTripsWithMetadata) {
     openvdb::initialize();
-    test::ScratchDir dir;
+    grotto::test::ScratchDir dir;
     const glm::ivec3 size(40, 20, 33);
     const std::vector<uint8_t> ids = randomIds(size, 8, 0.4, 2);
     const World source = World::fromDense(size, ids.data(), 0.125, {-7.5, 3.0, 1e5});
@@ -156,7 +156,7 @@ TEST(WorldSave, Int32WorldRoundTripsWithMetadata) {
 // A save onto a full disk throws an internal error naming the file and the
 // reason (it once read "KeyError: Map"), and leaves the old file whole.
 TEST(WorldSave, AFullDiskIsReportedAndLeavesTheOldFile) {
-    test::SmallDisk disk(1 << 20);
+    grotto::test::SmallDisk disk(1 << 20);
     if (!disk.mounted()) GTEST_SKIP() << disk.reason();
     const glm::ivec3 size(40, 40, 40);
     const World small = World::fromDense({2, 2, 2}, std::vector<uint8_t>(8, 1).data(), 1.0, {});
@@ -178,7 +178,7 @@ TEST(WorldSave, AFullDiskIsReportedAndLeavesTheOldFile) {
 
 TEST(WorldSave, MaskWorldsKeepTheirKindUnlessPainted) {
     openvdb::initialize();
-    test::ScratchDir dir;
+    grotto::test::ScratchDir dir;
     for (const bool boolGrid : {false, true}) {
         openvdb::GridBase::Ptr grid;
         if (boolGrid) {
@@ -356,7 +356,7 @@ void expectSameSettings(const WorldDesc& got, const WorldDesc& want) {
 // file with the palette, lighting, AO, detail, cameras, paths and objects.
 TEST(WorldSave, AWorldFileBesideTheGridKeepsEverySetting) {
     openvdb::initialize();
-    test::ScratchDir dir;
+    grotto::test::ScratchDir dir;
     const glm::ivec3 size(12, 6, 10);
     const WorldDesc desc = everySetting(dir.path);
     World w = World::fromDense(size, randomIds(size, 3, 0.5, 9).data(), 0.5, {1.0, -2.0, 3.5}, desc);
@@ -386,7 +386,7 @@ TEST(WorldSave, AWorldFileBesideTheGridKeepsEverySetting) {
 
 TEST(WorldSave, AUniformMaterialOtherThanOneIsKept) {
     openvdb::initialize();
-    test::ScratchDir dir;
+    grotto::test::ScratchDir dir;
     auto grid = openvdb::MaskGrid::create();
     grid->fill(openvdb::CoordBBox({0, 0, 0}, {9, 9, 9}), true, true);
     WorldDesc desc;
@@ -410,7 +410,7 @@ TEST(WorldSave, ChildSavesALargeWorld) {
 }
 
 TEST(WorldSave, InterruptedSaveLeavesTheOldFile) {
-    test::ScratchDir dir;
+    grotto::test::ScratchDir dir;
     const fs::path target = dir / "world.vdb";
     const glm::ivec3 size(12, 12, 12);
     const World old = World::fromDense(size, randomIds(size, 3, 0.5, 4).data(), 1.0, {});

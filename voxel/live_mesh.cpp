@@ -10,7 +10,6 @@
 namespace grotto::voxel {
 namespace {
 
-constexpr int N = int(GROTTO_CHUNK_SIZE);
 
 bool sameQuads(const MeshChunkQuads& a, const MeshChunkQuads& b) {
     if (a.quads != b.quads || a.coarser.size() != b.coarser.size()) return false;
@@ -45,7 +44,7 @@ std::vector<glm::ivec3> LiveMesh::update(const World& world, const IndexBox& cha
     std::set<glm::ivec3, Less> around;
     for (const glm::ivec3& o : origins)
         for (int i = 0; i < 27; ++i) {
-            const glm::ivec3 n = o + N * glm::ivec3(i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1);
+            const glm::ivec3 n = o + kChunkEdge * glm::ivec3(i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1);
             if (chunks_.count(n)) around.insert(n);
         }
     std::set<glm::ivec3, Less> changedSet(origins.begin(), origins.end());
@@ -61,7 +60,7 @@ std::vector<glm::ivec3> LiveMesh::update(const World& world, const IndexBox& cha
 
 void LiveMesh::weld(const std::vector<glm::ivec3>& origins) {
     // Each chunk's boundary corners once: a chunk meets up to 26 others.
-    auto neighbour = [](glm::ivec3 origin, int k) { return origin + N * glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1); };
+    auto neighbour = [](glm::ivec3 origin, int k) { return origin + kChunkEdge * glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1); };
     std::map<glm::ivec3, size_t, Less> index;
     std::vector<glm::ivec3> listed;
     for (const glm::ivec3& o : origins)

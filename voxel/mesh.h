@@ -23,6 +23,7 @@ struct MeshOptions {
 };
 
 inline constexpr int kMaxCoarseLevels = 3;  // cells of 2, 4 and 8 voxels
+inline constexpr int kChunkEdge = int(GROTTO_CHUNK_SIZE);  // voxels along a mesh chunk's edge
 
 // A quad as drawn: a convex quadrilateral within one voxel face's plane, or a
 // triangle (its last corner repeats the third), as four gpu::packVertex corners

@@ -16,8 +16,6 @@
 namespace grotto::voxel {
 namespace {
 
-constexpr int N = int(GROTTO_CHUNK_SIZE);
-
 // What a vector of `size` elements in room for `capacity` adds to the resident
 // set: small ones their heap chunk; a large one is mapped on its own (glibc,
 // from 128 KiB), and only the pages its elements were written to are resident.
@@ -110,7 +108,7 @@ MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options,
                 MeshChunkQuads c = world.meshChunk(origins[i], options);
                 std::vector<ChunkBoundary> around;
                 for (int k = 0; k < 27; ++k) {
-                    const glm::ivec3 n = c.origin + N * glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
+                    const glm::ivec3 n = c.origin + kChunkEdge * glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
                     if (const auto it = index.find(n); it != index.end()) around.push_back({n, &*corners[it->second]});
                 }
                 weld(c, around);

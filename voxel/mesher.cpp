@@ -10,7 +10,7 @@
 namespace grotto::voxel {
 namespace {
 
-constexpr int N = int(GROTTO_CHUNK_SIZE);
+constexpr int N = kChunkEdge;
 
 // One level's cells of a chunk, n^3 of them, with a one-cell border from the
 // neighbours: material ids, 0 = empty. Level 0 is the voxels themselves.

@@ -1,6 +1,7 @@
 // Reading a grid from a .vdb as OpenVDB gives it, with the checks that need no
 // voxels first (transform, budget). What the reader process runs (vdb_reader.cpp).
 #include "voxel/vdb_read.h"
+#include "common/number_text.h"
 
 #include "grotto/error.h"
 #include "voxel/world.h"
@@ -24,12 +25,6 @@ size_t estimatedBytes(const openvdb::GridBase& meta) {
     if (auto m = meta.getMetadata<openvdb::Int64Metadata>("file_mem_bytes"))
         return size_t(m->value());
     return 0;
-}
-
-std::string num(double d) {
-    char buf[32];
-    snprintf(buf, sizeof buf, "%g", d);
-    return buf;
 }
 
 std::string mib(size_t bytes) {
@@ -65,8 +60,8 @@ GridPlacement readTransform(const openvdb::GridBase& grid, const std::string& fi
                     std::to_string(vs.y()) + ", " + std::to_string(vs.z()) + ")",
                     "Grotto needs cubic voxels; resample with a uniform voxel size");
     if (!(vs.x() >= kMinVoxelSize && vs.x() <= kMaxVoxelSize))
-        throw Error(where, "has voxel size " + num(vs.x()) + ", outside the supported range",
-                    "supported: " + num(kMinVoxelSize) + " to " + num(kMaxVoxelSize) +
+        throw Error(where, "has voxel size " + numberText(vs.x()) + ", outside the supported range",
+                    "supported: " + numberText(kMinVoxelSize) + " to " + numberText(kMaxVoxelSize) +
                         " world units; rescale the grid's transform");
     GridPlacement placement;
     placement.voxelSize = vs.x();
@@ -74,9 +69,9 @@ GridPlacement readTransform(const openvdb::GridBase& grid, const std::string& fi
     openvdb::Vec3d corner = xf.indexToWorld(openvdb::Vec3d(-0.5));
     for (int axis = 0; axis < 3; ++axis)
         if (!(std::abs(corner[axis]) <= kMaxWorldOffset))
-            throw Error(where, "places voxel 0 at " + num(corner[axis]) + " on " + "xyz"[axis] +
+            throw Error(where, "places voxel 0 at " + numberText(corner[axis]) + " on " + "xyz"[axis] +
                                    ", outside the supported range",
-                        "supported: translations within +-" + num(kMaxWorldOffset) + " world units");
+                        "supported: translations within +-" + numberText(kMaxWorldOffset) + " world units");
     placement.origin = glm::dvec3(corner.x(), corner.y(), corner.z());
     return placement;
 }

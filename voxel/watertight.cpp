@@ -8,10 +8,9 @@
 namespace grotto::voxel {
 namespace {
 
-constexpr int N = int(GROTTO_CHUNK_SIZE);
-constexpr int kSide = N + 1;  // lattice points per axis of a chunk's closed cube
+constexpr int kSide = kChunkEdge + 1;  // lattice points per axis of a chunk's closed cube
 
-// Lattice points of a chunk's closed cube, 0..N on each axis.
+// Lattice points of a chunk's closed cube, 0..kChunkEdge on each axis.
 class PointSet {
 public:
     void add(glm::ivec3 p) {
@@ -21,13 +20,13 @@ public:
 
 private:
     static bool inside(glm::ivec3 p) {
-        return p.x >= 0 && p.y >= 0 && p.z >= 0 && p.x <= N && p.y <= N && p.z <= N;
+        return p.x >= 0 && p.y >= 0 && p.z >= 0 && p.x <= kChunkEdge && p.y <= kChunkEdge && p.z <= kChunkEdge;
     }
     static int index(glm::ivec3 p) { return (p.x * kSide + p.y) * kSide + p.z; }
     std::vector<uint64_t> bits_ = std::vector<uint64_t>((kSide * kSide * kSide + 63) / 64, 0);
 };
 
-bool onBoundary(int c) { return c == 0 || c == N; }
+bool onBoundary(int c) { return c == 0 || c == kChunkEdge; }
 
 // Twice the signed area of triangle abc: > 0 when it turns counter-clockwise, 0 when flat.
 int turn(glm::ivec2 a, glm::ivec2 b, glm::ivec2 c) { return (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x); }

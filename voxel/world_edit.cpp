@@ -5,6 +5,7 @@
 // changes as a whole: it becomes a tile, and its prior state is remembered once,
 // so a fill of a large region costs its bricks, not its voxels.
 #include "grotto/error.h"
+#include "common/number_text.h"
 #include "shaders/shared/frame.h"
 #include "voxel/solid.h"
 
@@ -160,12 +161,6 @@ EditResult resultOf(const World::Impl& w, const Changes& c) {
     return r;
 }
 
-std::string num(double d) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", d);
-    return buf;
-}
-
 bool withinIndexLimits(double lo, double hi) { return lo >= -double(kMaxVoxelIndex) && hi < double(kMaxVoxelIndex); }
 
 // The voxels an edit may change: its box, or the voxel box around its sphere.
@@ -185,7 +180,7 @@ IndexBox regionOf(const Edit& e, const World::Impl& w) {
         return e.box;
     }
     if (!(e.radius > 0.0 && std::isfinite(e.radius)))
-        throw Error(where, "has radius " + num(e.radius), "accepted: a finite radius > 0 world units");
+        throw Error(where, "has radius " + numberText(e.radius), "accepted: a finite radius > 0 world units");
     if (!std::isfinite(e.centre.x + e.centre.y + e.centre.z))
         throw Error(where, "has a non-finite centre", "accepted: finite world coordinates");
     // Voxel i's centre is at index i + 0.5; one voxel of slack, the exact test decides.

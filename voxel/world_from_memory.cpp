@@ -1,5 +1,6 @@
 // Worlds made in memory: from a dense array of material ids, or from a grid.
 #include "grotto/error.h"
+#include "common/number_text.h"
 #include "voxel/solid.h"
 #include "voxel/world_from_grid.h"
 
@@ -12,12 +13,6 @@
 namespace grotto::voxel {
 namespace {
 
-std::string num(double d) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%g", d);
-    return buf;
-}
-
 void requirePlacement(glm::ivec3 size, const uint8_t* materials, double voxelSize, glm::dvec3 origin) {
     const std::string where = "World::fromDense";
     double voxels = 1.0;
@@ -28,15 +23,15 @@ void requirePlacement(glm::ivec3 size, const uint8_t* materials, double voxelSiz
         voxels *= double(size[a]);
     }
     if (voxels > double(std::numeric_limits<ptrdiff_t>::max()))
-        throw Error(where, "size " + num(voxels) + " voxels is more than an array in memory can hold");
+        throw Error(where, "size " + numberText(voxels) + " voxels is more than an array in memory can hold");
     if (!materials) throw Error(where, "has no material array", "pass size.x * size.y * size.z material ids");
     if (!(voxelSize >= kMinVoxelSize && voxelSize <= kMaxVoxelSize))
-        throw Error(where, "voxel size " + num(voxelSize) + " is out of range",
-                    "accepted: " + num(kMinVoxelSize) + " to " + num(kMaxVoxelSize) + " world units");
+        throw Error(where, "voxel size " + numberText(voxelSize) + " is out of range",
+                    "accepted: " + numberText(kMinVoxelSize) + " to " + numberText(kMaxVoxelSize) + " world units");
     for (int a = 0; a < 3; ++a)
         if (!(std::abs(origin[a]) <= kMaxWorldOffset))
-            throw Error(where, std::string("origin ") + num(origin[a]) + " on " + "xyz"[a] + " is out of range",
-                        "accepted: within +-" + num(kMaxWorldOffset) + " world units");
+            throw Error(where, std::string("origin ") + numberText(origin[a]) + " on " + "xyz"[a] + " is out of range",
+                        "accepted: within +-" + numberText(kMaxWorldOffset) + " world units");
 }
 
 WorldDesc withPalette(WorldDesc desc) {

@@ -9,11 +9,6 @@
 
 namespace grotto {
 
-namespace {
-constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-}  // namespace
-
 ShadowEdgePass::ShadowEdgePass(vk::Context& ctx, uint32_t width, uint32_t height)
     : ctx_(ctx), args_(ctx, "shadow_edge_args.comp", {kBuffer}),
       trace_(ctx, "shadow_edge.comp",

@@ -6,7 +6,7 @@ namespace grotto {
 
 namespace {
 
-std::vector<VkDescriptorType> bindings(bool soft) {
+std::vector<VkDescriptorType> shadowBindings(bool soft) {
     std::vector<VkDescriptorType> b = {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                                        VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
     if (soft) b.insert(b.end(), 2, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);
@@ -17,7 +17,7 @@ std::vector<VkDescriptorType> bindings(bool soft) {
 
 ShadowPass::ShadowPass(vk::Context& ctx, bool soft, bool objectsOnlyOnWorld)
     : ctx_(ctx), soft_(soft),
-      pass_(ctx, soft ? "soft_shadow.comp" : "shadow.comp", bindings(soft), 0, {objectsOnlyOnWorld ? 1u : 0u}) {}
+      pass_(ctx, soft ? "soft_shadow.comp" : "shadow.comp", shadowBindings(soft), 0, {objectsOnlyOnWorld ? 1u : 0u}) {}
 
 PassDecl ShadowPass::declare() const {
     PassDecl d{"shadow", {{TargetId::Depth, Access::Sampled}, {TargetId::Surface, Access::Sampled},

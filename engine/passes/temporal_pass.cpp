@@ -6,7 +6,7 @@ namespace grotto {
 
 namespace {
 
-std::vector<VkDescriptorType> bindings(bool objects) {
+std::vector<VkDescriptorType> temporalBindings(bool objects) {
     std::vector<VkDescriptorType> b = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                        VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
                                        VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE};
@@ -20,7 +20,7 @@ TemporalPass::TemporalPass(vk::Context& ctx, uint32_t denoisePasses, bool object
     : ctx_(ctx),
       denoisePasses_(denoisePasses),
       objects_(objects),
-      pass_(ctx, objects ? "temporal_objects.comp" : "temporal.comp", bindings(objects), 0,
+      pass_(ctx, objects ? "temporal_objects.comp" : "temporal.comp", temporalBindings(objects), 0,
             objects ? std::vector<uint32_t>{denoisePasses >= 1 ? 1u : 0u, denoisePasses <= 1 ? 1u : 0u, motion ? 1u : 0u}
                     : std::vector<uint32_t>{denoisePasses >= 1 ? 1u : 0u, denoisePasses <= 1 ? 1u : 0u}) {}  // blur, sourceIsRaw[, motion]
 

@@ -12,6 +12,10 @@
 
 namespace grotto {
 
+// The binding types the tracing passes list most.
+inline constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+inline constexpr VkDescriptorType kSampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+
 // Appends the trace bindings' types to a pass's own: four, five with `objects`.
 std::vector<VkDescriptorType> withTraceBindings(std::vector<VkDescriptorType> own, bool objects = false);
 // Appends the trace bindings to a pass's own; `objectGrids` for a pass built with

@@ -9,7 +9,7 @@
 namespace grotto {
 
 namespace {
-constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+constexpr VkBufferUsageFlags kCacheBufferUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
 // Faces a list of the queue holds: a frame that asks for more leaves the rest to
 // the next. Bounded too so the trace's dispatch stays within 65535 groups.
 uint32_t capacityFor(uint32_t faces, uint32_t k) {
@@ -25,7 +25,7 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
     // Empty arrays (a world with no faces) still bind: one zero word each.
     const uint32_t zero[4] = {};
     auto upload = [&](const void* data, size_t bytes) {
-        return bytes ? vk::uploadBuffer(ctx, data, bytes, kUsage) : vk::uploadBuffer(ctx, zero, sizeof zero, kUsage);
+        return bytes ? vk::uploadBuffer(ctx, data, bytes, kCacheBufferUsage) : vk::uploadBuffer(ctx, zero, sizeof zero, kCacheBufferUsage);
     };
     std::vector<uint32_t> levelWords((size_t(faceCount_) + 15) / 16, levels.empty() ? ~0u : 0u);
     for (size_t f = 0; f < levels.size(); ++f) levelWords[f / 16] |= uint32_t(levels[f] & 3u) << (2 * (f % 16));

@@ -12,7 +12,7 @@ namespace {
 
 constexpr uint32_t kBricksPerTile = 512, kMaskWords = 16;
 constexpr VkDeviceSize kTileBytes = kBricksPerTile * sizeof(uint32_t), kMaskBytes = kMaskWords * sizeof(uint32_t);
-constexpr VkBufferUsageFlags kUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+constexpr VkBufferUsageFlags kOccupancyBufferUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
 
 // Room for a quarter more than `used`, so edits that add bricks grow a buffer rarely.
 VkDeviceSize withRoom(size_t used, VkDeviceSize unit) { return VkDeviceSize(used + used / 4 + 1) * unit; }
@@ -43,9 +43,9 @@ GpuOccupancy::GpuOccupancy(vk::Context& ctx, const voxel::World& world) : ctx_(c
     bricks.resize(withRoom(std::max<size_t>(tileSlots_.size(), 1), kTileBytes) / sizeof(uint32_t), 0u);
     masks.resize(withRoom(maskSlots_, kMaskBytes) / sizeof(uint32_t), 0u);
     try {
-        tiles_ = vk::uploadBuffer(ctx, hash_.data(), hash_.size() * sizeof(glm::ivec4), kUsage);
-        bricks_ = vk::uploadBuffer(ctx, bricks.data(), bricks.size() * sizeof(uint32_t), kUsage);
-        masks_ = vk::uploadBuffer(ctx, masks.data(), masks.size() * sizeof(uint32_t), kUsage);
+        tiles_ = vk::uploadBuffer(ctx, hash_.data(), hash_.size() * sizeof(glm::ivec4), kOccupancyBufferUsage);
+        bricks_ = vk::uploadBuffer(ctx, bricks.data(), bricks.size() * sizeof(uint32_t), kOccupancyBufferUsage);
+        masks_ = vk::uploadBuffer(ctx, masks.data(), masks.size() * sizeof(uint32_t), kOccupancyBufferUsage);
     } catch (...) {
         vk::destroy(ctx, tiles_);
         vk::destroy(ctx, bricks_);
@@ -134,12 +134,12 @@ void GpuOccupancy::update(const voxel::World& world, const voxel::IndexBox& chan
     // (StagedUploads clears it): a new tile's brick slots are written only where
     // its bricks are, so its other slots rely on that.
     if (VkDeviceSize(brickSlots_.size()) * sizeof(uint32_t) > bricks_.size)
-        uploads.reallocate(bricks_, withRoom(tileSlots_.size(), kTileBytes), kUsage, true);
+        uploads.reallocate(bricks_, withRoom(tileSlots_.size(), kTileBytes), kOccupancyBufferUsage, true);
     if (VkDeviceSize(maskSlots_) * kMaskBytes > masks_.size)
-        uploads.reallocate(masks_, withRoom(maskSlots_, kMaskBytes), kUsage, true);
+        uploads.reallocate(masks_, withRoom(maskSlots_, kMaskBytes), kOccupancyBufferUsage, true);
     if (hashChanged) {  // new tiles: the table is small, so it is rewritten whole
         if (VkDeviceSize(hash_.size() * sizeof(glm::ivec4)) > tiles_.size)
-            uploads.reallocate(tiles_, hash_.size() * sizeof(glm::ivec4), kUsage, false);
+            uploads.reallocate(tiles_, hash_.size() * sizeof(glm::ivec4), kOccupancyBufferUsage, false);
         uploads.discard(tiles_, 0, tiles_.size);
         uploads.write(tiles_, 0, hash_.data(), hash_.size() * sizeof(glm::ivec4));
     }

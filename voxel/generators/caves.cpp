@@ -17,7 +17,7 @@
 namespace grotto::voxel {
 namespace {
 
-enum Material : int32_t { Rock = 1, Dirt = 2, Grass = 3 };
+enum CaveMaterial : int32_t { Rock = 1, Dirt = 2, Grass = 3 };
 
 using LeafT = openvdb::Int32Tree::LeafNodeType;
 constexpr int kDim = int(LeafT::DIM);  // 8

@@ -11,7 +11,7 @@
 namespace grotto::voxel {
 namespace {
 
-enum Material : int32_t { Asphalt = 1, Pavement = 2, FirstFacade = 3, FacadeCount = 4 };
+enum CityMaterial : int32_t { Asphalt = 1, Pavement = 2, FirstFacade = 3, FacadeCount = 4 };
 
 // Every wall sits on a multiple of 8, a leaf boundary, so Grid::fill turns whole
 // building sides into tiles; only roofs and the pavement layer need leaf voxels.

@@ -14,7 +14,9 @@
 namespace grotto::voxel {
 namespace {
 
+namespace house {  // names of its own: rooms.cpp has a Wall and a Stone too
 enum Material : int32_t { Ground = 1, Wall = 2, Roof = 3, Stone = 5 };
+}  // namespace house
 
 }  // namespace
 
@@ -34,15 +36,15 @@ openvdb::GridBase::Ptr generateHouses(const GeneratorOptions& options) {
         else
             grid->fill(b, material, /*active=*/true);
     };
-    box(lo, -2, lo, hi, 0, hi, Ground);
+    box(lo, -2, lo, hi, 0, hi, house::Ground);
 
     // A room 10 x 7 x 10 inside, walls 1 thick on the ground, a roof above, its
     // outer corner at (x0, 0, z0); the interior is x0+1 .. x0+10, y 0 .. 6, z0+1 .. z0+10.
     auto house = [&](int x0, int z0) {
-        box(x0, 0, z0, x0 + 12, 8, z0 + 12, Wall);
-        box(x0, 8, z0, x0 + 12, 9, z0 + 12, Roof);
+        box(x0, 0, z0, x0 + 12, 8, z0 + 12, house::Wall);
+        box(x0, 8, z0, x0 + 12, 9, z0 + 12, house::Roof);
         box(x0 + 1, 0, z0 + 1, x0 + 11, 8, z0 + 11, 0);
-        box(x0 + 1, -1, z0 + 1, x0 + 11, 0, z0 + 11, Stone);  // a stone floor inside
+        box(x0 + 1, -1, z0 + 1, x0 + 11, 0, z0 + 11, house::Stone);  // a stone floor inside
     };
     const int z0 = -8;
     house(-22, z0);                              // closed

@@ -12,7 +12,7 @@
 namespace grotto::voxel {
 namespace {
 
-enum Material : int32_t { Floor = 1, Wall = 2, Stairs = 3, Wood = 4, Stone = 5, Trim = 6 };
+enum RoomMaterial : int32_t { Floor = 1, Wall = 2, Stairs = 3, Wood = 4, Stone = 5, Trim = 6 };
 
 class Builder {
 public:
