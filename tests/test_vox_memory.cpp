@@ -77,15 +77,39 @@ protected:
 
     // 64 voxels 64 apart, each in a chunk of its own: the program as it meshes
     // in parallel (every worker thread started), with next to nothing to mesh.
+    fs::path sparseVox() {
+        Voxels sparse;
+        for (uint8_t x = 0; x < 4; ++x)
+            for (uint8_t y = 0; y < 4; ++y)
+                for (uint8_t z = 0; z < 4; ++z) sparse.push_back({uint8_t(x * 64), uint8_t(y * 64), uint8_t(z * 64), 1});
+        return writeVox("sparse.vox", VoxWriter().model({256, 256, 256}, sparse));
+    }
     double baselineMiB() {
-        static const double mib = [&] {
-            Voxels sparse;
-            for (uint8_t x = 0; x < 4; ++x)
-                for (uint8_t y = 0; y < 4; ++y)
-                    for (uint8_t z = 0; z < 4; ++z) sparse.push_back({uint8_t(x * 64), uint8_t(y * 64), uint8_t(z * 64), 1});
-            return info(writeVox("sparse.vox", VoxWriter().model({256, 256, 256}, sparse))).peakMiB;
-        }();
+        static const double mib = info(sparseVox()).peakMiB;
         return mib;
+    }
+
+    // `grotto render` at a small size, one frame: the device (lavapipe) and the
+    // renderer are the baseline's; the world, its mesh and its upload are not.
+    test::RunResult render(const fs::path& world) {
+        test::RunResult r = test::runGrotto("render " + world.string() + " --size 32x24 --accumulate 1 -o " +
+                                            (dir_ / (world.stem().string() + ".png")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r;
+    }
+    double renderBaselineMiB() {
+        static const double mib = render(sparseVox()).peakMiB;
+        return mib;
+    }
+
+    void expectRenderWithinTolerance(const fs::path& world) {
+        SCOPED_TRACE(world.filename().string());
+        if (test::kAddressSanitizer) GTEST_SKIP() << "AddressSanitizer inflates resident memory";
+        const test::RunResult r = render(world);
+        std::smatch m;
+        ASSERT_TRUE(std::regex_search(r.out, m, std::regex("memory: an estimated ([0-9.]+) MiB to load, mesh and render"))) << r.out;
+        const double estimate = std::stod(m[1]), peak = r.peakMiB - renderBaselineMiB();
+        EXPECT_NEAR(estimate, peak, kTolerance * peak) << "render: estimated " << estimate << " MiB, peak " << peak << " MiB";
     }
 
     void expectWithinTolerance(const fs::path& world) {
@@ -148,6 +172,44 @@ TEST_F(VoxMemory, SeveralModelsAreEstimatedWithinTenPercent) {
         models.push_back({{n, n, n}, v});
     }
     expectWithinTolerance(writeVox("models.vox", placed(models, 4, 130, {VoxWriter::kIdentity})));
+}
+
+// A render keeps the mesh and uploads a GPU scene from it, which on lavapipe is
+// host memory three times over while it is made (the vertices, their staging
+// copy, the buffer).
+TEST_F(VoxMemory, RenderOfScatteredVoxelsIsEstimatedWithinTenPercent) {
+    std::mt19937 rng(3);
+    std::set<std::array<uint8_t, 3>> at;
+    while (at.size() < 20000) at.insert({uint8_t(rng()), uint8_t(rng()), uint8_t(rng())});
+    Voxels v;
+    for (const auto& p : at) v.push_back({p[0], p[1], p[2], uint8_t(1 + rng() % 200)});
+    expectRenderWithinTolerance(writeVox("scattered.vox", VoxWriter().model({256, 256, 256}, v)));
+}
+
+TEST_F(VoxMemory, RenderOfModelPlacedManyTimesIsEstimatedWithinTenPercent) {
+    std::mt19937 rng(5);
+    const uint8_t turns[] = {VoxWriter::kIdentity, 17, 40, 98};
+    expectRenderWithinTolerance(writeVox("instances.vox", placed({{{40, 40, 40}, speckledBox(rng)}}, 8, 50, {turns, turns + 4})));
+}
+
+TEST_F(VoxMemory, RenderOfDenseBlockIsEstimatedWithinTenPercent) {
+    Voxels v;  // 96^3 in diagonal stripes: grids and occupancy more than quads
+    for (uint8_t x = 0; x < 96; ++x)
+        for (uint8_t y = 0; y < 96; ++y)
+            for (uint8_t z = 0; z < 96; ++z) v.push_back({x, y, z, uint8_t(1 + (x + y + z) % 8)});
+    expectRenderWithinTolerance(writeVox("dense.vox", VoxWriter().model({96, 96, 96}, v)));
+}
+
+TEST_F(VoxMemory, RenderOverItsBudgetIsRefusedBeforeTheUpload) {
+    std::mt19937 rng(5);
+    writeVox("big.vox", placed({{{40, 40, 40}, speckledBox(rng)}}, 8, 50, {VoxWriter::kIdentity}));
+    // Loading and meshing fit 64 MiB (info runs); the upload beside them does not.
+    const fs::path world = writeText("big.json", R"({"grid": {"file": "big.vox"}, "memory_budget_mib": 64})");
+    EXPECT_EQ(test::runGrotto("info " + world.string()).exitCode, 0);
+    const test::RunResult r = expectRefused("render " + world.string() + " --size 32x24 --accumulate 1 -o " + (dir_ / "big.png").string(),
+                                            "big.vox", dir_ / "big.png", "");
+    for (const char* mention : {"loading, meshing and rendering it needs an estimated", "more than the memory budget of 64.0 MiB"})
+        EXPECT_NE(r.err.find(mention), std::string::npos) << mention << " in: " << r.err;
 }
 
 TEST_F(VoxMemory, ModelOverItsBudgetIsRefusedBeforeTheWork) {

@@ -2,11 +2,13 @@
 
 #include "grotto/error.h"
 #include "voxel/live_mesh.h"
+#include "voxel/mesh_footprint.h"
 #include "voxel/mesh.h"
 #include "voxel/world_desc.h"
 #include "shaders/shared/frame.h"
 
 #include <algorithm>
+#include <bit>
 #include <numeric>
 #include <string>
 
@@ -190,6 +192,27 @@ size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks) {
 
 size_t sceneBufferBytes(const voxel::Mesh& mesh) { return sceneBufferBytes(meshChunks(mesh)); }
 
+size_t sceneHostBytes(std::span<const voxel::MeshChunkQuads> chunks) {
+    // A level's clusters: one a face for each block its quads lie in, pushed back one by one.
+    auto level = [](const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads) {
+        uint64_t clusters = 0;
+        uint32_t q = 0;
+        for (uint32_t f = 0; f < 6; ++f) {
+            uint64_t blocks = 0;  // 4^3 blocks a chunk
+            for (uint32_t end = q + faceCount[f]; q < end; ++q) blocks |= uint64_t(1) << (blockOf(quads[q]) & 63);
+            clusters += uint64_t(std::popcount(blocks));
+        }
+        return voxel::heapBytes(std::bit_ceil(clusters) * sizeof(QuadCluster));
+    };
+    size_t n = voxel::heapBytes(chunks.size() * sizeof(GpuChunk));
+    for (const voxel::MeshChunkQuads& c : chunks) {
+        if (c.quads.empty()) continue;
+        n += voxel::heapBytes(std::bit_ceil(1 + c.coarser.size()) * sizeof(GpuLevel)) + level(c.faceCount, c.quads);
+        for (const voxel::MeshLevel& l : c.coarser) n += level(l.faceCount, l.quads);
+    }
+    return n;
+}
+
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::MeshChunkQuads> chunks,
                                       double voxelSize, glm::dvec3 worldOrigin, const voxel::WorldDesc& desc) {
     auto scene = std::make_unique<GpuScene>(ctx);
@@ -237,8 +260,8 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh,
 }
 
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::World& world) {
-    const voxel::LiveMesh mesh(world, {.coarseLevels = voxel::kMaxCoarseLevels});
-    auto scene = uploadScene(ctx, mesh.list(), world.voxelSize(), world.origin(), world.desc());
+    auto scene = uploadScene(ctx, voxel::LiveMesh(world, {.coarseLevels = voxel::kMaxCoarseLevels}).take(),
+                             world.voxelSize(), world.origin(), world.desc());
     scene->occupancy = std::make_unique<GpuOccupancy>(ctx, world);
     return scene;
 }
