@@ -53,7 +53,7 @@ void addInfoCommand(CLI::App& app) {
         const voxel::WorldStats s = w.stats();
         // As a renderer uploads it: every chunk with its coarser levels of detail.
         const std::vector<voxel::MeshChunkQuads> chunks =
-            voxel::LiveMesh(w, {.coarseLevels = voxel::kMaxCoarseLevels}).take();
+            voxel::LiveMesh(w, {.coarseLevels = voxel::kMaxCoarseLevels}).list();
         size_t quads = 0, coarse = 0;
         for (const voxel::MeshChunkQuads& c : chunks) {
             quads += c.quads.size();

@@ -46,12 +46,13 @@ MeshFootprint measure(const MeshChunkQuads& c) {
     const uint64_t levels = c.coarser.size();
     f.liveBytes = heapBytes(32 + sizeof(std::pair<const glm::ivec3, MeshChunkQuads>)) +
                   vectorBytes<MeshLevel>(grownCapacity(levels), levels);
-    // Taken out of it (LiveMesh::take): the chunk itself, its vectors moved.
-    f.listBytes = sizeof(MeshChunkQuads);
+    // In list(): the chunk, and every vector copied at its size.
+    f.listBytes = sizeof(MeshChunkQuads) + vectorBytes<MeshLevel>(levels, levels);
     auto level = [&](const std::vector<MeshQuad>& quads, const std::vector<gpu::PackedQuad>& rects) {
         const uint64_t q = quads.size(), r = rects.size();
         f.quads += q;
         f.liveBytes += vectorBytes<MeshQuad>(grownCapacity(r, q), q) + vectorBytes<gpu::PackedQuad>(grownCapacity(r), r);
+        f.listBytes += vectorBytes<MeshQuad>(q, q) + vectorBytes<gpu::PackedQuad>(r, r);
     };
     level(c.quads, c.rects);
     for (const MeshLevel& l : c.coarser) level(l.quads, l.rects);
@@ -90,7 +91,9 @@ MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options,
         MeshChunkQuads c = world.meshChunk(origins[i], options);
         if (c.rects.empty()) return;
         corners[i] = boundaryCorners(c);
-        auto bytes = [](const std::vector<gpu::PackedQuad>& r) { return vectorBytes<gpu::PackedQuad>(grownCapacity(r.size()), r.size()); };
+        auto bytes = [](const std::vector<gpu::PackedQuad>& r) {
+            return vectorBytes<gpu::PackedQuad>(grownCapacity(r.size()), r.size()) + vectorBytes<gpu::PackedQuad>(r.size(), r.size());
+        };
         counted += bytes(c.rects);
         for (const MeshLevel& l : c.coarser) counted += bytes(l.rects);
         chunks[i] = std::move(c);
@@ -121,7 +124,7 @@ MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options,
                 weld(c, around);
                 const MeshFootprint one = measure(c);
                 chunks[i].reset();
-                counted += one.liveBytes;
+                counted += one.liveBytes + one.listBytes;
                 f = sum(f, one);
             }
             return f;

@@ -16,13 +16,13 @@ uint64_t heapBytes(uint64_t bytes);
 struct MeshFootprint {
     uint64_t quads = 0;      // every level's
     uint64_t liveBytes = 0;  // a LiveMesh of them: its map, and each chunk's vectors at the capacity they grow to
-    uint64_t listBytes = 0;  // LiveMesh::take()'s list of them (their vectors moved, not copied)
+    uint64_t listBytes = 0;  // LiveMesh::list()'s copy of them (exact capacities)
     uint64_t cornerBytes = 0;  // the boundary corners LiveMesh welds with, held while it welds
     bool complete = true;      // false: stopped early, and liveBytes + listBytes is a lower bound
 };
 
-// LiveMesh(world, options) and its take(), counted chunk by chunk. The count
-// stops once the bytes of the chunks counted so far pass
+// LiveMesh(world, options) and its list(), counted chunk by chunk. The count
+// stops once liveBytes + listBytes of the chunks counted so far pass
 // `stopAbove`: a mesh far over a budget is refused at the budget's cost, not its own.
 MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options, uint64_t stopAbove = UINT64_MAX);
 

@@ -26,9 +26,8 @@ WorkMemory estimateWorkMemory(const World& world, uint64_t stopAbove) {
     m.readBytes = ec ? 0 : file + std::max<uint64_t>(file, materials ? materials->memUsage() : 0);
     m.gridBytes = s.hostBytes;
     // The LiveMesh holds every chunk's boundary corners while it welds; its
-    // chunks, moved out of it, outlive it beside the face count.
-    m.meshBytes = mesh.liveBytes + std::max(mesh.cornerBytes, mesh.listBytes + faceCount);
-    m.liveMeshBytes = mesh.liveBytes;
+    // copy outlives it; the face count reuses its memory once it is gone.
+    m.meshBytes = std::max({mesh.liveBytes + std::max(mesh.cornerBytes, mesh.listBytes), mesh.listBytes + faceCount});
     m.quads = mesh.quads;
     m.complete = mesh.complete;
     return m;

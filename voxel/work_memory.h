@@ -1,7 +1,8 @@
 #pragma once
 // What a world's everyday work takes in memory at its peak, estimated before it is
 // done: the world as loaded, meshed as a renderer uploads it (every level of
-// detail: voxel::LiveMesh, its chunks moved out for a scene to be uploaded from),
+// detail: voxel::LiveMesh and the copy of its chunks `info` counts from; a
+// renderer's scene is uploaded from the chunks themselves, engine/scene/scene_memory.h),
 // and the exposed-face count `info` and `bake` make beside it. `grotto info`
 // does exactly this work; a render adds its GPU scene (docs/formats.md).
 #include "voxel/world.h"
@@ -15,8 +16,7 @@ namespace grotto::voxel {
 struct WorkMemory {
     uint64_t readBytes = 0;  // reading the file: its bytes and the voxels parsed from them, then the grid built
     uint64_t gridBytes = 0;  // the solid and material grids
-    uint64_t meshBytes = 0;  // beside them, the mesh at its peak: while welded, or faces counted beside it
-    uint64_t liveMeshBytes = 0;  // the mesh alone, as a LiveMesh keeps it
+    uint64_t meshBytes = 0;  // beside them, the mesh at its peak: while welded, copied, or faces counted
     uint64_t quads = 0;      // every level's
     bool complete = true;    // false: counting stopped past stopAbove; total() is a lower bound
     uint64_t total() const { return std::max(readBytes, gridBytes + meshBytes); }

@@ -8,17 +8,18 @@ namespace grotto {
 SceneMemory estimateSceneMemory(const voxel::World& world, uint64_t meshBytes, std::span<const voxel::MeshChunkQuads> chunks,
                                 uint64_t rendererBytes, bool cpuDevice) {
     const voxel::WorldStats s = world.stats();
-    // Buffers are made in host memory (the vertices built, or a staging copy), and
-    // on a CPU device the buffer itself is host memory too.
-    const uint64_t copies = cpuDevice ? 3 : 2, kept = cpuDevice ? 1 : 0;
-    const uint64_t scene = sceneBufferBytes(chunks), sceneHost = sceneHostBytes(chunks);
+    // Buffers are made in host memory (a staging copy, which stays resident once
+    // freed: measured on lavapipe), and on a CPU device the buffer itself is host memory too.
+    const uint64_t copies = cpuDevice ? 2 : 1, kept = copies;
+    const uint64_t scene = sceneBufferBytes(chunks);
     // The occupancy: a 16-word mask a brick, with a quarter more room (engine/scene/occupancy.cpp).
     const uint64_t occupancy = s.bricks * 64 * 5 / 4;
+    constexpr uint64_t kClusterDrawBytes = 72;
     SceneMemory m;
-    m.worldBytes = s.hostBytes + meshBytes + sceneHost;  // the scene's chunks and clusters are kept from the upload on
-    // The scene's vertices, then its occupancy, made beside the chunks moved out of the mesh.
-    m.uploadBytes = chunks.size() * sizeof(voxel::MeshChunkQuads) + std::max(copies * scene, kept * scene + copies * occupancy);
-    m.framesBytes = kept * (scene + occupancy) + rendererBytes;
+    m.worldBytes = s.hostBytes + meshBytes + sceneHostBytes(chunks);
+    // The scene's vertices, then its occupancy (built on the host too), beside the chunks lent by the mesh.
+    m.uploadBytes = chunks.size() * sizeof(voxel::MeshChunkQuads) + std::max(copies * scene, kept * scene + (copies + 1) * occupancy);
+    m.framesBytes = kept * scene + (cpuDevice ? occupancy : 0) + kClusterDrawBytes * sceneClusters(chunks) + rendererBytes;
     return m;
 }
 

@@ -1,12 +1,15 @@
 #pragma once
 // What a .vox world takes in memory once it is rendered, estimated after it is
-// meshed and before its scene is uploaded: the grids and the mesh as the live
-// scene keeps it (voxel/mesh_footprint.h) and the GPU scene's chunks and their
-// clusters (sceneHostBytes), and beside them the larger of the
-// upload at its peak (the vertices built on the host, their staging copy, the
-// buffer itself, then the occupancy the same way) and what stays for the frames
-// (the scene's buffers and the renderer, engine/frame/render_memory.h). On a CPU
-// device (lavapipe) the device's buffers are host memory too.
+// meshed and before its scene is uploaded: its grids, its mesh as the live scene
+// keeps it (voxel/mesh_footprint.h) and the GPU scene's chunks and clusters
+// (sceneHostBytes), and beside them the larger of
+// the upload at its peak (the vertices built on the host, their staging copy, the
+// buffer itself, then the occupancy the same way) and what stays for the frames:
+// the buffers, the staging copy's memory (freed, but not given back: measured on
+// lavapipe), culling's list of clusters in view and the draws recorded for them
+// (all of them: about 72 bytes a cluster, measured), and the renderer
+// (engine/frame/render_memory.h). On a CPU device (lavapipe) the device's buffers
+// are host memory too.
 #include "voxel/world.h"
 
 #include <algorithm>
@@ -21,6 +24,11 @@ struct SceneMemory {
     uint64_t framesBytes = 0;  // beside them, the scene's buffers and the renderer while frames are made
     uint64_t total() const { return worldBytes + std::max(uploadBytes, framesBytes); }
 };
+
+// Every level's clusters, as uploadScene makes them (engine/scene/scene.h): while
+// frames are made, culling lists those in view, and a CPU device records a draw
+// for each.
+uint64_t sceneClusters(std::span<const voxel::MeshChunkQuads> chunks);
 
 // `chunks`: the mesh's, lent by it (voxel::LiveMesh::lend), `meshBytes` its
 // footprint as the LiveMesh keeps them (voxel::measureMesh); `rendererBytes`: the
