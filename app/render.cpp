@@ -94,6 +94,9 @@ void addRenderCommand(CLI::App& app) {
         uint32_t rendered = 0;
         {
             RenderSession session(ctx, std::move(world), ao, detail, size.width, size.height);
+            if (const uint64_t bytes = session.memoryEstimate())  // .vox worlds (engine/scene/scene_memory.h)
+                std::printf("memory: an estimated %.1f MiB to load, mesh and render (budget %zu MiB)\n",
+                            double(bytes) / (1 << 20), session.world().desc().memoryBudgetBytes >> 20);
             prepareFaceCache(session, args->ao);
             session.setTime(args->time);  // the objects, held for every frame
             Renderer& renderer = session.renderer();

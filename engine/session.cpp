@@ -1,6 +1,7 @@
 #include "engine/session.h"
 
 #include "engine/camera_path.h"
+#include "engine/frame/render_memory.h"
 #include "shaders/shared/face_trace.h"
 #include "voxel/object_worlds.h"
 
@@ -13,7 +14,8 @@ RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptio
     // Objects that may move may also come and go: the renderer draws a list, empty or not.
     if (!objectWorlds_.empty() || objectsMayMove) objects_ = uploadObjects(ctx, objectWorlds_, world.desc());
     if (objectsMayMove) objects_->moving = true;
-    scene_ = std::make_unique<LiveScene>(ctx, std::move(world));
+    const uint64_t rendererBytes = rendererHostBytes(ctx, planWorldFrame(world.desc(), width, height, ao));
+    scene_ = std::make_unique<LiveScene>(ctx, std::move(world), rendererBytes);
     setTime(0.0);
 }
 

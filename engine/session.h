@@ -32,6 +32,9 @@ public:
     RenderSession& operator=(const RenderSession&) = delete;
 
     LiveScene& scene() { return *scene_; }
+    // A .vox world's estimated peak memory, the renderer's at this size included
+    // (engine/scene/scene_memory.h), checked against its budget before the upload; else 0.
+    uint64_t memoryEstimate() const { return scene_->memoryEstimate(); }
     const voxel::World& world() const { return scene_->world(); }
     // Made on first use (a command that renders with renderers of its own never
     // makes it). With --ao cache and no cache of the AO radius loaded, the world

@@ -4,8 +4,10 @@
 // placed many times turned every way, and several models. "Peak" here: the largest
 // resident set of `grotto info FILE` (the child's getrusage), less that of
 // `grotto info` of a model of 64 voxels far apart (the program meshing on every
-// thread, with next to nothing to mesh): what loading and meshing the world adds. `info` prints the estimate it checked. And a model over its
-// budget is refused by the estimate before the work, within a CPU-second cap.
+// thread, with next to nothing to mesh): what loading and meshing the world
+// adds. `info` prints the estimate it
+// checked. And a model over its budget is refused by the estimate before the
+// work, within a CPU-second cap.
 #include "tests/cli_fixture.h"
 #include "tests/vox_writer.h"
 
@@ -34,6 +36,34 @@ Voxels speckledBox(std::mt19937& rng) {
             for (uint8_t z = 0; z < 40; ++z)
                 if (rng() % 10 < 3) v.push_back({x, y, z, uint8_t(1 + (x * 7 + z) % 30)});
     return v;
+}
+
+// `count` voxels at random in a 256^3 model, in 200 colours: nearly all apart.
+Voxels scattered(size_t count) {
+    std::mt19937 rng(3);
+    std::set<std::array<uint8_t, 3>> at;
+    while (at.size() < count) at.insert({uint8_t(rng()), uint8_t(rng()), uint8_t(rng())});
+    Voxels v;
+    for (const auto& p : at) v.push_back({p[0], p[1], p[2], uint8_t(1 + rng() % 200)});
+    return v;
+}
+
+// Balls of 60 to 120 voxels across, rough-edged, one colour each.
+std::vector<std::pair<glm::ivec3, Voxels>> balls(std::mt19937& rng) {
+    std::vector<std::pair<glm::ivec3, Voxels>> models;
+    for (int k = 0; k < 4; ++k) {
+        const int n = 60 + 20 * k;
+        Voxels v;
+        for (int x = 0; x < n; ++x)
+            for (int y = 0; y < n; ++y)
+                for (int z = 0; z < n; ++z) {
+                    const glm::vec3 d = glm::vec3(x, y, z) - glm::vec3(n / 2.0f);
+                    if (glm::dot(d, d) < n * n / 4.0f * (0.8f + 0.2f * float(rng() % 2)))
+                        v.push_back({uint8_t(x), uint8_t(y), uint8_t(z), uint8_t(1 + k)});
+                }
+        models.push_back({{n, n, n}, v});
+    }
+    return models;
 }
 
 class VoxMemory : public test::CliErrors {
@@ -67,32 +97,58 @@ protected:
         return r;
     }
 
-    // `grotto info`'s printed estimate and its measured peak over the baseline's, in MiB.
-    std::pair<double, double> estimateAndPeak(const fs::path& world) {
-        const test::RunResult r = info(world);
+    // A run's printed estimate (`pattern`'s number) and its peak, in MiB.
+    static std::pair<double, double> estimateAndPeak(const test::RunResult& r, const std::string& pattern) {
         std::smatch m;
-        EXPECT_TRUE(std::regex_search(r.out, m, std::regex("memory +an estimated ([0-9.]+) MiB"))) << r.out;
-        return {m.empty() ? 0.0 : std::stod(m[1]), r.peakMiB - baselineMiB()};
+        EXPECT_TRUE(std::regex_search(r.out, m, std::regex(pattern))) << r.out;
+        return {m.empty() ? 0.0 : std::stod(m[1]), r.peakMiB};
+    }
+    static constexpr const char* kInfoEstimate = "memory +an estimated ([0-9.]+) MiB";
+    static constexpr const char* kRenderEstimate = "memory: an estimated ([0-9.]+) MiB to load, mesh and render";
+
+    // What a world adds to the baseline's peak, against its estimate.
+    static void expectNear(std::pair<double, double> world, double baselinePeak, const char* what) {
+        const double estimate = world.first, peak = world.second - baselinePeak;
+        EXPECT_NEAR(estimate, peak, kTolerance * peak) << what << ": estimated " << estimate << " MiB, peak " << peak << " MiB";
     }
 
     // 64 voxels 64 apart, each in a chunk of its own: the program as it meshes
     // in parallel (every worker thread started), with next to nothing to mesh.
+    fs::path sparseVox() {
+        Voxels sparse;
+        for (uint8_t x = 0; x < 4; ++x)
+            for (uint8_t y = 0; y < 4; ++y)
+                for (uint8_t z = 0; z < 4; ++z) sparse.push_back({uint8_t(x * 64), uint8_t(y * 64), uint8_t(z * 64), 1});
+        return writeVox("sparse.vox", VoxWriter().model({256, 256, 256}, sparse));
+    }
     double baselineMiB() {
-        static const double mib = [&] {
-            Voxels sparse;
-            for (uint8_t x = 0; x < 4; ++x)
-                for (uint8_t y = 0; y < 4; ++y)
-                    for (uint8_t z = 0; z < 4; ++z) sparse.push_back({uint8_t(x * 64), uint8_t(y * 64), uint8_t(z * 64), 1});
-            return info(writeVox("sparse.vox", VoxWriter().model({256, 256, 256}, sparse))).peakMiB;
-        }();
+        static const double mib = info(sparseVox()).peakMiB;
         return mib;
+    }
+
+    // `grotto render` at a small size, one frame: the device (lavapipe) and the
+    // renderer are the baseline's; the world, its mesh and its upload are not.
+    test::RunResult render(const fs::path& world) {
+        test::RunResult r = test::runGrotto("render " + world.string() + " --size 32x24 --accumulate 1 -o " +
+                                            (dir_ / (world.stem().string() + ".png")).string());
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        return r;
+    }
+    double renderBaselineMiB() {
+        static const double mib = render(sparseVox()).peakMiB;
+        return mib;
+    }
+
+    void expectRenderWithinTolerance(const fs::path& world) {
+        SCOPED_TRACE(world.filename().string());
+        if (test::kAddressSanitizer) GTEST_SKIP() << "AddressSanitizer inflates resident memory";
+        expectNear(estimateAndPeak(render(world), kRenderEstimate), renderBaselineMiB(), "render");
     }
 
     void expectWithinTolerance(const fs::path& world) {
         SCOPED_TRACE(world.filename().string());
         if (test::kAddressSanitizer) GTEST_SKIP() << "AddressSanitizer inflates resident memory";
-        const auto [estimate, peak] = estimateAndPeak(world);
-        EXPECT_NEAR(estimate, peak, kTolerance * peak) << "estimated " << estimate << " MiB, peak " << peak << " MiB";
+        expectNear(estimateAndPeak(info(world), kInfoEstimate), baselineMiB(), "info");
     }
 };
 
@@ -105,12 +161,7 @@ TEST_F(VoxMemory, DenseBlockIsEstimatedWithinTenPercent) {
 }
 
 TEST_F(VoxMemory, ScatteredVoxelsAreEstimatedWithinTenPercent) {
-    std::mt19937 rng(3);
-    std::set<std::array<uint8_t, 3>> at;
-    while (at.size() < 40000) at.insert({uint8_t(rng()), uint8_t(rng()), uint8_t(rng())});
-    Voxels v;
-    for (const auto& p : at) v.push_back({p[0], p[1], p[2], uint8_t(1 + rng() % 200)});
-    expectWithinTolerance(writeVox("scattered.vox", VoxWriter().model({256, 256, 256}, v)));
+    expectWithinTolerance(writeVox("scattered.vox", VoxWriter().model({256, 256, 256}, scattered(40000))));
 }
 
 TEST_F(VoxMemory, HollowShellIsEstimatedWithinTenPercentAndFitsItsBudget) {
@@ -134,20 +185,37 @@ TEST_F(VoxMemory, ModelPlacedManyTimesIsEstimatedWithinTenPercent) {
 
 TEST_F(VoxMemory, SeveralModelsAreEstimatedWithinTenPercent) {
     std::mt19937 rng(7);
-    std::vector<std::pair<glm::ivec3, Voxels>> models;
-    for (int k = 0; k < 4; ++k) {  // balls of 60 to 120 voxels across, rough-edged, one colour each
-        const int n = 60 + 20 * k;
-        Voxels v;
-        for (int x = 0; x < n; ++x)
-            for (int y = 0; y < n; ++y)
-                for (int z = 0; z < n; ++z) {
-                    const glm::vec3 d = glm::vec3(x, y, z) - glm::vec3(n / 2.0f);
-                    if (glm::dot(d, d) < n * n / 4.0f * (0.8f + 0.2f * float(rng() % 2)))
-                        v.push_back({uint8_t(x), uint8_t(y), uint8_t(z), uint8_t(1 + k)});
-                }
-        models.push_back({{n, n, n}, v});
-    }
-    expectWithinTolerance(writeVox("models.vox", placed(models, 4, 130, {VoxWriter::kIdentity})));
+    expectWithinTolerance(writeVox("models.vox", placed(balls(rng), 4, 130, {VoxWriter::kIdentity})));
+}
+
+// A render keeps the mesh and uploads a GPU scene from it, which on lavapipe is
+// host memory twice over (the buffer and its staging copy), and culls and draws
+// its clusters every frame.
+TEST_F(VoxMemory, RenderOfScatteredVoxelsIsEstimatedWithinTenPercent) {
+    expectRenderWithinTolerance(writeVox("scattered.vox", VoxWriter().model({256, 256, 256}, scattered(20000))));
+}
+
+TEST_F(VoxMemory, RenderOfModelPlacedManyTimesIsEstimatedWithinTenPercent) {
+    std::mt19937 rng(5);
+    const uint8_t turns[] = {VoxWriter::kIdentity, 17, 40, 98};
+    expectRenderWithinTolerance(writeVox("instances.vox", placed({{{40, 40, 40}, speckledBox(rng)}}, 8, 50, {turns, turns + 4})));
+}
+
+TEST_F(VoxMemory, RenderOfSeveralModelsIsEstimatedWithinTenPercent) {
+    std::mt19937 rng(7);
+    expectRenderWithinTolerance(writeVox("models.vox", placed(balls(rng), 4, 130, {VoxWriter::kIdentity})));
+}
+
+TEST_F(VoxMemory, RenderOverItsBudgetIsRefusedBeforeTheUpload) {
+    std::mt19937 rng(5);
+    writeVox("big.vox", placed({{{40, 40, 40}, speckledBox(rng)}}, 8, 50, {VoxWriter::kIdentity}));
+    // Loading and meshing take about 45 MiB (info runs); with the upload and the frames, about 60.
+    const fs::path world = writeText("big.json", R"({"grid": {"file": "big.vox"}, "memory_budget_mib": 52})");
+    EXPECT_EQ(test::runGrotto("info " + world.string()).exitCode, 0);
+    const test::RunResult r = expectRefused("render " + world.string() + " --size 32x24 --accumulate 1 -o " + (dir_ / "big.png").string(),
+                                            "big.vox", dir_ / "big.png", "");
+    for (const char* mention : {"loading, meshing and rendering it needs an estimated", "more than the memory budget of 52.0 MiB"})
+        EXPECT_NE(r.err.find(mention), std::string::npos) << mention << " in: " << r.err;
 }
 
 TEST_F(VoxMemory, ModelOverItsBudgetIsRefusedBeforeTheWork) {

@@ -97,6 +97,18 @@ std::vector<MeshChunkQuads> LiveMesh::list() const {
     return out;
 }
 
+std::vector<MeshChunkQuads> LiveMesh::take() && {
+    std::vector<MeshChunkQuads> out;
+    out.reserve(chunks_.size());
+    for (auto& [origin, q] : chunks_) out.push_back(std::move(q));
+    return out;
+}
+
+void LiveMesh::giveBack(std::vector<MeshChunkQuads>&& chunks) {
+    auto it = chunks_.begin();
+    for (MeshChunkQuads& q : chunks) (it++)->second = std::move(q);
+}
+
 Mesh LiveMesh::flatten() const {
     Mesh mesh;
     mesh.origin = origin_;

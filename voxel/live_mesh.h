@@ -32,10 +32,25 @@ public:
 
     // The chunks in order, copied: what a GPU scene is uploaded from.
     std::vector<MeshChunkQuads> list() const;
+    // The same, moved out of a mesh no longer needed: no second copy of it at the peak.
+    std::vector<MeshChunkQuads> take() &&;
+    // The chunks in order, moved out for `use` (a span of them) and moved back
+    // after: a scene uploaded from a mesh that is kept, without a copy of it.
+    template <class Use>
+    auto lend(Use&& use) {
+        std::vector<MeshChunkQuads> chunks = std::move(*this).take();
+        struct Back {
+            LiveMesh& mesh;
+            std::vector<MeshChunkQuads>& chunks;
+            ~Back() { mesh.giveBack(std::move(chunks)); }
+        } back{*this, chunks};
+        return use(std::span<const MeshChunkQuads>(chunks));
+    }
     // The same quads as one Mesh, as World::mesh() lays it out (exact voxels only).
     Mesh flatten() const;
 
 private:
+    void giveBack(std::vector<MeshChunkQuads>&& chunks);  // what take() moved out, in its order
     void weld(const std::vector<glm::ivec3>& origins);  // their quads, from every chunk's rectangles
 
     MeshOptions options_;

@@ -1,6 +1,6 @@
 // Counting a LiveMesh's memory without keeping it: two passes over the chunks, the
-// first for the corners each chunk's neighbours weld to, the second welding and
-// measuring each chunk on its own.
+// first meshing them and listing the corners each chunk's neighbours weld to, the
+// second welding and measuring each chunk on its own, then dropping it.
 #include "voxel/mesh_footprint.h"
 
 #include "voxel/watertight.h"
@@ -69,17 +69,24 @@ MeshFootprint sum(MeshFootprint a, const MeshFootprint& b) {
 
 uint64_t heapBytes(uint64_t bytes) { return bytes ? std::max<uint64_t>(32, (bytes + 8 + 15) & ~uint64_t(15)) : 0; }
 
+MeshFootprint measureMesh(const LiveMesh& mesh) {
+    MeshFootprint total;
+    for (const auto& [origin, c] : mesh.chunks()) total = sum(total, measure(c));
+    return total;
+}
+
 MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options, uint64_t stopAbove) {
     const std::vector<glm::ivec3> origins = world.chunkOrigins();
     // What the chunks counted so far take at least, in either pass: past stopAbove, the rest is skipped.
     std::atomic<uint64_t> counted{0};
     auto stopped = [&] { return counted.load(std::memory_order_relaxed) > stopAbove; };
-    // First pass: which chunks have rectangles, and their boundary corners (and
-    // their rectangles' bytes, in LiveMesh and in its copy: a part of the whole).
-    std::vector<std::optional<std::vector<glm::ivec3>>> corners(origins.size());
+    // First pass: every chunk meshed and kept (its rectangles are counted, so
+    // what is kept stays within stopAbove), with its boundary corners.
+    std::vector<std::optional<MeshChunkQuads>> chunks(origins.size());
+    std::vector<std::vector<glm::ivec3>> corners(origins.size());
     tbb::parallel_for(size_t(0), origins.size(), [&](size_t i) {
         if (stopped()) return;
-        const MeshChunkQuads c = world.meshChunk(origins[i], options);
+        MeshChunkQuads c = world.meshChunk(origins[i], options);
         if (c.rects.empty()) return;
         corners[i] = boundaryCorners(c);
         auto bytes = [](const std::vector<gpu::PackedQuad>& r) {
@@ -87,32 +94,34 @@ MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options,
         };
         counted += bytes(c.rects);
         for (const MeshLevel& l : c.coarser) counted += bytes(l.rects);
+        chunks[i] = std::move(c);
     });
     if (stopped()) return {.liveBytes = counted, .complete = false};
     counted = 0;
     std::map<glm::ivec3, size_t, LiveMesh::Less> index;
     uint64_t cornerBytes = 0;
     for (size_t i = 0; i < origins.size(); ++i)
-        if (corners[i]) {
+        if (chunks[i]) {
             index.emplace(origins[i], i);
             // Resident whole: this count's own corners, freed, are what LiveMesh's reuse.
-            cornerBytes += sizeof(std::vector<glm::ivec3>) + heapBytes(corners[i]->capacity() * sizeof(glm::ivec3));
+            cornerBytes += sizeof(std::vector<glm::ivec3>) + heapBytes(corners[i].capacity() * sizeof(glm::ivec3));
         }
-    // Second pass: each chunk meshed again, welded to its neighbours as LiveMesh
-    // welds it, measured and dropped.
+    // Second pass: each chunk welded to its neighbours as LiveMesh welds it,
+    // measured and dropped.
     MeshFootprint total = tbb::parallel_reduce(
         tbb::blocked_range<size_t>(0, origins.size()), MeshFootprint{},
         [&](const tbb::blocked_range<size_t>& range, MeshFootprint f) {
             for (size_t i = range.begin(); i != range.end() && !stopped(); ++i) {
-                if (!corners[i]) continue;
-                MeshChunkQuads c = world.meshChunk(origins[i], options);
+                if (!chunks[i]) continue;
+                MeshChunkQuads& c = *chunks[i];
                 std::vector<ChunkBoundary> around;
                 for (int k = 0; k < 27; ++k) {
                     const glm::ivec3 n = c.origin + kChunkEdge * glm::ivec3(k % 3 - 1, k / 3 % 3 - 1, k / 9 - 1);
-                    if (const auto it = index.find(n); it != index.end()) around.push_back({n, &*corners[it->second]});
+                    if (const auto it = index.find(n); it != index.end()) around.push_back({n, &corners[it->second]});
                 }
                 weld(c, around);
                 const MeshFootprint one = measure(c);
+                chunks[i].reset();
                 counted += one.liveBytes + one.listBytes;
                 f = sum(f, one);
             }

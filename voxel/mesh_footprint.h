@@ -1,8 +1,8 @@
 #pragma once
 // What meshing a world takes in memory, counted before it is done: every chunk is
 // meshed and welded as voxel::LiveMesh does it, measured and dropped, so the count
-// needs a chunk's worth of memory per thread (and the chunks' boundary corners),
-// not the mesh's.
+// needs the chunks' rectangles and boundary corners (a part of what it counts),
+// not the whole mesh.
 #include "voxel/live_mesh.h"
 
 #include <cstdint>
@@ -25,5 +25,8 @@ struct MeshFootprint {
 // stops once liveBytes + listBytes of the chunks counted so far pass
 // `stopAbove`: a mesh far over a budget is refused at the budget's cost, not its own.
 MeshFootprint countMeshFootprint(const World& world, const MeshOptions& options, uint64_t stopAbove = UINT64_MAX);
+
+// The same figures for a mesh already made.
+MeshFootprint measureMesh(const LiveMesh& mesh);
 
 }  // namespace grotto::voxel

@@ -33,25 +33,34 @@ WorkMemory estimateWorkMemory(const World& world, uint64_t stopAbove) {
     return m;
 }
 
-WorkMemory requireWorkFits(const World& world) {
+std::string mibText(uint64_t bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f MiB", double(bytes) / (1 << 20));
+    return text;
+}
+
+uint64_t budgetRoom(const World& world) { return memoryRoom(world.desc().memoryBudgetBytes); }
+
+void refuseOverBudget(const World& world, const std::string& needs) {
     const size_t budget = world.desc().memoryBudgetBytes, room = memoryRoom(budget);
+    throw Error(world.desc().gridFile.string(),
+                needs + ", more than the " + (room < budget ? "" : "memory budget of ") + mibText(room) +
+                    (room < budget ? " of address space this process may still map (ulimit -v)" : ""),
+                "raise 'memory_budget_mib' in a world file naming it, or hide layers in MagicaVoxel");
+}
+
+WorkMemory requireWorkFits(const World& world) {
+    const uint64_t room = budgetRoom(world);
     const WorkMemory estimate = estimateWorkMemory(world, room);
     if (estimate.complete && estimate.total() <= room) return estimate;
-    char counted[160];
-    if (estimate.complete)
-        std::snprintf(counted, sizeof counted, "an estimated %.1f MiB (grids %.1f MiB, a mesh of %llu quads %.1f MiB)",
-                      double(estimate.total()) / (1 << 20), double(estimate.gridBytes) / (1 << 20),
-                      (unsigned long long)estimate.quads, double(estimate.meshBytes) / (1 << 20));
-    else  // counting stopped there
-        std::snprintf(counted, sizeof counted, "at least an estimated %.1f MiB (grids %.1f MiB, and %.1f MiB of mesh counted before it stopped)",
-                      double(estimate.total()) / (1 << 20), double(estimate.gridBytes) / (1 << 20),
-                      double(estimate.meshBytes) / (1 << 20));
-    char figures[400];
-    std::snprintf(figures, sizeof figures, "loading and meshing it needs %s, more than the %s%.1f MiB%s", counted,
-                  room < budget ? "" : "memory budget of ", double(room) / (1 << 20),
-                  room < budget ? " of address space this process may still map (ulimit -v)" : "");
-    throw Error(world.desc().gridFile.string(), figures,
-                "raise 'memory_budget_mib' in a world file naming it, or hide layers in MagicaVoxel");
+    const std::string grids = "(grids " + mibText(estimate.gridBytes);
+    refuseOverBudget(world, estimate.complete ? "loading and meshing it needs an estimated " + mibText(estimate.total()) + " " +
+                                                    grids + ", a mesh of " + std::to_string(estimate.quads) + " quads " +
+                                                    mibText(estimate.meshBytes) + ")"
+                                              // counting stopped there
+                                              : "loading and meshing it needs at least an estimated " + mibText(estimate.total()) +
+                                                    " " + grids + ", and " + mibText(estimate.meshBytes) +
+                                                    " of mesh counted before it stopped)");
 }
 
 }  // namespace grotto::voxel

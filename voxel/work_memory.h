@@ -1,13 +1,15 @@
 #pragma once
 // What a world's everyday work takes in memory at its peak, estimated before it is
 // done: the world as loaded, meshed as a renderer uploads it (every level of
-// detail: voxel::LiveMesh and the copy of its chunks a scene is uploaded from),
+// detail: voxel::LiveMesh and the copy of its chunks `info` counts from; a
+// renderer's scene is uploaded from the chunks themselves, engine/scene/scene_memory.h),
 // and the exposed-face count `info` and `bake` make beside it. `grotto info`
 // does exactly this work; a render adds its GPU scene (docs/formats.md).
 #include "voxel/world.h"
 
 #include <algorithm>
 #include <cstdint>
+#include <string>
 
 namespace grotto::voxel {
 
@@ -28,5 +30,12 @@ WorkMemory estimateWorkMemory(const World& world, uint64_t stopAbove = UINT64_MA
 // space left); else throws grotto::Error (input) naming the world's grid file:
 // before the work, not after.
 WorkMemory requireWorkFits(const World& world);
+
+// The world's memory budget, or the address space this process may still map if less.
+uint64_t budgetRoom(const World& world);
+// The budget's refusal: grotto::Error (input) naming the world's grid file, saying
+// "<needs>, more than the memory budget of B MiB" (or the address space left).
+[[noreturn]] void refuseOverBudget(const World& world, const std::string& needs);
+std::string mibText(uint64_t bytes);  // "12.3 MiB"
 
 }  // namespace grotto::voxel

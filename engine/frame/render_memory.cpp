@@ -24,6 +24,17 @@ RenderMemory estimateRenderMemory(const vk::Context& ctx, const FramePlan& plan)
     return r;
 }
 
+bool cpuDevice(const vk::Context& ctx) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(ctx.physical, &p);
+    return p.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+}
+
+uint64_t rendererHostBytes(const vk::Context& ctx, const FramePlan& plan) {
+    const RenderMemory r = estimateRenderMemory(ctx, plan);
+    return r.hostBytes + r.stagingBytes + (cpuDevice(ctx) ? r.targetBytes : 0);
+}
+
 uint64_t readbackHostBytes(const FramePlan& plan) {
     // FrameImages with AOVs: colour 16, depth, raw depth and ids 10, normal and
     // albedo 24, six AO AOVs 24, the shadow 4 bytes a pixel (and the motion 16 where
@@ -58,7 +69,7 @@ DeviceMemory deviceMemory(const vk::Context& ctx) {
         if (mp.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
             d.deviceHeap = std::max<uint64_t>(d.deviceHeap, mp.memoryHeaps[i].size);
     d.physical = uint64_t(sysconf(_SC_PHYS_PAGES)) * uint64_t(sysconf(_SC_PAGESIZE));
-    d.cpu = p.properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    d.cpu = cpuDevice(ctx);
     return d;
 }
 

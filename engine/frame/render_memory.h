@@ -21,6 +21,11 @@ struct RenderMemory {
 // device asks for it where it says beforehand (Vulkan 1.3: then exact), else at
 // texels x texel size (short of the driver's padding, 2 % at 333x177 on lavapipe).
 RenderMemory estimateRenderMemory(const vk::Context& ctx, const FramePlan& plan);
+// A CPU device (lavapipe): its memory is the host's.
+bool cpuDevice(const vk::Context& ctx);
+// What a renderer of this shape holds in host memory: a read-back with every AOV
+// and its staging, and on a CPU device the targets too.
+uint64_t rendererHostBytes(const vk::Context& ctx, const FramePlan& plan);
 // Host memory for a read-back with every AOV (FrameImages); needs no device.
 uint64_t readbackHostBytes(const FramePlan& plan);
 

@@ -1,11 +1,19 @@
 #include "engine/scene/live_scene.h"
 
+#include "engine/frame/render_memory.h"
+#include "engine/scene/scene_memory.h"
+#include "voxel/mesh_footprint.h"
+
 namespace grotto {
 
-LiveScene::LiveScene(vk::Context& ctx, voxel::World world)
-    : world_(std::move(world)),
-      mesh_(world_, {.coarseLevels = voxel::kMaxCoarseLevels}),
-      gpu_(uploadScene(ctx, mesh_.list(), world_.voxelSize(), world_.origin(), world_.desc())) {
+LiveScene::LiveScene(vk::Context& ctx, voxel::World world, uint64_t rendererBytes)
+    : world_(std::move(world)), mesh_(world_, {.coarseLevels = voxel::kMaxCoarseLevels}) {
+    const uint64_t meshBytes = voxel::measureMesh(mesh_).liveBytes;
+    // Uploaded from the mesh's own chunks, lent, not copied: the mesh is most of the peak.
+    gpu_ = mesh_.lend([&](std::span<const voxel::MeshChunkQuads> chunks) {
+        memoryEstimate_ = requireSceneFits(world_, meshBytes, chunks, rendererBytes, cpuDevice(ctx));
+        return uploadScene(ctx, chunks, world_.voxelSize(), world_.origin(), world_.desc());
+    });
     gpu_->occupancy = std::make_unique<GpuOccupancy>(ctx, world_);
 }
 

@@ -17,7 +17,10 @@ namespace grotto {
 
 class LiveScene {
 public:
-    LiveScene(vk::Context& ctx, voxel::World world);
+    // `rendererBytes`: what the renderer drawing it will hold in host memory
+    // (render_memory.h), for a .vox world's memory estimate, checked against its
+    // budget before the scene is uploaded (scene_memory.h).
+    LiveScene(vk::Context& ctx, voxel::World world, uint64_t rendererBytes = 0);
 
     // Throws grotto::Error (input) for an edit the world refuses; nothing changes then.
     voxel::EditResult apply(const voxel::Edit& edit);
@@ -25,6 +28,8 @@ public:
 
     const voxel::World& world() const { return world_; }
     const voxel::LiveMesh& mesh() const { return mesh_; }
+    // A .vox world's estimated peak memory with the renderer (scene_memory.h); else 0.
+    uint64_t memoryEstimate() const { return memoryEstimate_; }
     GpuScene& gpu() { return *gpu_; }
     // Built on first use (the reference needs it; rendering does not), then kept up to date.
     const voxel::BrickTable& bricks();
@@ -45,6 +50,7 @@ private:
     voxel::World world_;
     voxel::LiveMesh mesh_;
     std::unique_ptr<GpuScene> gpu_;
+    uint64_t memoryEstimate_ = 0;
     std::optional<voxel::BrickTable> bricks_;
     std::optional<LiveFaceCache> faceCache_;
 };

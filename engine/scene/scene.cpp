@@ -1,12 +1,16 @@
 #include "engine/scene/scene.h"
 
+#include "engine/scene/scene_memory.h"
+
 #include "grotto/error.h"
 #include "voxel/live_mesh.h"
+#include "voxel/mesh_footprint.h"
 #include "voxel/mesh.h"
 #include "voxel/world_desc.h"
 #include "shaders/shared/frame.h"
 
 #include <algorithm>
+#include <bit>
 #include <numeric>
 #include <string>
 
@@ -190,6 +194,45 @@ size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks) {
 
 size_t sceneBufferBytes(const voxel::Mesh& mesh) { return sceneBufferBytes(meshChunks(mesh)); }
 
+namespace {
+
+// A level's clusters: one a face for each block its quads lie in (placeLevel).
+uint64_t levelClusters(const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads) {
+    uint64_t clusters = 0;
+    uint32_t q = 0;
+    for (uint32_t f = 0; f < 6; ++f) {
+        uint64_t blocks = 0;  // 4^3 blocks a chunk
+        for (uint32_t end = q + faceCount[f]; q < end; ++q) blocks |= uint64_t(1) << (blockOf(quads[q]) & 63);
+        clusters += uint64_t(std::popcount(blocks));
+    }
+    return clusters;
+}
+
+}  // namespace
+
+size_t sceneHostBytes(std::span<const voxel::MeshChunkQuads> chunks) {
+    // Each level's clusters pushed back one by one.
+    auto level = [](const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads) {
+        return voxel::heapBytes(std::bit_ceil(levelClusters(faceCount, quads)) * sizeof(QuadCluster));
+    };
+    size_t n = voxel::heapBytes(chunks.size() * sizeof(GpuChunk));
+    for (const voxel::MeshChunkQuads& c : chunks) {
+        if (c.quads.empty()) continue;
+        n += voxel::heapBytes(std::bit_ceil(1 + c.coarser.size()) * sizeof(GpuLevel)) + level(c.faceCount, c.quads);
+        for (const voxel::MeshLevel& l : c.coarser) n += level(l.faceCount, l.quads);
+    }
+    return n;
+}
+
+uint64_t sceneClusters(std::span<const voxel::MeshChunkQuads> chunks) {
+    uint64_t n = 0;
+    for (const voxel::MeshChunkQuads& c : chunks) {
+        n += levelClusters(c.faceCount, c.quads);
+        for (const voxel::MeshLevel& l : c.coarser) n += levelClusters(l.faceCount, l.quads);
+    }
+    return n;
+}
+
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::MeshChunkQuads> chunks,
                                       double voxelSize, glm::dvec3 worldOrigin, const voxel::WorldDesc& desc) {
     auto scene = std::make_unique<GpuScene>(ctx);
@@ -207,17 +250,20 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::M
     const uint64_t capacity = bufferQuads(slotTotal(chunks));
     requireQuadRange(capacity);
     s.slots = QuadSlots(capacity);
-    std::vector<uint32_t> vertices(4 * capacity, 0u);  // spare room zeroed: never drawn
     s.chunks.reserve(order.size());
-    for (size_t i : order) {
-        const voxel::MeshChunkQuads& c = chunks[i];
-        const uint32_t size = slotQuads(slotContent(c));
-        const uint32_t first = uint32_t(*s.slots.allocate(size));  // consecutive: the buffer was sized for them all
-        s.chunks.push_back(placeChunk(c, s, first, size, vertices.data() + 4 * size_t(first)));
-        s.quadCount += c.quads.size();
-    }
-    s.vertices = vk::uploadBuffer(ctx, vertices.data(), vertices.size() * sizeof(uint32_t),
-                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
+    // Packed straight into the staging buffer: no third copy of the vertices at the peak.
+    s.vertices = vk::uploadBuffer(ctx, 4 * capacity * sizeof(uint32_t),
+                                  VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, [&](void* staging) {
+        uint32_t* vertices = static_cast<uint32_t*>(staging);
+        std::fill(vertices, vertices + 4 * capacity, 0u);  // spare room zeroed: never drawn
+        for (size_t i : order) {
+            const voxel::MeshChunkQuads& c = chunks[i];
+            const uint32_t size = slotQuads(slotContent(c));
+            const uint32_t first = uint32_t(*s.slots.allocate(size));  // consecutive: the buffer was sized for them all
+            s.chunks.push_back(placeChunk(c, s, first, size, vertices + 4 * size_t(first)));
+            s.quadCount += c.quads.size();
+        }
+    });
     s.indexQuads = largestDraw(chunks);
     const std::vector<uint32_t> indices = indexData(s.indexQuads);
     s.indices = vk::uploadBuffer(ctx, indices.data(), indices.size() * sizeof(uint32_t),
@@ -237,8 +283,8 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh,
 }
 
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::World& world) {
-    const voxel::LiveMesh mesh(world, {.coarseLevels = voxel::kMaxCoarseLevels});
-    auto scene = uploadScene(ctx, mesh.list(), world.voxelSize(), world.origin(), world.desc());
+    auto scene = uploadScene(ctx, voxel::LiveMesh(world, {.coarseLevels = voxel::kMaxCoarseLevels}).take(),
+                             world.voxelSize(), world.origin(), world.desc());
     scene->occupancy = std::make_unique<GpuOccupancy>(ctx, world);
     return scene;
 }

@@ -111,5 +111,8 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::World& worl
 // spare room, before allocator rounding), without a device: for `grotto info`.
 size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks);
 size_t sceneBufferBytes(const voxel::Mesh& mesh);
+// What uploadScene keeps in host memory beside them (the chunks, their levels and
+// clusters), at the capacities they grow to.
+size_t sceneHostBytes(std::span<const voxel::MeshChunkQuads> chunks);
 
 }  // namespace grotto

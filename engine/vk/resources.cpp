@@ -99,10 +99,20 @@ void destroy(Context& ctx, Image& i) {
 }
 
 Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage) {
+    return uploadBuffer(ctx, size, usage, [&](void* staging) { std::memcpy(staging, data, size); });
+}
+
+Buffer uploadBuffer(Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, const std::function<void(void*)>& fill) {
     Buffer dst = createBuffer(ctx, size, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
     if (size == 0) return dst;
     Buffer staging = createBuffer(ctx, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
-    std::memcpy(staging.mapped(), data, size);
+    try {
+        fill(staging.mapped());
+    } catch (...) {
+        destroy(ctx, staging);
+        destroy(ctx, dst);
+        throw;
+    }
     ctx.submitAndWait([&](VkCommandBuffer cmd) {
         VkBufferCopy region{.size = size};
         vkCmdCopyBuffer(cmd, staging.buffer, dst.buffer, 1, &region);

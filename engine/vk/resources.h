@@ -3,6 +3,7 @@
 #include "engine/vk/context.h"
 
 #include <cstddef>
+#include <functional>
 
 namespace grotto::vk {
 
@@ -34,6 +35,9 @@ void destroy(Context& ctx, Image& i);
 
 // Device-local buffer filled from host data through a staging buffer.
 Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
+// The same, `fill` writing the data straight into the staging buffer (`size`
+// bytes): no copy of it built first on the host.
+Buffer uploadBuffer(Context& ctx, VkDeviceSize size, VkBufferUsageFlags usage, const std::function<void(void*)>& fill);
 
 // One image memory barrier (whole image) between two layouts and stages.
 void transition(VkCommandBuffer cmd, const Image& image, VkImageLayout from, VkImageLayout to,
