@@ -85,6 +85,9 @@ void addRenderCommand(CLI::App& app) {
         voxel::World world = voxel::World::load(args->world);
         const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         AoOptions ao = resolveAo(world, args->ao);
+        // The engine's error would name the AOV; the command line names the flag, before any frame.
+        if (args->show == kBentNormalAov && !(ao.enabled && ao.method == AoMethod::Vbao))
+            throw Error("--show", "bent_normal is VBAO's", "render with --ao vbao");
         const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao, world.desc());
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
