@@ -9,13 +9,13 @@
 #include "app/ao_cost.h"
 #include "app/bench_edits.h"
 #include "app/bench_scene_update.h"
+#include "app/command_session.h"
 #include "app/commands.h"
 #include "app/cost_difference.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "common/elapsed.h"
 #include "grotto/error.h"
-#include "engine/frame/render_memory.h"
 #include "engine/session.h"
 #include "voxel/world.h"
 
@@ -64,7 +64,6 @@ void addBenchCommand(CLI::App& app) {
         const AoOptions ao = resolveAo(world, args->ao);
 
         vk::Context ctx;
-        requireRenderFits(ctx, planWorldFrame(world.desc(), size.width, size.height, ao), "--size");
         const size_t quadCount = mesh.quads.size();
         const std::optional<voxel::MeshChunkQuads> busiest = busiestChunk(mesh);
         mesh = {};  // the GPU holds the quads now
@@ -73,11 +72,8 @@ void addBenchCommand(CLI::App& app) {
         uint64_t drawn = 0;
         size_t targetBytes = 0;
         const voxel::Lighting light = world.desc().lighting;
-        const voxel::Detail detail = resolveDetail(world, args->ao);
         // With levels of detail and the occupancy rays need, and the objects.
-        std::optional<RenderSession> session;
-        session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
-        prepareFaceCache(*session, args->ao);
+        std::unique_ptr<RenderSession> session = commandSession(ctx, std::move(world), ao, args->ao, size);
         std::optional<CacheCarveFigures> cacheCarve;
         GpuScene& scene = session->scene().gpu();
         {

@@ -5,11 +5,11 @@
 // with the world's levels of detail and culling, or --lod-bias and
 // --occlusion-culling; the reference always from the exact voxels.
 #include "app/ao_measure.h"
+#include "app/command_session.h"
 #include "app/commands.h"
 #include "app/options.h"
 #include "grotto/error.h"
 #include "engine/lab/reference_view.h"
-#include "engine/frame/render_memory.h"
 #include "voxel/face_cache_lookup.h"
 
 #include <algorithm>
@@ -96,12 +96,9 @@ void addCompareCommand(CLI::App& app) {
         // The reference's R is the radius the method is given, before GTAO's multiplier.
         const double radius = double(ao.estimator.radius);
         vk::Context ctx;
-        requireRenderFits(ctx, planWorldFrame(loaded.desc(), size.width, size.height, ao), "--size");  // before minutes of tracing
         const voxel::Detail detail = resolveDetail(loaded, args->ao);
-        // The world and its objects at time 0, drawn and traced alike.
-        std::optional<RenderSession> session;
-        session.emplace(ctx, std::move(loaded), ao, detail, size.width, size.height);
-        prepareFaceCache(*session, args->ao);
+        // The world and its objects at time 0, drawn and traced alike; refused before minutes of tracing.
+        std::unique_ptr<RenderSession> session = commandSession(ctx, std::move(loaded), ao, args->ao, size);
         const voxel::World& world = session->world();
         const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx, session->posedObjects());
         requireSurface(ref, world, args->camera);

@@ -17,6 +17,7 @@
 // frame number as frames are written (app/flythrough_dir.h). Every input is
 // checked before DIR is touched. Frames are read back and written while the
 // next ones render (app/frame_writer.h).
+#include "app/command_session.h"
 #include "app/commands.h"
 #include "app/flythrough_dir.h"
 #include "app/frame_names.h"
@@ -177,12 +178,10 @@ void run(const Args& a) {
         throw Error("--aovs", "bent_normal is VBAO's", "add --ao vbao, or leave bent_normal out");
     vk::Context ctx;
     const FramePlan plan = planWorldFrame(world.desc(), size.width, size.height, ao);
-    requireRenderFits(ctx, plan, "--size");
     const voxel::CameraDesc lens = world.camera("", size.aspect());
-    std::optional<RenderSession> session;
-    session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
     const bool bakeGiven = !a.ao.bake.empty();
-    if (bakeGiven) prepareFaceCache(*session, a.ao);  // refused (not this world's, damaged) before the directory is touched
+    // A bake given is refused (not this world's, damaged) before the directory is touched.
+    std::unique_ptr<RenderSession> session = commandSession(ctx, std::move(world), ao, a.ao, size, bakeGiven);
     json manifest = runManifest(a, desc, ao, detail, names, encoding);
     if (bakeGiven) manifest["bake"] = bakeManifest(*session);
 

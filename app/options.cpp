@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -179,24 +178,6 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
     if (!f.bake.empty())
         voxel::requireBakeOf(world, double(o.estimator.radius), voxel::countExposedFaces(world).faces, f.bake);
     return o;
-}
-
-void prepareFaceCache(RenderSession& session, const AoFlags& flags) {
-    if (!flags.bake.empty()) {
-        session.loadFaceCache(flags.bake);
-        return;
-    }
-    if (!faceCached(session.ao())) return;
-    if (flags.progressive) {
-        session.setProgressiveFaceCache(true);
-        session.startFaceCache();
-        return;
-    }
-    std::fprintf(stderr, "baking the face cache (no --bake given; grotto bake writes one for every run)...\n");
-    const auto start = std::chrono::steady_clock::now();
-    session.bakeFaceCache();
-    std::fprintf(stderr, "baked %zu faces in %.1f s\n", session.scene().faceCache()->faces().size(),
-                 std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }
 
 nlohmann::json aoSettingsJson(const AoOptions& ao) {

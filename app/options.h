@@ -78,12 +78,6 @@ voxel::AoDesc aoDescWithFlags(const voxel::AoDesc& world, const AoFlags& flags);
 // and for a --bake whose header is not this world's (voxel::requireBakeOf).
 AoOptions resolveAo(const voxel::World& world, const AoFlags& flags);
 
-// --ao cache's light for the session's world: the --bake file (refused, naming the
-// file and field, when it is not this world's or these settings'), with
-// --progressive none (the GPU traces the faces in view as frames go), or else a
-// bake made here on every core, announced on stderr. Nothing for other methods.
-void prepareFaceCache(RenderSession& session, const AoFlags& flags);
-
 // The world file's "detail" block, then --lod-bias and --occlusion-culling.
 voxel::Detail resolveDetail(const voxel::World& world, const AoFlags& flags);
 nlohmann::json detailJson(const voxel::Detail& detail);  // the settings table's manifest keys

@@ -1,13 +1,12 @@
 // grotto render WORLD [--camera NAME] [--size WxH] [--aov] [--accumulate N] -o FILE
 // A still: the camera rendered N times with consecutive frame indices, so the
 // temporal pass averages N frames of GTAO noise, and the last frame written.
+#include "app/command_session.h"
 #include "app/commands.h"
 #include "app/options.h"
 #include "common/atomic_file.h"
 #include "grotto/error.h"
 #include "engine/image_output.h"
-#include "engine/frame/render_memory.h"
-#include "engine/session.h"
 #include "voxel/world.h"
 
 #include <algorithm>
@@ -86,23 +85,23 @@ void addRenderCommand(CLI::App& app) {
         voxel::World world = voxel::World::load(args->world);
         const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         AoOptions ao = resolveAo(world, args->ao);
+        // The engine's error would name the AOV; the command line names the flag, before any frame.
+        if (args->show == kBentNormalAov && !(ao.enabled && ao.method == AoMethod::Vbao))
+            throw Error("--show", "bent_normal is VBAO's", "render with --ao vbao");
         const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao, world.desc());
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;
-        requireRenderFits(ctx, planWorldFrame(world.desc(), size.width, size.height, ao), "--size");
-        const voxel::Detail detail = resolveDetail(world, args->ao);
         uint32_t rendered = 0;
         {
-            RenderSession session(ctx, std::move(world), ao, detail, size.width, size.height);
-            if (const uint64_t bytes = session.memoryEstimate())  // .vox worlds (engine/scene/scene_memory.h)
+            const std::unique_ptr<RenderSession> session = commandSession(ctx, std::move(world), ao, args->ao, size);
+            if (const uint64_t bytes = session->memoryEstimate())  // .vox worlds (engine/scene/scene_memory.h)
                 std::printf("memory: an estimated %.1f MiB to load, mesh and render (budget %zu MiB)\n",
-                            double(bytes) / (1 << 20), session.world().desc().memoryBudgetBytes >> 20);
-            prepareFaceCache(session, args->ao);
-            session.setTime(args->time);  // the objects, held for every frame
-            Renderer& renderer = session.renderer();
+                            double(bytes) / (1 << 20), session->world().desc().memoryBudgetBytes >> 20);
+            session->setTime(args->time);  // the objects, held for every frame
+            Renderer& renderer = session->renderer();
             for (; rendered < frames; ++rendered) renderer.render(camera, rendered);
             // --progressive: on until a frame finds no face in view left to trace.
-            while (args->ao.progressive && rendered < kMaxProgressiveFrames && !session.faceCacheConverged())
+            while (args->ao.progressive && rendered < kMaxProgressiveFrames && !session->faceCacheConverged())
                 renderer.render(camera, rendered++);
             const FrameImages frame = renderer.readback(camera, aovs);
             if (!args->show.empty())

@@ -14,6 +14,7 @@
 // image under 8x8. A path with an "edits" track has them applied at their times;
 // the pixels near each edit are measured against references traced on the world
 // before and after it (engine/lab/edit_metrics.h): error, stale share and recovery.
+#include "app/command_session.h"
 #include "app/commands.h"
 #include "app/cost_difference.h"
 #include "app/options.h"
@@ -22,7 +23,6 @@
 #include "common/atomic_file.h"
 #include "grotto/error.h"
 #include "engine/camera_path.h"
-#include "engine/frame/render_memory.h"
 #include "engine/lab/edit_metrics.h"
 #include "engine/session.h"
 
@@ -112,13 +112,9 @@ void addStabilityCommand(CLI::App& app) {
         const json baseline = args->baseline.empty() ? json() : loadBaseline(args->baseline, run);
 
         vk::Context ctx;
-        requireRenderFits(ctx, planWorldFrame(world.desc(), size.width, size.height, ao), "--size");
         // The path's edits due before the first frame measured are the world it starts from.
         const voxel::CameraDesc lens = world.camera("", size.aspect());
-        const voxel::Detail detail = resolveDetail(world, args->ao);
-        std::optional<RenderSession> session;
-        session.emplace(ctx, std::move(world), ao, detail, size.width, size.height);
-        prepareFaceCache(*session, args->ao);
+        std::unique_ptr<RenderSession> session = commandSession(ctx, std::move(world), ao, args->ao, size);
         session->playPath(pathDesc, lens);
         session->startPathAt(double(first - 1) / args->fps);
         const StabilityFigures m =

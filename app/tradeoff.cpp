@@ -5,13 +5,13 @@
 // bias instead, against the exact voxels (bias 0; docs/detail.md). One row per
 // world x bias.
 #include "app/ao_measure.h"
+#include "app/command_session.h"
 #include "app/commands.h"
 #include "app/options.h"
 #include "app/tradeoff_plot.h"
 #include "common/atomic_file.h"
 #include "grotto/error.h"
 #include "engine/lab/reference_view.h"
-#include "engine/frame/render_memory.h"
 #include "voxel/face_cache_file.h"
 
 #include <algorithm>
@@ -311,10 +311,10 @@ void addTradeoffCommand(CLI::App& app) {
             // R is GTAO's radius before its multiplier, as for `grotto reference`.
             const AoOptions worldAo = resolveAo(loaded, {});
             const double radius = double(worldAo.estimator.radius);
-            requireRenderFits(ctx, planWorldFrame(loaded.desc(), size.width, size.height, worldAo), "--size");  // before minutes of tracing
             const voxel::Detail detail = resolveDetail(loaded, args->detail);
-            // The world and its objects at time 0, drawn and traced alike.
-            RenderSession session(ctx, std::move(loaded), worldAo, detail, size.width, size.height);
+            // The world and its objects at time 0, drawn and traced alike; refused before minutes of tracing.
+            const std::unique_ptr<RenderSession> owned = commandSession(ctx, std::move(loaded), worldAo, args->detail, size, false);
+            RenderSession& session = *owned;
             const voxel::World& world = session.world();
             const ReferenceView ref = referenceView(world, camera, radius, uint32_t(args->spp), &ctx, session.posedObjects());
             requireSurface(ref, world, args->camera);

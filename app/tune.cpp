@@ -5,10 +5,10 @@
 // RMSE over the worlds (docs/tuning.md). Temporal accumulation off, one frame each, so
 // the fit sees the estimator and the spatial chain, not history.
 #include "app/ao_measure.h"
+#include "app/command_session.h"
 #include "app/commands.h"
 #include "app/options.h"
 #include "grotto/error.h"
-#include "engine/frame/render_memory.h"
 #include "voxel/settings_table.h"
 
 #include <cstdio>
@@ -86,10 +86,7 @@ void addTuneCommand(CLI::App& app) {
         for (const voxel::World& world : worlds) {
             Target t{world.desc().source.stem().string(), &world,
                      worldCamera(world, args->camera, size.width, size.height), {}, {}};
-            requireRenderFits(ctx, planWorldFrame(world.desc(), size.width, size.height, resolveAo(world, {})),
-                              "--size");  // before minutes of tracing
-            t.session = std::make_unique<RenderSession>(ctx, world, resolveAo(world, {}), resolveDetail(world, {}),
-                                                        size.width, size.height);
+            t.session = commandSession(ctx, world, resolveAo(world, {}), {}, size, false);  // refused before minutes of tracing
             t.reference = referenceView(world, t.camera, double(resolveAo(world, {}).estimator.radius), uint32_t(args->spp),
                                         &ctx, t.session->posedObjects());
             requireSurface(t.reference, world, args->camera);

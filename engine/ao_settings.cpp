@@ -46,7 +46,7 @@ uint32_t voxelRaysPreset(AoMethod method, const std::string& quality) {
 voxel::EstimatorSettings estimatorPreset(const std::string& quality, double radius) {
     const voxel::AoPreset* p = findPreset(quality);
     if (!p)
-        throw Error("--quality", "unknown quality '" + quality + "'",
+        throw Error("AO quality", "unknown quality '" + quality + "'",
                     "accepted: " + acceptedText(voxel::setting("ao.quality")));
     voxel::EstimatorSettings s;
     s.radius = float(radius);

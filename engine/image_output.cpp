@@ -102,10 +102,10 @@ std::vector<float> aovDisplay(const FrameImages& f, const std::string& which) {
         else if (which == "temporal") v = glm::vec3(valueOr(f.aoTemporal, i, 1.0f));
         else if (which == "history") v = glm::vec3(valueOr(f.aoHistory, i, 1.0f) / 64.0f);  // the longest history is 64
         else if (which == kBentNormalAov) {
-            if (f.bentNormal.empty()) throw Error("--show", "bent_normal is VBAO's", "render with --ao vbao");
+            if (f.bentNormal.empty()) throw Error("AOV", "bent_normal is VBAO's", "render with AO method vbao");
             v = sky ? v : glm::vec3(f.bentNormal[3 * i], f.bentNormal[3 * i + 1], f.bentNormal[3 * i + 2]) * 0.5f + 0.5f;
         }
-        else throw Error("--show", "unknown AOV '" + which + "'", "accepted: " + std::string(kShownAovs));
+        else throw Error("AOV", "unknown AOV '" + which + "'", "accepted: " + std::string(kShownAovs));
         for (int c = 0; c < 3; ++c) out[4 * i + c] = srgbToLinear(std::clamp(v[c], 0.0f, 1.0f));
     }
     return out;
@@ -223,7 +223,7 @@ void writeExr(const std::filesystem::path& path, const FrameImages& f, const Cam
         throw Error::internal(path.string(), "an unknown or repeated EXR AOV layer was asked for");
     if (!layers.empty() && f.depth.empty()) throw Error::internal(path.string(), "AOV layers of a frame read back without AOVs");
     if (std::find(e.exrAovs.begin(), e.exrAovs.end(), kBentNormalAov) != e.exrAovs.end() && f.bentNormal.empty())
-        throw Error("--aovs", "bent_normal is VBAO's", "render with --ao vbao, or leave bent_normal out");
+        throw Error(path.string(), "the bent_normal layer is VBAO's", "render with AO method vbao, or leave bent_normal out");
     std::vector<std::string> names = {"R", "G", "B", "A"};
     for (const Layer& layer : layers) names.insert(names.end(), layer.channels.begin(), layer.channels.end());
     const int channels = int(names.size());

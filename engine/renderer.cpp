@@ -138,11 +138,11 @@ void Renderer::setLighting(const voxel::Lighting& lighting) {
 
 void Renderer::requireOccupancy(const AoOptions& ao) const {
     if ((ao.enabled && tracesVoxels(ao.method) || voxelThickness(ao) || faceCached(ao)) && !scene_.occupancy)
-        throw Error("AO settings", std::string("--ao ") + aoMethodName(ao.method) + " traces the world's voxels",
+        throw Error("AO settings", std::string("AO method '") + aoMethodName(ao.method) + "' traces the world's voxels",
                     "upload the scene from its world (uploadScene(ctx, world)), not from a mesh alone");
     if (faceCached(ao) && !scene_.faceCache)
-        throw Error("AO settings", "--ao cache reads the light cached on the world's faces, and there is none",
-                    "load a bake of the world (--bake FILE from grotto bake) or bake it first");
+        throw Error("AO settings", "AO method 'cache' reads the light cached on the world's faces, and no face cache is loaded",
+                    "load a bake of the world (made by grotto bake) or bake it first");
 }
 
 void Renderer::setAo(const AoOptions& ao) {

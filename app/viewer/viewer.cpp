@@ -7,6 +7,7 @@
 #include "grotto/error.h"
 #include "common/printable.h"
 #include "engine/image_output.h"
+#include "engine/session_setup.h"
 #include "voxel/world.h"
 
 #include <GLFW/glfw3.h>
@@ -43,14 +44,12 @@ Viewer::Viewer(const ViewOptions& o)
     desc_.detail = app::resolveDetail(loaded_, o.ao);
     renderScale_ = o.renderScale;
     renderSize_ = scaled(window_.framebufferSize());
-    session_ = std::make_unique<RenderSession>(ctx_, std::move(loaded_), ao, desc_.detail, renderSize_.width,
-                                               renderSize_.height);
+    session_ = openSession(ctx_, std::move(loaded_),
+                           {.ao = ao, .detail = desc_.detail, .width = renderSize_.width, .height = renderSize_.height},
+                           "image size");
     // The viewer never waits for a bake: without --bake the GPU traces the faces
     // in view as frames go, now and whenever the cache is needed anew.
-    session_->setProgressiveFaceCache(true);
-    app::AoFlags cacheFlags = o.ao;
-    cacheFlags.progressive = cacheFlags.bake.empty();
-    app::prepareFaceCache(*session_, cacheFlags);
+    readyFaceCache(*session_, {.bake = o.ao.bake, .progressive = true});
     renderer().setDisplayImage(true);  // the final view: the colour through the tone map
     const voxel::World& world = session_->world();
     presenter_ = std::make_unique<Presenter>(ctx_, window_.framebufferSize(), o.vsync);

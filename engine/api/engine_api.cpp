@@ -6,7 +6,7 @@
 #include "engine/camera.h"
 #include "engine/camera_path.h"
 #include "engine/image_output.h"
-#include "engine/session.h"
+#include "engine/session_setup.h"
 #include "voxel/world_json.h"
 
 #include <optional>
@@ -15,7 +15,7 @@ namespace grotto {
 
 struct Engine::Impl {
     std::unique_ptr<vk::Context> ctx;
-    std::optional<RenderSession> session;  // its renderer is made on the first frame, kept across settings changes
+    std::unique_ptr<RenderSession> session;  // its renderer is made on the first frame, kept across settings changes
     std::vector<voxel::ObjectPose> poses;
     std::vector<bool> added;  // per object: added by the game (saved as a grid of its own)
     CameraDesc camera;
@@ -107,8 +107,10 @@ void Engine::Impl::setWorld(voxel::World world) {
     aoDesc = world.desc().ao;
     const voxel::Detail detail = world.desc().detail;
     // A game may move, add and remove any object: motion vectors for all.
-    session.emplace(*ctx, std::move(world), ao, detail, width, height, true);
-    session->setProgressiveFaceCache(true);  // a game never waits for a bake: the GPU traces what comes into view
+    session = openSession(*ctx, std::move(world),
+                          {.ao = ao, .detail = detail, .width = width, .height = height, .objectsMayMove = true},
+                          "image size");
+    readyFaceCache(*session, {.progressive = true});  // a game never waits for a bake: the GPU traces what comes into view
     poses = session->poses();
     added.assign(poses.size(), false);
     last.reset();
