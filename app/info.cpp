@@ -4,6 +4,7 @@
 #include "common/plural.h"
 #include "common/printable.h"
 #include "engine/scene/scene.h"
+#include "voxel/emitters.h"
 #include "voxel/face_bake.h"
 #include "voxel/face_cache_layout.h"
 #include "voxel/live_mesh.h"
@@ -40,6 +41,22 @@ std::string objectMotion(const voxel::ObjectDesc& o) {
         std::snprintf(line, sizeof line, "still at (%g %g %g)", o.keys.front().position.x, o.keys.front().position.y,
                       o.keys.front().position.z);
     return line;
+}
+
+// The glowing materials as lights, and all of them together (docs/lighting.md, "Units").
+void printEmitters(const std::vector<voxel::Emitter>& emitters) {
+    if (emitters.empty()) {
+        std::printf("emitters       none (no material that glows shows a face)\n");
+        return;
+    }
+    glm::dvec3 total(0.0);
+    for (const voxel::Emitter& e : emitters) {
+        const glm::dvec3 p = e.power();
+        total += p;
+        std::printf("emitter        material %d: radiance (%g %g %g) over %g square units, power (%g %g %g)\n",
+                    e.material, e.radiance.r, e.radiance.g, e.radiance.b, e.area, p.r, p.g, p.b);
+    }
+    std::printf("emitters       %zu materials, total power (%g %g %g)\n", emitters.size(), total.r, total.g, total.b);
 }
 
 }  // namespace
@@ -131,12 +148,17 @@ void addInfoCommand(CLI::App& app) {
                 ++unused;
                 continue;
             }
-            std::printf("material %-5zu %s: albedo (%g %g %g), %s\n", i + 1, printable(m.name).c_str(), m.albedo.r,
-                        m.albedo.g, m.albedo.b, counted(voxels, "voxel").c_str());
+            char glow[96] = "";
+            if (m.emits())
+                std::snprintf(glow, sizeof glow, ", emits (%g %g %g) x %g", m.emissionColor.r, m.emissionColor.g,
+                              m.emissionColor.b, m.emissionIntensity);
+            std::printf("material %-5zu %s: albedo (%g %g %g)%s, %s\n", i + 1, printable(m.name).c_str(), m.albedo.r,
+                        m.albedo.g, m.albedo.b, glow, counted(voxels, "voxel").c_str());
         }
         if (unused)
             std::printf("materials      %zu used; the palette holds %zu more that no voxel uses (not listed)\n",
                         d.materials.size() - unused, unused);
+        printEmitters(voxel::emitters(w, objects));
     });
 }
 

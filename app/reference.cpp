@@ -2,8 +2,10 @@
 // The ray-traced reference AO from the G-buffer's own surface points (docs/reference.md).
 // Its last line says whether every pixel's standard error met the target (0.005,
 // or E); with --require-stderr a miss exits 3, the EXR written all the same.
+// With --light full, the path-traced light of the view instead (reference_light.cpp).
 #include "app/commands.h"
 #include "app/options.h"
+#include "app/reference_light.h"
 #include "common/atomic_file.h"
 #include "grotto/error.h"
 #include "voxel/object_worlds.h"
@@ -34,6 +36,8 @@ void addReferenceCommand(CLI::App& app) {
         std::optional<double> requireStderr;
         double time = 0.0;
         AoFlags ao;
+        std::string light = "ao";
+        std::optional<int64_t> bounces;
     };
     auto args = std::make_shared<Args>();
     CLI::App* cmd = app.add_subcommand("reference", "Ray-trace the reference AO of a view to an EXR (AO, AO_stderr)");
@@ -46,6 +50,12 @@ void addReferenceCommand(CLI::App& app) {
     cmd->add_option("-o,--output", args->output, "Output .exr")->required();
     cmd->add_option("--time", args->time, "Seconds: where the world's objects are (their keys)")
         ->capture_default_str()->check(finiteRange(0.0, 1e9));
+    cmd->add_option("--light", args->light,
+                    "ao: the reference AO (channels AO, AO_stderr); full: the path-traced light, radiance R G B "
+                    "with every bounce, sky, sun and glowing materials (docs/reference.md)")
+        ->capture_default_str()->check(CLI::IsMember({"ao", "full"}));
+    cmd->add_option("--bounces", args->bounces,
+                    "--light full: bounces at most (0: direct light only; default: every bounce)");
     cmd->add_option("--require-stderr", args->requireStderr,
                     "Exit 3 when a pixel's standard error is above E (the target is 0.005 without it)")
         ->check(finiteRange(1e-6, 1.0));
@@ -57,9 +67,24 @@ void addReferenceCommand(CLI::App& app) {
         const std::filesystem::path out = args->output;
         if (imageFormatFor(out) != ImageFormat::Exr)
             throw Error(out.string(), "the reference needs an .exr output", "it holds the float channels AO and AO_stderr");
+        if (args->bounces && args->light != "full")
+            throw Error("--bounces", "applies to --light full only", "add --light full, or leave --bounces out");
+        if (args->bounces && (*args->bounces < 0 || *args->bounces > 1000000))
+            throw Error("--bounces", std::to_string(*args->bounces) + " is out of range", "accepted: 0 to 1000000");
+        if (args->light == "full" && args->ao.set.radius)
+            throw Error("--radius", "applies to --light ao only", "the light's paths have no radius");
         requireOutputPath(out);
         const voxel::World world = voxel::World::load(args->world);
         const Camera camera = worldCamera(world, args->camera, size.width, size.height);
+        if (args->light == "full") {
+            const std::vector<voxel::World> objects = voxel::loadObjectWorlds(world.desc());
+            const auto posed = voxel::posedWorlds(objects, voxel::objectPoses(world.desc().objects, args->time));
+            voxel::PathTraceSettings settings;
+            settings.spp = spp;
+            if (args->bounces) settings.maxBounces = uint32_t(*args->bounces);
+            writeLightReference(out, world, camera, settings, posed, args->requireStderr);
+            return;
+        }
         // R is the radius GTAO is given (before its radius multiplier), so both measure the same thing.
         const double radius = double(resolveAo(world, args->ao).estimator.radius);
 

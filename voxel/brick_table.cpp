@@ -139,7 +139,10 @@ double BrickTable::leaveRange(glm::dvec3 p, glm::dvec3 d) const {
 
 // Amanatides & Woo per voxel inside occupied bricks; an empty brick is crossed in
 // one step by advancing every axis's crossing count to where the ray leaves it.
-bool BrickTable::hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const {
+// With `hit`, the voxel entered, the distance and the axis crossed into it are
+// kept (only a caller that needs them pays for tracking them).
+template <bool kRecord>
+bool BrickTable::walk(glm::dvec3 p, glm::dvec3 d, double tMax, BrickHit* hit) const {
     // Past the table's range nothing is solid: the walk ends where the ray leaves
     // it, so a radius of any length costs the world's size at most.
     tMax = std::min(tMax, leaveRange(p, d));
@@ -158,6 +161,8 @@ bool BrickTable::hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const {
     glm::ivec3 brick = cell >> 3;
     uint32_t b = find(brick);
     bool first = true;
+    [[maybe_unused]] double tEnter = 0.0;
+    [[maybe_unused]] int axis = 0;
     while (true) {
         if (b == 0) {
             // An empty brick: move every axis to where the ray leaves it, at once.
@@ -182,12 +187,17 @@ bool BrickTable::hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const {
             brick[e] += step[e];
             b = find(brick);
             first = false;
+            if constexpr (kRecord) tEnter = tE, axis = e;
             continue;
         }
-        if (!first && solid(b, cell)) return true;
+        if (!first && solid(b, cell)) {
+            if constexpr (kRecord) *hit = {tEnter, cell, axis * 2 + (step[axis] > 0 ? 1 : 0)};
+            return true;
+        }
         first = false;
         const int a = tNext.x < tNext.y ? (tNext.x < tNext.z ? 0 : 2) : (tNext.y < tNext.z ? 1 : 2);
         if (tNext[a] > tMax) return false;
+        if constexpr (kRecord) tEnter = tNext[a], axis = a;
         cell[a] += step[a];
         tNext[a] += tDelta[a];
         if ((cell[a] & 7) == (step[a] > 0 ? 0 : 7)) {
@@ -195,6 +205,16 @@ bool BrickTable::hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const {
             b = find(brick);
         }
     }
+}
+
+bool BrickTable::hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const {
+    return walk<false>(p, d, tMax, nullptr);
+}
+
+std::optional<BrickHit> BrickTable::firstHit(glm::dvec3 p, glm::dvec3 d, double tMax) const {
+    BrickHit hit;
+    if (!walk<true>(p, d, tMax, &hit)) return std::nullopt;
+    return hit;
 }
 
 }  // namespace grotto::voxel

@@ -5,10 +5,18 @@
 #include "voxel/world.h"
 
 #include <cstdint>
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
 namespace grotto::voxel {
+
+// The first solid voxel a ray enters.
+struct BrickHit {
+    double t = 0.0;        // along the ray, in voxels (the ray's direction is unit length)
+    glm::ivec3 voxel{0};
+    int face = 0;          // entered through: 0..5 = +X -X +Y -Y +Z -Z (World::raycast's order)
+};
 
 class BrickTable {
 public:
@@ -36,6 +44,8 @@ public:
     // as open: it is the empty cell in front of a visible face, and at concave
     // edges rounding may put p a hair inside the neighbouring voxel.
     bool hitWithin(glm::dvec3 p, glm::dvec3 d, double tMax) const;
+    // The same walk, telling where: the first solid voxel entered at t <= tMax.
+    std::optional<BrickHit> firstHit(glm::dvec3 p, glm::dvec3 d, double tMax) const;
     // Beyond which t (plus a margin) the ray from p along d is past the table's
     // brick range for good; -1 when it never enters it.
     double leaveRange(glm::dvec3 p, glm::dvec3 d) const;
@@ -43,6 +53,8 @@ public:
     bool dense() const { return !dense_.empty(); }
 
 private:
+    template <bool kRecord>
+    bool walk(glm::dvec3 p, glm::dvec3 d, double tMax, BrickHit* hit) const;
     // Re-lays the index over the brick range [lo, lo + dims), keeping every mask.
     void reshape(glm::ivec3 lo, glm::ivec3 dims);
     void setIndex(glm::ivec3 brick, uint32_t index);

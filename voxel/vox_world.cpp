@@ -30,6 +30,17 @@ float linearFromSrgb(uint8_t byte) {
     return float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
 }
 
+// MagicaVoxel's emitters glow in their palette colour. It publishes no scale for
+// its sliders, so ours: radiance = colour x _emit x 2^_flux (Power 0 to 4: 1x to
+// 16x). _ldr tints only MagicaVoxel's own image of the glow and lights nothing,
+// so it is not read.
+void setVoxEmission(const VoxMaterial& vox, Material& m) {
+    if (vox.type != "_emit" || !(vox.emit > 0.0f)) return;
+    const double flux = std::clamp(double(vox.flux), 0.0, 16.0);
+    m.emissionColor = m.albedo;
+    m.emissionIntensity = float(std::min(double(vox.emit) * std::exp2(flux), kMaxEmissionIntensity));
+}
+
 }  // namespace
 
 std::vector<Material> voxMaterials(const VoxScene& scene) {
@@ -43,6 +54,7 @@ std::vector<Material> voxMaterials(const VoxScene& scene) {
         const std::string& type = scene.materials[size_t(c)].type;
         m.name = "colour " + std::to_string(c) + (type.empty() || type == "_diffuse" ? "" : " (" + type.substr(1) + ")");
         m.albedo = {linearFromSrgb(colour.r), linearFromSrgb(colour.g), linearFromSrgb(colour.b)};
+        setVoxEmission(scene.materials[size_t(c)], m);
         materials.push_back(m);
     }
     return materials;

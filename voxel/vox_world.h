@@ -15,7 +15,9 @@ bool isVoxFile(const std::filesystem::path& path);
 
 // Materials 1 .. the highest colour index any visible voxel uses: material k is
 // colour index k, its albedo the palette's colour made linear (MagicaVoxel's
-// palette is sRGB). MATL properties are not modelled; the name says the type.
+// palette is sRGB). An _emit material glows in its colour (vox_world.cpp says
+// how _emit and _flux scale it); the other MATL properties are not modelled, and
+// the name says the type.
 std::vector<Material> voxMaterials(const VoxScene& scene);
 
 }  // namespace grotto::voxel

@@ -164,6 +164,11 @@ WorldDesc parseWorld(const fs::path& file, const json& doc) {
             mat.name = mr.string("name", "material" + std::to_string(i + 1));
             mat.albedo = glm::vec3(mr.vec3("albedo", glm::dvec3(mat.albedo), 0.0, 1.0, Reader::kChannels));
             mat.ao = float(mr.number("ao", mat.ao, 0.0, 1.0));
+            if (mr.has("emission")) {
+                Reader er = mr.child("emission");
+                mat.emissionColor = glm::vec3(er.vec3("color", glm::dvec3(mat.emissionColor), 0.0, 1.0, Reader::kChannels));
+                mat.emissionIntensity = float(er.number("intensity", 1.0, 0.0, kMaxEmissionIntensity));
+            }
             w.materials.push_back(mat);
         }
     }

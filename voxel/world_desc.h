@@ -78,5 +78,9 @@ WorldDesc loadWorldDesc(const std::filesystem::path& path);
 
 // The palette used when a world names none: stone, grass, wood, brick, ...
 std::vector<Material> defaultMaterials();
+// A material's emission intensity at most: radiance in the sun's and sky's scale
+// (the default sun lights a face turned to it as a surface glowing at 1 would),
+// far past any lamp and still in a float's range after any sum of them.
+inline constexpr double kMaxEmissionIntensity = 1e5;
 
 }  // namespace grotto::voxel

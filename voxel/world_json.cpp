@@ -153,8 +153,12 @@ json worldFileJson(const WorldDesc& d, const fs::path& dir) {
     json j = {{"grid", gridBlock(d, dir)}};
     if (!d.materials.empty()) {
         j["materials"] = json::array();
-        for (const Material& m : d.materials)
-            j["materials"].push_back({{"name", m.name}, {"albedo", triple(m.albedo)}, {"ao", decimal(m.ao)}});
+        for (const Material& m : d.materials) {
+            json entry = {{"name", m.name}, {"albedo", triple(m.albedo)}, {"ao", decimal(m.ao)}};
+            if (m.emissionIntensity > 0.0f)
+                entry["emission"] = {{"color", triple(m.emissionColor)}, {"intensity", decimal(m.emissionIntensity)}};
+            j["materials"].push_back(entry);
+        }
     }
     writeSettings(d, j);  // lighting, ao, detail
     if (!d.cameras.empty()) {

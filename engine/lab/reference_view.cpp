@@ -11,13 +11,8 @@
 #include <memory>
 
 namespace grotto {
-namespace {
 
-// Everything the result depends on: the world's bytes, the camera's values (not
-// its name), the size, radius, rays and the algorithm's version; the objects'
-// grid files and poses; the edits applied since load, in order.
-std::string cacheKey(const voxel::World& world, const Camera& c, double radius, uint32_t spp,
-                     std::span<const voxel::PosedWorld> objects) {
+std::string viewCacheKey(const voxel::World& world, const Camera& c, std::span<const voxel::PosedWorld> objects) {
     Fnv1a content;
     content.file(world.desc().source);
     if (world.desc().gridFile != world.desc().source) content.file(world.desc().gridFile);
@@ -42,12 +37,22 @@ std::string cacheKey(const voxel::World& world, const Camera& c, double radius, 
     char text[1024];
     const glm::dmat3& b = c.basis;
     std::snprintf(text, sizeof text,
-                  "reference v%d world %s pos %.17g %.17g %.17g basis %.17g %.17g %.17g %.17g %.17g %.17g %.17g "
-                  "%.17g %.17g fov %.17g near %.17g far %.17g size %ux%u radius %.17g spp %u",
-                  voxel::kReferenceAoVersion, content.hex().c_str(), c.position.x, c.position.y, c.position.z,
-                  b[0].x, b[0].y, b[0].z, b[1].x, b[1].y, b[1].z, b[2].x, b[2].y, b[2].z, c.fovY, c.nearPlane,
-                  c.farPlane, c.width, c.height, radius, spp);
+                  "world %s pos %.17g %.17g %.17g basis %.17g %.17g %.17g %.17g %.17g %.17g %.17g "
+                  "%.17g %.17g fov %.17g near %.17g far %.17g size %ux%u",
+                  content.hex().c_str(), c.position.x, c.position.y, c.position.z, b[0].x, b[0].y, b[0].z, b[1].x,
+                  b[1].y, b[1].z, b[2].x, b[2].y, b[2].z, c.fovY, c.nearPlane, c.farPlane, c.width, c.height);
     return text + poses + edits;
+}
+
+namespace {
+
+// Everything the result depends on: the view (viewCacheKey), the radius, rays
+// and the algorithm's version.
+std::string cacheKey(const voxel::World& world, const Camera& c, double radius, uint32_t spp,
+                     std::span<const voxel::PosedWorld> objects) {
+    char text[128];
+    std::snprintf(text, sizeof text, "reference v%d radius %.17g spp %u ", voxel::kReferenceAoVersion, radius, spp);
+    return text + viewCacheKey(world, c, objects);
 }
 
 void trace(ReferenceView& r, const voxel::World& world, const Camera& camera, double radius, uint32_t spp,

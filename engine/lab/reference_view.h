@@ -11,6 +11,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace grotto {
@@ -19,6 +20,12 @@ namespace grotto {
 // on `ctx` without levels of detail), with `objects` at their poses.
 SurfacePoints viewSurfacePoints(const voxel::World& world, const Camera& camera, vk::Context& ctx,
                                 std::span<const voxel::PosedWorld> objects = {});
+
+// What a view's reference depends on, as text for common/cache.h's key: the
+// world's and its objects' file bytes, the camera's values (not its name), the
+// size, the objects' poses and the edits applied since load, in order. A
+// reference adds its own settings and version.
+std::string viewCacheKey(const voxel::World& world, const Camera& camera, std::span<const voxel::PosedWorld> objects);
 
 struct ReferenceView {
     std::vector<float> ao, stderror;  // per pixel, row 0 on top; sky: V 1, error 0

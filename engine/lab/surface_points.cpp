@@ -36,6 +36,7 @@ SurfacePoints snappedPoints(const FrameImages& f, const Camera& camera, double v
             out.points.push_back(p);
             out.normals.push_back(n);
             out.pixels.push_back(uint32_t(i));
+            out.owners.push_back(object <= objects.size() ? object : 0);
         }
     return out;
 }

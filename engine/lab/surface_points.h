@@ -14,6 +14,7 @@ namespace grotto {
 struct SurfacePoints {
     std::vector<glm::dvec3> points, normals;  // world units; normals axis-aligned, unit
     std::vector<uint32_t> pixels;             // y * width + x of each point; sky pixels have none
+    std::vector<uint32_t> owners;             // 0: the world's voxels; k: the frame's object k (objects[k - 1])
 };
 
 // Needs a readback with AOVs. voxelSize and origin (voxel corner 0,0,0) place the

@@ -13,6 +13,13 @@ struct Material {
     std::string name;
     glm::vec3 albedo{0.7f};  // linear RGB in [0, 1]
     float ao = 1.0f;         // baked occlusion of the material in [0, 1]; the composite takes min(AO, this)
+    // Light the material gives off from every face, the same in every direction:
+    // radiance = emissionColor x emissionIntensity, in the scale of the sun and sky
+    // (docs/lighting.md, "Units"). Intensity 0: it does not glow.
+    glm::vec3 emissionColor{1.0f};  // linear RGB in [0, 1]
+    float emissionIntensity = 0.0f; // 0 to 1e5
+    glm::vec3 emission() const { return emissionColor * emissionIntensity; }
+    bool emits() const { return emissionIntensity > 0.0f && (emissionColor.r > 0.0f || emissionColor.g > 0.0f || emissionColor.b > 0.0f); }
 };
 
 struct CameraDesc {

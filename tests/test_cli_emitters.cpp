@@ -1,0 +1,122 @@
+// Glowing materials through the command line: a world file's emission and a
+// MagicaVoxel _emit material read, listed by `info` with their power, refused
+// when malformed, and lighting `reference --light full`.
+#include "tests/cli_fixture.h"
+#include "tests/vox_writer.h"
+
+#include <cmath>
+#include <fstream>
+
+namespace grotto::test {
+namespace {
+
+class CliEmitters : public CliErrors {
+protected:
+    // A 3 x 3 floor of colour 1 with one voxel of colour 2 on it (MagicaVoxel
+    // is z-up), with `lamp`'s MATL for colour 2 when given.
+    fs::path writeLampVox(const voxel::test::VoxDict& lamp = {}) {
+        std::array<voxel::VoxColor, 256> palette{};
+        palette[0] = {128, 128, 128, 255};
+        palette[1] = {255, 188, 0, 255};  // sRGB 188 is linear 0.5
+        std::vector<std::array<uint8_t, 4>> voxels;
+        for (uint8_t x = 0; x < 3; ++x)
+            for (uint8_t y = 0; y < 3; ++y) voxels.push_back({x, y, 0, 1});
+        voxels.push_back({1, 1, 1, 2});
+        voxel::test::VoxWriter w;
+        w.model({3, 3, 2}, voxels).palette(palette);
+        if (!lamp.empty()) w.material(2, lamp);
+        const std::vector<uint8_t> bytes = w.bytes();
+        const fs::path file = dir_ / "lamp.vox";
+        std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        return file;
+    }
+    fs::path writeLampWorld(const std::string& lampMaterial) {
+        writeLampVox();
+        return writeText("lamp.json", R"({"grid": {"file": "lamp.vox"}, "materials": [
+            {"name": "floor", "albedo": [0.5, 0.5, 0.5]}, )" + lampMaterial + "]}");
+    }
+};
+
+TEST_F(CliEmitters, InfoListsEachEmitterWithItsAreaAndPower) {
+    const fs::path world = writeLampWorld(
+        R"({"name": "lamp", "albedo": [0.8, 0.8, 0.8], "emission": {"color": [1, 0.5, 0.25], "intensity": 4}})");
+    const RunResult r = runGrotto("info " + world.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("lamp: albedo (0.8 0.8 0.8), emits (1 0.5 0.25) x 4, 1 voxel"), std::string::npos) << r.out;
+    // Five faces open to the air (its sixth is on the floor): pi x 4 x colour x 5.
+    EXPECT_NE(r.out.find("emitter        material 2: radiance (4 2 1) over 5 square units, power (62.8319 31.4159 15.708)"),
+              std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("emitters       1 materials, total power (62.8319 31.4159 15.708)"), std::string::npos) << r.out;
+    // Without emission nothing glows.
+    const fs::path dark = writeLampWorld(R"({"name": "lamp", "albedo": [0.8, 0.8, 0.8]})");
+    const RunResult none = runGrotto("info " + dark.string());
+    ASSERT_EQ(none.exitCode, 0) << none.err;
+    EXPECT_NE(none.out.find("emitters       none"), std::string::npos) << none.out;
+}
+
+TEST_F(CliEmitters, AMagicaVoxelEmitMaterialGlowsInItsColour) {
+    // _emit 0.5 at _flux 2: intensity 0.5 x 2^2 = 2, in the palette colour made linear.
+    const fs::path vox = writeLampVox({{"_type", "_emit"}, {"_emit", "0.5"}, {"_flux", "2"}, {"_ldr", "0.3"}});
+    const RunResult r = runGrotto("info " + vox.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("colour 2 (emit): albedo (1 0.502886 0), emits (1 0.502886 0) x 2"), std::string::npos) << r.out;
+    // Converted, the world file written keeps the glow.
+    const RunResult converted = runGrotto("convert " + vox.string() + " -o " + (dir_ / "converted.vdb").string());
+    ASSERT_EQ(converted.exitCode, 0) << converted.err;
+    const RunResult again = runGrotto("info " + (dir_ / "converted.json").string());
+    EXPECT_NE(again.out.find("emits (1 0.502886 0) x 2"), std::string::npos) << again.out;
+    // A diffuse MATL with _emit set (MagicaVoxel ignores it there) does not glow.
+    writeLampVox({{"_type", "_diffuse"}, {"_emit", "0.5"}});
+    const RunResult diffuse = runGrotto("info " + vox.string());
+    ASSERT_EQ(diffuse.exitCode, 0) << diffuse.err;
+    EXPECT_NE(diffuse.out.find("emitters       none"), std::string::npos) << diffuse.out;
+}
+
+TEST_F(CliEmitters, MalformedEmissionIsRefusedNamingTheField) {
+    const std::pair<std::string, std::string> cases[] = {
+        {R"({"emission": {"color": [1, 1, 1], "intensity": -1}})", "materials[1].emission.intensity"},
+        {R"({"emission": {"intensity": 1e9}})", "materials[1].emission.intensity"},
+        {R"({"emission": {"color": [1, 2, 1]}})", "materials[1].emission.color"},
+        {R"({"emission": {"color": [1, 1]}})", "materials[1].emission.color"},
+        {R"({"emission": 3})", "materials[1].emission"},
+        {R"({"emission": {"colour": [1, 1, 1]}})", "colour"},
+    };
+    for (const auto& [material, field] : cases) {
+        const fs::path world = writeLampWorld(material);
+        expectRefused("info " + world.string(), field, dir_ / "none");
+    }
+}
+
+TEST_F(CliEmitters, ReferenceFullLightWritesRadianceAndRefusesAoOnlyFlags) {
+    const fs::path world = writeLampWorld(
+        R"({"name": "lamp", "albedo": [0.8, 0.8, 0.8], "emission": {"color": [1, 0.5, 0.25], "intensity": 4}})");
+    const fs::path exr = dir_ / "light.exr";
+    const RunResult r = runGrotto("reference " + world.string() + " --light full --spp 8 --size 48x32 -o " + exr.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto in = OIIO::ImageInput::open(exr.string());
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec spec = in->spec();
+    ASSERT_EQ(spec.nchannels, 6);
+    for (const char* name : {"R", "G", "B", "R_stderr", "G_stderr", "B_stderr"})
+        EXPECT_GE(spec.channelindex(name), 0) << name;
+    std::vector<float> pixels(size_t(spec.image_pixels()) * 6);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 6, OIIO::TypeDesc::FLOAT, pixels.data()));
+    const int R = spec.channelindex("R"), G = spec.channelindex("G");
+    float brightest = 0.0f;
+    for (size_t i = 0; i < pixels.size(); i += 6) {
+        for (int c = 0; c < 6; ++c) ASSERT_TRUE(std::isfinite(pixels[i + size_t(c)]) && pixels[i + size_t(c)] >= 0.0f);
+        brightest = std::max(brightest, pixels[i + size_t(R)]);
+        // The lamp's faces: emission (4 2 1) plus what they reflect.
+        if (pixels[i + size_t(R)] >= 4.0f) EXPECT_GE(pixels[i + size_t(G)], 2.0f);
+    }
+    EXPECT_GE(brightest, 4.0f);  // the lamp is in view and shows its own light
+    expectRefused("reference " + world.string() + " --bounces 2 --spp 8 -o " + (dir_ / "b.exr").string(), "--bounces",
+                  dir_ / "b.exr");
+    expectRefused("reference " + world.string() + " --light full --radius 3 --spp 8 -o " + (dir_ / "c.exr").string(),
+                  "--radius", dir_ / "c.exr");
+    expectRefused("reference " + world.string() + " --light sky --spp 8 -o " + (dir_ / "d.exr").string(), "--light",
+                  dir_ / "d.exr");
+}
+
+}  // namespace
+}  // namespace grotto::test
