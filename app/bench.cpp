@@ -98,7 +98,7 @@ void addBenchCommand(CLI::App& app) {
         }
         const size_t hostBytes = stats.hostBytes + scene.hostBytes();
         const size_t gpuBytes = scene.gpuBytes();
-        const size_t cacheBytes = scene.faceCache ? scene.faceCache->gpuBytes() : 0;  // within gpuBytes
+        const size_t cacheBytes = scene.faceCache() ? scene.faceCache()->gpuBytes() : 0;  // within gpuBytes
         const size_t cachedFaces = session->scene().faceCache() ? session->scene().faceCache()->faces().size() : 0;
         // After the frames and the memory figures, so both see the scene as uploaded.
         std::optional<SceneUpdateCost> update;

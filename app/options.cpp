@@ -75,6 +75,9 @@ std::string flagHelp(const voxel::Setting& s) {
     return help + (s.presetShaped ? "; setting it makes the quality custom)" : ")");
 }
 
+// Where a setting given on the command line is named in the errors that do not name its flag.
+const std::string kCommandLine = "command line";
+
 // The world-file settings of `block` ("ao", "detail") that have flags.
 template <class F>
 void forFlags(std::string_view block, F&& f) {
@@ -166,7 +169,10 @@ AoOptions resolveAo(const voxel::World& world, const AoFlags& f) {
                 throw Error(std::string(s.flag), std::to_string(*v) + " is out of range",
                             "accepted: " + voxel::acceptedText(s));
     });
-    AoOptions o = aoOptionsFor(aoDescWithFlags(world.desc().ao, f), world.voxelSize(), kCommandLine);
+    AoOptions o = uncheckedAoOptions(aoDescWithFlags(world.desc().ao, f), world.voxelSize(), kCommandLine);
+    // The engine names a setting out of range; the command line names its flag.
+    if (const std::optional<AoOutOfRange> bad = aoOutOfRange(o))
+        throw Error(std::string(bad->row->flag), bad->value + " is out of range", "accepted: " + voxel::acceptedText(*bad->row));
     bool shaped = false;  // slices, steps or rays given: no preset's any more
     forFlags("ao", [&](const voxel::Setting& s) {
         if (const auto* m = std::get_if<std::optional<int> voxel::AoDesc::*>(&s.desc))

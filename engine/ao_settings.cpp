@@ -57,9 +57,7 @@ voxel::EstimatorSettings estimatorPreset(const std::string& quality, double radi
     return s;
 }
 
-void validateAo(const AoOptions& ao, const std::string& where) {
-    // From the command line the error names the flag; from a file, file and setting.
-    const bool flags = where == kCommandLine;
+std::optional<AoOutOfRange> aoOutOfRange(const AoOptions& ao) {
     for (const voxel::Setting& row : voxel::settingsTable()) {
         // Compared as the shaders hold them: floats with the bounds as floats.
         const bool ok = std::visit(
@@ -78,11 +76,17 @@ void validateAo(const AoOptions& ao, const std::string& where) {
         if (ok) continue;
         char value[32];
         std::snprintf(value, sizeof value, "%g", settingNumber(row, {}, ao.estimator, ao.chain));
-        const std::string accepted = "accepted: " + acceptedText(row);
-        if (flags) throw Error(std::string(row.flag), std::string(value) + " is out of range", accepted);
-        const std::string name(row.key.substr(row.key.find('.') + 1));
-        throw Error(where, "AO setting '" + name + "' = " + value + " is out of range", accepted);
+        return AoOutOfRange{&row, value};
     }
+    return std::nullopt;
+}
+
+void validateAo(const AoOptions& ao, const std::string& where) {
+    const std::optional<AoOutOfRange> bad = aoOutOfRange(ao);
+    if (!bad) return;
+    const std::string name(bad->row->key.substr(bad->row->key.find('.') + 1));
+    throw Error(where, "AO setting '" + name + "' = " + bad->value + " is out of range",
+                "accepted: " + acceptedText(*bad->row));
 }
 
 void applyAoOverrides(const voxel::AoDesc& d, AoOptions& ao) {
@@ -103,6 +107,12 @@ void applyAoOverrides(const voxel::AoDesc& d, AoOptions& ao) {
 }
 
 AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::string& where) {
+    AoOptions o = uncheckedAoOptions(d, voxelSize, where);
+    validateAo(o, where);
+    return o;
+}
+
+AoOptions uncheckedAoOptions(const voxel::AoDesc& d, double voxelSize, const std::string& where) {
     AoOptions o;
     o.enabled = d.method != "off";
     if (o.enabled) o.method = parseAoMethod(d.method, where);
@@ -123,7 +133,6 @@ AoOptions aoOptionsFor(const voxel::AoDesc& d, double voxelSize, const std::stri
                                       ? kDefaultThicknessDistance
                                       : kDefaultThicknessVoxels * voxelSize);
     applyAoOverrides(d, o);
-    validateAo(o, where);
     return o;
 }
 

@@ -7,9 +7,11 @@
 #include "voxel/ao_values.h"
 #include "voxel/world_desc.h"
 
+#include <optional>
 #include <string>
 
 namespace grotto {
+namespace voxel { struct Setting; }
 
 // The estimator in the AO chain, in the order of ao.method's choices. Voxel
 // traces exact rays through the world's voxels (the reference's definition, a
@@ -73,10 +75,18 @@ void applyAoOverrides(const voxel::AoDesc& desc, AoOptions& ao);
 
 // Preset and values from the world file; throws grotto::Error naming `where`.
 AoOptions aoOptionsFor(const voxel::AoDesc& desc, double voxelSize, const std::string& where);
+// The same with the ranges unchecked (aoOutOfRange): for a caller that names a
+// setting out of range in words of its own (the command line, its flag).
+AoOptions uncheckedAoOptions(const voxel::AoDesc& desc, double voxelSize, const std::string& where);
 
-// Throws grotto::Error (input) naming the setting and its accepted range: as
-// `where`'s field, or as its flag when `where` is kCommandLine.
-inline const std::string kCommandLine = "command line";
+// The first setting out of its accepted range: its row of the settings table and
+// its value as text; none when all are in range.
+struct AoOutOfRange {
+    const voxel::Setting* row = nullptr;
+    std::string value;
+};
+std::optional<AoOutOfRange> aoOutOfRange(const AoOptions& ao);
+// Throws grotto::Error (input) naming `where`, the setting and its accepted range.
 void validateAo(const AoOptions& ao, const std::string& where);
 
 // The settings as the shaders take them (shaders/shared/gtao.h).

@@ -22,8 +22,7 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
     : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), targets_(ctx), objects_(objects), passes_(ctx) {
     if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
-        validateAo(ao_, "AO settings");
-        requireOccupancy(ao_);
+        requireAo(ao_);
         // Before any allocation can fail halfway.
         const FramePlan plan = planFor(width, height, ao_, lighting_);
         requireRenderFits(ctx, plan, "image size");
@@ -40,12 +39,17 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
     }
 }
 
+SceneFacts Renderer::sceneFacts() const {
+    SceneFacts facts{.occupancy = scene_.occupancy() != nullptr, .objects = objects_ != nullptr,
+                     .movingObjects = objects_ && objects_->moving};
+    if (const GpuFaceCache* cache = scene_.faceCache()) facts.faceCache = {cache->sun().direction, cache->sun().angleDegrees};
+    return facts;
+}
+
 FramePlan Renderer::planFor(uint32_t width, uint32_t height, const AoOptions& ao,
                             const voxel::Lighting& lighting) const {
-    SceneFacts facts{.occupancy = scene_.occupancy != nullptr, .objects = objects_ != nullptr,
-                     .movingObjects = objects_ && objects_->moving};
-    if (scene_.faceCache) facts.faceCache = {scene_.faceCache->sun().direction, scene_.faceCache->sun().angleDegrees};
-    return planFrame(width, height, ao, lighting, facts, {.display = displayOn_, .normals = normalsOn_, .aoAov = aoAov_});
+    return planFrame(width, height, ao, lighting, sceneFacts(),
+                     {.display = displayOn_, .normals = normalsOn_, .aoAov = aoAov_});
 }
 
 void Renderer::applyPlan(const FramePlan& plan) {
@@ -64,7 +68,7 @@ void Renderer::planAovs() {
 
 CompositePass& Renderer::composite() {
     // The header's count, as the last frame to finish left it.
-    if (plan_.cacheTracing && scene_.faceCache->lastHeader()[GROTTO_FACE_UNCONVERGED] != 0)
+    if (plan_.cacheTracing && scene_.faceCache()->lastHeader()[GROTTO_FACE_UNCONVERGED] != 0)
         return passes_.get<AskingCompositePass>();
     return passes_.get<CompositePass>();
 }
@@ -125,29 +129,27 @@ void Renderer::restart(const FramePlan& plan) {
 void Renderer::setLighting(const voxel::Lighting& lighting) {
     const FramePlan plan = planFor(width(), height(), ao_, lighting);
     // Uniforms only, unless passes or targets change or the ambient's source (its light everywhere).
-    if (!passes_.changes(plan) && !targets_.changes(plan) && lighting.ambientFrom == lighting_.ambientFrom) {
-        if (lighting.sunDirection != lighting_.sunDirection || lighting.sunAngle != lighting_.sunAngle) surfaceCamera_.reset();
-        lighting_ = lighting;
-        plan_ = plan;
-        return;
-    }
-    requireRenderFits(ctx_, plan, "lighting");  // a soft sun's history may not fit
+    const bool restarts = passes_.changes(plan) || targets_.changes(plan) || lighting.ambientFrom != lighting_.ambientFrom;
+    if (restarts) requireRenderFits(ctx_, plan, "lighting");  // a soft sun's history may not fit
+    if (lighting.sunDirection != lighting_.sunDirection || lighting.sunAngle != lighting_.sunAngle) surfaceCamera_.reset();
     lighting_ = lighting;
-    restart(plan);
+    if (restarts) restart(plan);
+    else plan_ = plan;
 }
 
-void Renderer::requireOccupancy(const AoOptions& ao) const {
-    if ((ao.enabled && tracesVoxels(ao.method) || voxelThickness(ao) || faceCached(ao)) && !scene_.occupancy)
+void Renderer::requireAo(const AoOptions& ao) const {
+    validateAo(ao, "AO settings");
+    const SceneFacts scene = sceneFacts();
+    if ((ao.enabled && tracesVoxels(ao.method) || voxelThickness(ao) || faceCached(ao)) && !scene.occupancy)
         throw Error("AO settings", std::string("AO method '") + aoMethodName(ao.method) + "' traces the world's voxels",
                     "upload the scene from its world (uploadScene(ctx, world)), not from a mesh alone");
-    if (faceCached(ao) && !scene_.faceCache)
+    if (faceCached(ao) && !scene.faceCache)
         throw Error("AO settings", "AO method 'cache' reads the light cached on the world's faces, and no face cache is loaded",
                     "load a bake of the world (made by grotto bake) or bake it first");
 }
 
 void Renderer::setAo(const AoOptions& ao) {
-    validateAo(ao, "AO settings");
-    requireOccupancy(ao);
+    requireAo(ao);
     const FramePlan plan = planFor(width(), height(), ao, lighting_);
     requireRenderFits(ctx_, plan, "AO settings");
     ao_ = ao;
@@ -224,13 +226,13 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
     if (plan_.cacheTracing)
         pass(cmd, FaceCacheTracePass::declare(), [&] {
             passes_.get<FaceCacheTracePass>().record(cmd, targets_.gbuffer(), {width(), height()}, s.frame, s.traceConstants,
-                                    *scene_.occupancy, *scene_.faceCache,
+                                    *scene_.occupancy(), *scene_.faceCache(),
                                     ao_.chain.cacheRays ? ao_.chain.cacheRays : defaultCacheRays(ctx_));
         });
     if (plan_.tracedShadows)
         pass(cmd, passes_.get<ShadowPass>().declare(), [&] {
             passes_.get<ShadowPass>().record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::Shadow), s.traceConstants,
-                                *scene_.occupancy, objectGrids_.buffer, &image({TargetId::ShadowHistory, Copy::Previous}),
+                                *scene_.occupancy(), objectGrids_.buffer, &image({TargetId::ShadowHistory, Copy::Previous}),
                                 &image(TargetId::ShadowHistory));
         });
     if (plan_.objectLight)
@@ -238,7 +240,7 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
             passes_.get<ObjectLightPass>().record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::ObjectLight),
                                      image({TargetId::ObjectLightHistory, Copy::Previous}),
                                      image(TargetId::ObjectLightHistory), s.traceConstants,
-                                     *scene_.occupancy, objectGrids_.buffer);
+                                     *scene_.occupancy(), objectGrids_.buffer);
         });
     if (plan_.chain) recordAo(cmd);
     pass(cmd, CompositePass::declare(aoOutput()), [&] {
@@ -246,12 +248,12 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
                                {.aoHalf = image(aoOutput()), .frame = s.frame, .palette = scene_.palette,
                                 .gtaoConstants = s.aoConstants, .objectUniforms = s.objectUniforms,
                                 .shadow = image(TargetId::Shadow), .bentNormals = image(TargetId::AoBentNormal),
-                                .faceCache = scene_.faceCache.get(), .objectLight = &image(TargetId::ObjectLight),
+                                .faceCache = scene_.faceCache(), .objectLight = &image(TargetId::ObjectLight),
                                 .shadowEdges = plan_.shadowEdges ? &passes_.get<ShadowEdgePass>().edges() : nullptr});
     });
     if (plan_.shadowEdges)
         pass(cmd, ShadowEdgePass::declare(), [&] {
-            passes_.get<ShadowEdgePass>().record(cmd, targets_.gbuffer(), image(TargetId::Color), s.traceConstants, *scene_.occupancy);
+            passes_.get<ShadowEdgePass>().record(cmd, targets_.gbuffer(), image(TargetId::Color), s.traceConstants, *scene_.occupancy());
         });
     if (plan_.display)
         pass(cmd, DisplayPass::declare(), [&] {
@@ -350,11 +352,11 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     EstimatorPass& estimator = passes_.get<EstimatorPass>();
     pass(cmd, prefilter.declare(), [&] {
         prefilter.record(cmd, image(TargetId::Depth), image(TargetId::Surface), ao, slot().aoConstants,
-                               slot().traceConstants, scene_.occupancy.get());
+                               slot().traceConstants, scene_.occupancy());
     });
     pass(cmd, estimator.declare(), [&] {
         estimator.record(cmd, image(TargetId::Surface), ao, slot().aoConstants, slot().traceConstants,
-                               scene_.occupancy.get(), &objectGrids_.buffer);
+                               scene_.occupancy(), &objectGrids_.buffer);
     });
     // With the temporal pass, the final blur is part of it.
     const uint32_t passes = ao_.chain.denoisePasses, blurs = plan_.temporal && passes > 0 ? passes - 1 : passes;

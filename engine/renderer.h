@@ -135,10 +135,13 @@ public:
     // What its frames do now: their passes and targets (frame_plan.h).
     const FramePlan& plan() const { return plan_; }
     const AoOptions& ao() const { return ao_; }
+    const voxel::Lighting& lighting() const { return lighting_; }
 
 private:
     // Turns an image only a game or a window reads on or off (`flag`: displayOn_ or normalsOn_).
     void setGameImage(bool& flag, bool on, const char* what);
+    // What the scene has now: the one place the renderer looks; frames ask their plan.
+    SceneFacts sceneFacts() const;
     // The frame at a size with these settings, this scene and what the caller asked for.
     FramePlan planFor(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting) const;
     FramePlan wantedPlan() const { return planFor(width(), height(), ao_, lighting_); }  // at the current size
@@ -176,7 +179,10 @@ private:
     void submitCommands(VkCommandBuffer cmd, std::span<const FrameWait> waits = {});
     void waitFor(uint64_t timelineValue);
     void submitAndWait(VkCommandBuffer cmd);  // both, for the last value
-    void requireOccupancy(const AoOptions& ao) const;  // throws for a tracing method without one
+    // Throws grotto::Error (input) for AO settings out of range or that the scene
+    // cannot serve: a method that traces voxels without the occupancy, the cache
+    // without a face cache.
+    void requireAo(const AoOptions& ao) const;
     TargetRef aoOutput() const;  // the AO chain's last output: what the composite reads
     const vk::Image& image(TargetRef target) const { return targets_.image(target); }
 

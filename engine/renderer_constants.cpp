@@ -15,8 +15,9 @@ namespace grotto {
 void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
     FrameSlot& s = slot();
     gpu::FrameUniforms uniforms = frameUniforms(camera, lighting_, ao_);
-    if (scene_.faceCache) {
-        uniforms.faceCache = {scene_.faceCache->table(), scene_.faceCache->texelsPerSide()};
+    if (plan_.scene.faceCache) {
+        const GpuFaceCache& cache = *scene_.faceCache();
+        uniforms.faceCache = {cache.table(), cache.texelsPerSide()};
         const CameraVoxel v = cameraVoxel(camera, scene_.voxelSize, scene_.worldOrigin);
         uniforms.cameraCell = glm::ivec4(v.cell, int32_t(frameIndex & 0x7fffffffu));
         uniforms.cameraFraction = glm::vec4(v.fraction, float(1.0 / scene_.voxelSize));
@@ -59,9 +60,9 @@ void Renderer::refreshObjectGrids() {
 }
 
 void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
-    if (!scene_.occupancy) return;
+    if (!plan_.scene.occupancy) return;
     const double radius = ao_.enabled ? ao_.estimator.radius : 1.0;
-    gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy, scene_.voxelSize, scene_.worldOrigin,
+    gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy(), scene_.voxelSize, scene_.worldOrigin,
                                            lighting_.sunDirection, ao_.estimator.rays, radius);
     if (objects_)
         setObjectTraces(t, objects_->grids, objectGrids_.first, poses_, lastCamera_ ? lastPoses_ : poses_, scene_.voxelSize,

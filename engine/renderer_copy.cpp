@@ -19,7 +19,7 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
     if (copy.aovs() && plan_.faceCache) {
         // The cache's AO and sun at each pixel, as the composite read them.
         pass(cmd, FaceCacheAovPass::declare(), [&] {
-            passes_.get<FaceCacheAovPass>().record(cmd, targets_.gbuffer(), slot().frame, *scene_.faceCache,
+            passes_.get<FaceCacheAovPass>().record(cmd, targets_.gbuffer(), slot().frame, *scene_.faceCache(),
                                       image(TargetId::AoFull), image(TargetId::Shadow), image(TargetId::ObjectLight));
         });
     }
@@ -41,7 +41,7 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
             untimed.timestamp = nullptr;  // not the frame's cost
             pass(cmd, untimed, [&] {
                 bent->record(cmd, image(TargetId::Surface), targets_.ao(), slot().aoConstants,
-                                  slot().traceConstants, scene_.occupancy.get(), &objectGrids_.buffer);
+                                  slot().traceConstants, scene_.occupancy(), &objectGrids_.buffer);
             });
         }
         const uint32_t passes = ao_.chain.denoisePasses;

@@ -9,8 +9,10 @@ namespace grotto {
 
 RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptions& ao, const voxel::Detail& detail,
                              uint32_t width, uint32_t height, bool objectsMayMove)
-    : ctx_(ctx), objectWorlds_(voxel::loadObjectWorlds(world.desc())), lighting_(world.desc().lighting), ao_(ao),
-      culling_(cullingOptions(detail)), width_(width), height_(height), objectsMayMove_(objectsMayMove) {
+    : ctx_(ctx), objectWorlds_(voxel::loadObjectWorlds(world.desc())),
+      unmade_(FrameSettings{.lighting = world.desc().lighting, .ao = ao, .culling = cullingOptions(detail),
+                            .width = width, .height = height}),
+      objectsMayMove_(objectsMayMove) {
     // Objects that may move may also come and go: the renderer draws a list, empty or not.
     if (!objectWorlds_.empty() || objectsMayMove) objects_ = uploadObjects(ctx, objectWorlds_, world.desc());
     if (objectsMayMove) objects_->moving = true;
@@ -29,19 +31,22 @@ void RenderSession::requireFaceCache(const AoOptions& ao) {
 }
 
 bool RenderSession::faceCacheConverged() {
-    if (!renderer_ || !faceCached(ao_) || !scene_->gpu().faceCache) return true;
+    if (!renderer_ || !renderer_->plan().faceCache) return true;
     renderer_->finishFrames();
-    const std::vector<uint32_t> header = scene_->gpu().faceCache->lastHeader();
+    const std::vector<uint32_t> header = scene_->gpu().faceCache()->lastHeader();
     // Neither the frame's tracer nor its composite (asking for the next) found one.
     return header[GROTTO_FACE_ASKED] + header[GROTTO_FACE_QUEUE_EMPTY] + header[GROTTO_FACE_QUEUE_PARTIAL] == 0;
 }
 
 Renderer& RenderSession::renderer() {
     if (!renderer_) {
-        requireFaceCache(ao_);
-        renderer_ = std::make_unique<Renderer>(ctx_, scene_->gpu(), lighting_, ao_, width_, height_, objects_.get());
-        renderer_->setCulling(culling_);
-        if (objects_) renderer_->setObjectPoses(poses_);
+        const FrameSettings& s = *unmade_;
+        requireFaceCache(s.ao);
+        auto made = std::make_unique<Renderer>(ctx_, scene_->gpu(), s.lighting, s.ao, s.width, s.height, objects_.get());
+        made->setCulling(s.culling);
+        if (objects_) made->setObjectPoses(s.poses);
+        renderer_ = std::move(made);
+        unmade_.reset();  // the renderer's from now on
     }
     return *renderer_;
 }
@@ -54,27 +59,31 @@ RenderSession::~RenderSession() {
 }
 
 void RenderSession::setLighting(const voxel::Lighting& lighting) {
-    lighting_ = lighting;
     if (renderer_) renderer_->setLighting(lighting);
+    else unmade_->lighting = lighting;
 }
 
 void RenderSession::setAo(const AoOptions& ao) {
-    if (renderer_) {
-        requireFaceCache(ao);
-        renderer_->setAo(ao);
+    if (!renderer_) {
+        unmade_->ao = ao;
+        return;
     }
-    ao_ = ao;
+    requireFaceCache(ao);
+    renderer_->setAo(ao);
 }
 
 void RenderSession::setCulling(const CullingOptions& culling) {
-    culling_ = culling;
     if (renderer_) renderer_->setCulling(culling);
+    else unmade_->culling = culling;
 }
 
 void RenderSession::resize(uint32_t width, uint32_t height) {
-    width_ = width;
-    height_ = height;
-    if (renderer_) renderer_->resize(width, height);
+    if (renderer_) {
+        renderer_->resize(width, height);
+        return;
+    }
+    unmade_->width = width;
+    unmade_->height = height;
 }
 
 void RenderSession::setTime(double seconds) {
@@ -82,8 +91,8 @@ void RenderSession::setTime(double seconds) {
 }
 
 void RenderSession::setPoses(std::vector<voxel::ObjectPose> poses) {
-    poses_ = std::move(poses);
-    if (renderer_ && objects_) renderer_->setObjectPoses(poses_);
+    if (!renderer_) unmade_->poses = std::move(poses);
+    else if (objects_) renderer_->setObjectPoses(poses);
 }
 
 voxel::EditResult RenderSession::apply(const voxel::Edit& edit) {

@@ -19,6 +19,16 @@ namespace grotto {
 
 class CameraPath;
 
+// What the renderer's frames are made with, held by the session only until the
+// renderer is made (RenderSession::renderer) and then the renderer's alone.
+struct FrameSettings {
+    voxel::Lighting lighting;
+    AoOptions ao;
+    CullingOptions culling;
+    uint32_t width = 0, height = 0;
+    std::vector<voxel::ObjectPose> poses;  // the objects', one each
+};
+
 class RenderSession {
 public:
     // Loads the world's objects and uploads the world and them. `detail`: the
@@ -42,25 +52,25 @@ public:
     Renderer& renderer();
     const SceneObjects* objects() const { return objects_.get(); }
     std::span<const voxel::World> objectWorlds() const { return objectWorlds_; }
-    // Settings and size for the frames that follow, applied to the renderer now
-    // or when it is made (Renderer's setters say what each restarts).
+    // Settings and size for the frames that follow: the renderer's once it is
+    // made (its setters say what each restarts), held here until then.
     void setLighting(const voxel::Lighting& lighting);
     void setAo(const AoOptions& ao);
     void setCulling(const CullingOptions& culling);
     void resize(uint32_t width, uint32_t height);
-    const voxel::Lighting& lighting() const { return lighting_; }
-    const AoOptions& ao() const { return ao_; }
+    const voxel::Lighting& lighting() const { return renderer_ ? renderer_->lighting() : unmade_->lighting; }
+    const AoOptions& ao() const { return renderer_ ? renderer_->ao() : unmade_->ao; }
     // --ao cache's light on the world's faces, before the first frame: a bake of
     // this world with the session's AO radius (`grotto bake`), refused with
     // grotto::Error (input) naming the file and field when it is not one; or baked
     // here on every core with grotto bake's defaults.
-    void loadFaceCache(const std::filesystem::path& bake) { scene_->loadFaceCache(bake, ao_.estimator.radius); }
-    void bakeFaceCache() { scene_->bakeFaceCache(worldBakeSettings(world(), ao_.estimator.radius)); }
+    void loadFaceCache(const std::filesystem::path& bake) { scene_->loadFaceCache(bake, ao().estimator.radius); }
+    void bakeFaceCache() { scene_->bakeFaceCache(worldBakeSettings(world(), ao().estimator.radius)); }
     // Or nothing traced yet: the renderer's GPU tracer converges the faces as they
     // come into view (engine/passes/face_cache_trace_pass.h). With `progressive`
     // set, a cache the session needs later (a new radius, cache chosen without
     // one) starts so too, instead of being baked on the CPU first.
-    void startFaceCache() { scene_->progressiveFaceCache(worldBakeSettings(world(), ao_.estimator.radius)); }
+    void startFaceCache() { scene_->progressiveFaceCache(worldBakeSettings(world(), ao().estimator.radius)); }
     void setProgressiveFaceCache(bool progressive) { progressiveCache_ = progressive; }
     // Frames with no face in view left to trace: the last frame's tracer found none
     // (true without the face cache).
@@ -70,9 +80,9 @@ public:
     // frames that follow (at time 0 until then), or at poses of the caller's.
     void setTime(double seconds);
     void setPoses(std::vector<voxel::ObjectPose> poses);
-    const std::vector<voxel::ObjectPose>& poses() const { return poses_; }
+    const std::vector<voxel::ObjectPose>& poses() const { return renderer_ ? renderer_->objectPoses() : unmade_->poses; }
     // The objects' worlds at those poses, for the reference to trace.
-    std::vector<voxel::PosedWorld> posedObjects() const { return voxel::posedWorlds(objectWorlds_, poses_); }
+    std::vector<voxel::PosedWorld> posedObjects() const { return voxel::posedWorlds(objectWorlds_, poses()); }
 
     // Objects added and removed between frames (at most GROTTO_MAX_OBJECTS in all):
     // `world` holds the object's voxels; `desc` its name, pivot and keys (it stands
@@ -130,11 +140,7 @@ private:
     std::unique_ptr<SceneObjects> objects_;
     std::unique_ptr<LiveScene> scene_;
     std::unique_ptr<Renderer> renderer_;
-    voxel::Lighting lighting_;
-    AoOptions ao_;
-    CullingOptions culling_;
-    uint32_t width_, height_;
-    std::vector<voxel::ObjectPose> poses_;
+    std::optional<FrameSettings> unmade_;  // the renderer's settings while there is none: one owner at a time
     voxel::CameraPathDesc pathDesc_;
     std::unique_ptr<CameraPath> path_;
     std::unique_ptr<PathEdits> edits_;

@@ -31,8 +31,9 @@ void RenderSession::addObject(voxel::World world, voxel::ObjectDesc desc) {
     objects_->grids.push_back(objectGrid(world));
     ++objects_->gridsVersion;
     objectWorlds_.push_back(std::move(world));
-    poses_.push_back(voxel::objectPose(desc, 0.0));
-    if (renderer_) renderer_->objectAdded(poses_.back());
+    const voxel::ObjectPose pose = voxel::objectPose(desc, 0.0);
+    if (renderer_) renderer_->objectAdded(pose);
+    else unmade_->poses.push_back(pose);
 }
 
 void RenderSession::removeObject(size_t index) {
@@ -46,7 +47,7 @@ void RenderSession::removeObject(size_t index) {
     objects_->grids.erase(objects_->grids.begin() + ptrdiff_t(index));
     ++objects_->gridsVersion;
     objectWorlds_.erase(objectWorlds_.begin() + ptrdiff_t(index));
-    poses_.erase(poses_.begin() + ptrdiff_t(index));
+    if (!renderer_) unmade_->poses.erase(unmade_->poses.begin() + ptrdiff_t(index));
 }
 
 std::optional<RenderSession::Hit> RenderSession::raycast(glm::dvec3 origin, glm::dvec3 direction,
@@ -55,8 +56,9 @@ std::optional<RenderSession::Hit> RenderSession::raycast(glm::dvec3 origin, glm:
     if (const auto h = world().raycast(origin, direction, maxDistance))
         best = Hit{*h, faceNormal(h->face), world().material(h->voxel), -1};
     // Each object traced in its own space: the pose is rigid, so distances carry over.
-    for (size_t k = 0; k < objectWorlds_.size() && k < poses_.size(); ++k) {
-        const voxel::ObjectPose& pose = poses_[k];
+    const std::vector<voxel::ObjectPose>& posed = poses();
+    for (size_t k = 0; k < objectWorlds_.size() && k < posed.size(); ++k) {
+        const voxel::ObjectPose& pose = posed[k];
         const double reach = best ? best->ray.distance : maxDistance;
         const auto h = objectWorlds_[k].raycast(pose.toLocal(origin), glm::conjugate(pose.rotation) * direction, reach);
         if (h && (!best || h->distance < best->ray.distance))

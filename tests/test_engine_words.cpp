@@ -36,6 +36,15 @@ TEST(EngineWords, AnUnknownQualityIsNamedAsASetting) {
     EXPECT_EQ(message.find("--"), std::string::npos) << "names a flag: " << message;
 }
 
+TEST(EngineWords, ASettingOutOfRangeIsNamedAsASettingWhereverItCameFrom) {
+    AoOptions ao = aoOptionsFor({}, 1.0, "test");
+    ao.estimator.radius = -1.0f;
+    // The command line's own name for itself once made the engine name its flag.
+    const std::string message = engineErrorOf([&] { validateAo(ao, "command line"); });
+    EXPECT_NE(message.find("AO setting 'radius'"), std::string::npos) << message;
+    EXPECT_EQ(message.find("--"), std::string::npos) << "names a flag: " << message;
+}
+
 class EngineWordsGpu : public test::GpuTest {};
 
 TEST_F(EngineWordsGpu, TheFaceCacheMissingIsNamedWithoutFlags) {

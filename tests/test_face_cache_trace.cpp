@@ -132,7 +132,7 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     EXPECT_GT(underPixels, 200u);  // every face under a pixel: coarse at once, whatever the budget
     EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), 0u);  // a budget of one ray converges none
     // The composite asked for faces beside them whose texels it read too.
-    const uint32_t beside = scene.gpu().faceCache->lastHeader()[GROTTO_FACE_QUEUE_EMPTY];
+    const uint32_t beside = scene.gpu().faceCache()->lastHeader()[GROTTO_FACE_QUEUE_EMPTY];
     EXPECT_GT(beside, 0u);
 
     // Room for 25 faces at the full rays, less what those faces' rays take.
@@ -140,7 +140,7 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     Renderer renderer(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, budget), 96, 72);
     renderer.render(camera, 1);
     cache.sync();
-    const std::vector<uint32_t> plan = scene.gpu().faceCache->lastHeader();
+    const std::vector<uint32_t> plan = scene.gpu().faceCache()->lastHeader();
     EXPECT_EQ(plan[GROTTO_FACE_TRACED_EMPTY], beside);
     const bool besideFull = plan[GROTTO_FACE_EMPTY_FULL] != 0;
     EXPECT_EQ(besideFull, beside * perFace <= budget);
@@ -161,14 +161,14 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     int frame = 2;
     for (; frame < 400; ++frame) {
         renderer.render(camera, uint32_t(frame));
-        const std::vector<uint32_t> h = scene.gpu().faceCache->lastHeader();
+        const std::vector<uint32_t> h = scene.gpu().faceCache()->lastHeader();
         if (h[GROTTO_FACE_ASKED] + h[GROTTO_FACE_QUEUE_EMPTY] + h[GROTTO_FACE_QUEUE_PARTIAL] == 0) break;
     }
     EXPECT_LT(frame, 400);
     cache.sync();
     EXPECT_EQ(count(1), 0u);
     // The GPU's count of faces not converged is the levels' own.
-    EXPECT_EQ(scene.gpu().faceCache->lastHeader()[GROTTO_FACE_UNCONVERGED], cache.unconverged());
+    EXPECT_EQ(scene.gpu().faceCache()->lastHeader()[GROTTO_FACE_UNCONVERGED], cache.unconverged());
     EXPECT_GE(count(GROTTO_FACE_LEVEL_CONVERGED), underPixels + beside);
 }
 
@@ -181,7 +181,7 @@ TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgain) {
     Renderer renderer(ctx(), scene.gpu(), softSun(world), cacheAo(world, 1.5, 1'000'000'000u), 96, 72);
     renderer.render(camera, 0);
     // Baked: nothing left anywhere, so nothing is asked for or traced.
-    const std::vector<uint32_t> baked = scene.gpu().faceCache->lastHeader();
+    const std::vector<uint32_t> baked = scene.gpu().faceCache()->lastHeader();
     EXPECT_EQ(baked[GROTTO_FACE_UNCONVERGED] + baked[GROTTO_FACE_ASKED] + baked[GROTTO_FACE_QUEUE_EMPTY], 0u);
     LiveFaceCache& cache = *scene.faceCache();
     const std::vector<voxel::ExposedFace> facesBefore(cache.faces().begin(), cache.faces().end());
@@ -201,7 +201,7 @@ TEST_F(FaceCacheTrace, AfterAnEditTheFacesInViewItReachesAreTracedAgain) {
     uint32_t frame = 1;
     for (; frame < 8; ++frame) {
         renderer.render(camera, frame);
-        const std::vector<uint32_t> h = scene.gpu().faceCache->lastHeader();
+        const std::vector<uint32_t> h = scene.gpu().faceCache()->lastHeader();
         if (h[GROTTO_FACE_ASKED] + h[GROTTO_FACE_QUEUE_EMPTY] + h[GROTTO_FACE_QUEUE_PARTIAL] == 0) break;
     }
     EXPECT_LE(frame, 6u);

@@ -36,7 +36,7 @@ TEST_F(GpuTest, RenderMemoryEstimateMatchesTheTargetsOfEveryShape) {
     auto objects = uploadObjects(ctx(), boxes, desc);
     ASSERT_TRUE(objects->moving);
     LiveScene scene(ctx(), std::move(world));
-    ASSERT_TRUE(scene.gpu().occupancy);
+    ASSERT_TRUE(scene.gpu().occupancy());
     const uint32_t w = 37, h = 23;  // odd: the AO's half size rounds up; small: the driver's padding shows
     const Camera view = makeCamera(test::lookAt({4, 6, 12}, {4, 0, 4}), w, h);
     for (const float sunAngle : {0.0f, 1.0f})

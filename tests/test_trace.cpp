@@ -269,7 +269,7 @@ TEST_F(Occupancy, EditsStagedThroughALiveSceneKeepGpuAndCpuInStep) {
         };
         std::sort(cells.begin(), cells.end(), order);
         cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
-        const Agreement a = compare(w, cells, query.solid(*scene.gpu().occupancy, cells, pending), what);
+        const Agreement a = compare(w, cells, query.solid(*scene.gpu().occupancy(), cells, pending), what);
         EXPECT_EQ(a.mismatches, 0u) << what;
     };
 
@@ -277,8 +277,8 @@ TEST_F(Occupancy, EditsStagedThroughALiveSceneKeepGpuAndCpuInStep) {
     // the others); far boxes make new tiles, more than the hash table has room for
     // at half load (it is rebuilt) and than the bricks buffer has spare room for
     // (it grows), and a large fill grows the masks buffer.
-    const size_t masksBefore = scene.gpu().occupancy->masks().size, bricksBefore = scene.gpu().occupancy->bricks().size;
-    const uint32_t hashBefore = scene.gpu().occupancy->hashMask();
+    const size_t masksBefore = scene.gpu().occupancy()->masks().size, bricksBefore = scene.gpu().occupancy()->bricks().size;
+    const uint32_t hashBefore = scene.gpu().occupancy()->hashMask();
     randomEdits(40);
     apply(voxel::Edit::fillSphere(w.origin() + glm::dvec3(-30, 20, 30) * w.voxelSize(), 6.0 * w.voxelSize(), 2));
     apply(voxel::Edit::fillBox({{-60, 50, -60}, {60, 90, 60}}, 1));  // above the world: new tiles, many bricks
@@ -286,9 +286,9 @@ TEST_F(Occupancy, EditsStagedThroughALiveSceneKeepGpuAndCpuInStep) {
         const glm::ivec3 c(20000 - 4099 * k, -3000 + 613 * (k % 7), 11000 - 1500 * k);
         apply(voxel::Edit::fillBox({c, c + glm::ivec3(k % 5, 3, 9 - k % 4)}, 1 + k % 3));
     }
-    EXPECT_GT(scene.gpu().occupancy->hashMask(), hashBefore);
-    EXPECT_GT(scene.gpu().occupancy->bricks().size, bricksBefore);
-    EXPECT_GT(scene.gpu().occupancy->masks().size, masksBefore);
+    EXPECT_GT(scene.gpu().occupancy()->hashMask(), hashBefore);
+    EXPECT_GT(scene.gpu().occupancy()->bricks().size, bricksBefore);
+    EXPECT_GT(scene.gpu().occupancy()->masks().size, masksBefore);
     ASSERT_TRUE(scene.gpu().uploadsPending());
     check("edited world, uploads recorded with the query", &scene.gpu());
 

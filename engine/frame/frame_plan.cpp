@@ -19,7 +19,7 @@ VkExtent2D FramePlan::aoExtent() const {
 
 FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting,
                     const SceneFacts& scene, const FrameRequest& request) {
-    FramePlan p{.width = width, .height = height, .ao = ao,
+    FramePlan p{.width = width, .height = height, .ao = ao, .scene = scene,
                 .display = request.display, .normals = request.normals, .aoAov = request.aoAov};
     p.chain = aoChain(ao);
     p.temporal = p.chain && ao.chain.temporalHistory > 0;

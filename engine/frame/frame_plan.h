@@ -37,6 +37,7 @@ struct FrameRequest {
 struct FramePlan {
     uint32_t width = 0, height = 0;
     AoOptions ao;
+    SceneFacts scene;  // what the scene had: the renderer asks this, not the scene
     // What the caller asked for.
     bool display = false, normals = false, aoAov = false;
     // The AO.

@@ -62,8 +62,8 @@ LiveFaceCache LiveFaceCache::progressive(GpuScene& scene, const voxel::BrickTabl
 }
 
 void LiveFaceCache::sync() {
-    if (!scene_.faceCache) return;
-    const GpuFaceCache::Contents gpu = scene_.faceCache->read();
+    if (!scene_.faceCache_) return;
+    const GpuFaceCache::Contents gpu = scene_.faceCache_->read();
     const uint32_t perFace = settings_.texelsPerSide * settings_.texelsPerSide;
     const uint32_t sunRays = settings_.sunAngleDegrees > 0.0 ? settings_.sunRays : std::min(settings_.sunRays, 1u);
     for (size_t g = 0; g < order_.size(); ++g) {
@@ -109,7 +109,7 @@ void LiveFaceCache::upload() {
         scene_.ctx, arrays, GpuFaceCache::Sun{glm::vec3(settings_.sunDirection), float(settings_.sunAngleDegrees)},
         FaceCacheRays{settings_.rays, settings_.sunRays, float(settings_.radius / voxelSize_)}, gpuLevels);
     vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still read the old copy
-    scene_.faceCache = std::move(gpu);
+    scene_.faceCache_ = std::move(gpu);
     order_ = arrays.faceOrder;
 }
 

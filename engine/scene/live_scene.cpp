@@ -12,9 +12,8 @@ LiveScene::LiveScene(vk::Context& ctx, voxel::World world, uint64_t rendererByte
     // Uploaded from the mesh's own chunks, lent, not copied: the mesh is most of the peak.
     gpu_ = mesh_.lend([&](std::span<const voxel::MeshChunkQuads> chunks) {
         memoryEstimate_ = requireSceneFits(world_, meshBytes, chunks, rendererBytes, cpuDevice(ctx));
-        return uploadScene(ctx, chunks, world_.voxelSize(), world_.origin(), world_.desc());
+        return uploadScene(ctx, chunks, world_);
     });
-    gpu_->occupancy = std::make_unique<GpuOccupancy>(ctx, world_);
 }
 
 voxel::EditResult LiveScene::apply(const voxel::Edit& edit) {
@@ -55,7 +54,7 @@ void LiveScene::changed(const voxel::EditResult& result) {
         else removed.push_back(origin);
     }
     gpu_->updateChunks(replaced, removed);
-    gpu_->occupancy->update(world_, result.voxels, gpu_->uploads);
+    gpu_->updateOccupancy(world_, result.voxels);
     if (bricks_) bricks_->update(world_, result.voxels);
     if (faceCache_) faceCache_->edited(bricks(), world_, result.voxels);
 }

@@ -184,7 +184,7 @@ size_t GpuScene::hostBytes() const {
     size_t n = chunks.size() * sizeof(GpuChunk);
     for (const GpuChunk& c : chunks)
         for (const GpuLevel& l : c.levels) n += sizeof(GpuLevel) + l.clusters.size() * sizeof(QuadCluster);
-    return n + uploads.pendingBytes() + (occupancy ? occupancy->hostBytes() : 0);
+    return n + uploads.pendingBytes() + (occupancy_ ? occupancy_->hostBytes() : 0);
 }
 
 size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks) {
@@ -283,10 +283,18 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh,
 }
 
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::World& world) {
-    auto scene = uploadScene(ctx, voxel::LiveMesh(world, {.coarseLevels = voxel::kMaxCoarseLevels}).take(),
-                             world.voxelSize(), world.origin(), world.desc());
-    scene->occupancy = std::make_unique<GpuOccupancy>(ctx, world);
+    return uploadScene(ctx, voxel::LiveMesh(world, {.coarseLevels = voxel::kMaxCoarseLevels}).take(), world);
+}
+
+std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::MeshChunkQuads> chunks,
+                                      const voxel::World& world) {
+    auto scene = uploadScene(ctx, chunks, world.voxelSize(), world.origin(), world.desc());
+    scene->occupancy_ = std::make_unique<GpuOccupancy>(ctx, world);
     return scene;
+}
+
+void GpuScene::updateOccupancy(const voxel::World& world, const voxel::IndexBox& changed) {
+    occupancy_->update(world, changed, uploads);
 }
 
 const GpuChunk* GpuScene::findChunk(glm::ivec3 index) const {
@@ -381,7 +389,7 @@ void GpuScene::recordUploads(VkCommandBuffer cmd, vk::Buffer& staging) {
 }
 
 GpuScene::~GpuScene() {
-    occupancy.reset();
+    occupancy_.reset();
     vk::destroy(ctx, vertices);
     vk::destroy(ctx, indices);
     vk::destroy(ctx, palette);

@@ -16,7 +16,11 @@
 #include <vector>
 
 namespace grotto {
-namespace voxel { struct WorldDesc; }
+namespace voxel {
+struct WorldDesc;
+class World;
+}  // namespace voxel
+class LiveFaceCache;
 
 // A run of one face's quads in one 8^3 block of a chunk: what occlusion culling
 // tests and draws as a unit. Bounds in voxels, relative to the chunk's corner.
@@ -48,7 +52,11 @@ struct GpuChunk {
 // buffer (0 1 2 0 2 3, +4 per quad) serves every draw through its vertex offset.
 // Each chunk owns a slot of the vertex buffer with room to spare (quad_slots.h),
 // so a live world rewrites only the chunks an edit touched (updateChunks).
-struct GpuScene {
+// Each part has one writer: the geometry, uploadScene and updateChunks; the
+// occupancy, uploadScene(world) and updateOccupancy; the face cache, LiveFaceCache.
+// The renderer asks its frame plan what the scene has (engine/frame/frame_plan.h).
+class GpuScene {
+public:
     explicit GpuScene(vk::Context& context) : ctx(context), uploads(context) {}
     ~GpuScene();  // releases the buffers
     GpuScene(const GpuScene&) = delete;
@@ -72,10 +80,10 @@ struct GpuScene {
     uint64_t updates = 0;               // updateChunks calls so far: the geometry changed
     // The solid voxels for rays (sun shadows, voxel-traced AO); null for a scene
     // uploaded from a mesh alone, which renders without them.
-    std::unique_ptr<GpuOccupancy> occupancy;
-    // --ao cache's light on the exposed faces; null until a bake is loaded or made
-    // (engine/scene/live_face_cache.h keeps it in step with edits).
-    std::unique_ptr<GpuFaceCache> faceCache;
+    const GpuOccupancy* occupancy() const { return occupancy_.get(); }
+    // The AO cache's light on the exposed faces; null until a bake is loaded or
+    // made (engine/scene/live_face_cache.h makes it and keeps it in step with edits).
+    const GpuFaceCache* faceCache() const { return faceCache_.get(); }
 
     // Replaces the quads of `replaced` chunks (new ones are added; one without
     // quads is removed) and removes the chunks at `removed` (voxel indices of their
@@ -84,6 +92,8 @@ struct GpuScene {
     // The host chunk table changes at once. Throws grotto::Error (internal) for a
     // chunk whose face counts do not add up to its quads.
     void updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std::span<const glm::ivec3> removed);
+    // The occupancy after an edit of `world` within `changed` (voxels), staged like the chunks.
+    void updateOccupancy(const voxel::World& world, const voxel::IndexBox& changed);
     // Records the staged copies through `staging` (StagedUploads::record) and a
     // barrier to vertex input; the renderer calls it first in every frame's command
     // buffer, with its frame slot's staging. Nothing when nothing is staged.
@@ -93,9 +103,16 @@ struct GpuScene {
 
     size_t gpuBytes() const {
         return size_t(vertices.size + indices.size + palette.size) +
-               (occupancy ? occupancy->gpuBytes() : 0) + (faceCache ? faceCache->gpuBytes() : 0);
+               (occupancy_ ? occupancy_->gpuBytes() : 0) + (faceCache_ ? faceCache_->gpuBytes() : 0);
     }
     size_t hostBytes() const;
+
+private:
+    friend std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::MeshChunkQuads> chunks,
+                                                 const voxel::World& world);
+    friend class LiveFaceCache;  // writes faceCache_ alone
+    std::unique_ptr<GpuOccupancy> occupancy_;
+    std::unique_ptr<GpuFaceCache> faceCache_;
 };
 
 // From chunks as a voxel::LiveMesh keeps them (with their coarser levels, if any).
@@ -106,6 +123,9 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh,
 // The world's mesh with its levels of detail, and its occupancy: what rendering
 // with sun shadows and voxel-traced AO needs.
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::World& world);
+// The same from the world's chunks as a voxel::LiveMesh keeps them.
+std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::MeshChunkQuads> chunks,
+                                      const voxel::World& world);
 
 // What uploadScene would allocate for these buffers (the vertex buffer with its
 // spare room, before allocator rounding), without a device: for `grotto info`.
