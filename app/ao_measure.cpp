@@ -82,6 +82,7 @@ AoMeasurement measureAo(vk::Context& ctx, RenderSession& session, const Camera& 
     m.msGbuffer = median(gbufferMs);
     m.quadsDrawn = last.quadsDrawn;
     m.culling = last.culling;
+    m.linearColor = std::move(img.color);
     if (color) *color = std::move(shown);
     return m;
 }

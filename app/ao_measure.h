@@ -26,6 +26,7 @@ struct AoMeasurement {
     double msGbuffer = 0.0;   // the "gbuffer" pass's GPU time, median (both culling phases)
     uint64_t quadsDrawn = 0;  // by the last frame's G-buffer
     CullingStats culling;     // of the last frame: chunks drawn at each level of detail
+    std::vector<float> linearColor;  // the last frame's scene-linear RGBA (radiance x exposure)
 };
 
 // Throws grotto::Error (input) naming the world and camera when the view shows no

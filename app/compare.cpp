@@ -9,6 +9,8 @@
 #include "app/commands.h"
 #include "app/options.h"
 #include "grotto/error.h"
+#include "engine/lab/light_metrics.h"
+#include "engine/lab/light_reference.h"
 #include "engine/lab/reference_view.h"
 #include "voxel/face_cache_lookup.h"
 
@@ -64,6 +66,31 @@ std::string compareSkyLight(RenderSession& session, const Camera& camera, vk::Co
     return text;
 }
 
+// The frame's final image against the path-traced light of the view: what the
+// AO gets wrong and what the lighting model leaves out, together.
+std::string compareLight(const voxel::World& world, const Camera& camera, vk::Context& ctx,
+                         std::span<const voxel::PosedWorld> objects, const AoMeasurement& m, uint32_t spp) {
+    const voxel::Lighting& lighting = world.desc().lighting;
+    const voxel::LightSources lights = voxel::lightSources(lighting);
+    voxel::PathTraceSettings settings;
+    settings.spp = spp;
+    const LightReference ref = lightReference(world, camera, lights, settings, &ctx, objects);
+    std::vector<glm::vec3> image(ref.radiance.size());
+    for (size_t i = 0; i < image.size(); ++i)
+        image[i] = glm::vec3(m.linearColor[4 * i], m.linearColor[4 * i + 1], m.linearColor[4 * i + 2]) / lighting.exposure;
+    const unsigned curve = lighting.toneMap == ToneMap::Filmic ? GROTTO_TONE_MAP_FILMIC : GROTTO_TONE_MAP_CLAMP;
+    const LightError e = lightError(image, ref, openGroundLuminance(lights), lighting.exposure, curve);
+    char text[512];
+    std::snprintf(text, sizeof text,
+                  "light against the path-traced light (%u paths a pixel, %s): psnr %.2f dB (tone-mapped), "
+                  "relative rmse %.1f%%, bias %+.1f%%\n"
+                  "  where the light is at least 1%% of open ground's (%zu pixels): relative error median %.1f%%, "
+                  "95th percentile %.1f%%, %zu black\n",
+                  spp, ref.cacheHit ? "from the cache" : "traced", e.psnr, 100.0 * e.relativeRmse, 100.0 * e.bias,
+                  e.dimPixels, 100.0 * e.medianRelative, 100.0 * e.p95Relative, e.blackWhereLit);
+    return text;
+}
+
 }  // namespace
 
 void addCompareCommand(CLI::App& app) {
@@ -71,6 +98,7 @@ void addCompareCommand(CLI::App& app) {
         std::string world, camera, size = "640x360";
         int64_t spp = 1024;
         uint32_t skySpp = 1024;
+        uint32_t lightSpp = 0;
         int frames = 5, warmup = 2;
         AoFlags ao;
     };
@@ -86,6 +114,10 @@ void addCompareCommand(CLI::App& app) {
     cmd->add_option("--warmup", args->warmup, "Frames not timed")->capture_default_str()->check(CLI::Range(0, 1000));
     cmd->add_option("--sky-spp", args->skySpp, "With --ao cache: rays per point of the sky light's reference")
         ->capture_default_str()->check(CLI::Range(1u, 1u << 20));
+    cmd->add_option("--light-spp", args->lightSpp,
+                    "Also measure the final image against the path-traced light of the view, this many paths a "
+                    "pixel (cached; 0: not)")
+        ->capture_default_str()->check(CLI::Range(0u, 1u << 20));
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -109,6 +141,8 @@ void addCompareCommand(CLI::App& app) {
         const AoMeasurement m = measureAo(ctx, *session, camera, ao, cullingOptions(detail), ref, frames, args->warmup);
         if (faceCached(ao)) session->scene().faceCache()->sync();  // what the GPU traced, with --progressive
         const std::string sky = faceCached(ao) ? compareSkyLight(*session, camera, ctx, args->skySpp) : "";
+        const std::string light =
+            args->lightSpp > 0 ? compareLight(world, camera, ctx, session->posedObjects(), m, args->lightSpp) : "";
         const std::string name = world.desc().source.stem().string();
         session.reset();
         requireNoValidationMessages(ctx);
@@ -134,6 +168,7 @@ void addCompareCommand(CLI::App& app) {
         std::printf("G-buffer: lod bias %g, occlusion culling %s, %llu quads, %.2f ms\n", detail.lodBias,
                     detail.occlusionCulling ? "on" : "off", (unsigned long long)m.quadsDrawn, m.msGbuffer);
         std::fputs(sky.c_str(), stdout);
+        std::fputs(light.c_str(), stdout);
     });
 }
 

@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// Sun Lambert x shadow + ambient x AO on surfaces, a gradient sky where nothing was
-// drawn, both times the exposure: scene-linear colour, no tone map.
+// Sun Lambert x shadow + ambient x AO on surfaces, plus a glowing face's emission,
+// a gradient sky where nothing was drawn, all times the exposure: scene-linear
+// colour, no tone map.
 // With AO, one invocation per AO pixel shades its block of full-res pixels and
 // upsamples the AO for them on the way (upsample.glsl): a separate upsample pass
 // would store full-res AO only to load it again here.
@@ -30,7 +31,9 @@ layout(constant_id = 8) const bool askFaces = false;
 // pixels faster, 8x8 groups of 2x2 blocks (docs/benchmarks.md).
 layout(local_size_x_id = 1, local_size_y_id = 2) in;
 layout(set = 0, binding = 0, std140) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1, std140) uniform Palette { vec4 albedo[GROTTO_MAX_MATERIALS]; };
+layout(set = 0, binding = 1, std140) uniform Palette { vec4 palette[GROTTO_PALETTE_VEC4S]; };
+vec4 materialOf(uint surface) { return palette[2u * (surfaceMaterial(surface) - 1u)]; }  // rgb albedo, a: material AO
+vec3 emissionOf(uint surface) { return palette[2u * (surfaceMaterial(surface) - 1u) + 1u].rgb; }
 layout(set = 0, binding = 2) uniform usampler2D surfaceTex;
 layout(set = 0, binding = 3, rgba32f) uniform writeonly image2D outColor;
 layout(set = 0, binding = 4, std140) uniform Constants { GtaoConstants gtao; };
@@ -122,11 +125,12 @@ vec3 surfaceNormal(uint surface) {
 // AO already in it (1 where none is, the face cache's AO where its sky light is).
 vec3 shadeWith(uint surface, vec3 normal, float ao, float sunReach, vec3 ambient, float aoShare) {
     float cosSun = dot(normal, frame.sunDirection.xyz);
-    vec4 material = albedo[surfaceMaterial(surface) - 1u];  // rgb albedo, a: material AO
+    vec4 material = materialOf(surface);
     vec3 base = material.rgb;
     float visibility = min(mix(1.0, ao, frame.aoStrength.x), material.a);
     vec3 bounced = multiBounce(visibility, base) / max(mix(1.0, aoShare, frame.aoStrength.x), 1.0 / 255.0);
-    return base * (frame.sunRadiance.rgb * (max(cosSun, 0.0) * sunReach) + ambient * bounced);
+    // A glowing face shows its own light beside what it reflects.
+    return base * (frame.sunRadiance.rgb * (max(cosSun, 0.0) * sunReach) + ambient * bounced) + emissionOf(surface);
 }
 
 vec3 shade(uint surface, float ao, float sunReach, ivec2 aoPixel) {
@@ -171,7 +175,7 @@ vec3 shadeCached(ivec2 q, uint surface) {
         // With the cache's sun, the shadow pass holds the objects' alone.
         float cosSun = dot(normal, frame.sunDirection.xyz);
         if (shadowEdges && seen && cosSun > 0.0 && sunRange.y - sunRange.x > 0.5)  // the texels disagree by over half
-            listShadowEdge(q, c.y, exposed(albedo[surfaceMaterial(surface) - 1u].rgb * frame.sunRadiance.rgb * (cosSun * sunReach)));
+            listShadowEdge(q, c.y, exposed(materialOf(surface).rgb * frame.sunRadiance.rgb * (cosSun * sunReach)));
         if (cachedSun && seen) sunReach *= c.y;
         light = vec3(max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)));
     }

@@ -5,6 +5,7 @@
 #include "tests/vox_writer.h"
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 
 namespace grotto::test {
@@ -116,6 +117,58 @@ TEST_F(CliEmitters, ReferenceFullLightWritesRadianceAndRefusesAoOnlyFlags) {
                   "--radius", dir_ / "c.exr");
     expectRefused("reference " + world.string() + " --light sky --spp 8 -o " + (dir_ / "d.exr").string(), "--light",
                   dir_ / "d.exr");
+}
+
+TEST_F(CliEmitters, ARenderShowsAGlowingFaceAtItsEmissionTimesTheExposure) {
+    // A black lamp reflects nothing: its faces show exactly emission x exposure (0.6).
+    const fs::path world = writeLampWorld(
+        R"({"name": "lamp", "albedo": [0, 0, 0], "emission": {"color": [1, 0.5, 0.25], "intensity": 4}})");
+    const fs::path exr = dir_ / "lamp.exr";
+    const RunResult r = runGrotto("render " + world.string() + " --ao off --size 48x32 -o " + exr.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    auto in = OIIO::ImageInput::open(exr.string());
+    ASSERT_TRUE(in);
+    const int channels = in->spec().nchannels;
+    std::vector<float> pixels(size_t(in->spec().image_pixels()) * size_t(channels));
+    ASSERT_TRUE(in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()));
+    int lamp = 0;
+    for (size_t i = 0; i < pixels.size(); i += size_t(channels)) {
+        if (pixels[i] < 1.0f) continue;  // the floor and the sky stay far below the lamp
+        ++lamp;
+        EXPECT_NEAR(pixels[i], 2.4f, 1e-4f);
+        EXPECT_NEAR(pixels[i + 1], 1.2f, 1e-4f);
+        EXPECT_NEAR(pixels[i + 2], 0.6f, 1e-4f);
+    }
+    EXPECT_GT(lamp, 4);
+}
+
+TEST_F(CliEmitters, CompareMeasuresTheImageAgainstThePathTracedLight) {
+    // Open ground under a uniform sky of 1 and no sun: the constant ambient of the
+    // same colour is the sky's exact light there, so the image matches the light.
+    const fs::path world = writeText("open.json", R"({"grid": {"file": "good.vdb"}, "lighting": {
+        "sun": {"intensity": 0}, "ambient": {"color": [1, 1, 1], "intensity": 0.7},
+        "sky": {"zenith": [1, 1, 1], "horizon": [1, 1, 1]}},
+        "cameras": {"down": {"position": [8, 12, 9], "target": [8, 0, 8], "fov": 40}}})");
+    const RunResult r = runGrotto("compare " + world.string() + " --camera down --size 48x32 --spp 16 --light-spp 16 "
+                                  "--frames 1 --warmup 0");
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const size_t at = r.out.find("light against the path-traced light (16 paths a pixel, traced): psnr ");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    double psnr = 0.0, rmse = 0.0, bias = 0.0;
+    ASSERT_EQ(std::sscanf(r.out.c_str() + at, "light against the path-traced light (16 paths a pixel, traced): psnr %lf dB "
+                          "(tone-mapped), relative rmse %lf%%, bias %lf%%", &psnr, &rmse, &bias), 3) << r.out;
+    EXPECT_GT(psnr, 40.0) << r.out;
+    EXPECT_LT(rmse, 2.0) << r.out;
+    EXPECT_LT(std::abs(bias), 1.0) << r.out;
+    // A sky of 2 in the path tracer's light is twice what the composite's constant gives.
+    const fs::path brighter = writeText("brighter.json", R"({"grid": {"file": "good.vdb"}, "lighting": {
+        "sun": {"intensity": 0}, "ambient": {"color": [1, 1, 1], "intensity": 0.7},
+        "sky": {"zenith": [2, 2, 2], "horizon": [2, 2, 2]}},
+        "cameras": {"down": {"position": [8, 12, 9], "target": [8, 0, 8], "fov": 40}}})");
+    const RunResult b = runGrotto("compare " + brighter.string() + " --camera down --size 48x32 --spp 16 --light-spp 16 "
+                                  "--frames 1 --warmup 0");
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    EXPECT_NE(b.out.find("bias -50.0%"), std::string::npos) << b.out;
 }
 
 }  // namespace

@@ -1,13 +1,17 @@
 // Path tracing through the exact voxels: from each point, a cosine-weighted
 // direction per bounce (the first from the reference AO's stratified R2 set,
-// shifted per point), the sun by a shadow ray toward a point of its disc at every
-// surface (next-event estimation; escaping rays see the sky alone, so the sun is
-// counted once), emitters where a ray meets them. Double precision throughout.
+// shifted per point). At every face on the way, next-event estimation: a shadow
+// ray toward a point of the sun's disc, and one toward a point of a glowing face
+// drawn by its power. Escaping rays see the sky alone and rays meeting a glowing
+// face do not take its emission, so neither light is counted twice. Double
+// precision throughout.
 #include "voxel/path_trace.h"
 
 #include "grotto/error.h"
 #include "shaders/shared/sky.h"
+#include "shaders/shared/quad.h"
 #include "voxel/brick_table.h"
+#include "voxel/face_cache.h"
 #include "voxel/ray_sampling.h"
 
 #include <tbb/blocked_range.h>
@@ -52,12 +56,6 @@ std::vector<FaceLight> faceLights(const World& world) {
     return out;
 }
 
-glm::dvec3 faceNormal(int face) {
-    glm::dvec3 n(0.0);
-    n[face / 2] = face % 2 == 0 ? 1.0 : -1.0;
-    return n;
-}
-
 // One grid of voxels as rays see it: the world's (identity pose) or an object's.
 struct Placed {
     const World* world;
@@ -79,6 +77,15 @@ struct Placed {
     }
 };
 
+// A glowing face as a light: a square of one voxel, in world units.
+struct EmitterFace {
+    glm::dvec3 corner, u, v, normal;  // corner + s u + t v for s, t in [0, 1]; outward unit normal
+    glm::dvec3 radiance;
+    double area;
+};
+
+double luminanceOf(glm::dvec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
 struct Hit {
     double t;             // world units
     glm::dvec3 normal;    // world axes
@@ -90,6 +97,17 @@ public:
     Scene(const World& world, std::span<const PosedWorld> objects) {
         grids_.emplace_back(world, std::nullopt);
         for (const PosedWorld& o : objects) grids_.emplace_back(*o.world, o.pose);
+        for (const Placed& g : grids_) addEmitters(g);
+    }
+    // A glowing face drawn in proportion to its power (luminance x area), and
+    // the density of that draw per unit area at any of its points.
+    const EmitterFace* drawEmitter(double r, double& areaDensity) const {
+        if (emitters_.empty()) return nullptr;
+        const size_t k = size_t(std::upper_bound(cumulative_.begin(), cumulative_.end(), r * cumulative_.back()) -
+                                cumulative_.begin());
+        const EmitterFace& e = emitters_[std::min(k, emitters_.size() - 1)];
+        areaDensity = luminanceOf(e.radiance) / cumulative_.back();  // (power / total) / area
+        return &e;
     }
     // The nearest face a ray from `p` (world units, on a face of normal `n`) meets.
     std::optional<Hit> nearest(glm::dvec3 p, glm::dvec3 n, glm::dvec3 d, double epsilon) const {
@@ -99,13 +117,20 @@ public:
             const double tMax = best ? best->t / g.voxelSize : kUnbounded;
             const std::optional<BrickHit> h = g.table.firstHit(start, g.toLocalDirection(d), tMax);
             if (h && (!best || h->t * g.voxelSize < best->t))
-                best = Hit{h->t * g.voxelSize, g.toWorldDirection(faceNormal(h->face)), &g.light(h->voxel)};
+                best = Hit{h->t * g.voxelSize, g.toWorldDirection(faceNormal(uint8_t(h->face))), &g.light(h->voxel)};
         }
         return best;
     }
-    bool blocked(glm::dvec3 p, glm::dvec3 n, glm::dvec3 d, double epsilon) const {
+    // A glowing face's density under drawEmitter, per unit area.
+    double emitterDensity(glm::dvec3 radiance) const {
+        return cumulative_.empty() ? 0.0 : luminanceOf(radiance) / cumulative_.back();
+    }
+    double voxelSize() const { return grids_.front().voxelSize; }
+    // Does a solid voxel stop the ray before `distance` (world units; unbounded by default)?
+    bool blocked(glm::dvec3 p, glm::dvec3 n, glm::dvec3 d, double epsilon, double distance = kUnbounded) const {
         for (const Placed& g : grids_)
-            if (g.table.hitWithin(g.toIndex(p + n * (epsilon * g.voxelSize)), g.toLocalDirection(d), kUnbounded))
+            if (g.table.hitWithin(g.toIndex(p + n * (epsilon * g.voxelSize)), g.toLocalDirection(d),
+                                  distance / g.voxelSize))
                 return true;
         return false;
     }
@@ -118,7 +143,29 @@ public:
     size_t grids() const { return grids_.size(); }
 
 private:
+    void addEmitters(const Placed& g) {
+        if (std::none_of(g.lights.begin(), g.lights.end(), [](const FaceLight& l) { return l.emission != glm::dvec3(0.0); }))
+            return;
+        for (const ExposedFace& f : exposedFaces(g.table, *g.world)) {
+            const glm::dvec3 radiance = g.light(f.cell).emission;
+            if (luminanceOf(radiance) <= 0.0) continue;
+            // The face's corner and edges in index units, then placed as the grid is.
+            glm::dvec3 corner(f.cell), u(0.0), v(0.0);
+            corner[int(gpu::faceAxis(f.dir))] += gpu::facePositive(f.dir) ? 1.0 : 0.0;
+            u[int(gpu::faceUAxis(f.dir))] = 1.0;
+            v[int(gpu::faceVAxis(f.dir))] = 1.0;
+            const glm::dvec3 local = g.origin + corner * g.voxelSize;
+            EmitterFace e{g.pose ? g.pose->toWorld(local) : local, g.toWorldDirection(u * g.voxelSize),
+                          g.toWorldDirection(v * g.voxelSize), g.toWorldDirection(faceNormal(f.dir)), radiance,
+                          g.voxelSize * g.voxelSize};
+            emitters_.push_back(e);
+            cumulative_.push_back((cumulative_.empty() ? 0.0 : cumulative_.back()) + luminanceOf(radiance) * e.area);
+        }
+    }
+
     std::vector<Placed> grids_;
+    std::vector<EmitterFace> emitters_;
+    std::vector<double> cumulative_;  // the emitters' powers (luminance x area), summed in order
 };
 
 // Uniform numbers from a counter: one stream per path, independent of threads.
@@ -158,7 +205,7 @@ public:
         glm::dvec3 radiance = face.emission, weight = face.albedo;
         for (uint32_t bounce = 0;; ++bounce) {
             if (weight == glm::dvec3(0.0)) break;
-            radiance += weight * sunLight(p, n, rng, rays);
+            radiance += weight * (sunLight(p, n, rng, rays) + emitterLight(p, n, rng, rays));
             const glm::dvec3 d = cosineDirection(n, u, v);
             ++rays;
             const std::optional<Hit> hit = scene_.nearest(p, n, d, s_.epsilon);
@@ -166,7 +213,8 @@ public:
                 radiance += weight * skyRadiance(lights_, d);
                 break;
             }
-            radiance += weight * hit->light->emission;
+            if (hit->light->emission != glm::dvec3(0.0))
+                radiance += weight * hit->light->emission * hitWeight(n, d, *hit);
             if (bounce >= s_.maxBounces) break;
             weight *= hit->light->albedo;
             if (bounce + 1 >= kBouncesBeforeRoulette) {
@@ -198,6 +246,45 @@ private:
         if (cosine <= 0.0) return glm::dvec3(0.0);
         ++rays;
         return scene_.blocked(p, n, d, s_.epsilon) ? glm::dvec3(0.0) : lights_.sun * cosine;
+    }
+
+    // The glowing faces' light on a face (irradiance / pi): one point drawn on a
+    // face drawn by power, weighed by the cosines at both ends over the squared
+    // distance, where nothing stands between.
+    glm::dvec3 emitterLight(glm::dvec3 p, glm::dvec3 n, Random& rng, uint64_t& rays) const {
+        double density = 0.0;
+        const EmitterFace* e = scene_.drawEmitter(rng.next(), density);
+        if (!e) return glm::dvec3(0.0);
+        const glm::dvec3 q = e->corner + e->u * rng.next() + e->v * rng.next();
+        // From the ray's start (off the face), so the glowing voxel is entered at `distance`.
+        const glm::dvec3 start = p + n * (s_.epsilon * scene_.voxelSize());
+        const glm::dvec3 toLight = q - start;
+        const double distance = glm::length(toLight);
+        if (!(distance > 0.0)) return glm::dvec3(0.0);
+        const glm::dvec3 d = toLight / distance;
+        const double cosHere = glm::dot(n, d), cosThere = -glm::dot(e->normal, d);
+        if (cosHere <= 0.0 || cosThere <= 0.0) return glm::dvec3(0.0);
+        ++rays;
+        // Stop a hair short of the glowing voxel itself.
+        if (scene_.blocked(start, n, d, 0.0, distance * (1.0 - 1e-9) - 1e-7 * scene_.voxelSize()))
+            return glm::dvec3(0.0);
+        const double light = density * distance * distance / cosThere, cosine = cosHere / std::numbers::pi;
+        return e->radiance * (cosHere * cosThere / (std::numbers::pi * distance * distance * density)) *
+               powerHeuristic(light, cosine);
+    }
+
+    // The share a cosine ray's meeting with a glowing face keeps: the draw above
+    // could have found the same point, and the two are weighed by the power
+    // heuristic (Veach), so neither a small nearby face nor a large far one is noisy.
+    double hitWeight(glm::dvec3 n, glm::dvec3 d, const Hit& hit) const {
+        const double cosThere = -glm::dot(hit.normal, d);
+        if (cosThere <= 0.0) return 0.0;
+        const double light = scene_.emitterDensity(hit.light->emission) * hit.t * hit.t / cosThere;
+        return powerHeuristic(glm::dot(n, d) / std::numbers::pi, light);
+    }
+    // Densities per solid angle of the strategy taken and of the other one.
+    static double powerHeuristic(double taken, double other) {
+        return taken * taken / (taken * taken + other * other);
     }
 
     const Scene& scene_;

@@ -189,7 +189,7 @@ size_t GpuScene::hostBytes() const {
 
 size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks) {
     return bufferQuads(slotTotal(chunks)) * kQuadBytes + size_t(largestDraw(chunks)) * kIndexQuadBytes +
-           GROTTO_MAX_MATERIALS * sizeof(glm::vec4);
+           GROTTO_PALETTE_VEC4S * sizeof(glm::vec4);
 }
 
 size_t sceneBufferBytes(const voxel::Mesh& mesh) { return sceneBufferBytes(meshChunks(mesh)); }
@@ -269,9 +269,11 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::M
     s.indices = vk::uploadBuffer(ctx, indices.data(), indices.size() * sizeof(uint32_t),
                                  VK_BUFFER_USAGE_INDEX_BUFFER_BIT);
     // The whole palette range the shaders declare, unused entries black.
-    std::vector<glm::vec4> palette(GROTTO_MAX_MATERIALS, glm::vec4(0.0f));
-    for (size_t i = 0; i < desc.materials.size() && i < palette.size(); ++i)
-        palette[i] = glm::vec4(desc.materials[i].albedo, desc.materials[i].ao);
+    std::vector<glm::vec4> palette(GROTTO_PALETTE_VEC4S, glm::vec4(0.0f));
+    for (size_t i = 0; i < desc.materials.size() && i < GROTTO_MAX_MATERIALS; ++i) {
+        palette[2 * i] = glm::vec4(desc.materials[i].albedo, desc.materials[i].ao);
+        palette[2 * i + 1] = glm::vec4(desc.materials[i].emission(), 0.0f);
+    }
     for (const voxel::Material& m : desc.materials) s.albedo.push_back(m.albedo);
     s.palette = vk::uploadBuffer(ctx, palette.data(), palette.size() * sizeof(glm::vec4),
                                  VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);

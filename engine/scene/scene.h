@@ -65,7 +65,7 @@ public:
     vk::Context& ctx;
     vk::Buffer vertices;
     vk::Buffer indices;
-    vk::Buffer palette;                 // uniform buffer of GROTTO_MAX_MATERIALS vec4: albedo, material AO
+    vk::Buffer palette;                 // uniform buffer of GROTTO_PALETTE_VEC4S (shared/frame.h): albedo and AO, emission
     std::vector<glm::vec3> albedo;      // host copy of the palette, id k at [k - 1]
     std::vector<GpuChunk> chunks;       // ordered by index (x, then y, then z), as World::mesh() lists them
     double voxelSize = 1.0;

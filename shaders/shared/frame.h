@@ -43,6 +43,9 @@ struct ChunkPush {
 GROTTO_STATIC_ASSERT(sizeof(ChunkPush) == 32);
 
 #define GROTTO_MAX_MATERIALS 255
+// The palette's uniform buffer: per material, vec4(albedo, material AO) then
+// vec4(emission, 0) (the radiance its faces give off).
+#define GROTTO_PALETTE_VEC4S (2 * GROTTO_MAX_MATERIALS)
 
 GROTTO_NAMESPACE_END
 #endif
