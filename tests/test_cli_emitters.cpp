@@ -11,6 +11,21 @@
 namespace grotto::test {
 namespace {
 
+// An EXR's pixels as floats, every channel interleaved; its spec beside them.
+struct FloatImage {
+    OIIO::ImageSpec spec;
+    std::vector<float> pixels;
+};
+FloatImage readFloats(const fs::path& exr) {
+    FloatImage image;
+    auto in = OIIO::ImageInput::open(exr.string());
+    if (!in) return image;
+    image.spec = in->spec();
+    image.pixels.resize(size_t(image.spec.image_pixels()) * size_t(image.spec.nchannels));
+    if (!in->read_image(0, 0, 0, image.spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) image.pixels.clear();
+    return image;
+}
+
 class CliEmitters : public CliErrors {
 protected:
     // A 3 x 3 floor of colour 1 with one voxel of colour 2 on it (MagicaVoxel
@@ -94,14 +109,13 @@ TEST_F(CliEmitters, ReferenceFullLightWritesRadianceAndRefusesAoOnlyFlags) {
     const fs::path exr = dir_ / "light.exr";
     const RunResult r = runGrotto("reference " + world.string() + " --light full --spp 8 --size 48x32 -o " + exr.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    auto in = OIIO::ImageInput::open(exr.string());
-    ASSERT_TRUE(in);
-    const OIIO::ImageSpec spec = in->spec();
+    const FloatImage image = readFloats(exr);
+    ASSERT_FALSE(image.pixels.empty());
+    const OIIO::ImageSpec& spec = image.spec;
+    const std::vector<float>& pixels = image.pixels;
     ASSERT_EQ(spec.nchannels, 6);
     for (const char* name : {"R", "G", "B", "R_stderr", "G_stderr", "B_stderr"})
         EXPECT_GE(spec.channelindex(name), 0) << name;
-    std::vector<float> pixels(size_t(spec.image_pixels()) * 6);
-    ASSERT_TRUE(in->read_image(0, 0, 0, 6, OIIO::TypeDesc::FLOAT, pixels.data()));
     const int R = spec.channelindex("R"), G = spec.channelindex("G");
     float brightest = 0.0f;
     for (size_t i = 0; i < pixels.size(); i += 6) {
@@ -126,11 +140,10 @@ TEST_F(CliEmitters, ARenderShowsAGlowingFaceAtItsEmissionTimesTheExposure) {
     const fs::path exr = dir_ / "lamp.exr";
     const RunResult r = runGrotto("render " + world.string() + " --ao off --size 48x32 -o " + exr.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    auto in = OIIO::ImageInput::open(exr.string());
-    ASSERT_TRUE(in);
-    const int channels = in->spec().nchannels;
-    std::vector<float> pixels(size_t(in->spec().image_pixels()) * size_t(channels));
-    ASSERT_TRUE(in->read_image(0, 0, 0, channels, OIIO::TypeDesc::FLOAT, pixels.data()));
+    const FloatImage image = readFloats(exr);
+    ASSERT_FALSE(image.pixels.empty());
+    const int channels = image.spec.nchannels;
+    const std::vector<float>& pixels = image.pixels;
     int lamp = 0;
     for (size_t i = 0; i < pixels.size(); i += size_t(channels)) {
         if (pixels[i] < 1.0f) continue;  // the floor and the sky stay far below the lamp
