@@ -20,11 +20,18 @@ protected:
     // The world's own lighting unless `lighting` is given.
     Rendered render(const voxel::World& world, const voxel::CameraDesc& cd, uint32_t w, uint32_t h,
                     const AoOptions& ao, const voxel::Lighting* lighting = nullptr) {
+        return render(*upload(world, ao), world, cd, w, h, ao, lighting);
+    }
+    // The world's occupancy only where the AO traces it.
+    std::unique_ptr<GpuScene> upload(const voxel::World& world, const AoOptions& ao) {
+        return tracesVoxels(ao.method) || voxelThickness(ao) ? uploadScene(ctx(), world)
+                                                             : uploadScene(ctx(), world.mesh(), world.desc());
+    }
+    // A scene from upload(world, ao) for many views: meshing it again for each is what costs.
+    Rendered render(GpuScene& scene, const voxel::World& world, const voxel::CameraDesc& cd, uint32_t w, uint32_t h,
+                    const AoOptions& ao, const voxel::Lighting* lighting = nullptr) {
         Rendered r{{}, makeCamera(cd, w, h), {}};
-        // The world's occupancy only where the AO traces it.
-        auto scene = tracesVoxels(ao.method) || voxelThickness(ao) ? uploadScene(ctx(), world)
-                                                                   : uploadScene(ctx(), world.mesh(), world.desc());
-        Renderer renderer(ctx(), *scene, lighting ? *lighting : world.desc().lighting, ao, w, h);
+        Renderer renderer(ctx(), scene, lighting ? *lighting : world.desc().lighting, ao, w, h);
         renderer.render(r.camera);
         r.img = renderer.readback(r.camera, true);
         r.constants = gtaoConstants(r.camera, gpuSettings(ao), 0, ao.chain.fullResolution ? 1 : 2);

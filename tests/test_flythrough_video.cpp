@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <future>
 #include <sstream>
 #include <thread>
 
@@ -166,14 +167,22 @@ TEST_F(FlythroughVideo, AnFfmpegThatNeverReadsIsGivenUp) {
 // GROTTO_VIDEO_TIMEOUT (300 s by default) allows an ffmpeg that is reading.
 TEST_F(FlythroughVideo, AnFfmpegThatNeverStartsReadingIsGivenUpSoon) {
     const std::string path = fakeFfmpeg("exec sleep 600");
-    for (const char* size : {"320x240", "48x32"}) {  // a write that waits; frames that all fit in the pipe
-        const test::RunResult r = runGrotto(flythrough("--video " + video().string(), size), path, {.hangSeconds = 60});
-        EXPECT_EQ(r.exitCode, 1) << size << ": " << r.err;
+    // A write that waits; frames that all fit in the pipe. Both at once: each waits its 10 s.
+    const std::string sizes[] = {"320x240", "48x32"};
+    auto videoOf = [&](const std::string& size) { return dir_ / ("fly-" + size + ".mp4"); };
+    std::vector<std::future<test::RunResult>> runs;
+    for (const std::string& size : sizes)
+        runs.push_back(std::async(std::launch::async, [&, size] {
+            return runGrotto(flythrough("--video " + videoOf(size).string(), size), path, {.hangSeconds = 60});
+        }));
+    for (size_t k = 0; k < runs.size(); ++k) {
+        const test::RunResult r = runs[k].get();
+        EXPECT_EQ(r.exitCode, 1) << sizes[k] << ": " << r.err;
         EXPECT_NE(r.err.find("read none of its input in the 10 s after it started"), std::string::npos) << r.err;
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-        EXPECT_FALSE(fs::exists(video()));
-        expectNoTemporaries();
+        EXPECT_FALSE(fs::exists(videoOf(sizes[k])));
     }
+    expectNoTemporaries();
 }
 
 // ffmpeg exiting 0 is not trusted: the video must read back with every frame.

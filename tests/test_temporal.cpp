@@ -258,12 +258,14 @@ TEST_F(Temporal, StillCameraDoesNotDriftOverTenThousandFramesNorAtTheCounterWrap
     // Frames 1000 and 10000 sit at other points of the 64-frame noise cycle; the
     // history averages over it, so their means must still agree.
     EXPECT_NEAR(meanAo(at10000), at1000, 1e-3);
-    // The same sequence started 512 frames before the 32-bit counter wraps
-    // (noise phase 0, as from 0) gives the same pixels, history intact across it.
+    // The same sequence started one noise cycle (64 frames) before the 32-bit
+    // counter wraps (phase 0, as from 0) gives the same pixels, history intact
+    // across it: 64 frames fill the 16-frame history before the wrap, and fewer
+    // than 16 after it leave a history cut at the wrap short of 16.
     Run wrapped = start(world, options(), 32, 18);
     Run plain = start(world, options(), 32, 18);
-    const uint32_t startAt = 0xFFFFFFFFu - 511u;
-    for (uint32_t i = 0; i < 1024; ++i) {
+    const uint32_t startAt = 0xFFFFFFFFu - 63u;
+    for (uint32_t i = 0; i < 64 + 8; ++i) {
         wrapped.renderer->render(camera, startAt + i);
         plain.renderer->render(camera, i);
     }

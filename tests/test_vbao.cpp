@@ -61,11 +61,12 @@ TEST_F(Vbao, GpuMatchesCpuTwinForEveryPreset) {
 
 TEST_F(Vbao, FlatFloorStaysOpenFromStraightDownToGrazing) {
     const voxel::World floor = test::makeVoxelWorld({-256, -1, -256}, {255, -1, 255}, [](int, int, int) { return true; });
+    const auto scene = upload(floor, vbao("high"));
     for (double degrees : {0.0, 45.0, 80.0, 85.0, 89.0, 89.5}) {
         const double a = glm::radians(degrees);
         const glm::dvec3 eye(0.0, 1.5, 0.0);
         const glm::dvec3 dir(std::sin(a), -std::cos(a), 0.0);
-        const Rendered r = render(floor, test::lookAt(eye, eye + dir, 70.0), 192, 108, vbao("high"));
+        const Rendered r = render(*scene, floor, test::lookAt(eye, eye + dir, 70.0), 192, 108, vbao("high"));
         int floorPixels = 0;
         for (size_t i = 0; i < r.img.ao.size(); ++i) {
             if (!std::isfinite(r.img.depth[i])) continue;
