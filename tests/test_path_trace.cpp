@@ -6,6 +6,8 @@
 #include "voxel/path_trace.h"
 #include "voxel/ray_sampling.h"
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -181,6 +183,37 @@ TEST(PathTrace, SealedRoomWithoutEmittersIsBlack) {
     const PathTraced t = pathTrace(box, {}, pts.p, pts.n, {}, lightSources(lighting), s);
     for (size_t k = 0; k < pts.p.size(); ++k) EXPECT_EQ(t.radiance[k], glm::vec3(0.0f)) << "point " << k;
     EXPECT_GT(t.rays, uint64_t(pts.p.size()) * s.spp);  // bounces and shadow rays were traced
+}
+
+TEST(PathTrace, AGlowingObjectLightsAsTheSameVoxelsInTheWorld) {
+    // A lantern of 2 x 2 x 2 glowing voxels over a floor: once built into the
+    // world, once an object placed at the same spot (turned a quarter about y,
+    // which maps the cube onto itself). The floor's light agrees.
+    const Material floor = lambert(glm::vec3(0.6f)), lantern = lambert(glm::vec3(0.2f), glm::vec3(3.0f, 2.0f, 1.0f));
+    const glm::ivec3 lo(10, 4, 10);
+    const World built = denseWorld({24, 8, 24}, {floor, lantern}, [&](int x, int y, int z) {
+        if (y == 0) return 1;
+        return x >= lo.x && x < lo.x + 2 && y >= lo.y && y < lo.y + 2 && z >= lo.z && z < lo.z + 2 ? 2 : 0;
+    });
+    const World ground = denseWorld({24, 1, 24}, {floor, lantern}, [](int, int, int) { return 1; });
+    const World cube = denseWorld({2, 2, 2}, {floor, lantern}, [](int, int, int) { return 2; });
+    ObjectPose pose;
+    pose.pivot = dvec3(1.0);                 // the cube's centre, in its own units
+    pose.position = dvec3(lo) + dvec3(1.0);  // placed on the built one's centre
+    pose.rotation = glm::angleAxis(std::numbers::pi / 2.0, dvec3(0.0, 1.0, 0.0));
+    const std::vector<PosedWorld> objects = {{&cube, pose}};
+    const std::vector<dvec3> points = {{11.0, 1.0, 11.0}, {7.5, 1.0, 12.25}, {15.0, 1.0, 6.0}};
+    const std::vector<dvec3> normals(points.size(), dvec3(0, 1, 0));
+    PathTraceSettings s;
+    s.spp = 4096;
+    const PathTraced a = pathTrace(built, {}, points, normals, {}, darkness(), s);
+    const PathTraced b = pathTrace(ground, objects, points, normals, {}, darkness(), s);
+    for (size_t k = 0; k < points.size(); ++k)
+        for (int c = 0; c < 3; ++c) {
+            const double sigma = std::hypot(a.stderror[k][c], b.stderror[k][c]);
+            EXPECT_NEAR(a.radiance[k][c], b.radiance[k][c], 3.0 * sigma + 1e-6) << "point " << k << ", channel " << c;
+            EXPECT_GT(b.radiance[k][c], 0.01) << "the object lights point " << k;
+        }
 }
 
 TEST(PathTrace, FirstHitAgreesWithTheWorldsRaycast) {
