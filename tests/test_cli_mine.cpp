@@ -1,6 +1,7 @@
 // The shipped mine's palette on a small mine from `mkworld`: `info` lists its
-// three glowing materials (torches, crystals, lava) with their power, and
-// `mkworld --lamps` is for houses alone.
+// three glowing materials (torches, crystals, lava) with their power. (The
+// refusal of --lamps for other kinds is tested in test_mine_world.cpp, without
+// a process.)
 #include "tests/cli_fixture.h"
 
 #include <fstream>
@@ -26,10 +27,6 @@ TEST_F(CliMine, InfoListsTheTorchesCrystalsAndLava) {
     EXPECT_NE(r.out.find("emitter        material 6: radiance (0.875 1.625 2.5)"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("emitter        material 7: radiance (3 0.96 0.18)"), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("emitters       3 materials"), std::string::npos) << r.out;
-}
-
-TEST_F(CliMine, LampsAreForHousesAlone) {
-    expectRefused("mkworld mine --lamps -o " + (dir_ / "m.vdb").string(), "--lamps", dir_ / "m.vdb");
 }
 
 }  // namespace
