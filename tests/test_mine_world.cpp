@@ -116,7 +116,7 @@ TEST(HousesLamps, OneLampUnderEachCeilingOnlyWhenAsked) {
 // The shipped files: their grids are this generator's (regenerated with
 // scripts/make-worlds.sh), and only the lamps, torches, crystals and lava glow.
 TEST(ShippedGlowingWorlds, MineAndHousesAtNightGlowWhereTheLayoutSays) {
-    const World shipped = World::load(test::worldsDir() / "mine.json");
+    const World shipped = World::load(grotto::test::worldsDir() / "mine.json");
     EXPECT_EQ(shipped.bounds().max.x - shipped.bounds().min.x, 79) << "80 wide";
     EXPECT_EQ(shipped.material({-20, 7, 0}), Torch);
     EXPECT_EQ(shipped.material({18, 2, -18}), Lava);
@@ -124,7 +124,7 @@ TEST(ShippedGlowingWorlds, MineAndHousesAtNightGlowWhereTheLayoutSays) {
     for (size_t id = 1; id <= mineMaterials.size(); ++id)
         EXPECT_EQ(mineMaterials[id - 1].emits(), int(id) == Torch || int(id) == Crystal || int(id) == Lava) << mineMaterials[id - 1].name;
 
-    const World night = World::load(test::worldsDir() / "houses-night.json");
+    const World night = World::load(grotto::test::worldsDir() / "houses-night.json");
     EXPECT_EQ(night.voxelsByMaterial()[Lamp], 12u);
     EXPECT_TRUE(night.desc().materials[Lamp - 1].emits());
     EXPECT_EQ(night.desc().lighting.sunIntensity, 0.0f);
