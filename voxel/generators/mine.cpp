@@ -8,7 +8,7 @@
 //     from the floor at (-18, 4, -18), so the sun reaches that floor;
 //   - the lava hall at (18, -18): a pool of lava, ellipse 6 x 5 voxels, one
 //     below the floor (its voxels at y = 2, air at y = 3);
-//   - the crystal hall at (18, 18): three clusters of crystal spikes, 1 to 5 high;
+//   - the crystal hall at (18, 18): three clusters of crystal spikes, 1 to 4 high;
 //   - the torch hall at (-18, 18): torches (a flame voxel on a wooden post three
 //     high) at kTorches, three in the hall and one in each tunnel beside it.
 // The seed moves the rough walls, the worm tunnels and the spikes' heights.
