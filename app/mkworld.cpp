@@ -1,4 +1,4 @@
-// grotto mkworld KIND -o FILE.vdb [--seed N] [--size N] [--voxel-size S] [--mesh FILE]
+// grotto mkworld KIND -o FILE.vdb [--seed N] [--size N] [--voxel-size S] [--mesh FILE] [--lamps]
 #include "app/commands.h"
 #include "voxel/mkworld.h"
 
@@ -21,6 +21,7 @@ void addMkworldCommand(CLI::App& app) {
     cmd->add_option("--size", args->options.size, "Extent in voxels (0 = the kind's default)")->capture_default_str();
     cmd->add_option("--voxel-size", args->options.voxelSize, "World units per voxel")->capture_default_str();
     cmd->add_option("--mesh", args->options.meshFile, "mesh: the OBJ or PLY to voxelise");
+    cmd->add_flag("--lamps", args->options.lamps, "houses: a lamp (material 6) on each room's ceiling");
     cmd->callback([args] {
         voxel::makeWorldFile(args->kind, args->options, args->output);
         std::printf("wrote %s\n", args->output.c_str());

@@ -10,4 +10,6 @@ grotto=${GROTTO:-build/grotto}
 "$grotto" mkworld city   -o worlds/city.vdb   --seed 1
 "$grotto" mkworld sphere -o worlds/sphere.vdb --seed 1
 "$grotto" mkworld houses -o worlds/houses.vdb --seed 1
+"$grotto" mkworld houses --lamps -o worlds/houses-night.vdb --seed 1
+"$grotto" mkworld mine   -o worlds/mine.vdb   --seed 1
 python3 scripts/make-demo-vox.py worlds/demo.vox

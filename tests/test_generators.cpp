@@ -127,7 +127,8 @@ INSTANTIATE_TEST_SUITE_P(Kinds, GeneratorDeterminism,
                                            KindCase{"thin", 64, "solid", "Tree_bool_5_4_3"},
                                            KindCase{"city", 256, "material", "Tree_int32_5_4_3"},
                                            KindCase{"sphere", 32, "surface", "Tree_float_5_4_3"},
-                                           KindCase{"houses", 64, "material", "Tree_int32_5_4_3"}),
+                                           KindCase{"houses", 64, "material", "Tree_int32_5_4_3"},
+                                           KindCase{"mine", 64, "material", "Tree_int32_5_4_3"}),
                          [](const auto& info) { return std::string(info.param.kind); });
 
 TEST(Generators, CavesDependOnSeed) {
@@ -241,7 +242,7 @@ TEST(Generators, GeneratedSizeBoundsWhatIsMade) {
     };
     for (const Case c : {Case{"rooms", 64}, Case{"rooms", 256}, Case{"caves", 64}, Case{"caves", 256}, Case{"thin", 64},
                          Case{"thin", 256}, Case{"city", 256}, Case{"city", 1024}, Case{"sphere", 64}, Case{"sphere", 256},
-                         Case{"mesh", 64}, Case{"houses", 64}, Case{"houses", 256}}) {
+                         Case{"mesh", 64}, Case{"houses", 64}, Case{"houses", 256}, Case{"mine", 64}, Case{"mine", 128}}) {
         SCOPED_TRACE(std::string(c.kind) + " " + std::to_string(c.size));
         GeneratorOptions o = sized(c.size);
         if (std::string(c.kind) == "mesh") o.meshFile = dir.write("cube.obj", kCubeObj);

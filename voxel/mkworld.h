@@ -13,6 +13,7 @@ struct GeneratorOptions {
     int size = 0;              // horizontal extent in voxels; 0 = the kind's default
     double voxelSize = 1.0;    // world units per voxel
     std::string meshFile;      // `mesh` only: an OBJ or PLY to voxelise
+    bool lamps = false;        // `houses` only: a lamp (material 6) on each room's ceiling
 };
 
 // The kinds accepted, in the order `mkworld --help` lists them.

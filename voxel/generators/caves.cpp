@@ -2,11 +2,10 @@
 // 3D fractal noise pushes the surface in and out (overhangs) and two more noise
 // fields carve worm-like tunnels where both are near zero. Only a crust down to
 // kCrust voxels below the height field is solid, so the world stays small.
+#include "voxel/generators/leaf_grid.h"
 #include "voxel/generators/noise.h"
 #include "voxel/mkworld.h"
 
-#include "voxel/openvdb_grids.h"
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -19,14 +18,13 @@ namespace {
 
 enum CaveMaterial : int32_t { Rock = 1, Dirt = 2, Grass = 3 };
 
-using LeafT = openvdb::Int32Tree::LeafNodeType;
-constexpr int kDim = int(LeafT::DIM);  // 8
+using LeafT = MaterialLeaf;
+constexpr int kDim = kLeafDim;
 
 constexpr int kTop = 96;            // world height in voxels
 constexpr float kCrust = 24.0f;     // solid depth below the height field
 constexpr float kOverhang = 30.0f;  // how far the 3D noise moves the surface
 constexpr int kDirt = 3;            // dirt layer thickness
-constexpr float kTunnel = 0.006f;   // squared radius of tunnels in noise units
 
 class Terrain {
 public:
@@ -53,10 +51,7 @@ public:
         if (y < 0 || y >= kTop || fy < h - kCrust || fy > h + kOverhang * 1.2f) return false;
         const float fx = float(x), fz = float(z);
         const float d = h - fy + kOverhang * fbm(fx / 32.0f, fy / 10.0f, fz / 32.0f, seed_ + 1u, 3);
-        if (d <= 0.0f) return false;
-        const float a = fbm(fx / 48.0f, fy / 32.0f, fz / 48.0f, seed_ + 2u, 2);
-        const float b = fbm(fx / 48.0f, fy / 32.0f, fz / 48.0f, seed_ + 3u, 2);
-        return a * a + b * b >= kTunnel;
+        return d > 0.0f && !inWormTunnel(fx, fy, fz, seed_);
     }
 
     // By the solid run above a voxel: open above -> grass (near the height field;
@@ -99,8 +94,6 @@ private:
     std::vector<float> heights_;
 };
 
-int floorTo(int v, int step) { return v >= 0 ? v / step * step : -((-v + step - 1) / step) * step; }
-
 }  // namespace
 
 openvdb::GridBase::Ptr generateCaves(const GeneratorOptions& options) {
@@ -122,20 +115,7 @@ openvdb::GridBase::Ptr generateCaves(const GeneratorOptions& options) {
             for (int y = y0; y < y1; y += kDim) origins.emplace_back(x0, y, z0);
         }
 
-    // Each leaf depends only on its origin, so the result ignores thread count and order.
-    std::vector<std::unique_ptr<LeafT>> leaves(origins.size());
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, origins.size(), 16),
-                      [&](const tbb::blocked_range<size_t>& r) {
-                          for (size_t n = r.begin(); n != r.end(); ++n)
-                              leaves[n] = terrain.leaf(origins[n]);
-                      });
-
-    auto grid = openvdb::Int32Grid::create(0);
-    grid->setTransform(openvdb::math::Transform::createLinearTransform(options.voxelSize));
-    grid->setName("material");
-    for (auto& leaf : leaves)
-        if (leaf) grid->tree().addLeaf(leaf.release());
-    return grid;
+    return gridFromLeaves(origins, [&](const openvdb::Coord& o) { return terrain.leaf(o); }, options.voxelSize);
 }
 
 }  // namespace grotto::voxel

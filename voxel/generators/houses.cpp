@@ -4,7 +4,9 @@
 // and 16, y 0 to 4, z 3) that the world file's door object swings shut. Sky light and sunlight reach a room
 // only through its openings, so the first stays dark, the second gets a patch of
 // sun and some sky, and the third is lit while its door stands open. The houses
-// keep their sizes in voxels; the ground grows with options.size.
+// keep their sizes in voxels; the ground grows with options.size. With
+// options.lamps each room gets a lamp, 2 x 1 x 2 voxels of material 6 under the
+// middle of its ceiling (interior x0+5..x0+6, y 7, z0+5..z0+6), for a night.
 #include "voxel/mkworld.h"
 
 #include "voxel/openvdb_grids.h"
@@ -15,7 +17,7 @@ namespace grotto::voxel {
 namespace {
 
 namespace house {  // names of its own: rooms.cpp has a Wall and a Stone too
-enum Material : int32_t { Ground = 1, Wall = 2, Roof = 3, Stone = 5 };
+enum Material : int32_t { Ground = 1, Wall = 2, Roof = 3, Stone = 5, Lamp = 6 };
 }  // namespace house
 
 }  // namespace
@@ -45,6 +47,7 @@ openvdb::GridBase::Ptr generateHouses(const GeneratorOptions& options) {
         box(x0, 8, z0, x0 + 12, 9, z0 + 12, house::Roof);
         box(x0 + 1, 0, z0 + 1, x0 + 11, 8, z0 + 11, 0);
         box(x0 + 1, -1, z0 + 1, x0 + 11, 0, z0 + 11, house::Stone);  // a stone floor inside
+        if (options.lamps) box(x0 + 5, 7, z0 + 5, x0 + 7, 8, z0 + 7, house::Lamp);
     };
     const int z0 = -8;
     house(-22, z0);                              // closed

@@ -74,4 +74,11 @@ float fbm(float x, float y, float z, uint32_t seed, int octaves) {
     return total > 0.0f ? sum / total : 0.0f;
 }
 
+bool inWormTunnel(float x, float y, float z, uint32_t seed) {
+    constexpr float kTunnel = 0.006f;  // squared radius of tunnels in noise units
+    const float a = fbm(x / 48.0f, y / 32.0f, z / 48.0f, seed + 2u, 2);
+    const float b = fbm(x / 48.0f, y / 32.0f, z / 48.0f, seed + 3u, 2);
+    return a * a + b * b < kTunnel;
+}
+
 }  // namespace grotto::voxel

@@ -19,4 +19,8 @@ float gradientNoise(float x, float y, float z, uint32_t seed);
 // amplitude of the last, each with its own seed; normalised to roughly [-1, 1].
 float fbm(float x, float y, float z, uint32_t seed, int octaves);
 
+// Worm-like tunnels (caves, mine): where two fractal noises, 48 voxels across and
+// 32 up, are both near zero; their zero surfaces cross along winding curves.
+bool inWormTunnel(float x, float y, float z, uint32_t seed);
+
 }  // namespace grotto::voxel

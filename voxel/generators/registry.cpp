@@ -19,6 +19,7 @@ openvdb::GridBase::Ptr generateCity(const GeneratorOptions& options);
 openvdb::GridBase::Ptr generateSphere(const GeneratorOptions& options);
 openvdb::GridBase::Ptr generateMesh(const GeneratorOptions& options);
 openvdb::GridBase::Ptr generateHouses(const GeneratorOptions& options);
+openvdb::GridBase::Ptr generateMine(const GeneratorOptions& options);
 
 namespace {
 
@@ -54,6 +55,10 @@ GeneratedSize housesSize(int S) {  // a ground slab, three houses of 12 x 9 x 12
     const double B = across(S);
     return {B * B + 3 * 27, B * B + 3 * 27, kValueLeafBytes};
 }
+GeneratedSize mineSize(int S) {  // a block of rock 40 voxels (5 bricks) high over the footprint
+    const double B = across(S);
+    return {5 * B * B, 5 * B * B, kValueLeafBytes};
+}
 GeneratedSize meshSize(int S) {  // whatever the mesh, within a cube of S
     const double B = across(S);
     return {B * B * B, B * B * B, kValueLeafBytes};
@@ -77,6 +82,7 @@ const std::vector<Kind>& kinds() {
         {"sphere", 64, 4096, "surface", generateSphere, sphereSize},
         {"mesh", 128, 1024, "surface", generateMesh, meshSize},
         {"houses", 64, 4096, "material", generateHouses, housesSize},
+        {"mine", 80, 1024, "material", generateMine, mineSize},
     };
     return table;
 }
@@ -104,6 +110,8 @@ GeneratorOptions resolve(const Kind& kind, GeneratorOptions options) {
                     "e.g. 1.0 or 0.25 world units per voxel");
     if (kind.name == "mesh" && options.meshFile.empty())
         throw Error("--mesh", "the mesh kind needs a mesh file", "give an .obj or ASCII .ply file");
+    if (options.lamps && kind.name != "houses")
+        throw Error("--lamps", "only the houses kind has lamps, not " + kind.name, "drop --lamps, or make houses");
     return options;
 }
 
