@@ -225,6 +225,41 @@ TEST_F(VoxMemory, RenderOverItsBudgetIsRefusedBeforeTheUpload) {
         EXPECT_NE(r.err.find(mention), std::string::npos) << mention << " in: " << r.err;
 }
 
+// The reference's view and a world's objects upload meshes of their own (the
+// exact voxels): each is checked as a render's scene is, before its upload. The
+// model takes about 66 MiB to load and mesh; its mesh, the mesh's copy and their
+// upload about 80.
+class VoxUploads : public VoxMemory {
+protected:
+    static constexpr const char* kBudget = "72";
+    void SetUp() override {
+        VoxMemory::SetUp();
+        std::mt19937 rng(5);
+        writeVox("big.vox", placed({{{40, 40, 40}, speckledBox(rng)}}, 12, 50, {VoxWriter::kIdentity}));
+    }
+    static void expectSceneRefusal(const test::RunResult& r) {
+        for (const std::string& mention : {std::string("loading, meshing and rendering it needs an estimated"),
+                                           std::string("more than the memory budget of ") + kBudget + ".0 MiB"})
+            EXPECT_NE(r.err.find(mention), std::string::npos) << mention << " in: " << r.err;
+    }
+};
+
+TEST_F(VoxUploads, ReferenceOverItsBudgetIsRefusedBeforeTheUpload) {
+    const fs::path world = writeText("big.json", std::string(R"({"grid": {"file": "big.vox"}, "memory_budget_mib": )") + kBudget + "}");
+    expectSceneRefusal(expectRefused("reference " + world.string() + " --size 32x24 --spp 1 -o " + (dir_ / "ref.exr").string(),
+                                     "big.vox", dir_ / "ref.exr", ""));
+}
+
+TEST_F(VoxUploads, ObjectOverItsBudgetIsRefusedBeforeTheUpload) {
+    sparseVox();
+    std::string materials;  // the model's 30 colours in the world's palette
+    for (int k = 0; k < 30; ++k) materials += std::string(k ? ", " : "") + R"({"albedo": [0.5, 0.5, 0.5]})";
+    const fs::path world = writeText("objects.json", std::string(R"({"grid": {"file": "sparse.vox"}, "memory_budget_mib": )") + kBudget +
+                                                         R"(, "materials": [)" + materials + R"(], "objects": [{"name": "model", "grid": {"file": "big.vox"}, "keys": [{"time": 0, "position": [0, 0, 0]}]}]})");
+    expectSceneRefusal(expectRefused("render " + world.string() + " --size 32x24 --accumulate 1 -o " + (dir_ / "objects.png").string(),
+                                     "big.vox", dir_ / "objects.png", ""));
+}
+
 TEST_F(VoxMemory, ModelOverItsBudgetIsRefusedBeforeTheWork) {
     std::mt19937 rng(5);
     writeVox("big.vox", placed({{{40, 40, 40}, speckledBox(rng)}}, 12, 50, {VoxWriter::kIdentity}));

@@ -171,6 +171,9 @@ GpuChunk placeChunk(const voxel::MeshChunkQuads& c, const GpuScene& scene, uint3
     return g;
 }
 
+
+}  // namespace
+
 std::vector<voxel::MeshChunkQuads> meshChunks(const voxel::Mesh& mesh) {
     std::vector<voxel::MeshChunkQuads> chunks;
     chunks.reserve(mesh.chunks.size());
@@ -180,8 +183,6 @@ std::vector<voxel::MeshChunkQuads> meshChunks(const voxel::Mesh& mesh) {
                                                                 mesh.quads.begin() + c.firstQuad + c.quadCount())});
     return chunks;
 }
-
-}  // namespace
 
 uint32_t GpuLevel::quads() const { return quadsOf(faceCount); }
 

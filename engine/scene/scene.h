@@ -118,6 +118,8 @@ private:
 // From chunks as a voxel::LiveMesh keeps them (with their coarser levels, if any).
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::MeshChunkQuads> chunks,
                                       double voxelSize, glm::dvec3 worldOrigin, const voxel::WorldDesc& desc);
+// A mesh's chunks, as a voxel::LiveMesh keeps them (no coarser levels): a copy.
+std::vector<voxel::MeshChunkQuads> meshChunks(const voxel::Mesh& mesh);
 // A mesh alone: the exact voxels only, no levels of detail.
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc);
 // The world's mesh with its levels of detail, and its occupancy: what rendering

@@ -1,7 +1,9 @@
 #include "engine/scene/scene_memory.h"
 
+#include "engine/frame/render_memory.h"
 #include "engine/scene/scene.h"
 #include "engine/scene/view_draw.h"
+#include "voxel/mesh_footprint.h"
 #include "voxel/work_memory.h"
 
 namespace grotto {
@@ -45,6 +47,17 @@ uint64_t requireSceneFits(const voxel::World& world, uint64_t meshBytes, std::sp
                                        " (grids and a mesh of " + std::to_string(quads) + " quads " +
                                        voxel::mibText(m.worldBytes) + ", its upload " + voxel::mibText(m.uploadBytes) +
                                        ", its GPU scene and the renderer " + voxel::mibText(m.framesBytes) + ")");
+}
+
+std::unique_ptr<GpuScene> uploadMeshWithinBudget(vk::Context& ctx, const voxel::World& world, const voxel::WorldDesc& desc) {
+    const voxel::Mesh mesh = world.mesh();
+    const std::vector<voxel::MeshChunkQuads> chunks = meshChunks(mesh);
+    // The mesh and its chunks' copy of it, both held while they are uploaded.
+    uint64_t meshBytes = voxel::heapBytes(mesh.quads.capacity() * sizeof(voxel::MeshQuad)) +
+                         voxel::heapBytes(mesh.chunks.capacity() * sizeof(voxel::MeshChunk));
+    for (const voxel::MeshChunkQuads& c : chunks) meshBytes += voxel::heapBytes(c.quads.capacity() * sizeof(voxel::MeshQuad));
+    requireSceneFits(world, meshBytes, chunks, {}, cpuDevice(ctx));
+    return uploadScene(ctx, chunks, mesh.voxelSize, mesh.origin, desc);
 }
 
 }  // namespace grotto

@@ -13,10 +13,12 @@
 // many small quads, as in a speckled model). On a CPU device (lavapipe) the
 // device's buffers are host memory too.
 #include "engine/camera.h"
+#include "engine/scene/scene.h"
 #include "voxel/world.h"
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <span>
 
@@ -46,5 +48,10 @@ SceneMemory estimateSceneMemory(const voxel::World& world, uint64_t meshBytes, s
 // (input), voxel/work_memory.h's one line, before anything is uploaded.
 uint64_t requireSceneFits(const voxel::World& world, uint64_t meshBytes, std::span<const voxel::MeshChunkQuads> chunks,
                           const SceneFrames& frames, bool cpuDevice);
+
+// uploadScene(ctx, world.mesh(), desc) (the exact voxels, no levels of detail:
+// the reference's view, the scenes of objects) after requireSceneFits, with no
+// frame counted: a .vox world over its budget is refused before the upload.
+std::unique_ptr<GpuScene> uploadMeshWithinBudget(vk::Context& ctx, const voxel::World& world, const voxel::WorldDesc& desc);
 
 }  // namespace grotto
