@@ -19,7 +19,7 @@ RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptio
     // The estimate counts the first frame as from the world's own camera.
     const SceneFrames frames{.rendererBytes = rendererHostBytes(ctx, planWorldFrame(world.desc(), width, height, ao)),
                              .firstView = worldCamera(world, "", width, height),
-                             .lodBias = culling_.lodBias};
+                             .lodBias = detail.lodBias};
     scene_ = std::make_unique<LiveScene>(ctx, std::move(world), frames);
     setTime(0.0);
 }
