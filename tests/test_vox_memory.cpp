@@ -246,8 +246,9 @@ protected:
 
 TEST_F(VoxUploads, ReferenceOverItsBudgetIsRefusedBeforeTheUpload) {
     const fs::path world = writeText("big.json", std::string(R"({"grid": {"file": "big.vox"}, "memory_budget_mib": )") + kBudget + "}");
+    // A cache of its own: a reference found in the cache uploads nothing, and is not refused.
     expectSceneRefusal(expectRefused("reference " + world.string() + " --size 32x24 --spp 1 -o " + (dir_ / "ref.exr").string(),
-                                     "big.vox", dir_ / "ref.exr", ""));
+                                     "big.vox", dir_ / "ref.exr", "GROTTO_CACHE_DIR=" + (dir_ / "cache").string()));
 }
 
 TEST_F(VoxUploads, ObjectOverItsBudgetIsRefusedBeforeTheUpload) {
