@@ -16,8 +16,11 @@ RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptio
     // Objects that may move may also come and go: the renderer draws a list, empty or not.
     if (!objectWorlds_.empty() || objectsMayMove) objects_ = uploadObjects(ctx, objectWorlds_, world.desc());
     if (objectsMayMove) objects_->moving = true;
-    const uint64_t rendererBytes = rendererHostBytes(ctx, planWorldFrame(world.desc(), width, height, ao));
-    scene_ = std::make_unique<LiveScene>(ctx, std::move(world), rendererBytes);
+    // The estimate counts the first frame as from the world's own camera.
+    const SceneFrames frames{.rendererBytes = rendererHostBytes(ctx, planWorldFrame(world.desc(), width, height, ao)),
+                             .firstView = worldCamera(world, "", width, height),
+                             .lodBias = detail.lodBias};
+    scene_ = std::make_unique<LiveScene>(ctx, std::move(world), frames);
     setTime(0.0);
 }
 

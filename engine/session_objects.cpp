@@ -2,6 +2,7 @@
 // and its objects at their poses (a game's pick).
 #include "engine/session.h"
 
+#include "engine/scene/scene_memory.h"
 #include "grotto/error.h"
 #include "shaders/shared/objects.h"
 
@@ -26,7 +27,7 @@ void RenderSession::addObject(voxel::World world, voxel::ObjectDesc desc) {
         throw Error("addObject", "the world already holds " + std::to_string(objectWorlds_.size()) + " objects",
                     "at most " + std::to_string(GROTTO_MAX_OBJECTS) + ": remove one first");
     if (desc.keys.empty()) desc.keys.emplace_back();
-    objects_->scenes.push_back(uploadScene(ctx_, world.mesh(), world.desc()));
+    objects_->scenes.push_back(uploadMeshWithinBudget(ctx_, world, world.desc()));
     objects_->descs.push_back(desc);
     objects_->grids.push_back(objectGrid(world));
     ++objects_->gridsVersion;

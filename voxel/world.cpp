@@ -96,7 +96,13 @@ World makeWorld(const openvdb::GridBase::Ptr& grid, WorldDesc desc) {
     if (bytes > double(memoryRoom(impl->desc.memoryBudgetBytes)))
         throw Error(file, "grid '" + grid->getName() + "' is solid over " + overBudget(double(bricks), bytes, impl->desc.memoryBudgetBytes),
                     "raise 'memory_budget_mib' in the world file, or make the grid smaller or sparser");
-    return World(std::move(impl));
+    World::Impl& made = *impl;
+    World world(std::move(impl));
+    // A .vox's few bytes can place a model many times over, and its mesh, not its
+    // grid, is most of what it costs: the whole work is estimated before it is done,
+    // for a world's grid and an object's alike.
+    if (isVoxFile(made.desc.gridFile)) made.workBytesEstimate = requireWorkFits(world).total();
+    return world;
 }
 
 size_t memoryRoom(size_t budget) { return std::min(budget, addressSpaceLeft().value_or(budget)); }
@@ -121,11 +127,6 @@ World World::load(const std::filesystem::path& path) {
         throw Error(world.desc().gridFile.string(), "grid '" + grid->getName() + "' has no solid voxels",
                     std::string("the solid rule is '") + solidRuleName(world.desc().rule) +
                         "'; check 'grid.rule' and 'grid.threshold' in the world file");
-    // A .vox's few bytes can place a model many times over, and its mesh, not its
-    // grid, is most of what it costs: the whole work is estimated before it is done.
-    if (isVoxFile(world.desc().gridFile)) {
-        world.impl_->workBytesEstimate = requireWorkFits(world).total();
-    }
     return world;
 }
 

@@ -11,15 +11,14 @@ namespace {
 
 constexpr double kCoarserMargin = 1.25;  // hysteresis: a coarser cell must be this far below the bias
 
-// The nearest view-axis distance of a camera-relative box, at least the near plane.
+}  // namespace
+
 double nearestDepth(const Camera& camera, glm::vec3 lo, glm::vec3 hi) {
     const glm::dvec3 forward = -camera.basis[2];
     double d = 0.0;
     for (int k = 0; k < 3; ++k) d += forward[k] * (forward[k] >= 0.0 ? lo[k] : hi[k]);
     return std::max(d, camera.nearPlane);
 }
-
-}  // namespace
 
 int chooseLevel(double voxelPixels, double bias, int previous, int levels) {
     if (bias <= 0.0 || levels <= 1) return 0;

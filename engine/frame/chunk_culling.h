@@ -47,6 +47,8 @@ struct CullingStats {
 // A chunk goes coarser only once the coarser cell is a quarter below the bias,
 // and finer as soon as its cell exceeds it.
 int chooseLevel(double voxelPixels, double bias, int previous, int levels);
+// The nearest view-axis distance of a camera-relative box, at least the near plane.
+double nearestDepth(const Camera& camera, glm::vec3 lo, glm::vec3 hi);
 
 // True when every depth tile the box (camera-relative world units) covers holds
 // geometry nearer than the box's nearest point. Boxes reaching the near plane

@@ -4,6 +4,7 @@
 #include "grotto/error.h"
 #include "engine/renderer.h"
 #include "engine/lab/surface_points.h"
+#include "engine/scene/scene_memory.h"
 #include "voxel/reference_ao.h"
 
 #include <chrono>
@@ -81,11 +82,11 @@ SurfacePoints viewSurfacePoints(const voxel::World& world, const Camera& camera,
     {
         // The mesh alone has no coarser levels: the exact voxels whatever the bias,
         // as the reference is what levels of detail are measured against.
-        auto scene = uploadScene(ctx, world.mesh(), world.desc());
+        auto scene = uploadMeshWithinBudget(ctx, world, world.desc());
         SceneObjects drawn;
         std::vector<voxel::ObjectPose> poses;
         for (const voxel::PosedWorld& o : objects) {
-            drawn.scenes.push_back(uploadScene(ctx, o.world->mesh(), world.desc()));
+            drawn.scenes.push_back(uploadMeshWithinBudget(ctx, *o.world, world.desc()));
             drawn.descs.emplace_back();
             poses.push_back(o.pose);
         }

@@ -6,12 +6,12 @@
 
 namespace grotto {
 
-LiveScene::LiveScene(vk::Context& ctx, voxel::World world, uint64_t rendererBytes)
+LiveScene::LiveScene(vk::Context& ctx, voxel::World world, const SceneFrames& frames)
     : world_(std::move(world)), mesh_(world_, {.coarseLevels = voxel::kMaxCoarseLevels}) {
     const uint64_t meshBytes = voxel::measureMesh(mesh_).liveBytes;
     // Uploaded from the mesh's own chunks, lent, not copied: the mesh is most of the peak.
     gpu_ = mesh_.lend([&](std::span<const voxel::MeshChunkQuads> chunks) {
-        memoryEstimate_ = requireSceneFits(world_, meshBytes, chunks, rendererBytes, cpuDevice(ctx));
+        memoryEstimate_ = requireSceneFits(world_, meshBytes, chunks, frames, cpuDevice(ctx));
         return uploadScene(ctx, chunks, world_);
     });
 }

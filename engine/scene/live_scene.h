@@ -5,6 +5,7 @@
 // brick table the reference traces is updated the same way, once it exists.
 #include "engine/scene/live_face_cache.h"
 #include "engine/scene/scene.h"
+#include "engine/scene/scene_memory.h"
 #include "voxel/brick_table.h"
 #include "voxel/live_mesh.h"
 #include "voxel/world.h"
@@ -17,10 +18,10 @@ namespace grotto {
 
 class LiveScene {
 public:
-    // `rendererBytes`: what the renderer drawing it will hold in host memory
-    // (render_memory.h), for a .vox world's memory estimate, checked against its
-    // budget before the scene is uploaded (scene_memory.h).
-    LiveScene(vk::Context& ctx, voxel::World world, uint64_t rendererBytes = 0);
+    // `frames`: the renderer and first frame that will draw it, for a .vox world's
+    // memory estimate, checked against its budget before the scene is uploaded
+    // (scene_memory.h).
+    LiveScene(vk::Context& ctx, voxel::World world, const SceneFrames& frames = {});
 
     // Throws grotto::Error (input) for an edit the world refuses; nothing changes then.
     voxel::EditResult apply(const voxel::Edit& edit);

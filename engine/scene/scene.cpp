@@ -103,22 +103,27 @@ int blockRank(int block, uint32_t f) {
     return along << 4 | (block & ~(3 << (2 * a)));
 }
 
+// Face f's quads, [q, q + count) of a level, in cluster order.
+std::vector<uint32_t> clusterOrder(std::span<const voxel::MeshQuad> quads, uint32_t q, uint32_t count, uint32_t f) {
+    std::vector<uint32_t> order(count);
+    std::iota(order.begin(), order.end(), q);
+    std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
+        return blockRank(blockOf(quads[x]), f) < blockRank(blockOf(quads[y]), f);
+    });
+    return order;
+}
+
 // One level of a chunk written at `first` in the vertex buffer (`vertices` points
 // there): face ranges, clusters, and the level's bounds grown into lo/hi.
 GpuLevel placeLevel(const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads, uint32_t first,
                     uint32_t* vertices, glm::ivec3& lo, glm::ivec3& hi) {
     GpuLevel g;
     uint32_t q = 0;
-    std::vector<uint32_t> order;
     for (uint32_t f = 0; f < 6; ++f) {
         g.faceFirst[f] = first;
         g.faceCount[f] = faceCount[f];
         g.faceClusters[f] = uint32_t(g.clusters.size());
-        order.resize(faceCount[f]);
-        std::iota(order.begin(), order.end(), q);
-        std::stable_sort(order.begin(), order.end(), [&](uint32_t x, uint32_t y) {
-            return blockRank(blockOf(quads[x]), f) < blockRank(blockOf(quads[y]), f);
-        });
+        const std::vector<uint32_t> order = clusterOrder(quads, q, faceCount[f], f);
         int block = -1;
         for (uint32_t k = 0; k < order.size(); ++k) {
             const voxel::MeshQuad& quad = quads[order[k]];
@@ -166,6 +171,9 @@ GpuChunk placeChunk(const voxel::MeshChunkQuads& c, const GpuScene& scene, uint3
     return g;
 }
 
+
+}  // namespace
+
 std::vector<voxel::MeshChunkQuads> meshChunks(const voxel::Mesh& mesh) {
     std::vector<voxel::MeshChunkQuads> chunks;
     chunks.reserve(mesh.chunks.size());
@@ -175,8 +183,6 @@ std::vector<voxel::MeshChunkQuads> meshChunks(const voxel::Mesh& mesh) {
                                                                 mesh.quads.begin() + c.firstQuad + c.quadCount())});
     return chunks;
 }
-
-}  // namespace
 
 uint32_t GpuLevel::quads() const { return quadsOf(faceCount); }
 
@@ -196,19 +202,28 @@ size_t sceneBufferBytes(const voxel::Mesh& mesh) { return sceneBufferBytes(meshC
 
 namespace {
 
-// A level's clusters: one a face for each block its quads lie in (placeLevel).
 uint64_t levelClusters(const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads) {
     uint64_t clusters = 0;
-    uint32_t q = 0;
-    for (uint32_t f = 0; f < 6; ++f) {
-        uint64_t blocks = 0;  // 4^3 blocks a chunk
-        for (uint32_t end = q + faceCount[f]; q < end; ++q) blocks |= uint64_t(1) << (blockOf(quads[q]) & 63);
-        clusters += uint64_t(std::popcount(blocks));
-    }
+    for (uint32_t n : faceClusters(faceCount, quads)) clusters += n;
     return clusters;
 }
 
 }  // namespace
+
+std::array<uint32_t, 6> faceClusters(const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads) {
+    std::array<uint32_t, 6> clusters{};
+    uint32_t q = 0;
+    for (uint32_t f = 0; f < 6; ++f) {
+        int block = -1;  // a cluster starts wherever the block changes in cluster order, as placeLevel makes them
+        for (uint32_t k : clusterOrder(quads, q, faceCount[f], f)) {
+            const int b = blockOf(quads[k]);
+            clusters[f] += b != block;
+            block = b;
+        }
+        q += faceCount[f];
+    }
+    return clusters;
+}
 
 size_t sceneHostBytes(std::span<const voxel::MeshChunkQuads> chunks) {
     // Each level's clusters pushed back one by one.
@@ -220,15 +235,6 @@ size_t sceneHostBytes(std::span<const voxel::MeshChunkQuads> chunks) {
         if (c.quads.empty()) continue;
         n += voxel::heapBytes(std::bit_ceil(1 + c.coarser.size()) * sizeof(GpuLevel)) + level(c.faceCount, c.quads);
         for (const voxel::MeshLevel& l : c.coarser) n += level(l.faceCount, l.quads);
-    }
-    return n;
-}
-
-uint64_t sceneClusters(std::span<const voxel::MeshChunkQuads> chunks) {
-    uint64_t n = 0;
-    for (const voxel::MeshChunkQuads& c : chunks) {
-        n += levelClusters(c.faceCount, c.quads);
-        for (const voxel::MeshLevel& l : c.coarser) n += levelClusters(l.faceCount, l.quads);
     }
     return n;
 }

@@ -118,6 +118,8 @@ private:
 // From chunks as a voxel::LiveMesh keeps them (with their coarser levels, if any).
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::MeshChunkQuads> chunks,
                                       double voxelSize, glm::dvec3 worldOrigin, const voxel::WorldDesc& desc);
+// A mesh's chunks, as a voxel::LiveMesh keeps them (no coarser levels): a copy.
+std::vector<voxel::MeshChunkQuads> meshChunks(const voxel::Mesh& mesh);
 // A mesh alone: the exact voxels only, no levels of detail.
 std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, const voxel::Mesh& mesh, const voxel::WorldDesc& desc);
 // The world's mesh with its levels of detail, and its occupancy: what rendering
@@ -131,6 +133,8 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::M
 // spare room, before allocator rounding), without a device: for `grotto info`.
 size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks);
 size_t sceneBufferBytes(const voxel::Mesh& mesh);
+// A level's clusters of each face, as uploadScene makes them: one for each block its quads lie in.
+std::array<uint32_t, 6> faceClusters(const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads);
 // What uploadScene keeps in host memory beside them (the chunks, their levels and
 // clusters), at the capacities they grow to.
 size_t sceneHostBytes(std::span<const voxel::MeshChunkQuads> chunks);

@@ -6,14 +6,20 @@
 // the upload at its peak (the vertices built on the host, their staging copy, the
 // buffer itself, then the occupancy the same way) and what stays for the frames:
 // the buffers, the staging copy's memory (freed, but not given back: measured on
-// lavapipe), culling's list of clusters in view and the draws recorded for them
-// (all of them: about 72 bytes a cluster, measured), and the renderer
-// (engine/frame/render_memory.h). On a CPU device (lavapipe) the device's buffers
-// are host memory too.
+// lavapipe), the renderer (engine/frame/render_memory.h) and the first frame's
+// draw (view_draw.h): culling lists the clusters in view, and a CPU device bins
+// the triangles of every quad drawn before it rasterises them (about 370 bytes a
+// quad on lavapipe, measured: many times the clusters' share where a cluster holds
+// many small quads, as in a speckled model). On a CPU device (lavapipe) the
+// device's buffers are host memory too.
+#include "engine/camera.h"
+#include "engine/scene/scene.h"
 #include "voxel/world.h"
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <span>
 
 namespace grotto {
@@ -25,21 +31,27 @@ struct SceneMemory {
     uint64_t total() const { return worldBytes + std::max(uploadBytes, framesBytes); }
 };
 
-// Every level's clusters, as uploadScene makes them (engine/scene/scene.h): while
-// frames are made, culling lists those in view, and a CPU device records a draw
-// for each.
-uint64_t sceneClusters(std::span<const voxel::MeshChunkQuads> chunks);
+// The frames a session will make of the scene, as far as the estimate needs them.
+struct SceneFrames {
+    uint64_t rendererBytes = 0;        // the renderer's own host memory (render_memory.h's; on a CPU device its targets too)
+    std::optional<Camera> firstView;   // the first frame's camera, at the frame's size; none: no frame counted
+    double lodBias = 0.0;              // culling's (CullingOptions::lodBias)
+};
 
 // `chunks`: the mesh's, lent by it (voxel::LiveMesh::lend), `meshBytes` its
-// footprint as the LiveMesh keeps them (voxel::measureMesh); `rendererBytes`: the
-// renderer's own host memory (render_memory.h's; on a CPU device its targets too).
+// footprint as the LiveMesh keeps them (voxel::measureMesh).
 SceneMemory estimateSceneMemory(const voxel::World& world, uint64_t meshBytes, std::span<const voxel::MeshChunkQuads> chunks,
-                                uint64_t rendererBytes, bool cpuDevice);
+                                const SceneFrames& frames, bool cpuDevice);
 
 // The estimate, for a .vox world within its memory budget (zero for other
 // worlds, whose budget is checked as they load); else throws grotto::Error
 // (input), voxel/work_memory.h's one line, before anything is uploaded.
 uint64_t requireSceneFits(const voxel::World& world, uint64_t meshBytes, std::span<const voxel::MeshChunkQuads> chunks,
-                          uint64_t rendererBytes, bool cpuDevice);
+                          const SceneFrames& frames, bool cpuDevice);
+
+// uploadScene(ctx, world.mesh(), desc) (the exact voxels, no levels of detail:
+// the reference's view, the scenes of objects) after requireSceneFits, with no
+// frame counted: a .vox world over its budget is refused before the upload.
+std::unique_ptr<GpuScene> uploadMeshWithinBudget(vk::Context& ctx, const voxel::World& world, const voxel::WorldDesc& desc);
 
 }  // namespace grotto

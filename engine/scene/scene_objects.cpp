@@ -1,5 +1,6 @@
 #include "engine/scene/scene_objects.h"
 
+#include "engine/scene/scene_memory.h"
 #include "grotto/error.h"
 #include "voxel/world.h"
 
@@ -18,7 +19,7 @@ std::unique_ptr<SceneObjects> uploadObjects(vk::Context& ctx, std::span<const vo
     auto objects = std::make_unique<SceneObjects>();
     objects->descs = desc.objects;
     for (size_t k = 0; k < worlds.size(); ++k) {
-        objects->scenes.push_back(uploadScene(ctx, worlds[k].mesh(), desc));
+        objects->scenes.push_back(uploadMeshWithinBudget(ctx, worlds[k], desc));
         objects->grids.push_back(objectGrid(worlds[k]));
         objects->moving |= desc.objects[k].moves();
     }
