@@ -182,18 +182,16 @@ TEST(GltfExport, EmissiveMaterialsCarryTheirRadiance) {
     EXPECT_EQ(stone.emissiveFactor, (std::vector<double>{0.0, 0.0, 0.0}));
     EXPECT_TRUE(stone.extensions.empty());
 
+    auto expectEmissiveFactor = [](const tinygltf::Material& mat, glm::dvec3 expected) {
+        ASSERT_EQ(mat.emissiveFactor.size(), 3u) << mat.name;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(mat.emissiveFactor[size_t(c)], expected[c], 1e-6) << mat.name;
+    };
     const tinygltf::Material& ember = m.materials[1];
-    ASSERT_EQ(ember.emissiveFactor.size(), 3u);
-    EXPECT_NEAR(ember.emissiveFactor[0], 0.5, 1e-6);
-    EXPECT_NEAR(ember.emissiveFactor[1], 0.25, 1e-6);
-    EXPECT_NEAR(ember.emissiveFactor[2], 0.125, 1e-6);
+    expectEmissiveFactor(ember, {0.5, 0.25, 0.125});  // colour x intensity
     EXPECT_TRUE(ember.extensions.empty());
 
     const tinygltf::Material& lamp = m.materials[2];
-    ASSERT_EQ(lamp.emissiveFactor.size(), 3u);
-    EXPECT_NEAR(lamp.emissiveFactor[0], 1.0, 1e-6);
-    EXPECT_NEAR(lamp.emissiveFactor[1], 0.8, 1e-6);
-    EXPECT_NEAR(lamp.emissiveFactor[2], 0.6, 1e-6);
+    expectEmissiveFactor(lamp, {1.0, 0.8, 0.6});  // the colour; the intensity in the extension
     ASSERT_EQ(lamp.extensions.count(ext), 1u);
     EXPECT_NEAR(lamp.extensions.at(ext).Get("emissiveStrength").GetNumberAsDouble(), 40.0, 1e-6);
 
