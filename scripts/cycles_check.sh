@@ -49,6 +49,11 @@ check sunlit-slab "$out/sunlit.json" top 160x90 256 all
 check lamp-box "$out/lamp.json" corner 160x90 2048 all
 # Direct light alone: Cycles samples the lamp, Grotto only meets it, so Grotto needs more paths.
 check lamp-direct "$out/lamp.json" corner 160x90 8192 0 1024
+# ... and both against the closed form of that direct light.
+blender -b --factory-startup -P "$root/scripts/cycles_lamp_closed_form.py" -- "$out/lamp.json" \
+    "$out/lamp-direct.grotto.exr" "$out/lamp-direct.cycles" >"$out/lamp-closed-form.log" 2>&1 &&
+    grep '^CLOSED_FORM' "$out/lamp-closed-form.log" | sed 's/^CLOSED_FORM/lamp-direct     /' ||
+    { echo "cycles_check.sh: the closed form failed, see $out/lamp-closed-form.log" >&2; exit 1; }
 check rooms "$root/worlds/rooms.json" table 160x90 1024 all
 check rooms-direct "$root/worlds/rooms.json" table 160x90 1024 0
 check rooms-1-bounce "$root/worlds/rooms.json" table 160x90 1024 1

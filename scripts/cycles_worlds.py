@@ -18,6 +18,15 @@ import struct
 import sys
 
 
+# The lamp box in Grotto's world coordinates (a .vox model is centred: x - 7, its
+# z up - 7, 6 - its y), for the closed form of its direct light
+# (scripts/cycles_lamp_closed_form.py).
+LAMP_INTERIOR = 6.0                             # the open inside is [-6, 6]^3
+LAMP_VOXEL = ((-1.0, -6.0, -1.0), (0.0, -5.0, 0.0))  # the glowing voxel's corners
+LAMP_ALBEDO = (0.7, 0.6, 0.5)
+LAMP_EMISSION = (8.0, 6.8, 4.8)                 # 8 x (1, 0.85, 0.6)
+
+
 def chunk(tag, content, children=b""):
     return tag + struct.pack("<II", len(content), len(children)) + content + children
 
@@ -61,7 +70,7 @@ def lamp(out_dir):
               if min(x, y, z) == 0 or max(x, y, z) == n - 1}
     voxels[(6, 7, 1)] = 2  # on the floor (z = 0 is the floor, z up); Grotto centres the box on 0
     write_world(out_dir, "lamp", (n, n, n), voxels, {
-        "materials": [{"name": "wall", "albedo": [0.7, 0.6, 0.5]},
+        "materials": [{"name": "wall", "albedo": list(LAMP_ALBEDO)},
                       {"name": "lamp", "albedo": [0.5, 0.5, 0.5],
                        "emission": {"color": [1.0, 0.85, 0.6], "intensity": 8.0}}],
         "lighting": {"sun": {"intensity": 0.0}},
