@@ -1,7 +1,8 @@
 // The glTF export read back with tinygltf: one primitive and material per Grotto
 // material, the world's bounds in world units, outward normals that agree with
 // the triangles' winding, and vertex AO that carries the face cache's reading and
-// stays near the ray-traced reference.
+// stays near the ray-traced reference; glowing materials carry their emission.
+#include "common/json_text.h"
 #include "grotto/error.h"
 #include "tests/test_util.h"
 #include "voxel/brick_table.h"
@@ -152,6 +153,54 @@ TEST(GltfExport, TextGltfEmbedsItsBufferAndOtherNamesAreRefused) {
     EXPECT_EQ(m.meshes.at(0).primitives.size(), 2u);
     EXPECT_EQ(std::filesystem::directory_iterator(dir.path)->path().filename(), "world.gltf");  // nothing beside it
     EXPECT_THROW(writeGltfMesh(world, mesh, dir / "world.obj"), Error);
+}
+
+// Three materials on a floor: stone that does not glow, a dim lamp (intensity 0.5)
+// and a bright one (intensity 40). glTF's emissiveFactor stops at 1, so only the
+// bright one needs KHR_materials_emissive_strength.
+TEST(GltfExport, EmissiveMaterialsCarryTheirRadiance) {
+    WorldDesc desc;
+    desc.materials.resize(3);
+    desc.materials[0].name = "stone";
+    desc.materials[1].name = "ember";
+    desc.materials[1].emissionColor = glm::vec3(1.0f, 0.5f, 0.25f);
+    desc.materials[1].emissionIntensity = 0.5f;
+    desc.materials[2].name = "lamp";
+    desc.materials[2].emissionColor = glm::vec3(1.0f, 0.8f, 0.6f);
+    desc.materials[2].emissionIntensity = 40.0f;
+    const uint8_t ids[4] = {1, 2, 3, 1};
+    const World world = World::fromDense(glm::ivec3(4, 1, 1), ids, 1.0, glm::dvec3(0.0), desc);
+    const AoMesh mesh = buildAoMesh(world, {.radius = 1.0, .texelsPerSide = 1, .rays = 8, .sunRays = 1});
+    const grotto::test::ScratchDir dir;
+    writeGltfMesh(world, mesh, dir / "world.gltf");
+    const tinygltf::Model m = readGltf(dir / "world.gltf");
+    ASSERT_EQ(m.materials.size(), 3u);
+    const char* ext = "KHR_materials_emissive_strength";
+    EXPECT_EQ(m.extensionsUsed, std::vector<std::string>{ext});
+
+    const tinygltf::Material& stone = m.materials[0];
+    EXPECT_EQ(stone.emissiveFactor, (std::vector<double>{0.0, 0.0, 0.0}));
+    EXPECT_TRUE(stone.extensions.empty());
+
+    auto expectEmissiveFactor = [](const tinygltf::Material& mat, glm::dvec3 expected) {
+        ASSERT_EQ(mat.emissiveFactor.size(), 3u) << mat.name;
+        for (int c = 0; c < 3; ++c) EXPECT_NEAR(mat.emissiveFactor[size_t(c)], expected[c], 1e-6) << mat.name;
+    };
+    const tinygltf::Material& ember = m.materials[1];
+    expectEmissiveFactor(ember, {0.5, 0.25, 0.125});  // colour x intensity
+    EXPECT_TRUE(ember.extensions.empty());
+
+    const tinygltf::Material& lamp = m.materials[2];
+    expectEmissiveFactor(lamp, {1.0, 0.8, 0.6});  // the colour; the intensity in the extension
+    ASSERT_EQ(lamp.extensions.count(ext), 1u);
+    EXPECT_NEAR(lamp.extensions.at(ext).Get("emissiveStrength").GetNumberAsDouble(), 40.0, 1e-6);
+
+    // The text names no emission where nothing glows: a stone floor's file is as before.
+    const World plain = floorAndBlock();
+    writeGltfMesh(plain, buildAoMesh(plain, {.radius = 1.0, .texelsPerSide = 1, .rays = 8, .sunRays = 1}), dir / "plain.gltf");
+    const std::string text = readJsonText(dir / "plain.gltf", "");
+    EXPECT_EQ(text.find("emissive"), std::string::npos);
+    EXPECT_EQ(text.find(ext), std::string::npos);
 }
 
 }  // namespace

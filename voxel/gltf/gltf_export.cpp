@@ -138,6 +138,22 @@ int addAccessor(tinygltf::Model& m, int view, int componentType, int type, size_
     return int(m.accessors.size() - 1);
 }
 
+constexpr const char* kEmissiveStrength = "KHR_materials_emissive_strength";
+
+// glTF's emissiveFactor is a colour in [0, 1]: an intensity up to 1 is folded into
+// it; above 1 the colour stays as it is and the extension carries the intensity, so
+// a lamp's radiance survives the trip. A material that does not glow writes nothing.
+void setEmission(tinygltf::Material& mat, const Material& src, tinygltf::Model& m) {
+    if (!src.emits()) return;
+    const glm::vec3 c = src.emissionIntensity > 1.0f ? src.emissionColor : src.emission();
+    mat.emissiveFactor = {c.r, c.g, c.b};
+    if (src.emissionIntensity <= 1.0f) return;
+    tinygltf::Value::Object strength{{"emissiveStrength", tinygltf::Value(double(src.emissionIntensity))}};
+    mat.extensions[kEmissiveStrength] = tinygltf::Value(strength);
+    if (std::find(m.extensionsUsed.begin(), m.extensionsUsed.end(), kEmissiveStrength) == m.extensionsUsed.end())
+        m.extensionsUsed.push_back(kEmissiveStrength);
+}
+
 }  // namespace
 
 uintmax_t writeGltfMesh(const World& world, const AoMesh& mesh, const fs::path& out) {
@@ -159,6 +175,7 @@ uintmax_t writeGltfMesh(const World& world, const AoMesh& mesh, const fs::path& 
         mat.pbrMetallicRoughness.baseColorFactor = {src.albedo.r, src.albedo.g, src.albedo.b, 1.0};
         mat.pbrMetallicRoughness.metallicFactor = 0.0;
         mat.pbrMetallicRoughness.roughnessFactor = 1.0;
+        setEmission(mat, src, m);
         m.materials.push_back(mat);
 
         std::vector<uint8_t> colours(prim.ao.size() * 4);

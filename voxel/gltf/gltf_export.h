@@ -4,7 +4,8 @@
 //
 // Each exposed voxel face is a quad of two triangles in world units, Y up as glTF
 // has it; one primitive and one material (base colour = the Grotto material's
-// albedo) per material. Vertices carry NORMAL and COLOR_0: grey = the AO from the
+// albedo; emissiveFactor and, above intensity 1, KHR_materials_emissive_strength
+// for a glowing one) per material. Vertices carry NORMAL and COLOR_0: grey = the AO from the
 // face cache (voxel/face_cache.h) read at the corner, a linear multiplier of the
 // base colour as glTF defines COLOR_0. Corners shared by coplanar faces of one
 // material with the same AO are one vertex; every face meets its neighbours
