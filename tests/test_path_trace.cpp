@@ -3,6 +3,7 @@
 // factor), open ground under a sky, a sealed room. Each estimate within 3 of its
 // own standard errors, or exact where the light has no variance.
 #include "voxel/brick_table.h"
+#include "voxel/face_cache.h"
 #include "voxel/path_trace.h"
 #include "voxel/ray_sampling.h"
 
@@ -140,6 +141,54 @@ TEST(PathTrace, EmissiveRectangleLightsAFloorByItsFormFactor) {
         const double F = part(lo.x, hi.x, lo.y, hi.y);
         expectWithinThreeErrors(t, k, dvec3(albedo * L * F), "form factor");
         EXPECT_GT(F, 0.005);  // each point sees the rectangle: the check has something to find
+    }
+}
+
+// The form factor from a point (normal n) to a polygon wholly above its horizon,
+// by Lambert's formula: the sum over edges of the angle each subtends times the
+// cosine of its plane against n, over 2 pi. Corners relative to the point, in order.
+double polygonFormFactor(dvec3 n, const std::vector<dvec3>& corners) {
+    double sum = 0.0;
+    for (size_t i = 0; i < corners.size(); ++i) {
+        const dvec3 a = glm::normalize(corners[i]), b = glm::normalize(corners[(i + 1) % corners.size()]);
+        const dvec3 c = glm::cross(a, b);
+        sum += std::acos(std::clamp(glm::dot(a, b), -1.0, 1.0)) * glm::dot(n, glm::normalize(c));
+    }
+    return std::abs(sum) / (2.0 * std::numbers::pi);
+}
+
+TEST(PathTrace, OneGlowingVoxelLightsAFloorByItsFacesFormFactors) {
+    // One voxel glowing at L, 3 voxels over a floor of albedo a, in the dark (the
+    // walls far away and black). The direct light at a floor point is a x L x the
+    // summed form factors of the lamp's faces turned to it: the draw on glowing
+    // faces must find a single voxel, and find it exactly.
+    const int n = 48;
+    const glm::ivec3 lamp(24, 4, 24);
+    const double albedo = 0.5, L = 6.0;
+    const World world = denseWorld({n, 6, n}, {lambert(glm::vec3(float(albedo))), lambert(glm::vec3(0.0f), glm::vec3(float(L)))},
+                                   [&](int x, int y, int z) { return y == 0 ? 1 : glm::ivec3(x, y, z) == lamp ? 2 : 0; });
+    const std::vector<dvec3> points = {{24.5, 1.0, 24.5}, {22.25, 1.0, 25.75}, {30.0, 1.0, 19.0}};
+    const std::vector<dvec3> normals(points.size(), dvec3(0, 1, 0));
+    PathTraceSettings s;
+    s.spp = 1 << 19;  // a draw finds the one face lit toward a point 1 time in 6 at worst
+    s.maxBounces = 0;
+    const PathTraced t = pathTrace(world, {}, points, normals, {}, darkness(), s);
+    for (size_t k = 0; k < points.size(); ++k) {
+        double F = 0.0;
+        for (uint8_t dir = 0; dir < 6; ++dir) {
+            const dvec3 normal = faceNormal(dir);
+            glm::dvec3 corner(lamp);
+            const int axis = dir / 2;
+            corner[axis] += dir % 2 == 0 ? 1.0 : 0.0;
+            if (glm::dot(normal, points[k] - corner) <= 0.0) continue;  // turned away from the point
+            dvec3 u(0.0), v(0.0);
+            u[(axis + 1) % 3] = 1.0, v[(axis + 2) % 3] = 1.0;
+            F += polygonFormFactor(dvec3(0, 1, 0), {corner - points[k], corner + u - points[k], corner + u + v - points[k],
+                                                   corner + v - points[k]});
+        }
+        const double expected = albedo * L * F;
+        expectWithinThreeErrors(t, k, dvec3(expected), "one glowing voxel");
+        EXPECT_LT(t.stderror[k].r, 0.004 * expected) << "point " << k;  // tight enough to catch a 1.2% error
     }
 }
 
