@@ -89,12 +89,13 @@ LightReference lightReference(const voxel::World& world, const Camera& camera, c
     }
     if (!cacheable) return r;
     CachedArrays arrays(kCachedArrays, std::vector<float>(n));
-    for (size_t i = 0; i < n; ++i)
+    for (size_t i = 0; i < n; ++i) {
         for (int c = 0; c < 3; ++c) {
             arrays[size_t(c)][i] = r.radiance[i][c];
             arrays[3 + size_t(c)][i] = r.stderror[i][c];
-            arrays[6][i] = r.surface[i];
         }
+        arrays[6][i] = r.surface[i];
+    }
     try {
         storeCached("light", key, arrays);
     } catch (const Error& e) {
