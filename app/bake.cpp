@@ -14,6 +14,7 @@
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
 #include "voxel/face_cache_file.h"
+#include "voxel/light_bake.h"
 
 #include <chrono>
 #include <cstdio>
@@ -66,6 +67,10 @@ void addBakeCommand(CLI::App& app) {
         if (args->world.empty()) throw Error("bake", "a WORLD is required", "or --merge PART...");
         const std::optional<ChunkOfN> chunk = resolveChunk(args->chunk);  // refused before the world is read
         const voxel::World world = voxel::World::load(args->world);
+        const bool fullLight = world.desc().lighting.ambientFrom == voxel::AmbientSource::Full;
+        if (fullLight && chunk)
+            throw Error("--chunk", "a world with full light (lighting.ambient.from full) is baked whole",
+                        "its bounces carry light between every face: bake it on one machine");
         const double radius = double(resolveAo(world, args->ao).estimator.radius);
         const voxel::BrickTable table(world);
         const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
@@ -85,11 +90,17 @@ void addBakeCommand(CLI::App& app) {
         voxel::bakeFacesInSteps(table, world, std::span(faces).subspan(first, count), settings, cache.texels,
                                 std::ref(progress));
         progress.finish();
+        std::string lightNote;
+        if (fullLight) {
+            const voxel::LightBakeStats light = voxel::bakeLight(table, world, faces, args->texels,
+                                                                 voxel::lightSources(world.desc().lighting), {}, cache.texels);
+            lightNote = ", full light in " + std::to_string(light.passes) + " bounce passes";
+        }
         voxel::saveFaceCache(cache, out);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        std::printf("wrote %s (faces %llu to %llu of %llu, %u x %u texels each, %u rays a texel, %.1f s)\n", out.c_str(),
+        std::printf("wrote %s (faces %llu to %llu of %llu, %u x %u texels each, %u rays a texel%s, %.1f s)\n", out.c_str(),
                     (unsigned long long)first, (unsigned long long)(first + count), (unsigned long long)faces.size(),
-                    args->texels, args->texels, args->rays, seconds);
+                    args->texels, args->texels, args->rays, lightNote.c_str(), seconds);
     });
 }
 

@@ -147,7 +147,7 @@ TEST(PathTrace, EmissiveRectangleLightsAFloorByItsFormFactor) {
 // The form factor from a point (normal n) to a polygon wholly above its horizon,
 // by Lambert's formula: the sum over edges of the angle each subtends times the
 // cosine of its plane against n, over 2 pi. Corners relative to the point, in order.
-double polygonFormFactor(dvec3 n, const std::vector<dvec3>& corners) {
+double unclippedFormFactor(dvec3 n, const std::vector<dvec3>& corners) {
     double sum = 0.0;
     for (size_t i = 0; i < corners.size(); ++i) {
         const dvec3 a = glm::normalize(corners[i]), b = glm::normalize(corners[(i + 1) % corners.size()]);
@@ -183,7 +183,7 @@ TEST(PathTrace, OneGlowingVoxelLightsAFloorByItsFacesFormFactors) {
             if (glm::dot(normal, points[k] - corner) <= 0.0) continue;  // turned away from the point
             dvec3 u(0.0), v(0.0);
             u[(axis + 1) % 3] = 1.0, v[(axis + 2) % 3] = 1.0;
-            F += polygonFormFactor(dvec3(0, 1, 0), {corner - points[k], corner + u - points[k], corner + u + v - points[k],
+            F += unclippedFormFactor(dvec3(0, 1, 0), {corner - points[k], corner + u - points[k], corner + u + v - points[k],
                                                    corner + v - points[k]});
         }
         const double expected = albedo * L * F;

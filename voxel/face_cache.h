@@ -59,6 +59,9 @@ struct FaceTexel {
     float skyZenith = 0.0f;   // likewise for the zenith colour
     uint32_t sunSamples = 0;  // rays toward the sun's disc cast
     uint32_t sunOpen = 0;     // of those, leaving the world
+    // Full light (voxel/light_bake.h), when baked: the irradiance over pi from
+    // the sky, the glowing faces and every bounce, but not the sun's direct beam.
+    glm::vec3 light{0.0f};
 
     double ao() const { return samples ? double(open) / samples : 1.0; }
     double sun() const { return sunSamples ? double(sunOpen) / sunSamples : 1.0; }

@@ -4,6 +4,7 @@
 #include "grotto/error.h"
 
 #include <algorithm>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -16,9 +17,11 @@ namespace grotto::voxel {
 namespace {
 
 constexpr char kMagic[8] = {'G', 'R', 'O', 'T', 'T', 'O', 'F', 'C'};
-constexpr uint32_t kVersion = 2;  // 2: the rays a texel recorded
-constexpr size_t kHeaderBytes = 96;
-constexpr size_t kTexelBytes = 24;
+constexpr uint32_t kVersion = 3;  // 2: the rays a texel recorded; 3: full light
+constexpr size_t kHeaderBytes = 104;
+constexpr size_t kTexelBytes = 24, kLightBytes = 12;  // the light's three floats follow when it is baked
+
+size_t texelBytes(const FaceCacheHeader& h) { return kTexelBytes + (h.key.lightHash != 0 ? kLightBytes : 0); }
 constexpr uint32_t kMaxTexelsPerSide = 16;
 
 uint64_t mix(uint64_t h, uint64_t v) {
@@ -42,6 +45,12 @@ std::string exact(double v) {
     return std::string(text, std::to_chars(text, text + sizeof text, v).ptr);
 }
 
+std::string hex(uint64_t v) {
+    char text[20];
+    std::snprintf(text, sizeof text, "%016llx", (unsigned long long)v);
+    return text;
+}
+
 // What two headers record differently, first of: the world (its voxels, its
 // faces), then every setting the texels were baked with.
 struct Difference {
@@ -50,14 +59,13 @@ struct Difference {
 std::optional<Difference> firstDifference(const FaceCacheHeader& a, const FaceCacheHeader& b) {
     auto settings = [](const FaceCacheHeader& h) -> std::vector<std::pair<std::string, std::string>> {
         const glm::dvec3 s = h.key.sunDirection;
-        char hash[20];
-        std::snprintf(hash, sizeof hash, "%016llx", (unsigned long long)h.key.voxelHash);
-        return {{"voxel hash", hash},
+        return {{"voxel hash", hex(h.key.voxelHash)},
                 {"world's faces", std::to_string(h.totalFaces)},
                 {"AO radius", exact(h.key.radiusVoxels) + " voxels"},
                 {"texels per side", std::to_string(h.key.texelsPerSide)},
                 {"sun direction", "(" + exact(s.x) + ", " + exact(s.y) + ", " + exact(s.z) + ")"},
                 {"sun angle", exact(h.key.sunAngleDegrees) + " degrees"},
+                {"full light", h.key.lightHash == 0 ? std::string("none") : "for lighting and materials " + hex(h.key.lightHash)},
                 {"rays", std::to_string(h.rays) + " a texel"},
                 {"sun rays", std::to_string(h.sunRays) + " a texel"}};
     };
@@ -83,13 +91,25 @@ uint64_t solidVoxelHash(const World& world) {
     return h;
 }
 
+uint64_t lightHash(const World& world) {
+    const Lighting& l = world.desc().lighting;
+    uint64_t h = 0x6c69'6768'7466'756cull;
+    auto add = [&h](float v) { h = mix(h, std::bit_cast<uint32_t>(v)); };
+    auto addColor = [&add](glm::vec3 c) { add(c.r), add(c.g), add(c.b); };
+    addColor(l.skyZenith), addColor(l.skyHorizon), add(l.ambientIntensity);
+    addColor(l.sunColor * l.sunIntensity), addColor(l.sunDirection), add(l.sunAngle);
+    for (const Material& m : world.desc().materials) addColor(m.albedo), addColor(m.emission());
+    return h != 0 ? h : 1;
+}
+
 FaceCacheKey faceCacheKey(const World& world, double radius, uint32_t texelsPerSide) {
     const Lighting& l = world.desc().lighting;
     return {.voxelHash = solidVoxelHash(world),
             .radiusVoxels = radius / world.voxelSize(),
             .texelsPerSide = texelsPerSide,
             .sunDirection = glm::dvec3(l.sunDirection),
-            .sunAngleDegrees = double(l.sunAngle)};
+            .sunAngleDegrees = double(l.sunAngle),
+            .lightHash = l.ambientFrom == AmbientSource::Full ? lightHash(world) : 0};
 }
 
 void saveFaceCache(const FaceCacheFile& c, const std::filesystem::path& path) {
@@ -98,7 +118,7 @@ void saveFaceCache(const FaceCacheFile& c, const std::filesystem::path& path) {
         throw Error::internal(path.string(), "a face cache of " + std::to_string(c.texels.size()) + " texels where its header says " +
                                                  std::to_string(h.texelCount()));
     std::string out;
-    out.reserve(kHeaderBytes + c.texels.size() * kTexelBytes);
+    out.reserve(kHeaderBytes + c.texels.size() * texelBytes(h));
     out.append(kMagic, sizeof kMagic);
     put(out, kVersion);
     put(out, h.key.texelsPerSide);
@@ -106,6 +126,7 @@ void saveFaceCache(const FaceCacheFile& c, const std::filesystem::path& path) {
     put(out, h.key.radiusVoxels);
     for (int a = 0; a < 3; ++a) put(out, h.key.sunDirection[a]);
     put(out, h.key.sunAngleDegrees);
+    put(out, h.key.lightHash);
     put(out, h.totalFaces);
     put(out, h.firstFace);
     put(out, h.faceCount);
@@ -114,6 +135,7 @@ void saveFaceCache(const FaceCacheFile& c, const std::filesystem::path& path) {
     for (const FaceTexel& t : c.texels) {
         put(out, t.samples), put(out, t.open), put(out, t.skyHorizon), put(out, t.skyZenith);
         put(out, t.sunSamples), put(out, t.sunOpen);
+        if (h.key.lightHash != 0) put(out, t.light.r), put(out, t.light.g), put(out, t.light.b);
     }
     writeAtomically(path, out);
 }
@@ -139,6 +161,7 @@ FaceCacheHeader readFaceCacheHeader(const std::filesystem::path& path) {
     h.key.radiusVoxels = take<double>(head, at);
     for (int a = 0; a < 3; ++a) h.key.sunDirection[a] = take<double>(head, at);
     h.key.sunAngleDegrees = take<double>(head, at);
+    h.key.lightHash = take<uint64_t>(head, at);
     if (!(h.key.radiusVoxels > 0.0 && std::isfinite(h.key.radiusVoxels)))
         throw Error(name, "radius: not a positive number of voxels");
     if (!std::isfinite(h.key.sunDirection.x + h.key.sunDirection.y + h.key.sunDirection.z + h.key.sunAngleDegrees))
@@ -153,11 +176,11 @@ FaceCacheHeader readFaceCacheHeader(const std::filesystem::path& path) {
     h.sunRays = take<uint32_t>(head, at);
     if (h.rays == 0 || h.sunRays == 0) throw Error(name, "rays: " + std::to_string(h.rays) + " a texel and " +
                                                          std::to_string(h.sunRays) + " over the sun's disc; a bake casts at least 1");
-    const uint64_t perFace = uint64_t(h.key.texelsPerSide) * h.key.texelsPerSide;
+    const uint64_t perFace = uint64_t(h.key.texelsPerSide) * h.key.texelsPerSide * texelBytes(h);
     // The texels must be exactly the rest of the file (checked without overflow).
-    if (h.faceCount > (size - kHeaderBytes) / (perFace * kTexelBytes) || size - kHeaderBytes != h.faceCount * perFace * kTexelBytes)
+    if (h.faceCount > (size - kHeaderBytes) / perFace || size - kHeaderBytes != h.faceCount * perFace)
         throw Error(name, "texels: the file holds " + std::to_string(size - kHeaderBytes) + " bytes after its header, " +
-                              std::to_string(h.faceCount) + " faces need " + std::to_string(h.faceCount * perFace * kTexelBytes));
+                              std::to_string(h.faceCount) + " faces need " + std::to_string(h.faceCount * perFace));
     return h;
 }
 
@@ -172,13 +195,18 @@ void readFaceCacheTexels(const std::filesystem::path& path, const FaceCacheHeade
     std::string block;
     for (size_t first = 0; first < texels.size(); first += kBlock) {
         const std::span<FaceTexel> run = texels.subspan(first, std::min(kBlock, texels.size() - first));
-        block.resize(run.size() * kTexelBytes);
+        block.resize(run.size() * texelBytes(h));
         if (!in.read(block.data(), std::streamsize(block.size()))) throw Error(name, "texels: cannot read them");
         size_t at = 0;
         for (FaceTexel& t : run) {
             t.samples = take<uint32_t>(block, at), t.open = take<uint32_t>(block, at);
             t.skyHorizon = take<float>(block, at), t.skyZenith = take<float>(block, at);
             t.sunSamples = take<uint32_t>(block, at), t.sunOpen = take<uint32_t>(block, at);
+            if (h.key.lightHash != 0) {
+                t.light.r = take<float>(block, at), t.light.g = take<float>(block, at), t.light.b = take<float>(block, at);
+                if (!(t.light.r >= 0.0f && t.light.g >= 0.0f && t.light.b >= 0.0f) || !std::isfinite(t.light.r + t.light.g + t.light.b))
+                    throw Error(name, "texel " + std::to_string(first + size_t(&t - run.data())) + ": light negative or not finite");
+            }
             if (t.samples != h.rays || t.sunSamples != h.sunRays || t.open > t.samples || t.sunOpen > t.sunSamples ||
                 !(t.skyHorizon >= 0.0f && t.skyZenith >= 0.0f) || !std::isfinite(t.skyHorizon + t.skyZenith) ||
                 t.skyHorizon + t.skyZenith > 1.0001f * float(t.open))

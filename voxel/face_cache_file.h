@@ -23,6 +23,9 @@ struct FaceCacheKey {
     uint32_t texelsPerSide = 0;
     glm::dvec3 sunDirection{0.0};
     double sunAngleDegrees = 0.0;
+    // With full light (lighting.ambient.from full): a hash of all the light
+    // depends on (the sky, the sun, every material's albedo and emission); 0: none.
+    uint64_t lightHash = 0;
     bool operator==(const FaceCacheKey&) const = default;
 };
 
@@ -44,12 +47,14 @@ struct FaceCacheFile {
 };
 
 // The key a bake of `world` with AO radius `radius` (world units) and k texels a
-// side has: the world's lighting gives the sun.
+// side has: the world's lighting gives the sun, and whether the light is baked.
 FaceCacheKey faceCacheKey(const World& world, double radius, uint32_t texelsPerSide);
 
 // A hash of the world's solid voxels (not materials: no texel depends on them),
 // the same whatever order the grid keeps its bricks in.
 uint64_t solidVoxelHash(const World& world);
+// The lightHash of a world whose light is baked (nonzero).
+uint64_t lightHash(const World& world);
 
 // Written atomically. Throws grotto::Error on a failed write.
 void saveFaceCache(const FaceCacheFile& cache, const std::filesystem::path& path);

@@ -20,7 +20,7 @@ constexpr auto kQualities = [] {
     return names;
 }();
 constexpr std::string_view kToneMaps[] = {"filmic", "linear"};  // ToneMap's order
-constexpr std::string_view kAmbientSources[] = {"color", "sky"};  // AmbientSource's order
+constexpr std::string_view kAmbientSources[] = {"color", "sky", "full"};  // AmbientSource's order
 constexpr std::string_view kThicknessModes[] = {"constant", "distance", "voxels"};  // ThicknessMode's order
 
 // Colours are linear RGB; above 1 is allowed (a bright sun), up to 1000.
@@ -49,7 +49,8 @@ const Setting kSettings[] = {
      .hi = kMaxRadiance, .uiLo = 0.0, .uiHi = 4.0, .help = "The ambient light, times its colour, before AO"},
     {.key = "lighting.ambient.from", .type = T::Choice, .desc = &Lighting::ambientFrom,
      .help = "color: the ambient colour on every surface; sky: the sky gradient's light on each surface, "
-             "around VBAO's bent normal (times the intensity, before AO)",
+             "around VBAO's bent normal (times the intensity, before AO); full: the face cache's baked light, "
+             "the sky, glowing materials and every bounce (ao.method cache and a bake)",
      .choices = kAmbientSources},
     {.key = "lighting.sky.zenith", .type = T::Color, .desc = &Lighting::skyZenith, .lo = 0.0, .hi = kMaxRadiance,
      .help = "The sky straight up, linear RGB"},

@@ -40,6 +40,7 @@ enum class ToneMap {
 enum class AmbientSource {
     Color,  // a constant colour times the intensity, times AO
     Sky,    // the sky gradient's light on the surface (around VBAO's bent normal), times the intensity, times AO
+    Full,   // the face cache's full light: the sky, the glowing materials and every bounce (ao.method cache, baked)
 };
 
 struct Lighting {

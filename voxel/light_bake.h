@@ -1,0 +1,54 @@
+#pragma once
+// The face cache's full light: on top of a bake's AO, sky and sun texels, the
+// light each texel receives from everything but the sun's direct beam (which the
+// frame draws per pixel, shadow edges exact): the sky through the world, the
+// glowing faces, and every bounce of all of it off the world's faces.
+//  - Sky: the texel's cosine-weighted rays that leave the world take the sky's
+//    radiance in their direction.
+//  - Glowing faces: sampled, not waited for. Each region of 8^3 voxels lists the
+//    glowing faces that can reach it; a texel takes each one's light in closed
+//    form (Lambert's polygon formula) and draws its shadow rays among them by
+//    that light, so an unoccluded lamp is exact and only what blocks it is noisy.
+//  - Bounces by feedback: the same cosine rays remember the texel they hit, and
+//    each pass gives every texel what its hits send back (their albedo times their
+//    light and their sun), so pass n holds n bounces. Passes repeat until the
+//    light changes by less than a tolerance.
+// A texel's `light` is irradiance over pi: radiance leaving = albedo x (light +
+// the sun's direct light) + emission. OpenVDB-free interface.
+#include "voxel/face_bake.h"
+#include "voxel/path_trace.h"
+
+#include <cstdint>
+#include <span>
+
+namespace grotto::voxel {
+
+struct LightBakeSettings {
+    uint32_t rays = 128;  // cosine rays per texel: the sky, and the hits bounces feed back through (2% near a lone lamp)
+    uint32_t emitterRays = 16;         // shadow rays per texel toward the glowing faces
+    double tolerance = 1e-3;           // stop when a pass changes the light by less than this share of it
+    uint32_t maxPasses = 500;          // and in any case after this many bounces
+    double epsilon = 1e-4;             // rays leave this far (voxels) in front of the face
+};
+
+struct LightBakeStats {
+    uint32_t passes = 0;      // bounce passes run
+    double change = 0.0;      // the last pass's change, as a share of the light
+    uint64_t rays = 0;        // rays traced
+    uint64_t hitBytes = 0;    // what the remembered hits took
+};
+
+// The bytes the bounce passes keep for `texels` texels: what a bake checks
+// against its memory budget before it starts.
+uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& settings);
+
+// Sets each texel's `light`. `faces`: every exposed face of the world
+// (exposedFaces; bounces need them all), `texels` k x k per face holding their
+// sun visibility already (bakeFaces). Multithreaded; the result does not depend
+// on the thread count. `progress` is told each pass (done = passes, total = the
+// most). Throws grotto::Error (internal) for mismatched spans.
+LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
+                         const LightSources& lights, const LightBakeSettings& settings, std::span<FaceTexel> texels,
+                         const BakeProgress& progress = {});
+
+}  // namespace grotto::voxel
