@@ -181,6 +181,14 @@ vec3 shadeCached(ivec2 q, uint surface) {
     }
     vec3 ambient = open;
     float aoShare = 1.0;
+    if (frame.ambient.w >= 1.5) {
+        // Full light: the light every bounce brought, occlusion and bounces
+        // already in it, so neither AO nor the multi-bounce fit applies.
+        vec3 full = seen && surfaceObject(surface) == 0u ? faceCacheFullLight(cachedTapsAt(q, surfaceFace(surface))) : open;
+        float cosSun = max(dot(normal, frame.sunDirection.xyz), 0.0);
+        return materialOf(surface).rgb * (frame.sunRadiance.rgb * (cosSun * sunReach) + mix(open, full, frame.aoStrength.x)) +
+               emissionOf(surface);
+    }
     if (seen && frame.ambient.w >= 0.5) {
         vec3 sky = frame.ambient.rgb * (light.y * frame.skyHorizon.rgb + light.z * frame.skyZenith.rgb);
         ambient = mix(open, sky, frame.aoStrength.x);

@@ -4,9 +4,12 @@
 // face_cache_plan.comp took this frame, each tracing the texel's whole sequence of
 // rays (the CPU bake's, voxel/face_bake.cpp) afresh, so a texel traced again
 // continues nothing and needs no sums kept. It writes the texel's packed bits
-// (shared/face_cache.h) and its face's level.
+// (shared/face_cache.h) and its face's level. With full light, a texel traced
+// here holds the sky's light alone until the world is baked again.
 #include "shared/face_trace.h"
 #include "shared/quad.h"
+#define GROTTO_FACE_CACHE_LAYOUT_ONLY  // its texel encodings alone
+#include "shared/face_cache.h"
 
 layout(local_size_x = GROTTO_FACE_TRACE_GROUP) in;
 layout(push_constant) uniform Push { FaceTraceConstants c; };
@@ -20,16 +23,12 @@ layout(set = 0, binding = 3, std430) buffer FaceTexels { uint faceTexels[]; };
 
 uint unorm(float v, uint bits) { return uint(round(clamp(v, 0.0, 1.0) * float((1u << bits) - 1u))); }
 
-// The texel's 24 bits into bytes 3t .. 3t + 2, beside other invocations' texels.
-void storeTexel(uint texel, uint bits) {
-    uint byte = 3u * texel, word = byte >> 2u, shift = (byte & 3u) * 8u;
-    atomicAnd(faceTexels[word], ~(0xFFFFFFu << shift));
-    atomicOr(faceTexels[word], bits << shift);
-    if (shift > 8u) {
-        uint high = 0xFFFFFFu >> (32u - shift);
-        atomicAnd(faceTexels[word + 1u], ~high);
-        atomicOr(faceTexels[word + 1u], bits >> (32u - shift));
-    }
+// The texel's light word, and its AO and sun half beside its pair's other texel's.
+void storeTexel(uint texel, uint aoSun, uint light) {
+    uint pair = 3u * (texel >> 1u), shift = 16u * (texel & 1u);
+    faceTexels[pair + (texel & 1u)] = light;
+    atomicAnd(faceTexels[pair + 2u], ~(0xFFFFu << shift));
+    atomicOr(faceTexels[pair + 2u], aoSun << shift);
 }
 
 // Does a ray from `start` along d leave the world without entering a solid voxel?
@@ -93,9 +92,11 @@ void main() {
         if (dot(d, n) > 0.0 && leaves(start, d)) ++sunOpen;
     }
     float samples = float(max(rays, 1u));
-    uint bits = unorm(float(open) / samples, 8u) | unorm(sunRays > 0u ? float(sunOpen) / float(sunRays) : 1.0, 5u) << 8u |
-                unorm(horizon / samples, 5u) << 13u | unorm(zenith / samples, 6u) << 18u;
-    storeTexel(face * texels + t, bits);
+    uint aoSun = unorm(float(open) / samples, 8u) | unorm(sunRays > 0u ? float(sunOpen) / float(sunRays) : 1.0, 8u) << 8u;
+    uint light = c.skyZenith.w > 0.5
+                     ? faceCacheEncodeLight((horizon * c.skyHorizon.rgb + zenith * c.skyZenith.rgb) / samples)
+                     : packHalf2x16(vec2(horizon, zenith) / samples);
+    storeTexel(face * texels + t, aoSun, light);
     if (t == 0u) {
         uint shiftBits = (face & 15u) * 2u;
         atomicAnd(levels[face >> 4u], ~(3u << shiftBits));

@@ -31,6 +31,11 @@ struct FaceBakeSettings {
     // false: the AO alone, no sky or sun (a mesh export's vertex AO): each ray
     // open within R is not followed out of the world, and no sun ray is traced.
     bool light = true;
+    // The world's light is baked too (lighting.ambient.from full; voxel/light_bake.h):
+    // the texels' light words hold it, and a texel traced without the bake holds
+    // the sky's light alone, from these colours (times the sky's intensity).
+    bool fullLight = false;
+    glm::dvec3 skyZenith{0.0}, skyHorizon{0.0};
 };
 
 // The rays a texel gets over the sun's disc: one for a point sun, whatever sunRays

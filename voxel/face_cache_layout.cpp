@@ -28,27 +28,30 @@ struct BrickLess {
 
 }  // namespace
 
-uint32_t packFaceTexel(const FaceTexel& t) {
+glm::uvec2 packFaceTexel(const FaceTexel& t, bool fullLight) {
     const double n = t.samples ? double(t.samples) : 1.0;
-    return unorm(t.ao(), 8) | unorm(t.sun(), 5) << 8 | unorm(t.skyHorizon / n, 5) << 13 | unorm(t.skyZenith / n, 6) << 18;
+    const uint32_t light = fullLight ? gpu::faceCacheEncodeLight(t.light)
+                                     : glm::packHalf2x16(glm::vec2(float(t.skyHorizon / n), float(t.skyZenith / n)));
+    return {unorm(t.ao(), 8) | unorm(t.sun(), 8) << 8, light};
 }
 
-uint32_t packedTexel(std::span<const uint32_t> words, size_t texel) {
-    uint32_t bits = 0;
-    for (size_t b = 0, byte = texel * GROTTO_FACE_TEXEL_BYTES; b < GROTTO_FACE_TEXEL_BYTES; ++b, ++byte)
-        bits |= ((words[byte / 4] >> (8 * (byte % 4))) & 255u) << (8 * b);
-    return bits;
+glm::uvec2 packedTexel(std::span<const uint32_t> words, size_t texel) {
+    const size_t pair = 3 * (texel / 2), odd = texel % 2;
+    return {(words[pair + 2] >> (16 * odd)) & 0xFFFFu, words[pair + odd]};
 }
 
-FaceTexel unpackFaceTexel(uint32_t bits, uint32_t rays, uint32_t sunRays) {
-    auto part = [&](uint32_t shift, uint32_t width) { return double((bits >> shift) & ((1u << width) - 1u)) / double((1u << width) - 1u); };
+FaceTexel unpackFaceTexel(glm::uvec2 bits, uint32_t rays, uint32_t sunRays, bool fullLight) {
     FaceTexel t;
     t.samples = rays;
-    t.open = uint32_t(std::lround(part(0, 8) * rays));
+    t.open = uint32_t(std::lround(double(bits.x & 255u) / 255.0 * rays));
     t.sunSamples = sunRays;
-    t.sunOpen = uint32_t(std::lround(part(8, 5) * sunRays));
-    t.skyHorizon = float(part(13, 5) * rays);
-    t.skyZenith = float(part(18, 6) * rays);
+    t.sunOpen = uint32_t(std::lround(double(bits.x >> 8) / 255.0 * sunRays));
+    if (fullLight) {
+        t.light = gpu::faceCacheDecodeLight(bits.y);
+    } else {
+        const glm::vec2 sky = glm::unpackHalf2x16(bits.y);
+        t.skyHorizon = sky.x * float(rays), t.skyZenith = sky.y * float(rays);
+    }
     return t;
 }
 
@@ -63,13 +66,13 @@ size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerS
 
 size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide) {
 
-    const size_t texelWords = (count.faces * texelsPerSide * texelsPerSide * GROTTO_FACE_TEXEL_BYTES + 3) / 4;
+    const size_t texelWords = 3 * ((count.faces * texelsPerSide * texelsPerSide + 1) / 2);
     const size_t levelWords = (count.faces + 15) / 16;  // each face's level for the GPU's tracer, 2 bits
     return faceBrickTableBytes(count.bricks) + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + texelWords * 4 + levelWords * 4;
 }
 
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
-                             uint32_t texelsPerSide) {
+                             uint32_t texelsPerSide, bool fullLight) {
     const uint32_t perFace = texelsPerSide * texelsPerSide;
     // Each brick's faces by direction and bit: the order the GPU counts them in.
     struct Entry { uint32_t dir, bit, face; };
@@ -83,28 +86,31 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
     out.faceCount = uint32_t(faces.size());
     out.faceOrder.reserve(faces.size());
     out.records.reserve(bricks.size() * GROTTO_FACE_RECORD_WORDS);
-    out.texels.assign((texels.size() * GROTTO_FACE_TEXEL_BYTES + 3) / 4, 0u);
-    size_t byte = 0;  // where the next texel goes
-    auto append = [&](uint32_t bits) {
-        for (uint32_t b = 0; b < GROTTO_FACE_TEXEL_BYTES; ++b, ++byte)
-            out.texels[byte >> 2] |= ((bits >> (8 * b)) & 255u) << (8 * (byte & 3));
+    out.fullLight = fullLight;
+    out.texels.assign(3 * ((texels.size() + 1) / 2), 0u);
+    size_t next = 0;  // the next texel's index
+    auto append = [&](glm::uvec2 bits) {
+        const size_t pair = 3 * (next / 2), odd = next % 2;
+        out.texels[pair + odd] = bits.y;
+        out.texels[pair + 2] |= bits.x << (16 * odd);
+        ++next;
     };
-    uint32_t next = 0;
+    uint32_t faceIndex = 0;
     std::vector<glm::ivec3> positions;  // record i's brick
     for (auto& [brick, entries] : bricks) {
         std::sort(entries.begin(), entries.end(),
                   [](const Entry& a, const Entry& b) { return std::tie(a.dir, a.bit) < std::tie(b.dir, b.bit); });
         const size_t base = out.records.size();
         out.records.resize(base + GROTTO_FACE_RECORD_WORDS, 0u);
-        for (uint32_t d = 0; d < 6; ++d) out.records[base + 96 + d] = next + uint32_t(std::count_if(
+        for (uint32_t d = 0; d < 6; ++d) out.records[base + 96 + d] = faceIndex + uint32_t(std::count_if(
             entries.begin(), entries.end(), [d](const Entry& e) { return e.dir < d; }));
         for (const Entry& e : entries) {
             out.records[base + e.dir * 16 + (e.bit >> 5)] |= 1u << (e.bit & 31u);
             if (e.bit < 256) out.records[base + 102 + e.dir / 3] += 1u << (e.dir % 3 * 9);  // in the first half
             out.faceOrder.push_back(e.face);
-            for (uint32_t t = 0; t < perFace; ++t) append(packFaceTexel(texels[size_t(e.face) * perFace + t]));
+            for (uint32_t t = 0; t < perFace; ++t) append(packFaceTexel(texels[size_t(e.face) * perFace + t], fullLight));
         }
-        next += uint32_t(entries.size());
+        faceIndex += uint32_t(entries.size());
         positions.push_back(brick);
     }
     FaceBrickTable table = layFaceBrickTable(positions);

@@ -1,9 +1,10 @@
 #pragma once
 // The face cache laid out as the GPU reads it (shaders/shared/face_cache.h): a
 // perfect hash of the bricks with exposed faces (voxel/face_brick_table.h), a
-// record of masks and counts per brick, and 3 packed bytes per texel.
+// record of masks and counts per brick, and 6 packed bytes per texel.
 #include "voxel/face_cache.h"
 
+#include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
 #include <cstdint>
@@ -15,7 +16,8 @@ namespace grotto::voxel {
 struct FaceCacheArrays {
     std::vector<glm::uvec4> bricks;  // the bricks' table's slots (FaceBrickTable)
     std::vector<uint32_t> records;   // the table's seeds, then GROTTO_FACE_RECORD_WORDS per brick
-    std::vector<uint32_t> texels;    // 3 bytes a texel one after another, faces in record order
+    std::vector<uint32_t> texels;    // 6 bytes a texel in pairs of 3 words, faces in record order
+    bool fullLight = false;          // light words hold the full light, not the sky's weights
     std::vector<uint32_t> faceOrder; // the GPU's face i is the listed face faceOrder[i]
     uint32_t texelsPerSide = 0;
     uint32_t faceCount = 0;
@@ -26,22 +28,25 @@ struct FaceCacheArrays {
     }
 };
 
-// AO, sun, horizon and zenith weights in [0, 1] as 24 bits: unorms of 8, 5, 5 and
-// 6 bits from bit 0 up (shaders/shared/face_cache.h).
-uint32_t packFaceTexel(const FaceTexel& t);
-// The step between packed values of each part (AO, sun, horizon, zenith): what the
-// GPU's read of a texel may be off by is half of it.
-inline constexpr double kFaceTexelStep[4] = {1.0 / 255, 1.0 / 31, 1.0 / 31, 1.0 / 63};
+// A texel as the GPU keeps it (shaders/shared/face_cache.h): x AO and sun as 8-bit
+// unorms, y the light word, the horizon and zenith weights per ray as halfs or,
+// with `fullLight`, the light as RGB9E5.
+glm::uvec2 packFaceTexel(const FaceTexel& t, bool fullLight = false);
+// What the GPU's read of each part (AO, sun, horizon, zenith) may be off by, at
+// most: half the step of AO and sun; a half's rounding of a weight up to 1.
+inline constexpr double kFaceTexelStep[4] = {1.0 / 255, 1.0 / 255, 1.0 / 2048, 1.0 / 2048};
+// The relative error of an RGB9E5 light channel against the largest channel.
+inline constexpr double kFaceLightStep = 1.0 / 512;
 
 // `faces` as exposedFaces lists them, `texels` k x k per face in that order.
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
-                             uint32_t texelsPerSide);
+                             uint32_t texelsPerSide, bool fullLight = false);
 
-// Texel `texel`'s 24 bits in packed words laid out as FaceCacheArrays::texels.
-uint32_t packedTexel(std::span<const uint32_t> words, size_t texel);
+// Texel `texel`'s bits in packed words laid out as FaceCacheArrays::texels.
+glm::uvec2 packedTexel(std::span<const uint32_t> words, size_t texel);
 // A packed texel (packFaceTexel's bits) as sums of `rays` and `sunRays` rays: what
 // the GPU's tracer left, for the host's copy.
-FaceTexel unpackFaceTexel(uint32_t bits, uint32_t rays, uint32_t sunRays);
+FaceTexel unpackFaceTexel(glm::uvec2 bits, uint32_t rays, uint32_t sunRays, bool fullLight = false);
 
 // What layFaceCache's arrays for `faces` at k texels a side take, without laying
 // them out (for `info` and `bench`).

@@ -1,5 +1,6 @@
 #include "engine/frame/frame_constants.h"
 
+#include "engine/frame/frame_plan.h"
 #include "engine/frame/sky_light.h"
 #include "shaders/shared/tone_map.h"
 
@@ -12,8 +13,9 @@ gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l,
     u.viewProj = camera.viewProjRelative();
     u.sunDirection = glm::vec4(l.sunDirection, 0.0f);
     u.sunRadiance = glm::vec4(l.sunColor * l.sunIntensity, 0.0f);
-    if (l.ambientFrom == voxel::AmbientSource::Sky) {
-        u.ambient = glm::vec4(glm::vec3(l.ambientIntensity), 1.0f);
+    const voxel::AmbientSource source = ambientSource(l, ao);
+    if (source != voxel::AmbientSource::Color) {  // w: 1 the sky's light, 2 the face cache's full light
+        u.ambient = glm::vec4(glm::vec3(l.ambientIntensity), source == voxel::AmbientSource::Full ? 2.0f : 1.0f);
         const auto rows = skyLightTable(l.skyZenith, l.skyHorizon);
         for (int k = 0; k < GROTTO_SKY_LIGHT_ROWS; ++k) u.skyLight[k] = glm::vec4(rows[k], 0.0f);
     } else {

@@ -1,5 +1,7 @@
 #include "engine/frame/frame_plan.h"
 
+#include "grotto/error.h"
+
 #include <algorithm>
 
 namespace grotto {
@@ -17,6 +19,11 @@ VkExtent2D FramePlan::aoExtent() const {
     return ao.chain.fullResolution ? frame() : VkExtent2D{(width + 1) / 2, (height + 1) / 2};
 }
 
+voxel::AmbientSource ambientSource(const voxel::Lighting& lighting, const AoOptions& ao) {
+    const bool full = lighting.ambientFrom == voxel::AmbientSource::Full;
+    return full && !faceCached(ao) ? voxel::AmbientSource::Sky : lighting.ambientFrom;
+}
+
 FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting,
                     const SceneFacts& scene, const FrameRequest& request) {
     FramePlan p{.width = width, .height = height, .ao = ao, .scene = scene,
@@ -25,7 +32,7 @@ FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const 
     p.temporal = p.chain && ao.chain.temporalHistory > 0;
     p.faceCache = faceCached(ao);
     p.cacheTracing = p.faceCache && scene.occupancy && scene.faceCache;
-    p.bentNormals = ao.enabled && ao.method == AoMethod::Vbao && lighting.ambientFrom == voxel::AmbientSource::Sky;
+    p.bentNormals = ao.enabled && ao.method == AoMethod::Vbao && ambientSource(lighting, ao) == voxel::AmbientSource::Sky;
 
     p.objects = scene.objects;
     p.movingObjects = scene.objects && scene.movingObjects;

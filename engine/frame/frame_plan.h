@@ -65,6 +65,11 @@ struct FramePlan {
     VkExtent2D aoExtent() const;  // the AO chain's resolution: the frame's, or half of it rounded up
 };
 
+// The ambient light a frame draws: the world's choice, but full light only where
+// the face cache holds it; without the cache (another AO method, or none) the
+// sky's light on each surface, times that method's AO.
+voxel::AmbientSource ambientSource(const voxel::Lighting& lighting, const AoOptions& ao);
+
 FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting,
                     const SceneFacts& scene, const FrameRequest& request = {});
 

@@ -46,7 +46,9 @@ void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, Vk
         .texelsPerSide = cache.texelsPerSide(),
         .budget = budget,
         .width = size.width,
-        .height = size.height};
+        .height = size.height,
+        .skyZenith = glm::vec4(cache.sky().zenith, cache.sky().fullLight ? 1.0f : 0.0f),
+        .skyHorizon = glm::vec4(cache.sky().horizon, 0.0f)};
     if (cache.faceCount() == 0) return;
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     gate_.dispatch(cmd, {vk::storageBuffer(cache.header().buffer)}, {1, 1}, 1, &c);

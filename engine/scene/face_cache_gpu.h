@@ -19,6 +19,13 @@ struct FaceCacheSun {
     float angleDegrees = 0.0f;
 };
 
+// With full light: the sky a texel traced on the GPU (without the bake) is lit
+// by alone, its colours times its intensity.
+struct FaceCacheSky {
+    bool fullLight = false;
+    glm::vec3 zenith{0.0f}, horizon{0.0f};
+};
+
 // The rays a converged texel holds, for the GPU's tracer to match.
 struct FaceCacheRays {
     uint32_t rays = 64, sunRays = 16;
@@ -31,7 +38,7 @@ public:
     // `levels`: each face's (shared/face_trace.h), in the arrays' face order
     // (FaceCacheArrays::faceOrder); empty: all converged.
     GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& arrays, Sun sun = {}, FaceCacheRays rays = {},
-                 std::span<const uint8_t> levels = {});
+                 std::span<const uint8_t> levels = {}, FaceCacheSky sky = {});
     ~GpuFaceCache();
     GpuFaceCache(const GpuFaceCache&) = delete;
     GpuFaceCache& operator=(const GpuFaceCache&) = delete;
@@ -40,6 +47,7 @@ public:
     uint32_t texelsPerSide() const { return texelsPerSide_; }
     uint32_t faceCount() const { return faceCount_; }
     const Sun& sun() const { return sun_; }
+    const FaceCacheSky& sky() const { return sky_; }
     const FaceCacheRays& rays() const { return rays_; }
     // The cache's own arrays and levels (what `info` and `bench` report); the
     // tracer's queue and request bits come on top.
@@ -77,6 +85,7 @@ private:
     uint32_t table_, texelsPerSide_, faceCount_;
     Sun sun_;
     FaceCacheRays rays_;
+    FaceCacheSky sky_;
 };
 
 }  // namespace grotto

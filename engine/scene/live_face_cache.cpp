@@ -2,6 +2,7 @@
 
 #include "shaders/shared/face_trace.h"
 #include "voxel/face_cache_layout.h"
+#include "voxel/light_bake.h"
 
 #include <algorithm>
 
@@ -9,8 +10,10 @@ namespace grotto {
 
 voxel::FaceBakeSettings worldBakeSettings(const voxel::World& world, double radius, uint32_t texelsPerSide) {
     const voxel::Lighting& light = world.desc().lighting;
+    const double sky = light.ambientIntensity;
     return {.radius = radius, .texelsPerSide = texelsPerSide, .sunDirection = glm::dvec3(light.sunDirection),
-            .sunAngleDegrees = double(light.sunAngle)};
+            .sunAngleDegrees = double(light.sunAngle), .fullLight = light.ambientFrom == voxel::AmbientSource::Full,
+            .skyZenith = glm::dvec3(light.skyZenith) * sky, .skyHorizon = glm::dvec3(light.skyHorizon) * sky};
 }
 
 namespace {
@@ -51,6 +54,8 @@ LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& tabl
     std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
     std::vector<voxel::FaceTexel> texels(faces.size() * settings.texelsPerSide * settings.texelsPerSide);
     voxel::bakeFaces(table, world, faces, settings, texels);
+    if (settings.fullLight)
+        voxel::bakeLight(table, world, faces, settings.texelsPerSide, voxel::lightSources(world.desc().lighting), {}, texels);
     return LiveFaceCache(scene, std::move(faces), std::move(texels), settings, world.voxelSize());
 }
 
@@ -75,7 +80,8 @@ void LiveFaceCache::sync() {
         const uint32_t sun = full ? sunRays : std::min<uint32_t>(GROTTO_FACE_COARSE_SUN_RAYS, sunRays);
         for (uint32_t t = 0; t < perFace; ++t)
             texels_[size_t(f) * perFace + t] =
-                voxel::unpackFaceTexel(voxel::packedTexel(gpu.texelWords, g * perFace + t), rays, sun);
+                voxel::unpackFaceTexel(voxel::packedTexel(gpu.texelWords, g * perFace + t), rays, sun,
+                                       settings_.fullLight);
     }
 }
 
@@ -102,12 +108,13 @@ void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& w
 }
 
 void LiveFaceCache::upload() {
-    const voxel::FaceCacheArrays arrays = voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide);
+    const voxel::FaceCacheArrays arrays = voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight);
     std::vector<uint8_t> gpuLevels(arrays.faceOrder.size());
     for (size_t g = 0; g < gpuLevels.size(); ++g) gpuLevels[g] = levels_[arrays.faceOrder[g]];
     auto gpu = std::make_unique<GpuFaceCache>(
         scene_.ctx, arrays, GpuFaceCache::Sun{glm::vec3(settings_.sunDirection), float(settings_.sunAngleDegrees)},
-        FaceCacheRays{settings_.rays, settings_.sunRays, float(settings_.radius / voxelSize_)}, gpuLevels);
+        FaceCacheRays{settings_.rays, settings_.sunRays, float(settings_.radius / voxelSize_)}, gpuLevels,
+        FaceCacheSky{settings_.fullLight, glm::vec3(settings_.skyZenith), glm::vec3(settings_.skyHorizon)});
     vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still read the old copy
     scene_.faceCache_ = std::move(gpu);
     order_ = arrays.faceOrder;

@@ -12,10 +12,13 @@
 //            of the faces in each direction's first 8 mask words, 9 bits each
 //            (directions 0-2, then 3-5), so a face's index counts at most 7 words;
 //   texels:  k x k per face (faces in record, direction, bit order; texel j * k + i),
-//            3 bytes each, packed one after another into uints (texel t at bytes
-//            3t .. 3t + 2, little-endian): from bit 0 up, AO as an 8-bit unorm,
-//            sun visibility as 5 bits, and the horizon and zenith sky weights per
-//            ray as 5 and 6 bits (zenith light is most of an open floor's).
+//            6 bytes each, in pairs of three words: the two texels' light words,
+//            then a word of their AO and sun halves (the even texel's low). The
+//            half: AO and sun visibility as 8-bit unorms. The light word: with
+//            sky light, the horizon and zenith sky weights per ray as two halfs
+//            (a float's range, so a texel that sees a sliver of sky keeps it);
+//            with full light, the texel's light (irradiance over pi) as RGB9E5,
+//            three 9-bit mantissas sharing a 5-bit exponent.
 // The includer defines, before including it (or GROTTO_FACE_CACHE_LAYOUT_ONLY):
 //   uvec4 faceCacheBrickEntry(uint slot); uint faceCacheRecordWord(uint word);
 //   uint faceCacheTexelWord(uint word); uint faceCacheK(); and
@@ -27,6 +30,9 @@
 #include "trace.h"
 
 #ifdef __cplusplus
+#include <glm/common.hpp>
+#include <glm/gtc/packing.hpp>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -38,7 +44,11 @@
 GROTTO_NAMESPACE_BEGIN
 #ifdef __cplusplus
 using glm::ivec3;
+using glm::uvec3;
 using glm::uvec4;
+inline vec2 unpackHalf2x16(uint v) { return glm::unpackHalf2x16(v); }
+inline float exp2(float v) { return std::exp2(v); }
+inline float log2(float v) { return std::log2(v); }
 inline int bitCount(uint v) { return std::popcount(v); }
 inline int findLSB(int v) { return std::countr_zero(uint(v)); }
 using std::floor;
@@ -47,7 +57,28 @@ using std::min;
 #endif
 
 #define GROTTO_FACE_RECORD_WORDS 104u  // 6 x 16 mask words, 6 bases, 2 words of half counts
-#define GROTTO_FACE_TEXEL_BYTES 3u
+#define GROTTO_FACE_TEXEL_BYTES 6u
+
+// The words `texels` texels take.
+GROTTO_INLINE uint faceCacheTexelWords(uint texels) { return 3u * ((texels + 1u) / 2u); }
+
+// RGB9E5 (as Vulkan's E5B9G9R9): non-negative RGB to 32 bits and back, relative
+// precision 1/512 of the largest channel, up to 65408.
+GROTTO_FUNCTION uint faceCacheEncodeLight(vec3 c) {
+    float top = max(max(c.x, c.y), c.z);
+    if (!(top > 1.0e-20f)) return 0u;  // NaN and nothing read 0
+    top = min(top, 65408.0f);
+    int e = max(-16, int(floor(log2(top)))) + 1;  // 2^(e-1) <= top < 2^e
+    float scale = exp2(float(9 - e));
+    if (uint(floor(top * scale + 0.5f)) > 511u) scale *= 0.5f, e += 1;
+    uvec3 m = uvec3(floor(min(max(c, vec3(0.0f)), vec3(65408.0f)) * scale + 0.5f));
+    m = min(m, uvec3(511u));
+    return m.x | (m.y << 9u) | (m.z << 18u) | (uint(e + 15) << 27u);
+}
+GROTTO_FUNCTION vec3 faceCacheDecodeLight(uint bits) {
+    float scale = exp2(float(int(bits >> 27u) - 15 - 9));
+    return vec3(float(bits & 511u), float((bits >> 9u) & 511u), float((bits >> 18u) & 511u)) * scale;
+}
 
 // A 32-bit mix (a bijection), so neighbouring bricks scatter over the table.
 GROTTO_INLINE uint faceCacheMix(uint v) {
@@ -127,17 +158,16 @@ GROTTO_FUNCTION int faceCacheFace(ivec3 cell, uint dir) {
 // Floor division by k > 0.
 GROTTO_FUNCTION int faceCacheFloorDiv(int i, int k) { return i >= 0 ? i / k : -((-i + k - 1) / k); }
 
-// Texel `texel`'s 24 bits.
-GROTTO_FUNCTION uint faceCacheTexel(uint texel) {
-    uint byte = GROTTO_FACE_TEXEL_BYTES * texel, shift = (byte & 3u) * 8u;
-    uint bits = faceCacheTexelWord(byte >> 2u) >> shift;
-    if (shift > 8u) bits |= faceCacheTexelWord((byte >> 2u) + 1u) << (32u - shift);
-    return bits & 0xFFFFFFu;
+// Texel `texel`: x its AO and sun half (16 bits), y its light word.
+GROTTO_FUNCTION uvec2 faceCacheTexel(uint texel) {
+    uint pair = 3u * (texel >> 1u), odd = texel & 1u;
+    return uvec2((faceCacheTexelWord(pair + 2u) >> (16u * odd)) & 0xFFFFu, faceCacheTexelWord(pair + odd));
 }
 
-GROTTO_FUNCTION vec4 faceCacheUnpack(uint bits) {
-    return vec4(float(bits & 255u) / 255.0f, float((bits >> 8u) & 31u) / 31.0f, float((bits >> 13u) & 31u) / 31.0f,
-                float(bits >> 18u) / 63.0f);
+// AO, sun visibility, and the horizon and zenith weights (with sky light).
+GROTTO_FUNCTION vec4 faceCacheUnpack(uvec2 bits) {
+    vec2 sky = unpackHalf2x16(bits.y);
+    return vec4(float(bits.x & 255u) / 255.0f, float(bits.x >> 8u) / 255.0f, sky.x, sky.y);
 }
 
 // The texels a point reads: the four texel centres nearest to it on its face
@@ -236,6 +266,18 @@ GROTTO_FUNCTION vec4 faceCacheBlend(FaceCacheTaps t, GROTTO_OUT(bool) found, GRO
     }
     found = weight > 0.0f;
     return found ? sum / weight : vec4(1.0f, 1.0f, 0.0f, 0.0f);
+}
+
+// With full light: the texels' light (irradiance over pi), blended as faceCacheBlend.
+GROTTO_FUNCTION vec3 faceCacheFullLight(FaceCacheTaps t) {
+    vec3 sum = vec3(0.0f);
+    float weight = 0.0f;
+    for (int c = 0; c < 4; ++c) {
+        if (t.weight[c] <= 0.0f) continue;
+        sum += t.weight[c] * faceCacheDecodeLight(faceCacheTexel(t.texel[c]).y);
+        weight += t.weight[c];
+    }
+    return weight > 0.0f ? sum / weight : vec3(0.0f);
 }
 
 GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool) found) {

@@ -54,8 +54,11 @@ struct FaceTraceConstants {
     uint budget;          // rays per frame for the second list (and for the first at full rays)
     uint width, height;   // the frame's, for the request pass's dispatch
     uint pad0, pad1;
+    // With full light (w of the first 1): the sky's two colours times its
+    // intensity, for the light word of a texel traced here (the sky's light alone).
+    vec4 skyZenith, skyHorizon;
 };
-GROTTO_STATIC_ASSERT(sizeof(FaceTraceConstants) == 64);
+GROTTO_STATIC_ASSERT(sizeof(FaceTraceConstants) == 96);
 
 GROTTO_NAMESPACE_END
 #endif
