@@ -21,7 +21,7 @@ struct Candidate {
 // path (an installed grotto's $ORIGIN/../lib/grotto, a game's through the
 // installed package), so an installed or relocated copy finds its own; then this
 // build tree's; then where `cmake --install` puts it.
-Candidate candidates[] = {
+const Candidate candidates[] = {
     {kModule, "the program's run path"},
     {GROTTO_IMAGE_CODEC_BUILD_PATH, GROTTO_IMAGE_CODEC_BUILD_PATH},
     {GROTTO_IMAGE_CODEC_INSTALL_PATH, GROTTO_IMAGE_CODEC_INSTALL_PATH},
