@@ -13,7 +13,7 @@ namespace {
 constexpr const char* kModule = "libgrotto_image_codec.so";
 
 struct Candidate {
-    std::string path;  // what dlopen is given
+    const char* path;   // what dlopen is given
     const char* where;  // how the message names it
 };
 
@@ -37,7 +37,7 @@ ImageCodec load() {
     for (const Candidate& c : candidates) {
         looked += (looked.empty() ? "" : ", ") + std::string(c.where);
         // The module stays loaded for the life of the process: never dlclose'd.
-        void* module = dlopen(c.path.c_str(), RTLD_NOW | RTLD_LOCAL);
+        void* module = dlopen(c.path, RTLD_NOW | RTLD_LOCAL);
         if (!module) {
             // Why a module that is there did not load (a library it needs is
             // missing) says more than "not found" at the places it is not.
