@@ -12,11 +12,14 @@ set_target_properties(grotto_vk PROPERTIES EXPORT_NAME vk)
 set_target_properties(grotto_engine PROPERTIES EXPORT_NAME frame)
 set_target_properties(grotto_api PROPERTIES EXPORT_NAME engine)
 set_target_properties(grotto_shaders PROPERTIES EXPORT_NAME shaders)
-set_target_properties(grotto_oiio PROPERTIES EXPORT_NAME oiio)
+set_target_properties(grotto_image_io PROPERTIES EXPORT_NAME image_io)
 set_target_properties(grotto_vdb_deps PROPERTIES EXPORT_NAME vdb_deps)
 
+# The installed grotto finds the image codec module (installed beside the
+# libraries, engine/image_codec/) relative to itself, wherever the tree is moved.
+set_target_properties(grotto PROPERTIES INSTALL_RPATH "$ORIGIN/../${CMAKE_INSTALL_LIBDIR}/grotto")
 install(TARGETS grotto RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
-install(TARGETS grotto_api grotto_common grotto_vdb_read grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_oiio grotto_vdb_deps
+install(TARGETS grotto_api grotto_common grotto_vdb_read grotto_voxel grotto_vk grotto_engine grotto_shaders grotto_image_io grotto_vdb_deps
         EXPORT GrottoTargets ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR})
 install(DIRECTORY include/grotto DESTINATION ${CMAKE_INSTALL_INCLUDEDIR} FILES_MATCHING PATTERN "*.h")
 

@@ -1,11 +1,10 @@
 #include "engine/image_output.h"
 
 #include "common/atomic_file.h"
+#include "engine/image_codec/codec_library.h"
+#include "engine/image_input.h"
 #include "grotto/error.h"
 #include "shaders/shared/tone_map.h"
-
-#include <OpenImageIO/filesystem.h>
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <array>
@@ -14,11 +13,11 @@
 #include <fstream>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
 namespace grotto {
-namespace OIIO = OIIO_NAMESPACE;
 
 ImageFormat imageFormatFor(const std::filesystem::path& path) {
     const std::string ext = path.extension().string();
@@ -119,26 +118,39 @@ std::vector<float> displayColor(const FrameImages& f) {
 
 namespace {
 
-void addCamera(OIIO::ImageSpec& spec, const Camera& camera) {
-    // Imath (row-vector) matrices share their memory layout with glm's column-major ones.
-    const glm::mat4 worldToCamera(camera.viewFromWorld());
-    const glm::mat4 worldToScreen(camera.projection(false) * camera.viewFromWorld());
-    spec.attribute("worldtocamera", OIIO::TypeMatrix44, &worldToCamera[0][0]);
-    spec.attribute("worldtoscreen", OIIO::TypeMatrix44, &worldToScreen[0][0]);
-    spec.attribute("Software", "grotto");
+// The camera as the standard worldtocamera / worldtoscreen attributes.
+struct CameraMatrices {
+    glm::mat4 worldToCamera, worldToScreen;
+    explicit CameraMatrices(const Camera& camera)
+        : worldToCamera(camera.viewFromWorld()), worldToScreen(camera.projection(false) * camera.viewFromWorld()) {}
+    void describe(grotto_image_to_encode& image) const {
+        image.world_to_camera = &worldToCamera[0][0];
+        image.world_to_screen = &worldToScreen[0][0];
+    }
+};
+
+// Pixels of `channels` interleaved channels, each stored as `types` says, with
+// the format's default names and neither alpha nor Z marked.
+grotto_image_to_encode imageOf(const std::filesystem::path& target, uint32_t width, uint32_t height, int channels,
+                               const int* types, int pixelType, const void* pixels) {
+    return {.target = target.c_str(), .width = int(width), .height = int(height), .channels = channels,
+            .channel_names = nullptr, .channel_types = types, .pixel_type = pixelType, .pixels = pixels,
+            .alpha_channel = -1, .z_channel = -1, .world_to_camera = nullptr, .world_to_screen = nullptr,
+            .chromaticities = nullptr, .color_space = nullptr, .png_level = FrameEncoding::kDefaultPngLevel};
 }
 
 // Encodes in memory and writes the bytes through writeAtomically, which checks
 // every write: OpenImageIO's PNG writer ignores a failed fwrite, so a full disk
 // would otherwise leave a truncated file that it reports as written.
-void writeImage(const std::filesystem::path& target, const OIIO::ImageSpec& spec, const void* pixels, OIIO::TypeDesc type) {
-    std::vector<unsigned char> bytes;
-    OIIO::Filesystem::IOVecOutput memory(bytes);
-    auto out = OIIO::ImageOutput::create(target.string());
-    if (!out || !out->set_ioproxy(&memory) || !out->open(target.string(), spec) || !out->write_image(type, pixels) ||
-        !out->close())
-        throw Error::internal(target.string(), "cannot be encoded: " + (out ? out->geterror() : OIIO::geterror()));
-    writeAtomically(target, std::string_view(reinterpret_cast<const char*>(bytes.data()), bytes.size()));
+void writeImage(const std::filesystem::path& target, const grotto_image_to_encode& image) {
+    encodeImage(image, [&](std::string_view bytes) { writeAtomically(target, bytes); });
+}
+
+// Pointers to the names, as the codec takes them.
+std::vector<const char*> namePointers(const std::vector<std::string>& names) {
+    std::vector<const char*> p;
+    for (const std::string& n : names) p.push_back(n.c_str());
+    return p;
 }
 
 }  // namespace
@@ -169,15 +181,13 @@ std::vector<uint8_t> encodeSrgb8(std::span<const float> rgba) {
 void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t height, std::span<const uint8_t> rgb,
                 const Camera* camera, int pngLevel) {
     if (rgb.size() != size_t(width) * height * 3) throw Error::internal(path.string(), "pixels of the wrong size");
-    OIIO::ImageSpec spec(int(width), int(height), 3, OIIO::TypeDesc::UINT8);
-    spec.attribute("oiio:ColorSpace", "sRGB");
-    spec.attribute("png:compressionLevel", std::clamp(pngLevel, 0, 9));
-    // Every row predicted from the one above (PNG_FILTER_UP): as small as
-    // libpng's default of trying all five filters on each row, in about half the time.
-    spec.attribute("png:filter", 0x20);
-    if (camera) addCamera(spec, *camera);
-    else spec.attribute("Software", "grotto");
-    writeImage(path, spec, rgb.data(), OIIO::TypeDesc::UINT8);
+    static constexpr int kTypes[3] = {GROTTO_PIXEL_UINT8, GROTTO_PIXEL_UINT8, GROTTO_PIXEL_UINT8};
+    grotto_image_to_encode image = imageOf(path, width, height, 3, kTypes, GROTTO_PIXEL_UINT8, rgb.data());
+    image.color_space = "sRGB";
+    image.png_level = pngLevel;
+    std::optional<CameraMatrices> matrices;
+    if (camera) matrices.emplace(*camera).describe(image);
+    writeImage(path, image);
 }
 
 void writeFrame(const std::filesystem::path& path, const FrameImages& f, const Camera& camera, bool aovs) {
@@ -227,24 +237,13 @@ void writeExr(const std::filesystem::path& path, const FrameImages& f, const Cam
     std::vector<std::string> names = {"R", "G", "B", "A"};
     for (const Layer& layer : layers) names.insert(names.end(), layer.channels.begin(), layer.channels.end());
     const int channels = int(names.size());
-    OIIO::ImageSpec spec(int(f.width), int(f.height), channels, e.exrHalf ? OIIO::TypeDesc::HALF : OIIO::TypeDesc::FLOAT);
-    spec.channelnames = names;
-    spec.alpha_channel = 3;
+    // Z stays float in a half EXR: half's 65504 range and 11-bit precision would garble depth.
+    std::vector<int> types(size_t(channels), e.exrHalf ? GROTTO_PIXEL_HALF : GROTTO_PIXEL_FLOAT);
     const auto z = std::find(names.begin(), names.end(), "Z");
-    if (z != names.end()) {
-        spec.z_channel = int(z - names.begin());
-        if (e.exrHalf) {
-            spec.channelformats.assign(size_t(channels), OIIO::TypeDesc::HALF);
-            spec.channelformats[size_t(spec.z_channel)] = OIIO::TypeDesc::FLOAT;
-        }
-    }
+    if (z != names.end()) types[size_t(z - names.begin())] = GROTTO_PIXEL_FLOAT;
     // Scene-linear Rec. 709 / sRGB primaries with a D65 white (OpenEXR's chromaticities:
     // red, green, blue and white xy), as the composite lights them.
-    spec.attribute("oiio:ColorSpace", "Linear");
     static constexpr float kRec709[8] = {0.64f, 0.33f, 0.30f, 0.60f, 0.15f, 0.06f, 0.3127f, 0.3290f};
-    spec.attribute("chromaticities", OIIO::TypeDesc(OIIO::TypeDesc::FLOAT, 8), kRec709);
-    spec.attribute("compression", "zip");
-    addCamera(spec, camera);
     const size_t n = size_t(f.width) * f.height;
     std::vector<float> px(size_t(channels) * n);
     for (size_t i = 0; i < n; ++i) {
@@ -253,7 +252,16 @@ void writeExr(const std::filesystem::path& path, const FrameImages& f, const Cam
         for (const Layer& layer : layers)
             for (int c = 0; c < int(layer.channels.size()); ++c) *p++ = layer.value(i, c);
     }
-    writeImage(path, spec, px.data(), OIIO::TypeDesc::FLOAT);
+    const std::vector<const char*> namePtrs = namePointers(names);
+    grotto_image_to_encode image = imageOf(path, f.width, f.height, channels, types.data(), GROTTO_PIXEL_FLOAT, px.data());
+    image.channel_names = namePtrs.data();
+    image.alpha_channel = 3;
+    image.z_channel = z != names.end() ? int(z - names.begin()) : -1;
+    image.chromaticities = kRec709;
+    image.color_space = "Linear";
+    const CameraMatrices matrices(camera);
+    matrices.describe(image);
+    writeImage(path, image);
 }
 
 }  // namespace
@@ -273,15 +281,18 @@ void writeChannels(const std::filesystem::path& path, uint32_t width, uint32_t h
     const size_t n = size_t(width) * height, count = channels.size();
     for (const Channel& c : channels)
         if (c.values->size() != n) throw Error::internal(path.string(), "channel " + c.name + " has the wrong size");
-    OIIO::ImageSpec spec(int(width), int(height), int(count), OIIO::TypeDesc::FLOAT);
-    spec.channelnames.clear();
-    for (const Channel& c : channels) spec.channelnames.push_back(c.name);
-    spec.attribute("compression", "zip");
-    addCamera(spec, camera);
     std::vector<float> px(count * n);
     for (size_t i = 0; i < n; ++i)
         for (size_t c = 0; c < count; ++c) px[count * i + c] = (*channels[c].values)[i];
-    writeImage(path, spec, px.data(), OIIO::TypeDesc::FLOAT);
+    std::vector<std::string> names;
+    for (const Channel& c : channels) names.push_back(c.name);
+    const std::vector<const char*> namePtrs = namePointers(names);
+    const std::vector<int> types(count, GROTTO_PIXEL_FLOAT);
+    grotto_image_to_encode image = imageOf(path, width, height, int(count), types.data(), GROTTO_PIXEL_FLOAT, px.data());
+    image.channel_names = namePtrs.data();
+    const CameraMatrices matrices(camera);
+    matrices.describe(image);
+    writeImage(path, image);
 }
 
 namespace {
@@ -299,17 +310,10 @@ bool endsWithPngEnd(const std::filesystem::path& path) {
 
 bool imageDecodes(const std::filesystem::path& path, uint32_t width, uint32_t height) {
     if (imageFormatFor(path) == ImageFormat::Png && !endsWithPngEnd(path)) return false;
-    auto in = OIIO::ImageInput::open(path.string());
-    if (!in) {
-        OIIO::geterror();  // taken, so OpenImageIO does not print it
-        return false;
-    }
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.width != int(width) || spec.height != int(height) || spec.depth != 1) return false;
-    std::vector<unsigned char> pixels(spec.image_bytes(true));
-    const bool whole = in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeUnknown, pixels.data()) && in->close();
-    in->geterror();
-    return whole;
+    // The size first: a frame of another size is not decoded at all.
+    const std::optional<ImageFile> header = readImage(path, ReadAs::Header);
+    if (!header || header->width != int(width) || header->height != int(height) || header->depth != 1) return false;
+    return readImage(path, ReadAs::Check).has_value();
 }
 
 }  // namespace grotto

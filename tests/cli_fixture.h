@@ -2,9 +2,9 @@
 // The CLI tests' fixture: a scratch directory with a small good world in it, and
 // the check every refusal must pass (exit code 2, one stderr line naming the
 // problem, no output and no temporary file left behind).
+#include "engine/image_input.h"
 #include "tests/test_util.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include "voxel/openvdb_grids.h"
 
@@ -33,11 +33,8 @@ inline bool endsWithPngEnd(const fs::path& file) {
 // An image's pixels as 8-bit channels, interleaved; empty if it cannot be read.
 inline std::vector<uint8_t> readPixels8(const fs::path& file) {
     if (file.extension() == ".png" && !endsWithPngEnd(file)) return {};
-    auto in = OIIO::ImageInput::open(file.string());
-    if (!in) return {};
-    std::vector<uint8_t> pixels(size_t(in->spec().image_pixels()) * size_t(in->spec().nchannels));
-    if (!in->read_image(0, 0, 0, in->spec().nchannels, OIIO::TypeDesc::UINT8, pixels.data())) return {};
-    return pixels;
+    const std::optional<ImageFile> image = readImage(file, ReadAs::UInt8);
+    return image ? image->bytes : std::vector<uint8_t>{};
 }
 
 // The largest difference of any channel of two images of one size (256 if the sizes differ).

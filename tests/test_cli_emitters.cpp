@@ -11,20 +11,8 @@
 namespace grotto::test {
 namespace {
 
-// An EXR's pixels as floats, every channel interleaved; its spec beside them.
-struct FloatImage {
-    OIIO::ImageSpec spec;
-    std::vector<float> pixels;
-};
-FloatImage readFloats(const fs::path& exr) {
-    FloatImage image;
-    auto in = OIIO::ImageInput::open(exr.string());
-    if (!in) return image;
-    image.spec = in->spec();
-    image.pixels.resize(size_t(image.spec.image_pixels()) * size_t(image.spec.nchannels));
-    if (!in->read_image(0, 0, 0, image.spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) image.pixels.clear();
-    return image;
-}
+// An EXR's pixels as floats, every channel interleaved (empty if it cannot be read).
+ImageFile readFloats(const fs::path& exr) { return readImage(exr).value_or(ImageFile{}); }
 
 class CliEmitters : public CliErrors {
 protected:
@@ -109,14 +97,13 @@ TEST_F(CliEmitters, ReferenceFullLightWritesRadianceAndRefusesAoOnlyFlags) {
     const fs::path exr = dir_ / "light.exr";
     const RunResult r = runGrotto("reference " + world.string() + " --light full --spp 8 --size 48x32 -o " + exr.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const FloatImage image = readFloats(exr);
-    ASSERT_FALSE(image.pixels.empty());
-    const OIIO::ImageSpec& spec = image.spec;
-    const std::vector<float>& pixels = image.pixels;
-    ASSERT_EQ(spec.nchannels, 6);
+    const ImageFile image = readFloats(exr);
+    ASSERT_FALSE(image.floats.empty());
+    const std::vector<float>& pixels = image.floats;
+    ASSERT_EQ(image.channels(), 6);
     for (const char* name : {"R", "G", "B", "R_stderr", "G_stderr", "B_stderr"})
-        EXPECT_GE(spec.channelindex(name), 0) << name;
-    const int R = spec.channelindex("R"), G = spec.channelindex("G");
+        EXPECT_GE(image.channelIndex(name), 0) << name;
+    const int R = image.channelIndex("R"), G = image.channelIndex("G");
     float brightest = 0.0f;
     for (size_t i = 0; i < pixels.size(); i += 6) {
         for (int c = 0; c < 6; ++c) ASSERT_TRUE(std::isfinite(pixels[i + size_t(c)]) && pixels[i + size_t(c)] >= 0.0f);
@@ -140,10 +127,10 @@ TEST_F(CliEmitters, ARenderShowsAGlowingFaceAtItsEmissionTimesTheExposure) {
     const fs::path exr = dir_ / "lamp.exr";
     const RunResult r = runGrotto("render " + world.string() + " --ao off --size 48x32 -o " + exr.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    const FloatImage image = readFloats(exr);
-    ASSERT_FALSE(image.pixels.empty());
-    const int channels = image.spec.nchannels;
-    const std::vector<float>& pixels = image.pixels;
+    const ImageFile image = readFloats(exr);
+    ASSERT_FALSE(image.floats.empty());
+    const int channels = image.channels();
+    const std::vector<float>& pixels = image.floats;
     int lamp = 0;
     for (size_t i = 0; i < pixels.size(); i += size_t(channels)) {
         if (pixels[i] < 1.0f) continue;  // the floor and the sky stay far below the lamp

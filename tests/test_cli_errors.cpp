@@ -3,7 +3,6 @@
 // paths and references: test_cli_runs.cpp.)
 #include "tests/cli_fixture.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 #include "voxel/openvdb_grids.h"
@@ -18,7 +17,6 @@ namespace grotto {
 namespace {
 
 namespace fs = std::filesystem;
-namespace OIIO = OIIO_NAMESPACE;
 using test::CliErrors;
 using test::runGrotto;
 
@@ -177,32 +175,31 @@ TEST_F(CliErrors, ExrWithAovsCarriesChannelsAndCamera) {
         "cameras": {"c": {"position": [8, 10, 30], "target": [8, 0, 8]}}})");
     const test::RunResult r = runGrotto("render " + world.string() + " --size 64x48 --aov -o " + exr.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    auto in = OIIO::ImageInput::open(exr.string());
+    const std::optional<ImageFile> in = readImage(exr);
     ASSERT_TRUE(in);
-    const OIIO::ImageSpec& spec = in->spec();
+    const ImageFile& spec = *in;
     const std::vector<std::string> expected = {"R", "G", "B", "A", "Z", "N.x", "N.y", "N.z",
                                                "albedo.R", "albedo.G", "albedo.B", "AO", "AO_raw", "AO_spatial", "AO_temporal", "AO_history", "edges", "shadow"};
-    std::vector<std::string> names(spec.channelnames.begin(), spec.channelnames.end());
+    std::vector<std::string> names = spec.channelNames;
     std::sort(names.begin(), names.end());
     std::vector<std::string> sorted = expected;
     std::sort(sorted.begin(), sorted.end());
     EXPECT_EQ(names, sorted);
-    const OIIO::ParamValue* w2c = spec.find_attribute("worldtocamera", OIIO::TypeMatrix44);
-    ASSERT_NE(w2c, nullptr);
-    ASSERT_NE(spec.find_attribute("worldtoscreen", OIIO::TypeMatrix44), nullptr);
+    ASSERT_TRUE(spec.worldToCamera);
+    ASSERT_TRUE(spec.worldToScreen);
     // The camera sits at (8, 10, 30): worldtocamera takes it to the origin.
-    const float* m = static_cast<const float*>(w2c->data());
+    const float* m = spec.worldToCamera->data();
     const float p[4] = {8, 10, 30, 1};
     for (int col = 0; col < 3; ++col) {
         float v = 0;
         for (int row = 0; row < 4; ++row) v += p[row] * m[row * 4 + col];
         EXPECT_NEAR(v, 0.0f, 1e-4f);
     }
-    std::vector<float> px(size_t(spec.width) * spec.height * spec.nchannels);
-    ASSERT_TRUE(in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, px.data()));
-    const int z = spec.channelindex("Z"), ny = spec.channelindex("N.y");
+    const std::vector<float>& px = spec.floats;
+    ASSERT_EQ(px.size(), size_t(spec.width) * spec.height * spec.channels());
+    const int z = spec.channelIndex("Z"), ny = spec.channelIndex("N.y");
     // The centre pixel looks at the floor's top: up normal, depth along the view axis.
-    const size_t centre = (size_t(spec.height / 2) * spec.width + spec.width / 2) * spec.nchannels;
+    const size_t centre = (size_t(spec.height / 2) * spec.width + spec.width / 2) * spec.channels();
     EXPECT_FLOAT_EQ(px[centre + ny], 1.0f);
     EXPECT_GT(px[centre + z], 5.0f);
     EXPECT_LT(px[centre + z], 40.0f);

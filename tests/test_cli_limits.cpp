@@ -4,7 +4,6 @@
 // (sky only, an empty world, a 1x1 image) is refused rather than scored perfect.
 #include "tests/cli_fixture.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 #include "voxel/openvdb_grids.h"
 
@@ -17,7 +16,6 @@ namespace grotto {
 namespace {
 
 namespace fs = std::filesystem;
-namespace OIIO = OIIO_NAMESPACE;
 using test::CliErrors;
 using test::runGrotto;
 

@@ -1,9 +1,9 @@
 // A path key marked "cut" restarts the temporal history in `grotto flythrough`:
 // the frame at the cut has one frame of history everywhere, although its view
 // overlaps the one before (so reprojection alone would have kept history).
+#include "engine/image_input.h"
 #include "tests/test_util.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,13 +17,10 @@ namespace fs = std::filesystem;
 
 // The largest AO_history in a flythrough EXR frame.
 float mostHistory(const fs::path& exr) {
-    auto in = OIIO::ImageInput::open(exr.string());
-    if (!in) return -1.0f;
-    const OIIO::ImageSpec spec = in->spec();
-    const int channel = spec.channelindex("AO_history");
-    if (channel < 0) return -1.0f;
-    std::vector<float> v(size_t(spec.width) * spec.height);
-    if (!in->read_image(0, 0, channel, channel + 1, OIIO::TypeDesc::FLOAT, v.data())) return -1.0f;
+    const std::optional<ImageFile> image = readImage(exr);
+    if (!image) return -1.0f;
+    const std::vector<float> v = image->channel("AO_history");
+    if (v.empty()) return -1.0f;
     return *std::max_element(v.begin(), v.end());
 }
 

@@ -59,9 +59,22 @@ documented_run() {  # CMAKELISTS BUILD_DIR
     mkdir "$run"
     ln -s "$source/worlds" "$run/worlds"
     ln -s "$2" "$run/$name"
-    (cd "$run" && GROTTO_VALIDATION=1 bash -c "$line") || { echo "$1: '$line' failed" >&2; exit 1; }
+    (cd "$run" && GROTTO_VALIDATION=1 LD_DEBUG=libs LD_DEBUG_OUTPUT="$run/loads" bash -c "$line") ||
+        { echo "$1: '$line' failed" >&2; exit 1; }
     test -s "$run/out.png" || { echo "$1: '$line' wrote no out.png" >&2; exit 1; }
+    installed_codec "$run" "$1"
 }
+# The image codec module that wrote the image was the installed one (found through
+# the run path Grotto::engine gives a game, or the installed grotto's own), not
+# the build tree's. The loader's account: LD_DEBUG=libs, written to DIR/loads.*.
+installed_codec() {  # DIR WHAT
+    grep -qs "calling init: $scratch/prefix/.*/grotto/libgrotto_image_codec.so" "$1"/loads.* ||
+        { echo "$2: the installed image codec module was not loaded" >&2; exit 1; }
+}
+mkdir "$scratch/installed"
+GROTTO_VALIDATION=1 LD_DEBUG=libs LD_DEBUG_OUTPUT="$scratch/installed/loads" \
+    "$scratch/prefix/bin/grotto" render "$source/worlds/caves.json" --size 32x18 -o "$scratch/installed/out.png" >/dev/null
+installed_codec "$scratch/installed" "the installed grotto"
 documented_run "$source/examples/embed/CMakeLists.txt" "$scratch/build"
 # The game loop: its own Vulkan device handed to Grotto, a world built in memory and dug into.
 cmake -S "$source/examples/game_loop" -B "$scratch/game" -G Ninja -DCMAKE_PREFIX_PATH="$scratch/prefix" \

@@ -4,7 +4,6 @@
 // pose, and what cannot be accumulated is refused.
 #include "tests/cli_fixture.h"
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,23 +15,15 @@ namespace grotto {
 namespace {
 
 namespace fs = std::filesystem;
-namespace OIIO = OIIO_NAMESPACE;
 using test::CliErrors;
 using test::runGrotto;
 
 // An EXR's channels by name, each width x height floats; empty if it cannot be read.
 std::map<std::string, std::vector<float>> readChannels(const fs::path& exr) {
-    auto in = OIIO::ImageInput::open(exr.string());
-    if (!in) return {};
-    const OIIO::ImageSpec spec = in->spec();
-    const size_t pixels = size_t(spec.width) * size_t(spec.height);
-    std::vector<float> all(pixels * size_t(spec.nchannels));
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) return {};
+    const std::optional<ImageFile> image = readImage(exr);
+    if (!image) return {};
     std::map<std::string, std::vector<float>> channels;
-    for (int c = 0; c < spec.nchannels; ++c) {
-        std::vector<float>& v = channels[spec.channelnames[size_t(c)]];
-        for (size_t i = 0; i < pixels; ++i) v.push_back(all[i * size_t(spec.nchannels) + size_t(c)]);
-    }
+    for (const std::string& name : image->channelNames) channels[name] = image->channel(name);
     return channels;
 }
 
