@@ -41,7 +41,7 @@ TEST_F(Bake, PartsJoinedInAnyOrderAreTheWholeBakeByteForByte) {
     const RunResult r = runGrotto("bake --merge " + parts + "-o " + merged.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const std::string a = fileBytes(whole), b = fileBytes(merged);
-    EXPECT_GT(a.size(), 96u + 100u * 4u * 24u);  // a header and hundreds of faces of 2 x 2 texels
+    EXPECT_GT(a.size(), 104u + 100u * 4u * 24u);  // a header and hundreds of faces of 2 x 2 texels
     EXPECT_TRUE(a == b);
 }
 
@@ -84,10 +84,10 @@ TEST_F(Bake, BadArgumentsPartsAndFilesAreRefused) {
     version[8] = 9;
     damaged("version.gfc", version, "version");
     std::string huge = good;  // a face count that would need exabytes
-    for (int i = 0; i < 8; ++i) huge[80 + i] = char(0x7f);
+    for (int i = 0; i < 8; ++i) huge[88 + i] = char(0x7f);  // the face count, at byte 88
     damaged("huge.gfc", huge, "faces");
     std::string counts = good;  // a texel with more open rays than rays
-    counts[96 + 4] = char(0xff);
+    counts[104 + 4] = char(0xff);  // the first texel's open rays (the header is 104 bytes)
     damaged("counts.gfc", counts, "texel 0", "leave a gap");
 }
 

@@ -17,7 +17,7 @@ namespace grotto::test {
 namespace {
 
 // The header fields a test rewrites, at the offsets grotto bake writes them.
-constexpr size_t kTexelsPerSideAt = 12, kHashAt = 16, kTotalFacesAt = 64, kFirstFaceAt = 72, kFaceCountAt = 80;
+constexpr size_t kTexelsPerSideAt = 12, kHashAt = 16, kTotalFacesAt = 72, kFirstFaceAt = 80, kFaceCountAt = 88;
 constexpr uint64_t kTexelBytes = 24;
 
 template <class T> T peek(const std::string& bytes, size_t at) {

@@ -18,13 +18,8 @@ namespace grotto::voxel {
 
 namespace {
 
-// Point n of the R2 sequence (Roberts 2018), shifted (Cranley-Patterson); as a
-// cosine-weighted direction about +z, or a uniform one in a cone about +z.
-constexpr double kPlastic = 1.32471795724474602596;
-glm::dvec2 r2(uint64_t n, glm::dvec2 shift) {
-    return {std::fmod(0.5 + double(n) / kPlastic + shift.x, 1.0),
-            std::fmod(0.5 + double(n) / (kPlastic * kPlastic) + shift.y, 1.0)};
-}
+// A point of R2 (ray_sampling.h) as a cosine-weighted direction about +z, or a
+// uniform one in a cone about +z.
 glm::dvec3 cosineDirection(glm::dvec2 u) {
     const double r = std::sqrt(u.x), phi = 2.0 * std::numbers::pi * u.y;
     return {r * std::cos(phi), r * std::sin(phi), std::sqrt(1.0 - u.x)};
@@ -80,7 +75,8 @@ public:
             const glm::dvec3 d = t1 * l.x + t2 * l.y + n * l.z;
             if (table_.hitWithin(p, d, tAo_)) continue;  // within R: neither AO nor sky
             ++t.open;
-            if (!s_.light || !leaves(p, d)) continue;
+            // With full light its own rays, twice as many, give the sky (light_bake.h).
+            if (!s_.light || s_.fullLight || !leaves(p, d)) continue;
             const SkyWeights w = skyWeights(d.y);
             horizon += w.horizon, zenith += w.zenith;
         }

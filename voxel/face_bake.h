@@ -33,7 +33,8 @@ struct FaceBakeSettings {
     bool light = true;
     // The world's light is baked too (lighting.ambient.from full; voxel/light_bake.h):
     // the texels' light words hold it, and a texel traced without the bake holds
-    // the sky's light alone, from these colours (times the sky's intensity).
+    // the sky's light alone, from these colours (times the sky's intensity). These
+    // rays then leave the sky weights to the light bake's rays.
     bool fullLight = false;
     glm::dvec3 skyZenith{0.0}, skyHorizon{0.0};
 };

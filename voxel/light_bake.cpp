@@ -244,7 +244,6 @@ LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<
     if (texels.size() != count) throw Error::internal("bakeLight", "texels and faces differ in count");
     const LightScene scene(world, faces, k, texels);
     const glm::dvec3 sunDirection = glm::normalize(lights.sunDirection);
-    const double plastic = 1.32471795724474602596;
 
     // One pass of rays: each texel's direct light (sky and glowing faces), its
     // sun, and the texels its cosine rays hit.
@@ -262,18 +261,26 @@ LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<
                     const uint64_t h = splitmix64(uint64_t(t) ^ 0x6c69676874ull);
                     const double shiftU = unitInterval(h), shiftV = unitInterval(splitmix64(h));
                     glm::dvec3 sky(0.0);
+                    double horizon = 0.0, zenith = 0.0;
                     for (uint32_t ray = 0; ray < s.rays; ++ray) {
-                        const glm::dvec3 d = cosineDirection(n, std::fmod(0.5 + ray / plastic + shiftU, 1.0),
-                                                             std::fmod(0.5 + ray / (plastic * plastic) + shiftV, 1.0));
+                        const glm::dvec2 u = r2(ray, {shiftU, shiftV});
+                        const glm::dvec3 d = cosineDirection(n, u.x, u.y);
                         ++rays[f];
                         const std::optional<BrickHit> hit = table.firstHit(start, d, std::numeric_limits<double>::infinity());
                         if (hit) hits[t * s.rays + ray] = scene.texelAt(*hit, start + d * hit->t);
-                        else sky += glm::dvec3(gpu::skyRadiance(float(d.y), glm::vec3(lights.skyZenith),
-                                                                glm::vec3(lights.skyHorizon)));
+                        else {
+                            sky += glm::dvec3(gpu::skyRadiance(float(d.y), glm::vec3(lights.skyZenith),
+                                                               glm::vec3(lights.skyHorizon)));
+                            const SkyWeights w = skyWeights(d.y);
+                            horizon += w.horizon, zenith += w.zenith;
+                        }
                     }
                     const glm::dvec3 glow = scene.glowLight(table, face.cell, face.dir, p, n, s.emitterRays, splitmix64(h ^ 3),
                                                             s.epsilon, rays[f]);
                     direct[t] = glm::vec3(sky * (lights.skyIntensity / std::max(s.rays, 1u)) + glow);
+                    // The sky's weights as sums over the texel's own ray count.
+                    const double scale = double(texels[t].samples) / std::max(s.rays, 1u);
+                    texels[t].skyHorizon = float(horizon * scale), texels[t].skyZenith = float(zenith * scale);
                     sun[t] = glm::vec3(lights.sun * (std::max(glm::dot(n, sunDirection), 0.0) * texels[t].sun()));
                 }
         }
@@ -281,35 +288,41 @@ LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<
 
     // Bounce passes: light = direct + what the hits send back, their albedo times
     // their light and their sun, from the pass before.
-    std::vector<glm::vec3> light = direct, next(count);
+    std::vector<glm::vec3> light = direct, next(count), sent(count);
     LightBakeStats stats;
     for (uint64_t n : rays) stats.rays += n;
     stats.hitBytes = hits.size() * sizeof(uint32_t);
     if (progress) progress(0, s.maxPasses);
     const float perRay = 1.0f / float(std::max(s.rays, 1u));
+    // A texel's change counts against its own light, down to a floor far below
+    // the world's mean: a room lit through a window converges too, not only the
+    // open ground that holds most of the light.
+    double mean = 0.0;
+    for (const glm::vec3& d : direct) mean += luminance(glm::dvec3(d)) / double(std::max<size_t>(count, 1));
+    const double floor = std::max(mean, 1e-30) * 1e-4;
     while (stats.passes < s.maxPasses) {
-        using Sums = std::pair<double, double>;  // change, light (luminance)
-        const Sums sums = tbb::parallel_reduce(
-            tbb::blocked_range<size_t>(0, faces.size(), 256), Sums{0.0, 0.0},
-            [&](const tbb::blocked_range<size_t>& r, Sums acc) {
-                for (size_t f = r.begin(); f < r.end(); ++f)
-                    for (size_t t = f * perFace; t < (f + 1) * perFace; ++t) {
-                        glm::vec3 back(0.0f);
-                        for (uint32_t ray = 0; ray < s.rays; ++ray) {
-                            const uint32_t hit = hits[t * s.rays + ray];
-                            if (hit == kMissed) continue;
-                            back += glm::vec3(scene.albedo(hit / perFace)) * (light[hit] + sun[hit]);
-                        }
-                        next[t] = direct[t] + back * perRay;
-                        acc.first += std::abs(luminance(glm::dvec3(next[t] - light[t])));
-                        acc.second += luminance(glm::dvec3(next[t]));
-                    }
-                return acc;
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t f = r.begin(); f < r.end(); ++f)
+                for (size_t t = f * perFace; t < (f + 1) * perFace; ++t)
+                    sent[t] = glm::vec3(scene.albedo(f)) * (light[t] + sun[t]);
+        });
+        const double change = tbb::parallel_reduce(
+            tbb::blocked_range<size_t>(0, count, 4096), 0.0,
+            [&](const tbb::blocked_range<size_t>& r, double worst) {
+                for (size_t t = r.begin(); t < r.end(); ++t) {
+                    glm::vec3 back(0.0f);
+                    for (const uint32_t* hit = &hits[t * s.rays]; hit != &hits[t * s.rays] + s.rays; ++hit)
+                        if (*hit != kMissed) back += sent[*hit];
+                    next[t] = direct[t] + back * perRay;
+                    const double grown = std::abs(luminance(glm::dvec3(next[t] - light[t])));
+                    worst = std::max(worst, grown / std::max(luminance(glm::dvec3(next[t])), floor));
+                }
+                return worst;
             },
-            [](Sums a, Sums b) { return Sums{a.first + b.first, a.second + b.second}; });
+            [](double a, double b) { return std::max(a, b); });
         light.swap(next);
         ++stats.passes;
-        stats.change = sums.second > 0.0 ? sums.first / sums.second : 0.0;
+        stats.change = change;
         if (progress) progress(stats.passes, s.maxPasses);
         if (stats.change < s.tolerance) break;
     }

@@ -11,8 +11,8 @@
 //    that light, so an unoccluded lamp is exact and only what blocks it is noisy.
 //  - Bounces by feedback: the same cosine rays remember the texel they hit, and
 //    each pass gives every texel what its hits send back (their albedo times their
-//    light and their sun), so pass n holds n bounces. Passes repeat until the
-//    light changes by less than a tolerance.
+//    light and their sun), so pass n holds n bounces. Passes repeat until no
+//    texel's light changes by more than a tolerance of itself.
 // A texel's `light` is irradiance over pi: radiance leaving = albedo x (light +
 // the sun's direct light) + emission. OpenVDB-free interface.
 #include "voxel/face_bake.h"
@@ -26,14 +26,14 @@ namespace grotto::voxel {
 struct LightBakeSettings {
     uint32_t rays = 128;  // cosine rays per texel: the sky, and the hits bounces feed back through (2% near a lone lamp)
     uint32_t emitterRays = 16;         // shadow rays per texel toward the glowing faces
-    double tolerance = 1e-3;           // stop when a pass changes the light by less than this share of it
+    double tolerance = 1e-3;           // stop when a pass changes no texel's light by this share of it
     uint32_t maxPasses = 500;          // and in any case after this many bounces
     double epsilon = 1e-4;             // rays leave this far (voxels) in front of the face
 };
 
 struct LightBakeStats {
     uint32_t passes = 0;      // bounce passes run
-    double change = 0.0;      // the last pass's change, as a share of the light
+    double change = 0.0;      // the last pass's largest change of a texel, as a share of its light
     uint64_t rays = 0;        // rays traced
     uint64_t hitBytes = 0;    // what the remembered hits took
 };
@@ -42,7 +42,8 @@ struct LightBakeStats {
 // against its memory budget before it starts.
 uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& settings);
 
-// Sets each texel's `light`. `faces`: every exposed face of the world
+// Sets each texel's `light`, and its sky weights from these rays (bakeFaces with
+// fullLight leaves them to this). `faces`: every exposed face of the world
 // (exposedFaces; bounces need them all), `texels` k x k per face holding their
 // sun visibility already (bakeFaces). Multithreaded; the result does not depend
 // on the thread count. `progress` is told each pass (done = passes, total = the

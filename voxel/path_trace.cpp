@@ -305,7 +305,6 @@ PathTraced pathTrace(const World& world, std::span<const PosedWorld> objects, st
         throw Error::internal("pathTrace", "points, normals and owners differ in count");
     const Scene scene(world, objects);
     const Transport transport(scene, lights, s);
-    const double g = 1.32471795724474602596;  // the plastic number: R2's first bounce, as the reference AO's
     PathTraced out;
     out.radiance.resize(points.size());
     out.stderror.resize(points.size());
@@ -324,7 +323,8 @@ PathTraced pathTrace(const World& world, std::span<const PosedWorld> objects, st
             glm::dvec3 sum(0.0), sumSquares(0.0);
             for (uint32_t i = 0; i < s.spp; ++i) {
                 Random rng(splitmix64(h + i));
-                const double u = std::fmod(0.5 + i / g + shiftU, 1.0), v = std::fmod(0.5 + i / (g * g) + shiftV, 1.0);
+                const glm::dvec2 first = r2(i, {shiftU, shiftV});
+                const double u = first.x, v = first.y;
                 const glm::dvec3 L = transport.path(points[k], n, face, u, v, rng, rays[k]);
                 sum += L;
                 sumSquares += L * L;

@@ -1,6 +1,7 @@
 #pragma once
 // What every CPU ray set of ours is drawn with: a 64-bit mixer for per-point
 // seeds, its bits as a double in [0, 1), and two tangents completing a normal.
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include <cmath>
@@ -16,6 +17,14 @@ inline uint64_t splitmix64(uint64_t x) {
 }
 
 inline double unitInterval(uint64_t bits) { return double(bits >> 11) * 0x1.0p-53; }
+
+// Point n of the R2 sequence (Roberts 2018), shifted (Cranley-Patterson), in
+// [0, 1)^2. x - floor(x) is fmod(x, 1) exactly for x >= 0, at a fraction of its cost.
+inline glm::dvec2 r2(uint64_t n, glm::dvec2 shift) {
+    constexpr double g = 1.32471795724474602596;  // the plastic number
+    const double u = 0.5 + double(n) / g + shift.x, v = 0.5 + double(n) / (g * g) + shift.y;
+    return {u - std::floor(u), v - std::floor(v)};
+}
 
 // Two unit tangents completing the unit normal n (Duff et al. 2017, branchless).
 inline void tangents(glm::dvec3 n, glm::dvec3& t1, glm::dvec3& t2) {

@@ -1,0 +1,121 @@
+// Full light through the command line: a closed room lit by one glowing voxel,
+// baked and rendered with lighting.ambient.from full, measured against the
+// path-traced light (the sky's light leaves it black); a bake of the old format
+// refused, and a farm's chunks refused for a world whose bounces need it whole.
+#include "cli_fixture.h"
+#include "vox_writer.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+
+namespace grotto::test {
+namespace {
+
+class CliFullLight : public CliErrors {
+protected:
+    // A closed room of 12 x 12 x 7 voxels (shell of colour 1) with one voxel of
+    // colour 2 on its floor, in MagicaVoxel's z-up.
+    fs::path writeRoomVox() {
+        std::array<voxel::VoxColor, 256> palette{};
+        palette[0] = {188, 188, 188, 255};  // sRGB 188: linear 0.5
+        palette[1] = {255, 255, 255, 255};
+        std::vector<std::array<uint8_t, 4>> voxels;
+        for (uint8_t x = 0; x < 12; ++x)
+            for (uint8_t y = 0; y < 12; ++y)
+                for (uint8_t z = 0; z < 7; ++z)
+                    if (x == 0 || y == 0 || z == 0 || x == 11 || y == 11 || z == 6) voxels.push_back({x, y, z, 1});
+        voxels.push_back({6, 5, 1, 2});
+        voxel::test::VoxWriter w;
+        w.model({12, 12, 7}, voxels).palette(palette);
+        const std::vector<uint8_t> bytes = w.bytes();
+        const fs::path file = dir_ / "room.vox";
+        std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        return file;
+    }
+    // The room with the lamp glowing at radiance 20, lit as `from` says.
+    fs::path writeRoomWorld(const std::string& name, const std::string& from) {
+        writeRoomVox();
+        return writeText(name, R"({"grid": {"file": "room.vox"}, "materials": [
+            {"name": "walls", "albedo": [0.5, 0.5, 0.5]},
+            {"name": "lamp", "albedo": [0.5, 0.5, 0.5], "emission": {"color": [1, 0.8, 0.6], "intensity": 20}}],
+            "lighting": {"ambient": {"from": ")" + from + R"(", "intensity": 0.7}, "sun": {"intensity": 1}},
+            "ao": {"method": "cache"},
+            "cameras": {"in": {"position": [2.5, 4.5, 2.5], "target": [8, 1, 8], "fov": 70}}})");
+    }
+    struct LightFigures {
+        double psnr = 0, rmse = 0, bias = 0, median = 0;
+        long black = -1;
+    };
+    LightFigures compareLight(const fs::path& world) {
+        const RunResult r = runGrotto("compare " + world.string() + " --camera in --size 48x32 --spp 8 --light-spp 256 "
+                                      "--frames 1 --warmup 0");
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        LightFigures f;
+        const size_t at = r.out.find("light against the path-traced light (256 paths a pixel, traced): psnr ");
+        EXPECT_NE(at, std::string::npos) << r.out;
+        if (at == std::string::npos) return f;
+        EXPECT_EQ(std::sscanf(r.out.c_str() + at, "light against the path-traced light (256 paths a pixel, traced): psnr %lf dB "
+                              "(tone-mapped), relative rmse %lf%%, bias %lf%%", &f.psnr, &f.rmse, &f.bias), 3) << r.out;
+        const size_t dim = r.out.find("relative error median ", at);
+        EXPECT_NE(dim, std::string::npos) << r.out;
+        if (dim != std::string::npos) {
+            double p95 = 0;
+            EXPECT_EQ(std::sscanf(r.out.c_str() + dim, "relative error median %lf%%, 95th percentile %lf%%, %ld black",
+                                  &f.median, &p95, &f.black), 3) << r.out;
+        }
+        return f;
+    }
+};
+
+TEST_F(CliFullLight, AClosedRoomLitByOneGlowingVoxelMatchesThePathTracedLight) {
+    // The sky's light cannot enter a closed room: the lamp's light, and its
+    // bounces off the walls, are all there is. With full light the image holds
+    // them, unbiased; with sky light the room is black.
+    const LightFigures full = compareLight(writeRoomWorld("full.json", "full"));
+    EXPECT_LT(std::abs(full.bias), 3.0) << "mean light against the path tracer's";
+    EXPECT_EQ(full.black, 0);
+    EXPECT_GT(full.psnr, 30.0);
+    EXPECT_LT(full.median, 12.0) << "the reference's own noise at 256 paths is most of this";
+    const LightFigures sky = compareLight(writeRoomWorld("sky.json", "sky"));
+    EXPECT_LT(sky.bias, -90.0) << "only the lamp's own face glows";
+    EXPECT_GT(sky.black, 100);
+}
+
+TEST_F(CliFullLight, ABakeFileCarriesTheLightAndRendersAsTheBakeAtLoad) {
+    const fs::path world = writeRoomWorld("full.json", "full");
+    const fs::path bake = dir_ / "room.gfc";
+    const RunResult b = runGrotto("bake " + world.string() + " -o " + bake.string());
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    EXPECT_NE(b.out.find("full light in "), std::string::npos) << b.out;
+    const fs::path a = dir_ / "loaded.png", c = dir_ / "baked.png";
+    ASSERT_EQ(runGrotto("render " + world.string() + " --camera in --size 48x32 --bake " + bake.string() + " -o " + a.string()).exitCode, 0);
+    ASSERT_EQ(runGrotto("render " + world.string() + " --camera in --size 48x32 -o " + c.string()).exitCode, 0);
+    const std::vector<uint8_t> loaded = readPixels8(a), baked = readPixels8(c);
+    ASSERT_FALSE(loaded.empty());
+    EXPECT_EQ(worstDifference(loaded, baked), 0);
+    // The same voxels lit by the sky alone ask for a bake without light: this one is refused.
+    const fs::path sky = writeRoomWorld("sky.json", "sky");
+    expectRefused("render " + sky.string() + " --camera in --size 48x32 --bake " + bake.string() + " -o " + out().string(),
+                  "full light", out());
+    // And a farm's chunk of it: its bounces need the whole world.
+    expectRefused("bake " + world.string() + " --chunk 1/2 -o " + (dir_ / "part.gfc").string(), "baked whole",
+                  dir_ / "part.gfc");
+}
+
+TEST_F(CliFullLight, ABakeOfTheFormerFormatIsRefusedByItsVersion) {
+    // A version 2 file (before the light was stored): its magic, then version 2.
+    const fs::path world = writeRoomWorld("full.json", "full");
+    const fs::path old = dir_ / "old.gfc";
+    std::string bytes = "GROTTOFC";
+    const uint32_t version = 2;
+    bytes.append(reinterpret_cast<const char*>(&version), 4);
+    bytes.resize(96, '\0');
+    std::ofstream(old, std::ios::binary) << bytes;
+    expectRefused("render " + world.string() + " --camera in --size 48x32 --bake " + old.string() + " -o " + out().string(),
+                  "version 2 is not this Grotto's", out());
+}
+
+}  // namespace
+}  // namespace grotto::test
