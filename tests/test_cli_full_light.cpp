@@ -16,7 +16,8 @@ namespace {
 class CliFullLight : public CliErrors {
 protected:
     // A closed room of 12 x 12 x 7 voxels (shell of colour 1) with one voxel of
-    // colour 2 on its floor, in MagicaVoxel's z-up.
+    // colour 2 on its floor, in MagicaVoxel's z-up (centred on the origin, as
+    // MagicaVoxel places a model).
     fs::path writeRoomVox() {
         std::array<voxel::VoxColor, 256> palette{};
         palette[0] = {188, 188, 188, 255};  // sRGB 188: linear 0.5
@@ -42,7 +43,7 @@ protected:
             {"name": "lamp", "albedo": [0.5, 0.5, 0.5], "emission": {"color": [1, 0.8, 0.6], "intensity": 20}}],
             "lighting": {"ambient": {"from": ")" + from + R"(", "intensity": 0.7}, "sun": {"intensity": 1}},
             "ao": {"method": "cache"},
-            "cameras": {"in": {"position": [2.5, 4.5, 2.5], "target": [8, 1, 8], "fov": 70}}})");
+            "cameras": {"in": {"position": [-3.5, 0.5, -3.5], "target": [2.5, -2, 2.5], "fov": 70}}})");
     }
     struct LightFigures {
         double psnr = 0, rmse = 0, bias = 0, median = 0;
@@ -53,11 +54,13 @@ protected:
                                       "--frames 1 --warmup 0");
         EXPECT_EQ(r.exitCode, 0) << r.err;
         LightFigures f;
-        const size_t at = r.out.find("light against the path-traced light (256 paths a pixel, traced): psnr ");
+        // "(256 paths a pixel, traced)" or "(..., from the cache)": what follows is the same.
+        const size_t line = r.out.find("light against the path-traced light (256 paths a pixel, ");
+        const size_t at = line == std::string::npos ? line : r.out.find("psnr ", line);
         EXPECT_NE(at, std::string::npos) << r.out;
         if (at == std::string::npos) return f;
-        EXPECT_EQ(std::sscanf(r.out.c_str() + at, "light against the path-traced light (256 paths a pixel, traced): psnr %lf dB "
-                              "(tone-mapped), relative rmse %lf%%, bias %lf%%", &f.psnr, &f.rmse, &f.bias), 3) << r.out;
+        EXPECT_EQ(std::sscanf(r.out.c_str() + at, "psnr %lf dB (tone-mapped), relative rmse %lf%%, bias %lf%%", &f.psnr,
+                              &f.rmse, &f.bias), 3) << r.out;
         const size_t dim = r.out.find("relative error median ", at);
         EXPECT_NE(dim, std::string::npos) << r.out;
         if (dim != std::string::npos) {
@@ -76,11 +79,11 @@ TEST_F(CliFullLight, AClosedRoomLitByOneGlowingVoxelMatchesThePathTracedLight) {
     const LightFigures full = compareLight(writeRoomWorld("full.json", "full"));
     EXPECT_LT(std::abs(full.bias), 3.0) << "mean light against the path tracer's";
     EXPECT_EQ(full.black, 0);
-    EXPECT_GT(full.psnr, 30.0);
-    EXPECT_LT(full.median, 12.0) << "the reference's own noise at 256 paths is most of this";
+    EXPECT_GT(full.psnr, 28.0);  // 30.4 dB: the reference's own noise at 256 paths is most of the rest
+    EXPECT_LT(full.median, 12.0);
     const LightFigures sky = compareLight(writeRoomWorld("sky.json", "sky"));
-    EXPECT_LT(sky.bias, -90.0) << "only the lamp's own face glows";
-    EXPECT_GT(sky.black, 100);
+    EXPECT_LT(sky.bias, -30.0) << "only the lamp's own faces glow";
+    EXPECT_GT(sky.black, 1000) << "of 1536 pixels";
 }
 
 TEST_F(CliFullLight, ABakeFileCarriesTheLightAndRendersAsTheBakeAtLoad) {
@@ -111,7 +114,7 @@ TEST_F(CliFullLight, ABakeOfTheFormerFormatIsRefusedByItsVersion) {
     std::string bytes = "GROTTOFC";
     const uint32_t version = 2;
     bytes.append(reinterpret_cast<const char*>(&version), 4);
-    bytes.resize(96, '\0');
+    bytes.resize(104, '\0');
     std::ofstream(old, std::ios::binary) << bytes;
     expectRefused("render " + world.string() + " --camera in --size 48x32 --bake " + old.string() + " -o " + out().string(),
                   "version 2 is not this Grotto's", out());
