@@ -1,6 +1,7 @@
 // The face cache's full light (voxel/light_bake.h) against closed forms and the
 // path tracer: a closed box whose walls glow (every bounce, e / (1 - a)), open
 // ground under a uniform sky, and one glowing voxel in a closed dark room.
+#include "dense_world.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
 #include "voxel/form_factor.h"
@@ -25,16 +26,7 @@ Material glowing(float albedo, float emission) {
     return m;
 }
 
-template <class Fill>
-World voxelsOf(glm::ivec3 size, std::vector<Material> materials, Fill fill) {
-    std::vector<uint8_t> ids(size_t(size.x) * size.y * size.z);
-    for (int z = 0; z < size.z; ++z)
-        for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x) ids[(size_t(z) * size.y + y) * size.x + x] = uint8_t(fill(x, y, z));
-    WorldDesc desc;
-    desc.materials = std::move(materials);
-    return World::fromDense(size, ids.data(), 1.0, dvec3(0.0), desc);
-}
+using test::denseWorld;
 
 // A world's faces baked with full light under `lights`.
 struct Baked {
@@ -65,7 +57,7 @@ TEST(LightBake, AClosedBoxWhoseWallsGlowHoldsEOverOneMinusA) {
     // form, then a x e per bounce, summing to e / (1 - a), with no noise at all.
     const int edge = 6;
     const float a = 0.6f, e = 2.0f;
-    const World box = voxelsOf(glm::ivec3(edge), {glowing(a, e)}, [edge](int x, int y, int z) {
+    const World box = denseWorld(glm::ivec3(edge), {glowing(a, e)}, [edge](int x, int y, int z) {
         return x == 0 || y == 0 || z == 0 || x == edge - 1 || y == edge - 1 || z == edge - 1 ? 1 : 0;
     });
     LightBakeSettings ls;
@@ -85,7 +77,7 @@ TEST(LightBake, AClosedBoxWhoseWallsGlowHoldsEOverOneMinusA) {
 TEST(LightBake, OpenGroundGetsTheSkyAndNoSun) {
     // A slab under a uniform sky: every ray up leaves, so the light is the sky's
     // radiance exactly; the sun's direct beam is the frame's, not the cache's.
-    const World slab = voxelsOf({16, 1, 16}, {glowing(0.5f, 0.0f)}, [](int, int, int) { return 1; });
+    const World slab = denseWorld({16, 1, 16}, {glowing(0.5f, 0.0f)}, [](int, int, int) { return 1; });
     LightSources lights;
     lights.skyZenith = lights.skyHorizon = dvec3(1.0);
     lights.skyIntensity = 0.7;
@@ -104,7 +96,7 @@ TEST(LightBake, OneGlowingVoxelInAClosedDarkRoomMatchesThePathTracer) {
     // within 2% of the path-traced light after the default bake. Walls of albedo
     // 0.5 send a third of the light back, so bounces matter.
     const glm::ivec3 size(22, 10, 22), lamp(11, 4, 11);
-    const World room = voxelsOf(size, {glowing(0.5f, 0.0f), glowing(0.0f, 20.0f)}, [&](int x, int y, int z) {
+    const World room = denseWorld(size, {glowing(0.5f, 0.0f), glowing(0.0f, 20.0f)}, [&](int x, int y, int z) {
         if (glm::ivec3(x, y, z) == lamp) return 2;
         return x == 0 || y == 0 || z == 0 || x == size.x - 1 || y == size.y - 1 || z == size.z - 1 ? 1 : 0;
     });

@@ -2,6 +2,7 @@
 // walls glow (the white furnace), an emissive rectangle over a floor (its form
 // factor), open ground under a sky, a sealed room. Each estimate within 3 of its
 // own standard errors, or exact where the light has no variance.
+#include "dense_world.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_cache.h"
 #include "voxel/path_trace.h"
@@ -29,17 +30,7 @@ Material lambert(glm::vec3 albedo, glm::vec3 emission = glm::vec3(0.0f)) {
     return m;
 }
 
-// A world of `size` voxels, `fill(x, y, z)` giving each one's material id.
-template <class Fill>
-World denseWorld(glm::ivec3 size, std::vector<Material> materials, Fill fill) {
-    std::vector<uint8_t> ids(size_t(size.x) * size.y * size.z);
-    for (int z = 0; z < size.z; ++z)
-        for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x) ids[(size_t(z) * size.y + y) * size.x + x] = uint8_t(fill(x, y, z));
-    WorldDesc desc;
-    desc.materials = std::move(materials);
-    return World::fromDense(size, ids.data(), 1.0, dvec3(0.0), desc);
-}
+using test::denseWorld;
 
 // A box of `edge` voxels a side whose shell is solid (material 1), open inside.
 World closedBox(int edge, const Material& walls) {
