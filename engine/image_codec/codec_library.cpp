@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace grotto {
 namespace {
@@ -13,19 +14,37 @@ namespace {
 constexpr const char* kModule = "libgrotto_image_codec.so";
 
 struct Candidate {
-    const char* path;   // what dlopen is given
-    const char* where;  // how the message names it
+    std::string path;   // what dlopen is given
+    std::string where;  // how the message names it
 };
 
-// Where the module is looked for, in order: by name, through the program's run
-// path (an installed grotto's $ORIGIN/../lib/grotto, a game's through the
-// installed package), so an installed or relocated copy finds its own; then this
-// build tree's; then where `cmake --install` puts it.
-const Candidate candidates[] = {
-    {kModule, "the program's run path"},
-    {GROTTO_IMAGE_CODEC_BUILD_PATH, GROTTO_IMAGE_CODEC_BUILD_PATH},
-    {GROTTO_IMAGE_CODEC_INSTALL_PATH, GROTTO_IMAGE_CODEC_INSTALL_PATH},
-};
+// The directories the loader searches for the program's own libraries, its run
+// path first ($ORIGIN expanded): asked of the loader rather than left to dlopen
+// by name, which searches the run path of whoever calls it, and under
+// AddressSanitizer that is the sanitizer's runtime, not the program.
+std::vector<std::string> programSearchPath() {
+    std::vector<std::string> dirs;
+    void* self = dlopen(nullptr, RTLD_NOW);
+    Dl_serinfo size;
+    if (!self || dlinfo(self, RTLD_DI_SERINFOSIZE, &size) != 0) return dirs;
+    std::vector<char> buffer(size.dls_size);
+    auto* info = reinterpret_cast<Dl_serinfo*>(buffer.data());
+    if (dlinfo(self, RTLD_DI_SERINFOSIZE, info) != 0 || dlinfo(self, RTLD_DI_SERINFO, info) != 0) return dirs;
+    for (unsigned i = 0; i < info->dls_cnt; ++i) dirs.emplace_back(info->dls_serpath[i].dls_name);
+    return dirs;
+}
+
+// Where the module is looked for, in order: the program's run path (an installed
+// grotto's $ORIGIN/../lib/grotto, a game's through the installed package), so an
+// installed or relocated copy finds its own; then this build tree's; then where
+// `cmake --install` puts it.
+std::vector<Candidate> candidates() {
+    std::vector<Candidate> out;
+    for (const std::string& dir : programSearchPath()) out.push_back({dir + "/" + kModule, dir});
+    out.push_back({GROTTO_IMAGE_CODEC_BUILD_PATH, GROTTO_IMAGE_CODEC_BUILD_PATH});
+    out.push_back({GROTTO_IMAGE_CODEC_INSTALL_PATH, GROTTO_IMAGE_CODEC_INSTALL_PATH});
+    return out;
+}
 
 template <typename F>
 F symbol(void* module, const char* name) {
@@ -34,10 +53,10 @@ F symbol(void* module, const char* name) {
 
 ImageCodec load() {
     std::string looked, why;
-    for (const Candidate& c : candidates) {
-        looked += (looked.empty() ? "" : ", ") + std::string(c.where);
+    for (const Candidate& c : candidates()) {
+        looked += (looked.empty() ? "" : ", ") + c.where;
         // The module stays loaded for the life of the process: never dlclose'd.
-        void* module = dlopen(c.path, RTLD_NOW | RTLD_LOCAL);
+        void* module = dlopen(c.path.c_str(), RTLD_NOW | RTLD_LOCAL);
         if (!module) {
             // Why a module that is there did not load (a library it needs is
             // missing) says more than "not found" at the places it is not.
@@ -54,7 +73,7 @@ ImageCodec load() {
         };
         if (abi && abi() == GROTTO_IMAGE_CODEC_ABI && codec.encode && codec.decode && codec.freeEncoded && codec.freeDecoded)
             return codec;
-        if (why.empty()) why = c.where + std::string(" holds a module of another version of Grotto");
+        if (why.empty()) why = c.where + " holds a module of another version of Grotto";
     }
     throw Error::internal(kModule, "the image codec module cannot be loaded" + (why.empty() ? "" : ": " + why) +
                                        " (looked in " + looked + ")",
