@@ -47,7 +47,9 @@ void addReferenceCommand(CLI::App& app) {
     cmd->add_option("--spp", args->spp, "Rays per pixel (>= 1; 10000 keeps every standard error below 0.005)")
         ->required();
     cmd->add_option("--radius", args->ao.set.radius, "AO radius R in world units (default: the world's GTAO radius)");
-    cmd->add_option("-o,--output", args->output, "Output .exr")->required();
+    cmd->add_option("-o,--output", args->output,
+                    "Output .exr (with --light full also .png: the light as a display shows it, the world's exposure and tone map)")
+        ->required();
     cmd->add_option("--time", args->time, "Seconds: where the world's objects are (their keys)")
         ->capture_default_str()->check(finiteRange(0.0, 1e9));
     cmd->add_option("--light", args->light,
@@ -65,7 +67,7 @@ void addReferenceCommand(CLI::App& app) {
             throw Error("--spp", std::to_string(args->spp) + " is out of range", "accepted: 1 to 16777216 rays per pixel");
         const uint32_t spp = uint32_t(args->spp);
         const std::filesystem::path out = args->output;
-        if (imageFormatFor(out) != ImageFormat::Exr)
+        if (imageFormatFor(out) != ImageFormat::Exr && args->light != "full")
             throw Error(out.string(), "the reference needs an .exr output", "it holds the float channels AO and AO_stderr");
         if (args->bounces && args->light != "full")
             throw Error("--bounces", "applies to --light full only", "add --light full, or leave --bounces out");

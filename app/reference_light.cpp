@@ -3,6 +3,7 @@
 #include "engine/image_output.h"
 #include "engine/lab/light_reference.h"
 #include "grotto/error.h"
+#include "shaders/shared/tone_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,13 +20,23 @@ void writeLightReference(const std::filesystem::path& out, const voxel::World& w
     const LightReference t = lightReference(world, camera, lights, settings, nullptr, objects);
     if (t.cacheHit) std::printf("cache hit: %s (nothing traced)\n", t.cacheFile.c_str());
     const size_t n = t.radiance.size();
-    std::vector<std::vector<float>> planes(6, std::vector<float>(n));
-    for (size_t i = 0; i < n; ++i)
-        for (int c = 0; c < 3; ++c) planes[size_t(c)][i] = t.radiance[i][c], planes[3 + size_t(c)][i] = t.stderror[i][c];
-    writeChannels(out, camera.width, camera.height,
-                  std::vector<Channel>{{"R", &planes[0]}, {"G", &planes[1]}, {"B", &planes[2]},
-                                       {"R_stderr", &planes[3]}, {"G_stderr", &planes[4]}, {"B_stderr", &planes[5]}},
-                  camera);
+    if (imageFormatFor(out) == ImageFormat::Png) {
+        // As a frame's PNG shows light: times the exposure, tone-mapped, sRGB.
+        const voxel::Lighting& l = world.desc().lighting;
+        const unsigned curve = l.toneMap == ToneMap::Filmic ? GROTTO_TONE_MAP_FILMIC : GROTTO_TONE_MAP_CLAMP;
+        std::vector<float> display(4 * n, 1.0f);
+        for (size_t i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) display[4 * i + size_t(c)] = gpu::toneMap(t.radiance[i][c] * l.exposure, curve);
+        writeSrgb8(out, camera.width, camera.height, encodeSrgb8(display), &camera);
+    } else {
+        std::vector<std::vector<float>> planes(6, std::vector<float>(n));
+        for (size_t i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) planes[size_t(c)][i] = t.radiance[i][c], planes[3 + size_t(c)][i] = t.stderror[i][c];
+        writeChannels(out, camera.width, camera.height,
+                      std::vector<Channel>{{"R", &planes[0]}, {"G", &planes[1]}, {"B", &planes[2]},
+                                           {"R_stderr", &planes[3]}, {"G_stderr", &planes[4]}, {"B_stderr", &planes[5]}},
+                      camera);
+    }
 
     // The estimate's own error, relative to the light where the light is: the
     // luminance's standard error over its mean, per surface pixel.

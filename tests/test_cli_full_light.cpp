@@ -3,10 +3,14 @@
 // path-traced light (the sky's light leaves it black); a bake of the old format
 // refused, and a farm's chunks refused for a world whose bounces need it whole.
 #include "cli_fixture.h"
+#include "engine/image_input.h"
+#include "shaders/shared/tone_map.h"
 #include "vox_writer.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -118,6 +122,39 @@ TEST_F(CliFullLight, ABakeOfTheFormerFormatIsRefusedByItsVersion) {
     std::ofstream(old, std::ios::binary) << bytes;
     expectRefused("render " + world.string() + " --camera in --size 48x32 --bake " + old.string() + " -o " + out().string(),
                   "version 2 is not this Grotto's", out());
+}
+
+TEST_F(CliFullLight, TheReferenceLightAsAPngIsItsExrAsADisplayShowsIt) {
+    // The same paths (same seed) to both: the PNG is the EXR's radiance times the
+    // exposure, tone-mapped (filmic, the default) and encoded as 8-bit sRGB.
+    const fs::path world = writeRoomWorld("full.json", "full");
+    const fs::path exr = dir_ / "light.exr", png = dir_ / "light.png";
+    const std::string view = "reference " + world.string() + " --camera in --size 24x16 --light full --spp 16 -o ";
+    ASSERT_EQ(runGrotto(view + exr.string()).exitCode, 0);
+    ASSERT_EQ(runGrotto(view + png.string()).exitCode, 0);
+    const std::optional<ImageFile> linear = readImage(exr);
+    ASSERT_TRUE(linear);
+    const std::vector<uint8_t> shown = readPixels8(png);
+    ASSERT_EQ(shown.size(), size_t(24 * 16 * 3));
+    const std::vector<float> r = linear->channel("R"), g = linear->channel("G"), b = linear->channel("B");
+    const float exposure = 0.6f;  // the default
+    auto srgb8 = [](float v) {  // IEC 61966-2-1's encoding
+        const float e = v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
+        return int(std::lround(std::clamp(e, 0.0f, 1.0f) * 255.0f));
+    };
+    int lit = 0;
+    for (size_t i = 0; i < r.size(); ++i) {
+        const float rgb[3] = {r[i], g[i], b[i]};
+        for (int c = 0; c < 3; ++c) {
+            const int want = srgb8(gpu::toneMap(rgb[c] * exposure, GROTTO_TONE_MAP_FILMIC));
+            ASSERT_NEAR(int(shown[3 * i + size_t(c)]), want, 1) << "pixel " << i << " channel " << c;
+            lit += want > 8;
+        }
+    }
+    EXPECT_GT(lit, 300) << "the room is lit by its lamp";
+    // The AO reference has no display image to give.
+    expectRefused("reference " + world.string() + " --camera in --size 24x16 --spp 4 -o " + out().string(), "needs an .exr output",
+                  out());
 }
 
 }  // namespace
