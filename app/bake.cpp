@@ -80,6 +80,7 @@ void addBakeCommand(CLI::App& app) {
         const voxel::FaceBakeSettings settings{.radius = radius, .texelsPerSide = args->texels, .rays = args->rays,
                                                .sunRays = args->sunRays, .sunDirection = glm::dvec3(light.sunDirection),
                                                .sunAngleDegrees = double(light.sunAngle), .fullLight = fullLight};
+        if (fullLight) voxel::requireLightBakeFits(world, faces.size(), args->texels, {});
         voxel::FaceCacheFile cache{.header = {.key = voxel::faceCacheKey(world, radius, args->texels),
                                               .rays = settings.rays, .sunRays = voxel::sunRaysPerTexel(settings),
                                               .totalFaces = faces.size(), .firstFace = first, .faceCount = count}};

@@ -39,10 +39,11 @@ protected:
         std::ofstream(file, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
         return file;
     }
-    // The room with the lamp glowing at radiance 20, lit as `from` says.
-    fs::path writeRoomWorld(const std::string& name, const std::string& from) {
+    // The room with the lamp glowing at radiance 20, lit as `from` says; `fields`
+    // (JSON members with a trailing comma) added at the top.
+    fs::path writeRoomWorld(const std::string& name, const std::string& from, const std::string& fields = "") {
         writeRoomVox();
-        return writeText(name, R"({"grid": {"file": "room.vox"}, "materials": [
+        return writeText(name, "{" + fields + R"("grid": {"file": "room.vox"}, "materials": [
             {"name": "walls", "albedo": [0.5, 0.5, 0.5]},
             {"name": "lamp", "albedo": [0.5, 0.5, 0.5], "emission": {"color": [1, 0.8, 0.6], "intensity": 20}}],
             "lighting": {"ambient": {"from": ")" + from + R"(", "intensity": 0.7}, "sun": {"intensity": 1}},
@@ -106,6 +107,11 @@ TEST_F(CliFullLight, ABakeFileCarriesTheLightAndRendersAsTheBakeAtLoad) {
     const fs::path sky = writeRoomWorld("sky.json", "sky");
     expectRefused("render " + sky.string() + " --camera in --size 48x32 --bake " + bake.string() + " -o " + out().string(),
                   "full light", out());
+    // Under a memory budget the world fits (4.7 MiB) and the bounces' remembered
+    // hits at 4 x 4 texels (about 9 MiB) do not: refused before the bake.
+    const fs::path tight = writeRoomWorld("tight.json", "full", R"("memory_budget_mib": 5, )");
+    expectRefused("bake " + tight.string() + " --texels 4 -o " + (dir_ / "tight.gfc").string(), "full light's bake of",
+                  dir_ / "tight.gfc");
     // And a farm's chunk of it: its bounces need the whole world.
     expectRefused("bake " + world.string() + " --chunk 1/2 -o " + (dir_ / "part.gfc").string(), "baked whole",
                   dir_ / "part.gfc");

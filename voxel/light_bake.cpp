@@ -7,6 +7,7 @@
 #include "voxel/face_cache_lookup.h"
 #include "voxel/form_factor.h"
 #include "voxel/ray_sampling.h"
+#include "voxel/work_memory.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -237,11 +238,17 @@ uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& s) {
     return texels * (uint64_t(s.rays) * sizeof(uint32_t) + 3 * sizeof(glm::vec3));
 }
 
+void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& s) {
+    if (const uint64_t need = lightBakeBytes(faces * k * k, s); need > budgetRoom(world))
+        refuseOverBudget(world, "full light's bake of " + std::to_string(faces) + " faces needs " + mibText(need));
+}
+
 LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
                          const LightSources& lights, const LightBakeSettings& s, std::span<FaceTexel> texels,
                          const BakeProgress& progress) {
     const size_t perFace = size_t(k) * k, count = faces.size() * perFace;
     if (texels.size() != count) throw Error::internal("bakeLight", "texels and faces differ in count");
+    requireLightBakeFits(world, faces.size(), k, s);
     const LightScene scene(world, faces, k, texels);
     const glm::dvec3 sunDirection = glm::normalize(lights.sunDirection);
 

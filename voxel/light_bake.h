@@ -42,12 +42,18 @@ struct LightBakeStats {
 // against its memory budget before it starts.
 uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& settings);
 
+// The remembered hits grow with the faces: throws grotto::Error (input) naming the
+// world's file when a bake of `faces` faces at k texels a side would not fit its
+// memory budget. For callers to ask before any of the bake's work.
+void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& settings);
+
 // Sets each texel's `light`, and its sky weights from these rays (bakeFaces with
 // fullLight leaves them to this). `faces`: every exposed face of the world
 // (exposedFaces; bounces need them all), `texels` k x k per face holding their
 // sun visibility already (bakeFaces). Multithreaded; the result does not depend
 // on the thread count. `progress` is told each pass (done = passes, total = the
-// most). Throws grotto::Error (internal) for mismatched spans.
+// most). Throws grotto::Error (input) when lightBakeBytes is over the world's
+// memory budget, before anything is allocated, and (internal) for mismatched spans.
 LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
                          const LightSources& lights, const LightBakeSettings& settings, std::span<FaceTexel> texels,
                          const BakeProgress& progress = {});

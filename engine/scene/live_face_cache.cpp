@@ -52,6 +52,7 @@ LiveFaceCache LiveFaceCache::load(GpuScene& scene, const voxel::BrickTable& tabl
 LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
                                   const voxel::FaceBakeSettings& settings) {
     std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
+    if (settings.fullLight) voxel::requireLightBakeFits(world, faces.size(), settings.texelsPerSide, {});
     std::vector<voxel::FaceTexel> texels(faces.size() * settings.texelsPerSide * settings.texelsPerSide);
     voxel::bakeFaces(table, world, faces, settings, texels);
     if (settings.fullLight)
