@@ -117,6 +117,22 @@ TEST_F(CliFullLight, ABakeFileCarriesTheLightAndRendersAsTheBakeAtLoad) {
                   dir_ / "part.gfc");
 }
 
+TEST_F(CliFullLight, AnOpenWorldsBakeReadsBack) {
+    // Pillars on a floor under the sky: with full light the sky's weights come
+    // from the light's 128 rays, so a texel may see more sky than its 64 AO rays
+    // found open within R; the bake must still read back (caves' did not).
+    writeSolid(dir_ / "pillars.vdb", 24, 6, [](int x, int y, int z) { return y == 0 || (x % 4 == 1 && z % 3 == 1); });
+    const fs::path world = writeText("pillars.json", R"({"grid": {"file": "pillars.vdb"},
+        "lighting": {"ambient": {"from": "full"}}, "ao": {"method": "cache"},
+        "cameras": {"c": {"position": [12, 9, -6], "target": [12, 0, 12], "fov": 60}}})");
+    const fs::path bake = dir_ / "pillars.gfc";
+    ASSERT_EQ(runGrotto("bake " + world.string() + " -o " + bake.string()).exitCode, 0);
+    const RunResult r = runGrotto("render " + world.string() + " --camera c --size 32x24 --bake " + bake.string() + " -o " +
+                                  out().string());
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_TRUE(fs::exists(out()));
+}
+
 TEST_F(CliFullLight, ABakeOfTheFormerFormatIsRefusedByItsVersion) {
     // A version 2 file (before the light was stored): its magic, then version 2.
     const fs::path world = writeRoomWorld("full.json", "full");

@@ -209,7 +209,9 @@ void readFaceCacheTexels(const std::filesystem::path& path, const FaceCacheHeade
             }
             if (t.samples != h.rays || t.sunSamples != h.sunRays || t.open > t.samples || t.sunOpen > t.sunSamples ||
                 !(t.skyHorizon >= 0.0f && t.skyZenith >= 0.0f) || !std::isfinite(t.skyHorizon + t.skyZenith) ||
-                t.skyHorizon + t.skyZenith > 1.0001f * float(t.open))
+                // A ray's weights sum to 1 at most; without full light only the
+                // rays open within R go on to the sky, with it the light's own rays give the sky.
+                t.skyHorizon + t.skyZenith > 1.0001f * float(h.key.lightHash != 0 ? t.samples : t.open))
                 throw Error(name, "texel " + std::to_string(first + size_t(&t - run.data())) +
                                       ": counts or sky sums out of range, or rays other than the header's");
         }
