@@ -18,6 +18,10 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
     if (plan_.scene.faceCache) {
         const GpuFaceCache& cache = *scene_.faceCache();
         uniforms.faceCache = {cache.table(), cache.texelsPerSide()};
+        // What the cache's light words hold decides how the composite reads them:
+        // a world switched to full light over a sky-light cache keeps the sky's
+        // light, and a full-light cache has no sky weights to give.
+        if (plan_.faceCache && uniforms.ambient.w >= 0.5f) uniforms.ambient.w = cache.sky().fullLight ? 2.0f : 1.0f;
         const CameraVoxel v = cameraVoxel(camera, scene_.voxelSize, scene_.worldOrigin);
         uniforms.cameraCell = glm::ivec4(v.cell, int32_t(frameIndex & 0x7fffffffu));
         uniforms.cameraFraction = glm::vec4(v.fraction, float(1.0 / scene_.voxelSize));

@@ -165,3 +165,47 @@ TEST_F(FaceCacheRender, TheHousesWorldsClosedRoomIsDarkAndItsDoorKeepsTheSunAndS
 
 }  // namespace
 }  // namespace grotto
+
+namespace grotto {
+namespace {
+
+TEST_F(FaceCacheRender, TheCachesOwnLightWordsDecideHowTheyAreRead) {
+    // The same pillars baked with sky light and with full light. Over the sky
+    // light's cache a frame asked for full light keeps the sky's light (there is
+    // no full light to read); over the full light's cache a frame asked for the
+    // sky shows that light (there are no sky weights). Neither reads one kind of
+    // light word as the other, which would paint garbage.
+    const voxel::World world = test::makeVoxelWorld(
+        {0, 0, 0}, {16, 6, 16}, [](int x, int y, int z) { return y == 0 || (x % 5 == 1 && z % 4 == 1); }, 1.0,
+        glm::dvec3(0.0));
+    const Camera camera = makeCamera(test::lookAt({-2.0, 6.0, -3.0}, {8.0, 0.0, 8.0}, 70.0), 48, 32);
+    auto render = [&](LiveScene& scene, voxel::AmbientSource from) {
+        voxel::Lighting lighting = world.desc().lighting;
+        lighting.ambientFrom = from;
+        Renderer renderer(ctx(), scene.gpu(), lighting, cacheAo(world, 1.5), 48, 32);
+        renderer.render(camera);
+        return renderer.readback(camera, false).color;
+    };
+    auto mean = [](const std::vector<float>& c) {
+        double sum = 0.0;
+        for (size_t i = 0; i < c.size(); i += 4) sum += c[i] + c[i + 1] + c[i + 2];
+        return sum / double(c.size());
+    };
+    voxel::FaceBakeSettings settings = worldBakeSettings(world, 1.5, 2);
+    settings.rays = 16, settings.sunRays = 1;
+    LiveScene sky(ctx(), voxel::World(world));
+    sky.bakeFaceCache(settings);
+    const std::vector<float> skyLight = render(sky, voxel::AmbientSource::Sky);
+    EXPECT_EQ(render(sky, voxel::AmbientSource::Full), skyLight);
+    settings.fullLight = true;
+    LiveScene full(ctx(), voxel::World(world));
+    full.bakeFaceCache(settings);
+    const std::vector<float> fullLight = render(full, voxel::AmbientSource::Full);
+    EXPECT_EQ(render(full, voxel::AmbientSource::Sky), fullLight);
+    // Full light adds the light bounced off the sunlit floor and pillars.
+    EXPECT_GT(mean(fullLight), 1.02 * mean(skyLight));
+    EXPECT_LT(mean(fullLight), 2.0 * mean(skyLight));
+}
+
+}  // namespace
+}  // namespace grotto
