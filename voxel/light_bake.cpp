@@ -42,7 +42,7 @@ struct Glow {
 
 // Can a glowing face light any point of the box [lo, hi]? Not when the whole box
 // lies behind (or on) its plane.
-bool faces(const Glow& g, glm::dvec3 lo, glm::dvec3 hi) {
+bool canLight(const Glow& g, glm::dvec3 lo, glm::dvec3 hi) {
     double best = -std::numeric_limits<double>::infinity();
     for (int c = 0; c < 8; ++c) {
         const glm::dvec3 q((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
@@ -174,7 +174,7 @@ private:
             for (uint32_t e = 0; e < glows_.size(); ++e) {
                 const Glow& g = glows_[e];
                 // It must face some receiver, and some receiver must face some of it.
-                if (!faces(g, lo, hi)) continue;
+                if (!canLight(g, lo, hi)) continue;
                 const double ahead = std::max({glm::dot(g.corner, n), glm::dot(g.corner + g.u, n),
                                                glm::dot(g.corner + g.v, n), glm::dot(g.corner + g.u + g.v, n)});
                 if (ahead <= std::min(glm::dot(lo, n), glm::dot(hi, n))) continue;
