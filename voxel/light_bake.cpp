@@ -224,13 +224,6 @@ private:
     std::map<glm::ivec4, Region, Less> regions_;  // with their receivers' bounds
 };
 
-glm::dvec3 cosineDirection(glm::dvec3 n, double u, double v) {
-    glm::dvec3 t1, t2;
-    tangents(n, t1, t2);
-    const double r = std::sqrt(u), phi = 2.0 * std::numbers::pi * v;
-    return t1 * (r * std::cos(phi)) + t2 * (r * std::sin(phi)) + n * std::sqrt(std::max(0.0, 1.0 - u));
-}
-
 }  // namespace
 
 uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& s) {
@@ -271,7 +264,7 @@ LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<
                     double horizon = 0.0, zenith = 0.0;
                     for (uint32_t ray = 0; ray < s.rays; ++ray) {
                         const glm::dvec2 u = r2(ray, {shiftU, shiftV});
-                        const glm::dvec3 d = cosineDirection(n, u.x, u.y);
+                        const glm::dvec3 d = cosineAbout(n, u.x, u.y);
                         ++rays[f];
                         const std::optional<BrickHit> hit = table.firstHit(start, d, std::numeric_limits<double>::infinity());
                         if (hit) hits[t * s.rays + ray] = scene.texelAt(*hit, start + d * hit->t);
@@ -298,7 +291,6 @@ LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<
     std::vector<glm::vec3> light = direct, next(count), sent(count);
     LightBakeStats stats;
     for (uint64_t n : rays) stats.rays += n;
-    stats.hitBytes = hits.size() * sizeof(uint32_t);
     if (progress) progress(0, s.maxPasses);
     const float perRay = 1.0f / float(std::max(s.rays, 1u));
     // A texel's change counts against its own light, down to a floor far below

@@ -35,7 +35,6 @@ struct LightBakeStats {
     uint32_t passes = 0;      // bounce passes run
     double change = 0.0;      // the last pass's largest change of a texel, as a share of its light
     uint64_t rays = 0;        // rays traced
-    uint64_t hitBytes = 0;    // what the remembered hits took
 };
 
 // The bytes the bounce passes keep for `texels` texels: what a bake checks

@@ -178,13 +178,6 @@ private:
     uint64_t state_;
 };
 
-glm::dvec3 cosineDirection(glm::dvec3 n, double u, double v) {
-    glm::dvec3 t1, t2;
-    tangents(n, t1, t2);
-    const double r = std::sqrt(u), phi = 2.0 * std::numbers::pi * v;
-    return t1 * (r * std::cos(phi)) + t2 * (r * std::sin(phi)) + n * std::sqrt(std::max(0.0, 1.0 - u));
-}
-
 glm::dvec3 skyRadiance(const LightSources& l, glm::dvec3 d) {
     const glm::vec3 s = gpu::skyRadiance(float(d.y), glm::vec3(l.skyZenith), glm::vec3(l.skyHorizon));
     return glm::dvec3(s) * l.skyIntensity;
@@ -206,7 +199,7 @@ public:
         for (uint32_t bounce = 0;; ++bounce) {
             if (weight == glm::dvec3(0.0)) break;
             radiance += weight * (sunLight(p, n, rng, rays) + emitterLight(p, n, rng, rays));
-            const glm::dvec3 d = cosineDirection(n, u, v);
+            const glm::dvec3 d = cosineAbout(n, u, v);
             ++rays;
             const std::optional<Hit> hit = scene_.nearest(p, n, d, s_.epsilon);
             if (!hit) {

@@ -4,6 +4,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 
@@ -31,6 +32,14 @@ inline void tangents(glm::dvec3 n, glm::dvec3& t1, glm::dvec3& t2) {
     const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), b = n.x * n.y * a;
     t1 = {1.0 + s * n.x * n.x * a, s * b, -s * n.x};
     t2 = {b, s + n.y * n.y * a, -n.y};
+}
+
+// A cosine-weighted direction about the unit normal n from two numbers in [0, 1).
+inline glm::dvec3 cosineAbout(glm::dvec3 n, double u, double v) {
+    glm::dvec3 t1, t2;
+    tangents(n, t1, t2);
+    const double r = std::sqrt(u), phi = 2.0 * 3.14159265358979323846 * v;
+    return t1 * (r * std::cos(phi)) + t2 * (r * std::sin(phi)) + n * std::sqrt(std::max(0.0, 1.0 - u));
 }
 
 }  // namespace grotto::voxel
