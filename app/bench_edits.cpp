@@ -2,6 +2,8 @@
 // renderer makes: the touched chunks' meshes and the brick table.
 #include "app/bench_edits.h"
 
+#include "voxel/luminance.h"
+
 #include "app/options.h"
 #include "common/elapsed.h"
 #include "voxel/brick_table.h"
@@ -143,6 +145,34 @@ std::optional<CacheCarveFigures> timeCacheCarve(RenderSession& session, const Ca
     CacheCarveFigures f;
     const auto t = Clock::now();
     session.apply(voxel::Edit::carveSphere(centre, 8.0 * world.voxelSize()));
+    f.editMs = msSince(t);
+    Renderer& renderer = session.renderer();
+    do {
+        renderer.render(camera, uint32_t(frameIndex++));
+        ++f.frames;
+    } while (!session.faceCacheConverged() && f.frames < 1000);
+    f.ms = msSince(t);
+    return f;
+}
+
+std::optional<CacheCarveFigures> timeLampPlaced(RenderSession& session, const Camera& camera, int frameIndex) {
+    const voxel::World& world = session.world();
+    const std::vector<voxel::Material>& materials = world.desc().materials;
+    int lamp = 0;  // the brightest glowing material
+    for (size_t m = 0; m < materials.size(); ++m)
+        if (voxel::luminance(glm::dvec3(materials[m].emission())) > 0.0 &&
+            (lamp == 0 || voxel::luminance(glm::dvec3(materials[m].emission())) >
+                              voxel::luminance(glm::dvec3(materials[size_t(lamp) - 1].emission()))))
+            lamp = int(m) + 1;
+    const glm::dvec3 forward = -camera.basis[2];
+    const std::optional<voxel::RayHit> hit = world.raycast(camera.position, forward, 1e9);
+    if (lamp == 0 || !hit) return std::nullopt;
+    // The open voxel in front of the face the ray met.
+    glm::ivec3 at = hit->voxel;
+    at[hit->face / 2] += hit->face % 2 == 0 ? 1 : -1;
+    CacheCarveFigures f;
+    const auto t = Clock::now();
+    session.apply(voxel::Edit::setVoxel(at, uint8_t(lamp)));
     f.editMs = msSince(t);
     Renderer& renderer = session.renderer();
     do {

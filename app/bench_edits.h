@@ -58,5 +58,9 @@ struct CacheCarveFigures {
 };
 // Nothing when the centre ray meets no voxel. `frameIndex`: the next frame's.
 std::optional<CacheCarveFigures> timeCacheCarve(RenderSession& session, const Camera& camera, int frameIndex);
+// A voxel of the world's brightest glowing material placed in front of what the
+// centre ray meets: with full light, the edit lights again every face it moved.
+// Nothing when the world has no glowing material or the ray meets no voxel.
+std::optional<CacheCarveFigures> timeLampPlaced(RenderSession& session, const Camera& camera, int frameIndex);
 
 }  // namespace grotto::app

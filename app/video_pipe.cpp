@@ -5,7 +5,8 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <spawn.h>
+#include <signal.h>
+#include <sys/prctl.h>
 #include <sys/ioctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -82,31 +83,55 @@ const Container* containerFor(const fs::path& target) {
 
 // Starts `args` with stdin, stdout and stderr on these descriptors (-1: /dev/null)
 // and SIGPIPE at its default; throws grotto::Error (internal) naming `target`.
+// The child dies with the thread that starts it: a killed grotto leaves no
+// ffmpeg behind to finish (and, with +faststart, write again) a temporary the
+// next run has cleared. Between fork and exec the child does only what is safe
+// in a copy of a threaded process.
 pid_t spawn(const std::vector<std::string>& args, int in, int out, int err, const fs::path& target) {
     std::vector<char*> argv;
     for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
     argv.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    const int fds[3] = {in, out, err};
-    for (int k = 0; k < 3; ++k) {
-        if (fds[k] >= 0) posix_spawn_file_actions_adddup2(&actions, fds[k], k);
-        else posix_spawn_file_actions_addopen(&actions, k, "/dev/null", k == 0 ? O_RDONLY : O_WRONLY, 0);
+    int report[2];  // the child's exec error, if any; closed by a successful exec
+    if (pipe2(report, O_CLOEXEC) != 0)
+        throw Error::internal(target.string(), "cannot start " + args[0] + ": " + std::strerror(errno));
+    const pid_t parent = getpid();
+    const pid_t pid = fork();
+    if (pid == 0) {
+        close(report[0]);
+        int error = 0;
+        if (prctl(PR_SET_PDEATHSIG, SIGKILL) != 0 || getppid() != parent) _exit(127);
+        const int fds[3] = {in, out, err};
+        for (int k = 0; k < 3 && error == 0; ++k) {
+            const int fd = fds[k] >= 0 ? fds[k] : open("/dev/null", k == 0 ? O_RDONLY : O_WRONLY);
+            if (fd < 0 || dup2(fd, k) < 0) error = errno;
+        }
+        sigset_t none;
+        sigemptyset(&none);
+        sigprocmask(SIG_SETMASK, &none, nullptr);
+        signal(SIGPIPE, SIG_DFL);  // the usual SIGPIPE, whatever grotto does with it
+        if (error == 0) {
+            execve(argv[0], argv.data(), environ);
+            error = errno;
+        }
+        [[maybe_unused]] const ssize_t n = write(report[1], &error, sizeof error);
+        _exit(127);
     }
-    posix_spawnattr_t attr;
-    posix_spawnattr_init(&attr);
-    sigset_t none, pipeSignal;
-    sigemptyset(&none);
-    sigemptyset(&pipeSignal);
-    sigaddset(&pipeSignal, SIGPIPE);
-    posix_spawnattr_setsigmask(&attr, &none);
-    posix_spawnattr_setsigdefault(&attr, &pipeSignal);  // the usual SIGPIPE, whatever grotto does with it
-    posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-    pid_t pid = -1;
-    const int spawned = posix_spawn(&pid, argv[0], &actions, &attr, argv.data(), environ);
-    posix_spawn_file_actions_destroy(&actions);
-    posix_spawnattr_destroy(&attr);
-    if (spawned != 0) throw Error::internal(target.string(), "cannot start " + args[0] + ": " + std::strerror(spawned));
+    const int forkError = errno;
+    close(report[1]);
+    if (pid < 0) {
+        close(report[0]);
+        throw Error::internal(target.string(), "cannot start " + args[0] + ": " + std::strerror(forkError));
+    }
+    int error = 0;
+    ssize_t n;
+    while ((n = read(report[0], &error, sizeof error)) < 0 && errno == EINTR) {
+    }
+    close(report[0]);
+    if (n > 0) {
+        while (waitpid(pid, nullptr, 0) < 0 && errno == EINTR) {
+        }
+        throw Error::internal(target.string(), "cannot start " + args[0] + ": " + std::strerror(error));
+    }
     return pid;
 }
 

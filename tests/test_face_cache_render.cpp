@@ -7,11 +7,14 @@
 //    the closed room like the ground;
 //  - the shipped houses world: its closed room is dark, and its door object,
 //    shut, keeps the sun and the sky out of its room (the objects' shadow and
-//    light over the cache's).
+//    light over the cache's);
+//  - with full light, a lamp taken out of a sealed room leaves it black in the
+//    very next frame, and put back lights it as before.
 #include "engine/lab/surface_points.h"
 #include "engine/renderer.h"
 #include "engine/scene/live_scene.h"
 #include "engine/session.h"
+#include "tests/dense_world.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 #include "tests/test_util.h"
@@ -205,6 +208,38 @@ TEST_F(FaceCacheRender, TheCachesOwnLightWordsDecideHowTheyAreRead) {
     // Full light adds the light bounced off the sunlit floor and pillars.
     EXPECT_GT(mean(fullLight), 1.02 * mean(skyLight));
     EXPECT_LT(mean(fullLight), 2.0 * mean(skyLight));
+}
+
+TEST_F(FaceCacheRender, ALampTakenOutOfASealedRoomLeavesItBlackInTheNextFrame) {
+    const glm::ivec3 size(16, 8, 12), lamp(5, 3, 6);
+    voxel::Material wall, glow;
+    wall.albedo = glm::vec3(0.6f);
+    glow.albedo = glm::vec3(0.8f), glow.emissionColor = glm::vec3(1.0f, 0.7f, 0.4f), glow.emissionIntensity = 6.0f;
+    voxel::World world = voxel::test::denseWorld(size, {wall, glow}, [&](int x, int y, int z) {
+        if (glm::ivec3(x, y, z) == lamp) return 2;
+        return x == 0 || y == 0 || z == 0 || x == size.x - 1 || y == size.y - 1 || z == size.z - 1 ? 1 : 0;
+    });
+    LiveScene scene(ctx(), voxel::World(world));
+    voxel::FaceBakeSettings settings = worldBakeSettings(world, 1.5, 2);
+    settings.rays = 32, settings.fullLight = true;
+    scene.bakeFaceCache(settings);
+    voxel::Lighting lighting = world.desc().lighting;
+    lighting.ambientFrom = voxel::AmbientSource::Full;
+    Renderer renderer(ctx(), scene.gpu(), lighting, cacheAo(world, 1.5), 48, 32);
+    const Camera camera = makeCamera(test::lookAt({13.5, 6.0, 2.5}, {5.0, 2.0, 7.0}, 80.0), 48, 32);
+    auto frame = [&] {
+        renderer.render(camera);
+        const std::vector<float> c = renderer.readback(camera, false).color;
+        double sum = 0.0;
+        for (size_t i = 0; i < c.size(); i += 4) sum += c[i] + c[i + 1] + c[i + 2];
+        return sum / double(c.size() / 4);
+    };
+    const double lit = frame();
+    EXPECT_GT(lit, 0.1);
+    scene.apply(voxel::Edit::carveBox({lamp, lamp}));
+    EXPECT_EQ(frame(), 0.0);  // no light left behind, nor any from the sky or sun
+    scene.apply(voxel::Edit::fillBox({lamp, lamp}, 2));
+    EXPECT_NEAR(frame(), lit, 0.02 * lit);  // lit again at once, as baked
 }
 
 }  // namespace

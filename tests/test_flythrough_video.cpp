@@ -16,6 +16,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <future>
+#include <iterator>
 #include <sstream>
 #include <thread>
 
@@ -218,6 +219,33 @@ TEST_F(FlythroughVideo, AKilledRunsTemporaryVideoIsRemovedByTheNextRun) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(probe(video()).frames, 9);
     expectNoTemporaries();
+}
+
+TEST_F(FlythroughVideo, AKilledRunTakesItsEncoderWithIt) {
+    // An encoder that never reads nor ends: left behind, it would outlive the run
+    // (a real ffmpeg finishes the temporary, and with +faststart writes it again,
+    // after the next run has cleared it).
+    const std::string path = fakeFfmpeg("for last; do :; done\ntouch \"$last\"\nwhile :; do sleep 1; done");
+    const int pid = test::startGrotto(flythrough("--video " + video().string()), path);
+    auto encoders = [&] {  // processes running this test's fake ffmpeg
+        int n = 0;
+        for (auto& e : fs::directory_iterator("/proc")) {
+            std::ifstream in(e.path() / "cmdline");
+            const std::string line((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            n += line.find((dir_ / "bin" / "ffmpeg").string()) != std::string::npos;
+        }
+        return n;
+    };
+    bool killed = false;
+    for (int k = 0; k < 60000 && !killed; ++k) {
+        if (encoders() > 0) killed = kill(pid, SIGKILL) == 0;
+        else if (waitpid(pid, nullptr, WNOHANG) == pid) break;
+        else std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    if (killed) waitpid(pid, nullptr, 0);
+    ASSERT_TRUE(killed) << "the run never started its encoder";
+    for (int k = 0; k < 200 && encoders() > 0; ++k) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    EXPECT_EQ(encoders(), 0) << "the encoder outlived the killed run";
 }
 
 }  // namespace

@@ -41,13 +41,6 @@ double exitDistance(glm::dvec3 p, glm::dvec3 d, glm::dvec3 lo, glm::dvec3 hi) {
     return std::max(t, 0.0);
 }
 
-uint64_t texelSeed(const ExposedFace& f, uint32_t i, uint32_t j) {
-    uint64_t h = splitmix64(uint64_t(uint32_t(f.cell.x)));
-    h = splitmix64(h ^ uint64_t(uint32_t(f.cell.y)));
-    h = splitmix64(h ^ uint64_t(uint32_t(f.cell.z)));
-    return splitmix64(h ^ (uint64_t(f.dir) << 32 | uint64_t(i) << 16 | j));
-}
-
 // One texel's (or point's) rays, for a bake's settings over one world.
 class TexelTracer {
 public:
@@ -108,6 +101,13 @@ private:
 };
 
 }  // namespace
+
+uint64_t texelSeed(const ExposedFace& f, uint32_t i, uint32_t j) {
+    uint64_t h = splitmix64(uint64_t(uint32_t(f.cell.x)));
+    h = splitmix64(h ^ uint64_t(uint32_t(f.cell.y)));
+    h = splitmix64(h ^ uint64_t(uint32_t(f.cell.z)));
+    return splitmix64(h ^ (uint64_t(f.dir) << 32 | uint64_t(i) << 16 | j));
+}
 
 void bakeFaces(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
                const FaceBakeSettings& s, std::span<FaceTexel> texels) {

@@ -46,6 +46,10 @@ inline uint32_t sunRaysPerTexel(const FaceBakeSettings& s) {
     return s.sunAngleDegrees > 0.0 ? s.sunRays : std::min(s.sunRays, 1u);
 }
 
+// The hash a texel's rays are turned by: of its face and place alone, so a texel
+// traced again after an edit, or in another part of a bake, gets the same rays.
+uint64_t texelSeed(const ExposedFace& face, uint32_t i, uint32_t j);
+
 // Adds `rays` and `sunRays` more to each texel of `faces` (texels: faces.size() x
 // k x k, face-major, then j, then i), continuing each texel's sequence from the
 // samples it holds. Multithreaded. Throws grotto::Error (input) for a radius <= 0,

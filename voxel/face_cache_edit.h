@@ -51,6 +51,7 @@ struct CacheEditStats {
     uint64_t traced = 0;   // faces traced again or anew (or left stale for the GPU)
     uint64_t carried = 0;  // faces carried over untouched
     uint64_t skyFar = 0;   // of those, faces whose sky light the edit may change by at most kSkyStaleShare
+    uint64_t relit = 0;    // with full light: faces lit again (voxel/light_edit.h)
 };
 enum class FaceReach : uint8_t {
     Untouched,  // carried over, still right

@@ -6,6 +6,7 @@
 #include "voxel/brick_table.h"
 #include "voxel/face_cache_lookup.h"
 #include "voxel/form_factor.h"
+#include "voxel/luminance.h"
 #include "voxel/ray_sampling.h"
 #include "voxel/work_memory.h"
 
@@ -20,6 +21,7 @@
 #include <limits>
 #include <map>
 #include <numbers>
+#include <numeric>
 
 namespace grotto::voxel {
 
@@ -30,8 +32,6 @@ constexpr uint32_t kMissed = UINT32_MAX;  // a ray that left the world
 // drawn by power from the whole world, with this many shadow rays.
 constexpr size_t kRegionLights = 128;
 constexpr uint32_t kFarEmitterRays = 4;
-
-double luminance(glm::dvec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
 
 // A glowing face as a light, in voxel index units.
 struct Glow {
@@ -54,7 +54,9 @@ bool canLight(const Glow& g, glm::dvec3 lo, glm::dvec3 hi) {
 // The lights and the world's faces as the bake sees them.
 class LightScene {
 public:
-    LightScene(const World& world, std::span<const ExposedFace> faces, uint32_t k, std::span<const FaceTexel> texels)
+    // Lists the glowing faces for the regions of the faces `relit`.
+    LightScene(const World& world, std::span<const ExposedFace> faces, uint32_t k, std::span<const FaceTexel> texels,
+               std::span<const uint32_t> relit)
         : faces_(faces), lookup_(faces, texels, k), k_(k) {
         albedo_.push_back(glm::dvec3(0.0));
         emission_.push_back(glm::dvec3(0.0));
@@ -69,7 +71,7 @@ public:
             if (luminance(emission_[faceMaterial_[f]]) > 0.0) addGlow(faces[f], emission_[faceMaterial_[f]]);
         }
         for (const Glow& g : glows_) cumulative_.push_back((cumulative_.empty() ? 0.0 : cumulative_.back()) + g.luminance);
-        listRegions();
+        listRegions(relit);
     }
 
     glm::dvec3 albedo(size_t face) const { return albedo_[faceMaterial_[face]]; }
@@ -153,11 +155,12 @@ private:
         glows_.push_back({corner, u, v, faceNormal(f.dir), corner + 0.5 * (u + v), radiance, luminance(radiance)});
     }
 
-    // Each region holding a face lists the glowing faces that can reach it, the
-    // strongest by power over the squared distance to the region (a bound).
-    void listRegions() {
+    // Each region holding a face of `relit` lists the glowing faces that can reach
+    // it, the strongest by power over the squared distance to the region (a bound).
+    void listRegions(std::span<const uint32_t> relit) {
         if (glows_.empty()) return;
-        for (const ExposedFace& f : faces_) {
+        for (const uint32_t index : relit) {
+            const ExposedFace& f = faces_[index];
             Region& r = regions_[regionOf(f.cell, f.dir)];
             // The face's square on its plane.
             glm::dvec3 lo = texelPoint(f, 1, 0, 0), hi = lo;
@@ -227,8 +230,12 @@ private:
 }  // namespace
 
 uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& s) {
-    // The hits, then direct light, light and the sun's share as three float RGB arrays.
-    return texels * (uint64_t(s.rays) * sizeof(uint32_t) + 3 * sizeof(glm::vec3));
+    // The hits (the base rays', and extraShare of them more for the noisy texels),
+    // the sky's sums, then glow, direct light, light, the next pass's and what
+    // each texel sends as float RGB, and the extra rays' counts and offsets.
+    const double hits = s.rays * (1.0 + (s.relativeError > 0.0 && s.maxExtraRays > 0 ? s.extraShare : 0.0));
+    return texels * (uint64_t(std::ceil(hits)) * sizeof(uint32_t) + 6 * sizeof(double) + 5 * sizeof(glm::vec3) +
+                     2 * sizeof(uint32_t));
 }
 
 void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& s) {
@@ -236,97 +243,241 @@ void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const 
         refuseOverBudget(world, "full light's bake of " + std::to_string(faces) + " faces needs " + mibText(need));
 }
 
-LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
-                         const LightSources& lights, const LightBakeSettings& s, std::span<FaceTexel> texels,
-                         const BakeProgress& progress) {
-    const size_t perFace = size_t(k) * k, count = faces.size() * perFace;
-    if (texels.size() != count) throw Error::internal("bakeLight", "texels and faces differ in count");
-    requireLightBakeFits(world, faces.size(), k, s);
-    const LightScene scene(world, faces, k, texels);
-    const glm::dvec3 sunDirection = glm::normalize(lights.sunDirection);
+namespace {
 
-    // One pass of rays: each texel's direct light (sky and glowing faces), its
-    // sun, and the texels its cosine rays hit.
-    std::vector<uint32_t> hits(count * s.rays, kMissed);
-    std::vector<glm::vec3> direct(count), sun(count);
-    std::vector<uint64_t> rays(faces.size(), 0);
-    tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
-        for (size_t f = r.begin(); f < r.end(); ++f) {
-            const ExposedFace& face = faces[f];
-            const glm::dvec3 n = faceNormal(face.dir);
-            for (uint32_t j = 0; j < k; ++j)
-                for (uint32_t i = 0; i < k; ++i) {
-                    const size_t t = f * perFace + j * k + i;
-                    const glm::dvec3 p = texelPoint(face, k, i, j), start = p + n * s.epsilon;
-                    const uint64_t h = splitmix64(uint64_t(t) ^ 0x6c69676874ull);
-                    const double shiftU = unitInterval(h), shiftV = unitInterval(splitmix64(h));
-                    glm::dvec3 sky(0.0);
-                    double horizon = 0.0, zenith = 0.0;
-                    for (uint32_t ray = 0; ray < s.rays; ++ray) {
-                        const glm::dvec2 u = r2(ray, {shiftU, shiftV});
-                        const glm::dvec3 d = cosineAbout(n, u.x, u.y);
-                        ++rays[f];
-                        const std::optional<BrickHit> hit = table.firstHit(start, d, std::numeric_limits<double>::infinity());
-                        if (hit) hits[t * s.rays + ray] = scene.texelAt(*hit, start + d * hit->t);
-                        else {
-                            sky += glm::dvec3(gpu::skyRadiance(float(d.y), glm::vec3(lights.skyZenith),
-                                                               glm::vec3(lights.skyHorizon)));
-                            const SkyWeights w = skyWeights(d.y);
-                            horizon += w.horizon, zenith += w.zenith;
-                        }
-                    }
-                    const glm::dvec3 glow = scene.glowLight(table, face.cell, face.dir, p, n, s.emitterRays, splitmix64(h ^ 3),
-                                                            s.epsilon, rays[f]);
-                    direct[t] = glm::vec3(sky * (lights.skyIntensity / std::max(s.rays, 1u)) + glow);
-                    // The sky's weights as sums over the texel's own ray count.
-                    const double scale = double(texels[t].samples) / std::max(s.rays, 1u);
-                    texels[t].skyHorizon = float(horizon * scale), texels[t].skyZenith = float(zenith * scale);
-                    sun[t] = glm::vec3(lights.sun * (std::max(glm::dot(n, sunDirection), 0.0) * texels[t].sun()));
-                }
+// What a run of a texel's cosine rays saw of the sky.
+struct SkySums {
+    glm::dvec3 radiance{0.0};  // summed over the rays that left the world
+    double squares = 0.0;      // their luminances squared, summed
+    double horizon = 0.0, zenith = 0.0;
+};
+
+// Rays first .. first + n - 1 of a texel's sequence (R2 turned by `shift`) from
+// `start` about `normal`: each one's hit texel written to `hits` (kMissed when it
+// left the world), the sky summed.
+SkySums traceTexelRays(const BrickTable& table, const LightScene& scene, const LightSources& lights, glm::dvec3 start,
+                       glm::dvec3 normal, glm::dvec2 shift, uint32_t first, uint32_t n, uint32_t* hits) {
+    SkySums sky;
+    for (uint32_t ray = 0; ray < n; ++ray) {
+        const glm::dvec2 u = r2(first + ray, shift);
+        const glm::dvec3 d = cosineAbout(normal, u.x, u.y);
+        const std::optional<BrickHit> hit = table.firstHit(start, d, std::numeric_limits<double>::infinity());
+        hits[ray] = hit ? scene.texelAt(*hit, start + d * hit->t) : kMissed;
+        if (hit) continue;
+        const glm::dvec3 radiance(gpu::skyRadiance(float(d.y), glm::vec3(lights.skyZenith), glm::vec3(lights.skyHorizon)));
+        sky.radiance += radiance;
+        sky.squares += luminance(radiance) * luminance(radiance);
+        const SkyWeights w = skyWeights(d.y);
+        sky.horizon += w.horizon, sky.zenith += w.zenith;
+    }
+    return sky;
+}
+
+}  // namespace
+
+LightBakeStats relightFaces(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
+                            const LightSources& lights, const LightBakeSettings& s, std::span<FaceTexel> texels,
+                            std::span<const uint32_t> relit, const BakeProgress& progress) {
+    const size_t perFace = size_t(k) * k, count = faces.size() * perFace, traced = relit.size() * perFace;
+    if (texels.size() != count) throw Error::internal("relightFaces", "texels and faces differ in count");
+    requireLightBakeFits(world, relit.size(), k, s);
+    const LightScene scene(world, faces, k, texels, relit);
+    const glm::dvec3 sunDirection = glm::normalize(lights.sunDirection);
+    const uint32_t baseRays = std::max(s.rays, 1u);
+    // The texel of the m-th texel relit; where its rays start; how they are turned.
+    auto texelOf = [&](size_t m) { return size_t(relit[m / perFace]) * perFace + m % perFace; };
+    auto startOf = [&](size_t m) {
+        const ExposedFace& face = faces[relit[m / perFace]];
+        const uint32_t i = uint32_t(m % perFace) % k, j = uint32_t(m % perFace) / k;
+        return texelPoint(face, k, i, j) + faceNormal(face.dir) * s.epsilon;
+    };
+    auto seedOf = [&](size_t m) {
+        const uint32_t i = uint32_t(m % perFace) % k, j = uint32_t(m % perFace) / k;
+        return splitmix64(texelSeed(faces[relit[m / perFace]], i, j) ^ 0x6c69676874ull);  // not the AO's rays
+    };
+    auto shiftOf = [&](uint64_t h) { return glm::dvec2(unitInterval(h), unitInterval(splitmix64(h))); };
+
+    // The base rays: each relit texel's glowing faces' light, its sky, and the
+    // texels its cosine rays hit.
+    std::vector<uint32_t> hits(traced * baseRays, kMissed);
+    std::vector<SkySums> sky(traced);
+    std::vector<glm::vec3> glow(traced);
+    std::vector<uint64_t> rays(relit.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, relit.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t n = r.begin(); n < r.end(); ++n) {
+            const ExposedFace& face = faces[relit[n]];
+            const glm::dvec3 normal = faceNormal(face.dir);
+            for (size_t m = n * perFace; m < (n + 1) * perFace; ++m) {
+                const uint64_t h = seedOf(m);
+                const glm::dvec3 start = startOf(m);
+                sky[m] = traceTexelRays(table, scene, lights, start, normal, shiftOf(h), 0, baseRays, &hits[m * baseRays]);
+                rays[n] += baseRays;
+                glow[m] = glm::vec3(scene.glowLight(table, face.cell, face.dir, start - normal * s.epsilon, normal,
+                                                    s.emitterRays, splitmix64(h ^ 3), s.epsilon, rays[n]));
+                // The sky's weights as sums over the texel's own ray count.
+                const size_t t = texelOf(m);
+                const double scale = double(texels[t].samples) / baseRays;
+                texels[t].skyHorizon = float(sky[m].horizon * scale), texels[t].skyZenith = float(sky[m].zenith * scale);
+            }
         }
     });
 
-    // Bounce passes: light = direct + what the hits send back, their albedo times
-    // their light and their sun, from the pass before.
-    std::vector<glm::vec3> light = direct, next(count), sent(count);
+    // What each texel sends back to the rays that hit it: its albedo times its
+    // light and its sun. The texels not relit send what they hold throughout.
+    std::vector<glm::vec3> sent(count);
+    auto sends = [&](size_t t, glm::vec3 light) {
+        const ExposedFace& face = faces[t / perFace];
+        const double sun = std::max(glm::dot(faceNormal(face.dir), sunDirection), 0.0) * texels[t].sun();
+        return glm::vec3(scene.albedo(t / perFace)) * (light + glm::vec3(lights.sun * sun));
+    };
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t t = r.begin(); t < r.end(); ++t) sent[t] = sends(t, texels[t].light);
+    });
+
+    // More rays for the texels whose light is still noisy (after the passes
+    // below): their hits, texel m's at [extraStart[m], extraStart[m + 1]).
+    std::vector<uint32_t> extraStart(traced + 1, 0), extraHits;
+    auto raysOf = [&](size_t m) { return baseRays + (extraStart[m + 1] - extraStart[m]); };
+    std::vector<glm::vec3> direct(traced);
+    auto setDirect = [&](size_t m) {
+        direct[m] = glm::vec3(sky[m].radiance * (lights.skyIntensity / raysOf(m))) + glow[m];
+    };
+    for (size_t m = 0; m < traced; ++m) setDirect(m);
+
+    // Bounce passes: light = direct + what the hits send back, from the pass before.
+    std::vector<glm::vec3> light = direct, next(traced);
     LightBakeStats stats;
-    for (uint64_t n : rays) stats.rays += n;
     if (progress) progress(0, s.maxPasses);
-    const float perRay = 1.0f / float(std::max(s.rays, 1u));
     // A texel's change counts against its own light, down to a floor far below
-    // the world's mean: a room lit through a window converges too, not only the
-    // open ground that holds most of the light.
+    // the mean: a room lit through a window converges too, not only the open
+    // ground that holds most of the light.
     double mean = 0.0;
-    for (const glm::vec3& d : direct) mean += luminance(glm::dvec3(d)) / double(std::max<size_t>(count, 1));
+    for (const glm::vec3& d : direct) mean += luminance(glm::dvec3(d)) / double(std::max<size_t>(traced, 1));
     const double floor = std::max(mean, 1e-30) * 1e-4;
-    while (stats.passes < s.maxPasses) {
-        tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 256), [&](const tbb::blocked_range<size_t>& r) {
-            for (size_t f = r.begin(); f < r.end(); ++f)
-                for (size_t t = f * perFace; t < (f + 1) * perFace; ++t)
-                    sent[t] = glm::vec3(scene.albedo(f)) * (light[t] + sun[t]);
+    auto bounce = [&](size_t m) {
+        glm::vec3 back(0.0f);
+        for (const uint32_t* hit = &hits[m * baseRays]; hit != &hits[m * baseRays] + baseRays; ++hit)
+            if (*hit != kMissed) back += sent[*hit];
+        for (uint32_t e = extraStart[m]; e < extraStart[m + 1]; ++e)
+            if (extraHits[e] != kMissed) back += sent[extraHits[e]];
+        return back / float(raysOf(m));
+    };
+    auto converge = [&] {
+        for (uint32_t pass = 0; pass < s.maxPasses; ++pass) {
+            tbb::parallel_for(tbb::blocked_range<size_t>(0, traced, 4096), [&](const tbb::blocked_range<size_t>& r) {
+                for (size_t m = r.begin(); m < r.end(); ++m) sent[texelOf(m)] = sends(texelOf(m), light[m]);
+            });
+            const double change = tbb::parallel_reduce(
+                tbb::blocked_range<size_t>(0, traced, 4096), 0.0,
+                [&](const tbb::blocked_range<size_t>& r, double worst) {
+                    for (size_t m = r.begin(); m < r.end(); ++m) {
+                        next[m] = direct[m] + bounce(m);
+                        const double grown = std::abs(luminance(glm::dvec3(next[m] - light[m])));
+                        worst = std::max(worst, grown / std::max(luminance(glm::dvec3(next[m])), floor));
+                    }
+                    return worst;
+                },
+                [](double a, double b) { return std::max(a, b); });
+            light.swap(next);
+            ++stats.passes;
+            stats.change = change;
+            if (progress) progress(stats.passes, s.maxPasses);
+            if (stats.change < s.tolerance) break;
+        }
+    };
+    converge();
+
+    // The standard error of each texel's light over its base rays, from what each
+    // ray brought (the sky's radiance, or the hit's); where it passes
+    // s.relativeError of the light (or of a hundredth of the mean, where the light
+    // is dimmer), enough rays more to bring it there, up to s.maxExtraRays, in
+    // all no more than s.extraShare of the base rays (each texel's cut alike).
+    const double dim = 0.01 * mean;
+    std::vector<uint32_t> wanted(traced, 0);
+    if (s.relativeError > 0.0 && s.maxExtraRays > 0)
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, traced, 1024), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t m = r.begin(); m < r.end(); ++m) {
+                double sum = luminance(sky[m].radiance) * lights.skyIntensity;
+                double squares = sky[m].squares * lights.skyIntensity * lights.skyIntensity;
+                for (const uint32_t* hit = &hits[m * baseRays]; hit != &hits[m * baseRays] + baseRays; ++hit)
+                    if (*hit != kMissed) {
+                        const double l = luminance(glm::dvec3(sent[*hit]));
+                        sum += l, squares += l * l;
+                    }
+                const double average = sum / baseRays;
+                const double error = std::sqrt(std::max(squares / baseRays - average * average, 0.0) / baseRays);
+                const double target = s.relativeError * std::max(luminance(glm::dvec3(light[m])), dim);
+                if (!(error > target)) continue;
+                const double more = baseRays * ((error / target) * (error / target) - 1.0);
+                wanted[m] = uint32_t(std::min(std::ceil(more / 32.0) * 32.0, double(s.maxExtraRays)));
+            }
         });
-        const double change = tbb::parallel_reduce(
-            tbb::blocked_range<size_t>(0, count, 4096), 0.0,
-            [&](const tbb::blocked_range<size_t>& r, double worst) {
-                for (size_t t = r.begin(); t < r.end(); ++t) {
-                    glm::vec3 back(0.0f);
-                    for (const uint32_t* hit = &hits[t * s.rays]; hit != &hits[t * s.rays] + s.rays; ++hit)
-                        if (*hit != kMissed) back += sent[*hit];
-                    next[t] = direct[t] + back * perRay;
-                    const double grown = std::abs(luminance(glm::dvec3(next[t] - light[t])));
-                    worst = std::max(worst, grown / std::max(luminance(glm::dvec3(next[t])), floor));
-                }
-                return worst;
-            },
-            [](double a, double b) { return std::max(a, b); });
-        light.swap(next);
-        ++stats.passes;
-        stats.change = change;
-        if (progress) progress(stats.passes, s.maxPasses);
-        if (stats.change < s.tolerance) break;
+    uint64_t extra = 0;
+    for (uint32_t w : wanted) extra += w;
+    if (extra > 0) {
+        const double scale = std::min(1.0, s.extraShare * double(traced) * baseRays / double(extra));
+        for (size_t m = 0; m < traced; ++m) extraStart[m + 1] = extraStart[m] + uint32_t(wanted[m] * scale);
+        extraHits.assign(extraStart[traced], kMissed);
+        stats.extraRays = extraStart[traced];
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, traced, 64), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t m = r.begin(); m < r.end(); ++m) {
+                const uint32_t n = extraStart[m + 1] - extraStart[m];
+                if (n == 0) continue;
+                const SkySums more = traceTexelRays(table, scene, lights, startOf(m), faceNormal(faces[relit[m / perFace]].dir),
+                                                    shiftOf(seedOf(m)), baseRays, n, &extraHits[extraStart[m]]);
+                sky[m].radiance += more.radiance;
+                setDirect(m);
+            }
+        });
+        converge();
     }
-    for (size_t t = 0; t < count; ++t) texels[t].light = light[t];
+    for (uint64_t n : rays) stats.rays += n;
+    stats.rays += stats.extraRays;
+    for (size_t m = 0; m < traced; ++m) texels[texelOf(m)].light = light[m];
     return stats;
+}
+
+std::vector<uint32_t> facesSeeingChange(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
+                                        uint32_t k, std::span<const FaceTexel> texels, std::span<const glm::vec3> change,
+                                        std::span<const double> threshold, std::span<const uint8_t> skip,
+                                        uint32_t probeRays) {
+    const size_t perFace = size_t(k) * k;
+    if (texels.size() != faces.size() * perFace || change.size() != texels.size() || skip.size() != faces.size() ||
+        threshold.size() != faces.size())
+        throw Error::internal("facesSeeingChange", "texels, changes and faces differ in count");
+    const LightScene scene(world, faces, k, texels, {});
+    std::vector<uint8_t> seeing(faces.size(), 0);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t f = r.begin(); f < r.end(); ++f) {
+            if (skip[f]) continue;
+            const ExposedFace& face = faces[f];
+            const glm::dvec3 n = faceNormal(face.dir), start = texelPoint(face, 1, 0, 0) + n * 1e-4;
+            const uint64_t h = splitmix64(texelSeed(face, 0, 0) ^ 0x70726f6265ull);
+            const glm::dvec2 shift(unitInterval(h), unitInterval(splitmix64(h)));
+            glm::dvec3 sent(0.0);
+            for (uint32_t ray = 0; ray < probeRays; ++ray) {
+                const glm::dvec2 u = r2(ray, shift);
+                const glm::dvec3 d = cosineAbout(n, u.x, u.y);
+                const std::optional<BrickHit> hit = table.firstHit(start, d, std::numeric_limits<double>::infinity());
+                if (!hit) continue;
+                const uint32_t t = scene.texelAt(*hit, start + d * hit->t);
+                if (t != kMissed) sent += glm::dvec3(change[t]);
+            }
+            seeing[f] = std::abs(luminance(sent)) / std::max(probeRays, 1u) > threshold[f];
+        }
+    });
+    std::vector<uint32_t> list;
+    for (size_t f = 0; f < faces.size(); ++f)
+        if (seeing[f]) list.push_back(uint32_t(f));
+    return list;
+}
+
+LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
+                         const LightSources& lights, const LightBakeSettings& s, std::span<FaceTexel> texels,
+                         const BakeProgress& progress) {
+    std::vector<uint32_t> every(faces.size());
+    std::iota(every.begin(), every.end(), 0u);
+    return relightFaces(table, world, faces, k, lights, s, texels, every, progress);
 }
 
 }  // namespace grotto::voxel

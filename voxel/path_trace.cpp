@@ -12,6 +12,7 @@
 #include "shaders/shared/quad.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_cache.h"
+#include "voxel/luminance.h"
 #include "voxel/ray_sampling.h"
 
 #include <tbb/blocked_range.h>
@@ -84,8 +85,6 @@ struct EmitterFace {
     double area;
 };
 
-double luminanceOf(glm::dvec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-
 struct Hit {
     double t;             // world units
     glm::dvec3 normal;    // world axes
@@ -106,7 +105,7 @@ public:
         const size_t k = size_t(std::upper_bound(cumulative_.begin(), cumulative_.end(), r * cumulative_.back()) -
                                 cumulative_.begin());
         const EmitterFace& e = emitters_[std::min(k, emitters_.size() - 1)];
-        areaDensity = luminanceOf(e.radiance) / cumulative_.back();  // (power / total) / area
+        areaDensity = luminance(e.radiance) / cumulative_.back();  // (power / total) / area
         return &e;
     }
     // The nearest face a ray from `p` (world units, on a face of normal `n`) meets.
@@ -123,7 +122,7 @@ public:
     }
     // A glowing face's density under drawEmitter, per unit area.
     double emitterDensity(glm::dvec3 radiance) const {
-        return cumulative_.empty() ? 0.0 : luminanceOf(radiance) / cumulative_.back();
+        return cumulative_.empty() ? 0.0 : luminance(radiance) / cumulative_.back();
     }
     double voxelSize() const { return grids_.front().voxelSize; }
     // Does a solid voxel stop the ray before `distance` (world units; unbounded by default)?
@@ -148,7 +147,7 @@ private:
             return;
         for (const ExposedFace& f : exposedFaces(g.table, *g.world)) {
             const glm::dvec3 radiance = g.light(f.cell).emission;
-            if (luminanceOf(radiance) <= 0.0) continue;
+            if (luminance(radiance) <= 0.0) continue;
             // The face's corner and edges in index units, then placed as the grid is.
             glm::dvec3 corner(f.cell), u(0.0), v(0.0);
             corner[int(gpu::faceAxis(f.dir))] += gpu::facePositive(f.dir) ? 1.0 : 0.0;
@@ -159,7 +158,7 @@ private:
                           g.toWorldDirection(v * g.voxelSize), g.toWorldDirection(faceNormal(f.dir)), radiance,
                           g.voxelSize * g.voxelSize};
             emitters_.push_back(e);
-            cumulative_.push_back((cumulative_.empty() ? 0.0 : cumulative_.back()) + luminanceOf(radiance) * e.area);
+            cumulative_.push_back((cumulative_.empty() ? 0.0 : cumulative_.back()) + luminance(radiance) * e.area);
         }
     }
 

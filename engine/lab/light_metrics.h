@@ -3,6 +3,7 @@
 // (engine/lab/light_reference.h), over the surface pixels: how far the final
 // image is from the light transport it approximates (docs/metrics.md, "Light").
 #include "engine/lab/light_reference.h"
+#include "voxel/luminance.h"
 
 #include <glm/vec3.hpp>
 
@@ -34,7 +35,6 @@ LightError lightError(const std::vector<glm::vec3>& image, const LightReference&
 // at its height plus the sky's light on a face looking up.
 double openGroundLuminance(const voxel::LightSources& lights);
 
-// Rec. 709 luminance.
-inline double luminance(glm::dvec3 c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+using voxel::luminance;  // Rec. 709
 
 }  // namespace grotto

@@ -25,15 +25,20 @@ uint8_t levelOf(std::span<const voxel::FaceTexel> texels, const voxel::FaceBakeS
 }
 }  // namespace
 
-LiveFaceCache::LiveFaceCache(GpuScene& scene, std::vector<voxel::ExposedFace> faces,
-                             std::vector<voxel::FaceTexel> texels, const voxel::FaceBakeSettings& settings,
-                             double voxelSize)
-    : scene_(scene), faces_(std::move(faces)), texels_(std::move(texels)), settings_(settings), voxelSize_(voxelSize) {
+LiveFaceCache::LiveFaceCache(GpuScene& scene, const voxel::World& world, std::vector<voxel::ExposedFace> faces,
+                             std::vector<voxel::FaceTexel> texels, const voxel::FaceBakeSettings& settings)
+    : scene_(scene), faces_(std::move(faces)), texels_(std::move(texels)), settings_(settings),
+      voxelSize_(world.voxelSize()) {
+    if (settings_.fullLight) glowing_ = voxel::glowingFaces(world, faces_);
+    levelsFromTexels();
+    upload();
+}
+
+void LiveFaceCache::levelsFromTexels() {
     const uint32_t perFace = settings_.texelsPerSide * settings_.texelsPerSide;
     levels_.resize(faces_.size());
     for (size_t f = 0; f < faces_.size(); ++f)
         levels_[f] = levelOf(std::span(texels_).subspan(f * perFace, perFace), settings_);
-    upload();
 }
 
 LiveFaceCache LiveFaceCache::load(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
@@ -46,7 +51,7 @@ LiveFaceCache LiveFaceCache::load(GpuScene& scene, const voxel::BrickTable& tabl
     voxel::FaceBakeSettings settings = worldBakeSettings(world, radius, header.key.texelsPerSide);
     // Faces traced after an edit get as many rays as the bake gave its texels.
     settings.rays = header.rays, settings.sunRays = header.sunRays;
-    return LiveFaceCache(scene, std::move(faces), std::move(texels), settings, world.voxelSize());
+    return LiveFaceCache(scene, world, std::move(faces), std::move(texels), settings);
 }
 
 LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
@@ -57,14 +62,14 @@ LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& tabl
     voxel::bakeFaces(table, world, faces, settings, texels);
     if (settings.fullLight)
         voxel::bakeLight(table, world, faces, settings.texelsPerSide, voxel::lightSources(world.desc().lighting), {}, texels);
-    return LiveFaceCache(scene, std::move(faces), std::move(texels), settings, world.voxelSize());
+    return LiveFaceCache(scene, world, std::move(faces), std::move(texels), settings);
 }
 
 LiveFaceCache LiveFaceCache::progressive(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
                                          const voxel::FaceBakeSettings& settings) {
     std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
     std::vector<voxel::FaceTexel> texels(faces.size() * settings.texelsPerSide * settings.texelsPerSide);
-    return LiveFaceCache(scene, std::move(faces), std::move(texels), settings, world.voxelSize());
+    return LiveFaceCache(scene, world, std::move(faces), std::move(texels), settings);
 }
 
 void LiveFaceCache::sync() {
@@ -95,7 +100,19 @@ void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& w
     sync();  // what the GPU traced since the last edit is carried over with the rest
     const std::vector<voxel::ExposedFace> before = faces_;
     std::vector<voxel::FaceReach> reach;
-    voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, stats, false, &reach);
+    // Full light is traced here: the GPU's tracer knows the sky's light alone.
+    const bool full = settings_.fullLight;
+    const std::vector<voxel::FaceTexel> texelsBefore = full ? texels_ : std::vector<voxel::FaceTexel>{};
+    voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, stats, full, &reach);
+    if (full) {
+        const voxel::RelightStats relit = voxel::relightAfterEdit(table, world, faces_, settings_.texelsPerSide, texels_,
+                                                                  reach, changed, before, texelsBefore, glowing_);
+        glowing_ = voxel::glowingFaces(world, faces_);
+        if (stats) stats->relit = relit.faces;
+        levelsFromTexels();
+        upload();
+        return;
+    }
     std::vector<uint8_t> levels(faces_.size(), 0);
     for (size_t f = 0; f < faces_.size(); ++f) {
         if (reach[f] == voxel::FaceReach::Stale) continue;  // traced again, coarse first, in view from the next frame

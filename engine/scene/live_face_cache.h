@@ -3,12 +3,15 @@
 // host, laid out and uploaded into the scene's GpuScene::faceCache, from a bake
 // loaded from disk, made here on every core, or left empty for the GPU's tracer to
 // converge in view (engine/passes/face_cache_trace_pass.h). After an edit the
-// texels it reaches are left to that tracer too.
+// texels it reaches are left to that tracer too; with full light they are traced
+// here at once, and every face whose light the edit moved is lit again
+// (voxel/light_edit.h), before the next frame.
 #include "engine/scene/scene.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
 #include "voxel/face_cache_edit.h"
 #include "voxel/face_cache_file.h"
+#include "voxel/light_edit.h"
 
 #include <filesystem>
 #include <span>
@@ -18,10 +21,10 @@ namespace grotto {
 
 class LiveFaceCache {
 public:
-    // `texels`: k x k for each of `faces` (exposedFaces of the world, in order),
+    // `texels`: k x k for each of `faces` (exposedFaces of `world`, in order),
     // traced with `settings`. Uploads them into `scene`.
-    LiveFaceCache(GpuScene& scene, std::vector<voxel::ExposedFace> faces, std::vector<voxel::FaceTexel> texels,
-                  const voxel::FaceBakeSettings& settings, double voxelSize);
+    LiveFaceCache(GpuScene& scene, const voxel::World& world, std::vector<voxel::ExposedFace> faces,
+                  std::vector<voxel::FaceTexel> texels, const voxel::FaceBakeSettings& settings);
 
     // A bake of the world (`grotto bake`) with AO radius `radius` (world units);
     // throws grotto::Error (input) naming the file and the first field that is not
@@ -38,7 +41,8 @@ public:
     // After an edit of `changed` (the world and table already edited): the faces
     // listed again, the rest carried over, and the GPU copy replaced; the faces
     // the edit reaches (voxel::updateAfterEdit) keep their old texels until the
-    // GPU's tracer traces them again, in view, from the next frame on.
+    // GPU's tracer traces them again, in view, from the next frame on. With full
+    // light they are traced here, and the faces whose light moved lit again.
     void edited(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed,
                 voxel::CacheEditStats* stats = nullptr);
 
@@ -56,12 +60,14 @@ public:
 
 private:
     void upload();  // replaces the scene's GPU copy
+    void levelsFromTexels();  // each face's level from its texels' rays
 
     GpuScene& scene_;
     std::vector<voxel::ExposedFace> faces_;
     std::vector<voxel::FaceTexel> texels_;
     std::vector<uint8_t> levels_;  // per face
     std::vector<uint32_t> order_;  // the GPU's face g is faces_[order_[g]]
+    std::vector<voxel::GlowingFace> glowing_;  // with full light: the faces that glow, as of the last edit
     voxel::FaceBakeSettings settings_;
     double voxelSize_;
 };
