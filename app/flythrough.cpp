@@ -73,6 +73,7 @@ std::vector<std::string> exrAovs(const Args& a) {
     std::vector<std::string> all(std::begin(kExrAovs), std::end(kExrAovs));
     if (!a.given("--aovs")) return all;
     all.push_back(kBentNormalAov);  // VBAO's, by name only
+    all.push_back(kCacheLightAov);  // the face cache's, by name only
     if (a.aovs == "none") return {};
     std::vector<std::string> asked;
     for (size_t from = 0, comma; from <= a.aovs.size(); from = comma + 1) {
@@ -176,6 +177,9 @@ void run(const Args& a) {
     if (std::find(encoding.exrAovs.begin(), encoding.exrAovs.end(), kBentNormalAov) != encoding.exrAovs.end() &&
         !(ao.enabled && ao.method == AoMethod::Vbao))
         throw Error("--aovs", "bent_normal is VBAO's", "add --ao vbao, or leave bent_normal out");
+    if (std::find(encoding.exrAovs.begin(), encoding.exrAovs.end(), kCacheLightAov) != encoding.exrAovs.end() &&
+        !(ao.enabled && ao.method == AoMethod::Cache))
+        throw Error("--aovs", "light is the face cache's", "add --ao cache, or leave light out");
     vk::Context ctx;
     const FramePlan plan = planWorldFrame(world.desc(), size.width, size.height, ao);
     const voxel::CameraDesc lens = world.camera("", size.aspect());

@@ -61,10 +61,11 @@ void addRenderCommand(CLI::App& app) {
     cmd->add_option("world", args->world, "World .json or .vdb")->required();
     cmd->add_option("--camera", args->camera, "Named camera from the world file (default: its default)");
     cmd->add_option("--size", args->size, "Image size WxH (refused when it cannot fit the device's memory)")->capture_default_str();
-    cmd->add_flag("--aov", args->aov, "EXR only: also write Z, N.xyz, albedo.RGB, AO, AO_raw, AO_spatial, edges, shadow (and AO_temporal, AO_history with the temporal pass; bent_normal.xyz with --ao vbao)");
+    cmd->add_flag("--aov", args->aov, "EXR only: also write Z, N.xyz, albedo.RGB, AO, AO_raw, AO_spatial, edges, shadow (and AO_temporal, AO_history with the temporal pass; bent_normal.xyz with --ao vbao; light.RGB, the face cache's light, with --ao cache)");
     cmd->add_option("-o,--output", args->output, "Output .png or .exr")->required();
     cmd->add_option("--show", args->show, std::string("PNG only: write one AOV instead of colour (") + kShownAovs + ")")
-        ->check(CLI::IsMember({"ao", "normal", "depth", "edges", "shadow", "raw", "spatial", "temporal", "history", "bent_normal"}));
+        ->check(CLI::IsMember({"ao", "normal", "depth", "edges", "shadow", "raw", "spatial", "temporal", "history", "bent_normal",
+                               "light"}));
     cmd->add_option("--time", args->time, "Seconds: where the world's objects are (their keys)")
         ->capture_default_str()->check(finiteRange(0.0, 1e9));
     cmd->add_option("--accumulate", args->accumulate,
@@ -88,6 +89,8 @@ void addRenderCommand(CLI::App& app) {
         // The engine's error would name the AOV; the command line names the flag, before any frame.
         if (args->show == kBentNormalAov && !(ao.enabled && ao.method == AoMethod::Vbao))
             throw Error("--show", "bent_normal is VBAO's", "render with --ao vbao");
+        if (args->show == kCacheLightAov && !(ao.enabled && ao.method == AoMethod::Cache))
+            throw Error("--show", "light is the face cache's", "render with --ao cache");
         const uint32_t frames = framesToAccumulate(args->accumulate, args->ao, ao, world.desc());
         const bool aovs = args->aov || !args->show.empty();
         vk::Context ctx;

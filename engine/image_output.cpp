@@ -100,6 +100,10 @@ std::vector<float> aovDisplay(const FrameImages& f, const std::string& which) {
         else if (which == "spatial") v = glm::vec3(valueOr(f.aoSpatial, i, 1.0f));
         else if (which == "temporal") v = glm::vec3(valueOr(f.aoTemporal, i, 1.0f));
         else if (which == "history") v = glm::vec3(valueOr(f.aoHistory, i, 1.0f) / 64.0f);  // the longest history is 64
+        else if (which == kCacheLightAov) {
+            if (f.light.empty()) throw Error("AOV", "light is the face cache's", "render with AO method cache");
+            for (int c = 0; c < 3; ++c) v[c] = gpu::toneMap(f.light[3 * i + c], f.toneMap);
+        }
         else if (which == kBentNormalAov) {
             if (f.bentNormal.empty()) throw Error("AOV", "bent_normal is VBAO's", "render with AO method vbao");
             v = sky ? v : glm::vec3(f.bentNormal[3 * i], f.bentNormal[3 * i + 1], f.bentNormal[3 * i + 2]) * 0.5f + 0.5f;
@@ -194,6 +198,7 @@ void writeFrame(const std::filesystem::path& path, const FrameImages& f, const C
     FrameEncoding encoding;
     if (aovs) encoding.exrAovs.assign(std::begin(kExrAovs), std::end(kExrAovs));
     if (aovs && !f.bentNormal.empty()) encoding.exrAovs.push_back(kBentNormalAov);
+    if (aovs && !f.light.empty()) encoding.exrAovs.push_back(kCacheLightAov);
     writeFrame(path, f, camera, encoding);
 }
 
@@ -222,6 +227,7 @@ std::vector<Layer> exrLayers(const FrameImages& f) {
         {"edges", {"edges"}, one(f.edges)},
         {"shadow", {"shadow"}, [&f](size_t i, int) { return f.shadow.empty() ? 1.0f : f.shadow[i]; }},
         {kBentNormalAov, {"bent_normal.x", "bent_normal.y", "bent_normal.z"}, three(f.bentNormal)},
+        {kCacheLightAov, {"light.R", "light.G", "light.B"}, three(f.light)},
     };
 }
 
@@ -234,6 +240,8 @@ void writeExr(const std::filesystem::path& path, const FrameImages& f, const Cam
     if (!layers.empty() && f.depth.empty()) throw Error::internal(path.string(), "AOV layers of a frame read back without AOVs");
     if (std::find(e.exrAovs.begin(), e.exrAovs.end(), kBentNormalAov) != e.exrAovs.end() && f.bentNormal.empty())
         throw Error(path.string(), "the bent_normal layer is VBAO's", "render with AO method vbao, or leave bent_normal out");
+    if (std::find(e.exrAovs.begin(), e.exrAovs.end(), kCacheLightAov) != e.exrAovs.end() && f.light.empty())
+        throw Error(path.string(), "the light layer is the face cache's", "render with AO method cache, or leave light out");
     std::vector<std::string> names = {"R", "G", "B", "A"};
     for (const Layer& layer : layers) names.insert(names.end(), layer.channels.begin(), layer.channels.end());
     const int channels = int(names.size());

@@ -30,6 +30,9 @@ inline constexpr const char* kExrAovs[] = {"Z",           "N",          "albedo"
 // VBAO's bent normal (world-space xyz, the AO pixel's): written beside those for
 // a frame that has it (FrameImages::bentNormal), and only asked for by name.
 inline constexpr const char* kBentNormalAov = "bent_normal";
+// The face cache's light (FrameImages::light, light.R light.G light.B): likewise
+// for a frame lit from a face cache.
+inline constexpr const char* kCacheLightAov = "light";
 // How a frame is encoded. PNG: the zlib level, 0 (none, fastest) to 9 (smallest).
 // EXR: which AOV layers beside the colour (kExrAovs names; the frame must have
 // been read back with AOVs when any is asked for), and half-float channels
@@ -77,9 +80,11 @@ void writeSrgb8(const std::filesystem::path& path, uint32_t width, uint32_t heig
                 const Camera* camera = nullptr, int pngLevel = FrameEncoding::kDefaultPngLevel);
 
 // The AOVs showAov draws.
-inline constexpr const char* kShownAovs = "ao, normal, depth, edges, shadow, raw, spatial, temporal, history, bent_normal";
+inline constexpr const char* kShownAovs =
+    "ao, normal, depth, edges, shadow, raw, spatial, temporal, history, bent_normal, light";
 // One AOV drawn for eyeballing (kShownAovs; raw, spatial, temporal: the AO
-// chain's stages; history: its length over 64 frames), as display-linear RGBA
+// chain's stages; history: its length over 64 frames; light: the face cache's
+// light through the frame's tone map, without exposure), as display-linear RGBA
 // like displayColor's, so that 8-bit sRGB values are the AOV's values (normals as
 // n * 0.5 + 0.5, depth log-scaled from near white to far black, sky black). Needs
 // a readback with AOVs.

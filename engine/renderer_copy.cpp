@@ -20,8 +20,10 @@ void Renderer::recordCopy(VkCommandBuffer cmd, FrameCopy& copy, const Camera& ca
         // The cache's AO and sun at each pixel, as the composite read them.
         pass(cmd, FaceCacheAovPass::declare(), [&] {
             passes_.get<FaceCacheAovPass>().record(cmd, targets_.gbuffer(), slot().frame, *scene_.faceCache(),
-                                      image(TargetId::AoFull), image(TargetId::Shadow), image(TargetId::ObjectLight));
+                                      image(TargetId::AoFull), image(TargetId::Shadow), image(TargetId::ObjectLight),
+                                      image(TargetId::CacheLight));
         });
+        copyPart(FrameCopy::CacheLight, TargetId::CacheLight, 16);
     }
     if (copy.aovs()) {
         if (plan_.shadows) copyPart(FrameCopy::Shadow, TargetId::Shadow, 4);

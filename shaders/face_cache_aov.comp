@@ -5,7 +5,10 @@
 // faces with the object light pass, else 1) and, while its sun is the frame's,
 // its sun visibility into the shadow image: over the world pixels it has, times
 // the objects' shadow there where the shadow pass ran (which the other pixels
-// keep), 1 on the others where it did not. Exactly what the composite (composite_cache.comp) lit each pixel with.
+// keep), 1 on the others where it did not. And the light the cache holds there,
+// irradiance over pi: the full light, or with sky weights the sky's light from
+// them (0 where the cache has none, and with the constant ambient). Exactly what
+// the composite (composite.comp's shadeCached) lit each pixel with.
 #include "shared/frame.h"
 #include "shared/objects.h"
 #include "shared/quad.h"
@@ -22,7 +25,8 @@ layout(set = 0, binding = 4, r32f) uniform image2D sunOut;  // 1x1 without sun s
 uint faceCacheTable() { return frame.faceCache.x; }
 uint faceCacheK() { return frame.faceCache.y; }
 layout(set = 0, binding = 5, rgba16f) uniform readonly image2D objectLightImage;  // object_light.comp's
-#define GROTTO_FACE_CACHE_BINDING 6
+layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D lightOut;
+#define GROTTO_FACE_CACHE_BINDING 7
 #include "face_cache.glsl"
 #include "face_cache_surface.glsl"
 
@@ -33,7 +37,14 @@ void main() {
     vec4 c = vec4(1.0);
     bool found = false;
     float objectPart = objectLight && surface != 0u ? imageLoad(objectLightImage, q).x : 0.0;
-    if (surface != 0u && surfaceObject(surface) == 0u) c = cachedLightAt(q, surfaceFace(surface), found);
+    vec3 light = vec3(0.0);
+    if (surface != 0u && surfaceObject(surface) == 0u) {
+        c = cachedLightAt(q, surfaceFace(surface), found);
+        if (found && frame.ambient.w >= 1.5) light = faceCacheFullLight(cachedTapsAt(q, surfaceFace(surface)));
+        else if (found && frame.ambient.w >= 0.5)
+            light = frame.ambient.rgb * (c.z * frame.skyHorizon.rgb + c.w * frame.skyZenith.rgb);
+    }
+    imageStore(lightOut, q, vec4(light, 1.0));
     float ao = found ? max(c.x - objectPart, 0.0) : c.x;
     if (objectLight && surface != 0u && surfaceObject(surface) != 0u) ao = objectPart;
     imageStore(aoOut, q, vec4(ao));

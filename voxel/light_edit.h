@@ -22,7 +22,7 @@
 namespace grotto::voxel {
 
 inline constexpr double kRelightShare = 1.0 / 64.0;
-inline constexpr uint32_t kProbeRays = 32;
+inline constexpr uint32_t kProbeRays = 16;
 inline constexpr uint32_t kRelightRounds = 4;  // of bounced change, at most
 
 struct GlowingFace {

@@ -13,8 +13,9 @@
 namespace grotto::viewer {
 
 // The views the panel offers: the final image, or one AOV (showAov's names).
-inline const std::vector<std::string> kViews = {"final", "ao",   "raw",   "spatial", "temporal",
-                                                "history", "edges", "normal", "depth", "shadow"};
+// "light" is the face cache's (black with other AO methods).
+inline const std::vector<std::string> kViews = {"final",  "ao",    "raw",    "spatial", "temporal", "history",
+                                                "edges", "normal", "depth", "shadow",  "light"};
 
 struct PanelState {
     const voxel::WorldDesc* desc = nullptr;  // the settings now, as the world file writes them

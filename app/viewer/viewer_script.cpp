@@ -54,7 +54,7 @@ void Viewer::setView(const nlohmann::json& value, const std::string& field) {
     const std::string v = value.is_string() ? value.get<std::string>() : "";
     if (std::find(kViews.begin(), kViews.end(), v) == kViews.end())
         refuse(field, "unknown view " + value.dump(),
-               "accepted: final, ao, raw, spatial, temporal, history, edges, normal, depth, shadow");
+               "accepted: final, ao, raw, spatial, temporal, history, edges, normal, depth, shadow, light");
     panel_.view = v;
 }
 

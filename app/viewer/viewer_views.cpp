@@ -17,10 +17,21 @@ std::filesystem::path Viewer::nextShotName() {
     }
 }
 
+namespace {
+std::vector<float> blackImage(uint32_t width, uint32_t height) {
+    std::vector<float> rgba(size_t(width) * height * 4, 0.0f);
+    for (size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 1.0f;
+    return rgba;
+}
+}  // namespace
+
 // Reads the frame back for an AOV view or a screenshot.
 void Viewer::readback(const Camera& camera) {
     const FrameImages f = renderer().readback(camera, true);
-    const std::vector<float> shown = panel_.view == "final" ? std::vector<float>() : aovDisplay(f, panel_.view);
+    const bool noLight = panel_.view == kCacheLightAov && f.light.empty();  // not lit from a face cache
+    const std::vector<float> shown = panel_.view == "final" ? std::vector<float>()
+                                     : noLight             ? blackImage(f.width, f.height)
+                                                           : aovDisplay(f, panel_.view);
     if (pendingShot_) {
         writeShot(*pendingShot_, f, shown, camera);
         pendingShot_.reset();

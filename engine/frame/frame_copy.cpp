@@ -67,6 +67,12 @@ FrameImages FrameCopy::decode() const {
     f.depthBuffer = part(Depth);
     f.surfaceIds = values<uint16_t>(buffers_[Surface], copied_[Surface]);
     if (copied_[Motion]) f.motion = part(Motion);
+    if (copied_[CacheLight]) {  // RGBA32F
+        const std::vector<float> light = part(CacheLight);
+        f.light.resize(3 * n);
+        for (size_t i = 0; i < n; ++i)
+            for (int c = 0; c < 3; ++c) f.light[3 * i + c] = light[4 * i + c];
+    }
     f.depth.resize(n);
     f.normal.assign(3 * n, 0.0f);
     f.albedo.assign(3 * n, 0.0f);

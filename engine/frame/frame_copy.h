@@ -30,7 +30,7 @@ public:
 
     // What the renderer records: each image into a buffer of its own (the largest
     // allocation stays one image's), and what decoding needs to know of the frame.
-    enum Part { Color, Shadow, Depth, Surface, Motion, AoFull, Raw, Spatial, History, BentNormal, kParts };
+    enum Part { Color, Shadow, Depth, Surface, Motion, AoFull, Raw, Spatial, History, BentNormal, CacheLight, kParts };
     struct Layout {
         uint32_t width = 0, height = 0;
         VkExtent2D half{};   // the AO images' size

@@ -33,6 +33,9 @@ struct FrameImages {
                                           // view depth, 0 for sky (4 floats a pixel); empty otherwise
     std::vector<float> shadow;            // 1 where the sun reaches a surface, 0 where it does not (full res;
                                           // 1 everywhere without sun shadows)
+    std::vector<float> light;             // the face cache's light at each pixel, irradiance over pi, linear
+                                          // rgb before exposure (the full light, or the sky's); 0 where it has
+                                          // none; empty without a face cache
 };
 
 }  // namespace grotto

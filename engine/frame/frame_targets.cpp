@@ -60,6 +60,9 @@ constexpr TargetRow kRows[] = {
     // the face cache's AO: only a read-back with AOVs makes it.
     {TargetId::AoFull, kR32f, TargetSize::Frame, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
      [](const FramePlan& s) { return s.ao.enabled && s.aoAov; }, false, 1, kGeneral},
+    // The light the face cache gave each pixel: only a read-back with AOVs makes it.
+    {TargetId::CacheLight, kRgba32f, TargetSize::Frame, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+     [](const FramePlan& s) { return s.faceCache && s.aoAov; }, false, 1, kGeneral},
 };
 
 }  // namespace
@@ -96,6 +99,7 @@ vk::Image& FrameTargets::slot(TargetId id, uint32_t copy) {
     case TargetId::AoSpatial1: return ao_.spatial[1];
     case TargetId::AoHistory: return ao_.history[copy];
     case TargetId::AoFull: return ao_.full;
+    case TargetId::CacheLight: return cacheLight_;
     }
     throw Error::internal("FrameTargets", "no such target");
 }

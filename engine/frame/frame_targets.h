@@ -99,7 +99,7 @@ private:
     std::array<uint32_t, kTargetCount> current_{};  // each history's image this frame writes
     GBufferTargets gbuffer_;
     AoTargets ao_;
-    vk::Image color_, display_, normals_, shadow_, objectLight_;
+    vk::Image color_, display_, normals_, shadow_, objectLight_, cacheLight_;
     std::array<vk::Image, 2> shadowHistory_, objectLightHistory_;
 };
 

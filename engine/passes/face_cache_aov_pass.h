@@ -4,8 +4,9 @@
 // frame's, its sun visibility into the shadow image: over the world pixels it
 // holds when the shadow pass ran (`tracedShadows`), over every pixel else. The AO
 // is less what objects take, and objects' own on their faces (`objectLight`: the
-// object light pass's image). Reads the G-buffer's depth and surface ids, the frame
-// uniforms and the cache.
+// object light pass's image). And the light the cache holds there (irradiance over
+// pi: the full light, or the sky's light from its weights) into the light image.
+// Reads the G-buffer's depth and surface ids, the frame uniforms and the cache.
 #include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
@@ -26,10 +27,10 @@ public:
     static PassDecl declare() {
         return {nullptr, {{TargetId::Surface, Access::Sampled}, {TargetId::Depth, Access::Sampled},
                           {TargetId::AoFull, Access::Write}, {TargetId::Shadow, Access::Write},
-                          {TargetId::ObjectLight, Access::Read}}};
+                          {TargetId::ObjectLight, Access::Read}, {TargetId::CacheLight, Access::Write}}};
     }
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& frame, const GpuFaceCache& cache,
-                const vk::Image& ao, const vk::Image& sun, const vk::Image& objectLight);
+                const vk::Image& ao, const vk::Image& sun, const vk::Image& objectLight, const vk::Image& light);
 
 private:
     vk::Context& ctx_;
