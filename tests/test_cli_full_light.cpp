@@ -5,6 +5,7 @@
 #include "cli_fixture.h"
 #include "engine/image_input.h"
 #include "shaders/shared/tone_map.h"
+#include "tests/virtual_display.h"
 #include "vox_writer.h"
 
 #include <gtest/gtest.h>
@@ -177,6 +178,35 @@ TEST_F(CliFullLight, TheReferenceLightAsAPngIsItsExrAsADisplayShowsIt) {
     // The AO reference has no display image to give.
     expectRefused("reference " + world.string() + " --camera in --size 24x16 --spp 4 -o " + out().string(), "needs an .exr output",
                   out());
+}
+
+TEST_F(CliFullLight, TheViewersLightViewIsTheLightAovRenderDraws) {
+    REQUIRE_XVFB();
+    // The room lit by its lamp, from a bake: the viewer's light view, as a
+    // screenshot and as the window shows it, is `render --show light` pixel for
+    // pixel, and warm where the lamp's light falls. (Without a bake the viewer's
+    // GPU tracer would give the room the sky's light alone: none.)
+    const fs::path world = writeRoomWorld("room.json", "full"), bake = dir_ / "room.gfc";
+    const RunResult baked = runGrotto("bake " + world.string() + " -o " + bake.string());
+    ASSERT_EQ(baked.exitCode, 0) << baked.err;
+    const fs::path script = writeText("light.json", R"({"actions": [
+        {"frame": 1, "set": {"view": "light"}}, {"frame": 3, "screenshot": "shot.png"}]})");
+    const fs::path shot = dir_ / "shot.png", window = dir_ / "window.png", still = dir_ / "render.png";
+    const RunResult v = runGrotto("view " + world.string() + " --bake " + bake.string() +
+                                      " --camera in --size 64x48 --hide-panel --script " +
+                                      script.string() + " --frames 4 --capture-window " + window.string(),
+                                  kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    const RunResult r = runGrotto("render " + world.string() + " --bake " + bake.string() +
+                                  " --camera in --size 64x48 --show light -o " + still.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::vector<uint8_t> a = readPixels8(shot), b = readPixels8(still), w = readPixels8(window);
+    ASSERT_EQ(a.size(), 64u * 48u * 3u);
+    EXPECT_EQ(a, b) << "the viewer's light view is not render's";
+    EXPECT_LE(worstDifference(a, w), 1);  // the window blits the same values
+    size_t warm = 0;
+    for (size_t i = 0; i + 2 < a.size(); i += 3) warm += a[i] > a[i + 2] + 8;
+    EXPECT_GT(warm, a.size() / 3 / 2) << "the lamp's warm light is missing";
 }
 
 }  // namespace

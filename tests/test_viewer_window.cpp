@@ -6,6 +6,7 @@
 #include "common/printable.h"
 #include "tests/cli_fixture.h"
 #include "tests/display_checks.h"
+#include "tests/virtual_display.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -27,55 +28,6 @@ namespace {
 namespace fs = std::filesystem;
 using test::CliErrors;
 using test::runGrotto;
-
-// A virtual X server of this test's own. Xvfb picks a free display itself
-// (-displayfd), so tests running side by side never collide; it stops with the test.
-class VirtualDisplay {
-public:
-    VirtualDisplay() {
-        const fs::path file = fs::temp_directory_path() / ("grotto-xvfb-" + std::to_string(getpid()));
-        pid_ = fork();
-        if (pid_ == 0) {
-            const int fd = open(file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
-            const int quiet = open("/dev/null", O_WRONLY);
-            dup2(quiet, 1);
-            dup2(quiet, 2);
-            const std::string fdText = std::to_string(fd);
-            execlp("Xvfb", "Xvfb", "-displayfd", fdText.c_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp",
-                   static_cast<char*>(nullptr));
-            _exit(127);
-        }
-        // The display number arrives once the server accepts connections.
-        for (int i = 0; i < 200 && display_.empty(); ++i) {
-            std::ifstream in(file);
-            std::string n;
-            if (std::getline(in, n) && !in.eof()) display_ = ":" + n;
-            else std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        }
-        fs::remove(file);
-    }
-    ~VirtualDisplay() {
-        if (pid_ > 0) {
-            kill(pid_, SIGTERM);
-            waitpid(pid_, nullptr, 0);
-        }
-    }
-    // The environment a viewer run gets: this display, the validation layer on.
-    std::string env() const { return "GROTTO_VALIDATION=1 DISPLAY=" + display_; }
-    bool ready() const { return !display_.empty(); }
-
-private:
-    pid_t pid_ = -1;
-    std::string display_;
-};
-
-bool haveXvfb() { return std::system("command -v Xvfb >/dev/null 2>&1") == 0; }
-
-#define REQUIRE_XVFB()                                                                                         \
-    if (!haveXvfb()) GTEST_SKIP() << "Xvfb is not installed (Debian: xvfb): no X server for the viewer's window"; \
-    const VirtualDisplay x;                                                                                    \
-    ASSERT_TRUE(x.ready()) << "Xvfb did not start";                                                           \
-    const std::string kUnderXvfb = x.env()
 
 TEST_F(CliErrors, ViewerFlightEndingOnACameraMatchesRender) {
     REQUIRE_XVFB();
