@@ -63,10 +63,10 @@ struct LitWorld {
         table.update(world, result.voxels);
         std::vector<FaceReach> reach;
         const std::vector<ExposedFace> before = faces;
-        const std::vector<FaceTexel> texelsBefore = texels;
+        const std::vector<glm::vec3> sentBefore = sentLight(world, faces, texels, kSide);
         updateAfterEdit(table, world, result.voxels, kSettings, faces, texels, nullptr, true, &reach);
         const RelightStats stats =
-            relightAfterEdit(table, world, faces, kSide, texels, reach, result.voxels, before, texelsBefore, glowing);
+            relightAfterEdit(table, world, faces, kSide, texels, reach, result.voxels, before, sentBefore, glowing);
         glowing = glowingFaces(world, faces);
         std::printf("[ measured ] %llu faces lit again of %zu, %u rounds of bounced change\n",
                     (unsigned long long)stats.faces, faces.size(), stats.rounds);

@@ -106,24 +106,46 @@ std::vector<uint32_t> facesToRelight(std::span<const ExposedFace> faces, std::sp
     return list;
 }
 
+
+
+// What a texel sends back but for its glow, by the world's materials and sun.
+class Sender {
+public:
+    explicit Sender(const World& world)
+        : world_(world), lights_(lightSources(world.desc().lighting)), toSun_(glm::normalize(lights_.sunDirection)) {}
+    const LightSources& lights() const { return lights_; }
+    glm::vec3 operator()(const ExposedFace& f, const FaceTexel& t) const {
+        const std::vector<Material>& materials = world_.desc().materials;
+        const int id = world_.material(f.cell);
+        const glm::vec3 albedo = id >= 1 && size_t(id) <= materials.size() ? materials[size_t(id) - 1].albedo : glm::vec3(0.0f);
+        const double sun = std::max(glm::dot(faceNormal(f.dir), toSun_), 0.0) * t.sun();
+        return albedo * (t.light + glm::vec3(lights_.sun * sun));
+    }
+
+private:
+    const World& world_;
+    LightSources lights_;
+    glm::dvec3 toSun_;
+};
+
 }  // namespace
+
+std::vector<glm::vec3> sentLight(const World& world, std::span<const ExposedFace> faces,
+                                 std::span<const FaceTexel> texels, uint32_t k) {
+    const Sender sends(world);
+    const size_t perFace = size_t(k) * k;
+    std::vector<glm::vec3> sent(texels.size());
+    for (size_t t = 0; t < texels.size(); ++t) sent[t] = sends(faces[t / perFace], texels[t]);
+    return sent;
+}
 
 RelightStats relightAfterEdit(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
                               uint32_t k, std::span<FaceTexel> texels, std::span<const FaceReach> reach,
                               const IndexBox& changed, std::span<const ExposedFace> before,
-                              std::span<const FaceTexel> texelsBefore, std::span<const GlowingFace> glowingBefore) {
+                              std::span<const glm::vec3> sentBefore, std::span<const GlowingFace> glowingBefore) {
     const size_t perFace = size_t(k) * k;
-    const LightSources lights = lightSources(world.desc().lighting);
-    const glm::dvec3 toSun = glm::normalize(lights.sunDirection);
-    const std::vector<Material>& materials = world.desc().materials;
-    auto albedoOf = [&](const ExposedFace& f) {
-        const int id = world.material(f.cell);
-        return id >= 1 && size_t(id) <= materials.size() ? materials[size_t(id) - 1].albedo : glm::vec3(0.0f);
-    };
-    // The radiance a texel sends but for its glow: albedo x (its light and its sun).
-    auto sends = [&](const ExposedFace& f, const FaceTexel& t) {
-        return albedoOf(f) * (t.light + glm::vec3(lights.sun * (std::max(glm::dot(faceNormal(f.dir), toSun), 0.0) * t.sun())));
-    };
+    const Sender sends(world);
+    const LightSources& lights = sends.lights();
     auto glowOf = [](std::span<const GlowingFace> glowing, const ExposedFace& f) {
         const auto it = std::lower_bound(glowing.begin(), glowing.end(), f,
                                          [](const GlowingFace& g, const ExposedFace& x) { return g.face < x; });
@@ -137,8 +159,7 @@ RelightStats relightAfterEdit(const BrickTable& table, const World& world, std::
         const auto it = std::lower_bound(before.begin(), before.end(), faces[f]);
         const bool existed = it != before.end() && *it == faces[f];
         for (size_t t = 0; t < perFace; ++t)
-            was[f * perFace + t] = (existed ? sends(faces[f], texelsBefore[size_t(it - before.begin()) * perFace + t])
-                                            : glm::vec3(0.0f)) - glow;
+            was[f * perFace + t] = (existed ? sentBefore[size_t(it - before.begin()) * perFace + t] : glm::vec3(0.0f)) - glow;
     }
     // A face's light may be left off by kRelightShare of the larger of its mean
     // light and the world's.

@@ -39,12 +39,19 @@ struct RelightStats {
     uint32_t rounds = 0;  // of bounced change that found more
 };
 
+// What each texel of `faces` (k x k each) sends back but for its glow: albedo x
+// (its light and its sun), by `world`'s materials. Kept before an edit (12 bytes
+// a texel) for relightAfterEdit.
+std::vector<glm::vec3> sentLight(const World& world, std::span<const ExposedFace> faces,
+                                 std::span<const FaceTexel> texels, uint32_t k);
+
 // The full light of a world after an edit of `changed`, updateAfterEdit already
 // run with its rays traced at once: `faces` and `texels` as it left them,
-// `before` and `texelsBefore` as they were, `glowingBefore` the glowing faces then.
+// `before` the faces then, `sentBefore` their sentLight then and `glowingBefore`
+// the glowing faces then.
 RelightStats relightAfterEdit(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
                               uint32_t k, std::span<FaceTexel> texels, std::span<const FaceReach> reach,
                               const IndexBox& changed, std::span<const ExposedFace> before,
-                              std::span<const FaceTexel> texelsBefore, std::span<const GlowingFace> glowingBefore);
+                              std::span<const glm::vec3> sentBefore, std::span<const GlowingFace> glowingBefore);
 
 }  // namespace grotto::voxel

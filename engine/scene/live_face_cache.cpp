@@ -102,11 +102,12 @@ void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& w
     std::vector<voxel::FaceReach> reach;
     // Full light is traced here: the GPU's tracer knows the sky's light alone.
     const bool full = settings_.fullLight;
-    const std::vector<voxel::FaceTexel> texelsBefore = full ? texels_ : std::vector<voxel::FaceTexel>{};
+    const std::vector<glm::vec3> sentBefore =
+        full ? voxel::sentLight(world, faces_, texels_, settings_.texelsPerSide) : std::vector<glm::vec3>{};
     voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, stats, full, &reach);
     if (full) {
         const voxel::RelightStats relit = voxel::relightAfterEdit(table, world, faces_, settings_.texelsPerSide, texels_,
-                                                                  reach, changed, before, texelsBefore, glowing_);
+                                                                  reach, changed, before, sentBefore, glowing_);
         glowing_ = voxel::glowingFaces(world, faces_);
         if (stats) stats->relit = relit.faces;
         levelsFromTexels();
