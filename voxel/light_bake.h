@@ -33,7 +33,8 @@ struct LightBakeSettings {
     // bring its standard error under this share of it (of a hundredth of the
     // world's mean, where dimmer), up to maxExtraRays each, in all no more than
     // extraShare of the rays above; then the passes run on. 0: none. Near a lone
-    // lamp the worst texel falls from 3.1% to 1.2% for a quarter more rays.
+    // lamp the worst texel reads 1.4%, against 3.1% with 128 rays everywhere (the
+    // same rays a texel on average).
     double relativeError = 0.005;
     uint32_t maxExtraRays = 1024;
     double extraShare = 1.0 / 3.0;
