@@ -7,7 +7,19 @@ namespace grotto::app {
 
 void prepareFaceCache(RenderSession& session, const AoFlags& flags) {
     const FaceCacheSource source{.bake = flags.bake, .progressive = flags.progressive};
-    if (!bakesHere(session, source)) return readyFaceCache(session, source);
+    if (!bakesHere(session, source)) {
+        readyFaceCache(session, source);
+        // The GPU's tracer carries the sky's light alone: a command's frames wait
+        // for the world's full light, baked on its own thread, so they do not
+        // depend on how fast that ran.
+        const LiveFaceCache* cache = session.scene().faceCache();
+        if (cache && cache->lightPending()) {
+            std::fprintf(stderr, "baking the world's full light (the GPU traces the sky's light alone)...\n");
+            session.waitForLight();
+            if (const Error* error = cache->lightError()) throw *error;
+        }
+        return;
+    }
     std::fprintf(stderr, "baking the face cache (no --bake given; grotto bake writes one for every run)...\n");
     const auto start = std::chrono::steady_clock::now();
     readyFaceCache(session, source);

@@ -24,17 +24,28 @@ RenderSession::RenderSession(vk::Context& ctx, voxel::World world, const AoOptio
     setTime(0.0);
 }
 
-// --ao cache without a cache of the session's radius: baked here first, or left
-// to the GPU's tracer.
+// --ao cache without a cache of the session's radius, or without the full light
+// the lighting asks for: baked here first, or left to the GPU's tracer (and with
+// full light, a thread of its own). A full-light cache serves the sky's light too.
 void RenderSession::requireFaceCache(const AoOptions& ao) {
     const LiveFaceCache* cache = scene_->faceCache();
-    if (!faceCached(ao) || (cache && cache->settings().radius == double(ao.estimator.radius))) return;
-    if (progressiveCache_) scene_->progressiveFaceCache(worldBakeSettings(world(), ao.estimator.radius));
-    else scene_->bakeFaceCache(worldBakeSettings(world(), ao.estimator.radius));
+    const bool full = lighting().ambientFrom == voxel::AmbientSource::Full;
+    if (!faceCached(ao) ||
+        (cache && cache->settings().radius == double(ao.estimator.radius) && (cache->settings().fullLight || !full)))
+        return;
+    if (progressiveCache_) startFaceCache();
+    else bakeFaceCache();
+}
+
+void RenderSession::waitForLight() {
+    if (LiveFaceCache* cache = scene_->faceCache()) cache->waitForLight();
+    takeBakedLight();
 }
 
 bool RenderSession::faceCacheConverged() {
     if (!renderer_ || !renderer_->plan().faceCache) return true;
+    takeBakedLight();
+    if (scene_->faceCache()->lightPending()) return false;
     renderer_->finishFrames();
     const std::vector<uint32_t> header = scene_->gpu().faceCache()->lastHeader();
     // Neither the frame's tracer nor its composite (asking for the next) found one.
@@ -62,8 +73,12 @@ RenderSession::~RenderSession() {
 }
 
 void RenderSession::setLighting(const voxel::Lighting& lighting) {
-    if (renderer_) renderer_->setLighting(lighting);
-    else unmade_->lighting = lighting;
+    if (!renderer_) {
+        unmade_->lighting = lighting;
+        return;
+    }
+    renderer_->setLighting(lighting);
+    requireFaceCache(renderer_->ao());  // full light asked of a cache without it
 }
 
 void RenderSession::setAo(const AoOptions& ao) {

@@ -63,18 +63,26 @@ public:
     // --ao cache's light on the world's faces, before the first frame: a bake of
     // this world with the session's AO radius (`grotto bake`), refused with
     // grotto::Error (input) naming the file and field when it is not one; or baked
-    // here on every core with grotto bake's defaults.
+    // here on every core with grotto bake's defaults, under the session's lighting.
     void loadFaceCache(const std::filesystem::path& bake) { scene_->loadFaceCache(bake, ao().estimator.radius); }
-    void bakeFaceCache() { scene_->bakeFaceCache(worldBakeSettings(world(), ao().estimator.radius)); }
+    void bakeFaceCache() { scene_->bakeFaceCache(lightingBakeSettings(lighting(), ao().estimator.radius)); }
     // Or nothing traced yet: the renderer's GPU tracer converges the faces as they
     // come into view (engine/passes/face_cache_trace_pass.h). With `progressive`
     // set, a cache the session needs later (a new radius, cache chosen without
     // one) starts so too, instead of being baked on the CPU first.
-    void startFaceCache() { scene_->progressiveFaceCache(worldBakeSettings(world(), ao().estimator.radius)); }
+    void startFaceCache() { scene_->progressiveFaceCache(lightingBakeSettings(lighting(), ao().estimator.radius)); }
     void setProgressiveFaceCache(bool progressive) { progressiveCache_ = progressive; }
-    // Frames with no face in view left to trace: the last frame's tracer found none
+    // Frames with no face in view left to trace: the last frame's tracer found none,
+    // and the world's full light, if it was baking on its own thread, is taken
     // (true without the face cache).
     bool faceCacheConverged();
+    // With full light and no bake, the world's light is baked on a thread of its
+    // own (LiveFaceCache::progressive): taken here once it has finished, for the
+    // frames that follow. Call between frames. True when it was taken.
+    bool takeBakedLight() { return scene_->takeBakedLight(); }
+    // Waits for that bake and takes it: for frames that must not depend on how
+    // fast it ran (a viewer's script).
+    void waitForLight();
 
     // The objects at their keys' poses `seconds` into the world's time, for the
     // frames that follow (at time 0 until then), or at poses of the caller's.

@@ -182,18 +182,18 @@ TEST_F(CliFullLight, TheReferenceLightAsAPngIsItsExrAsADisplayShowsIt) {
 
 TEST_F(CliFullLight, TheViewersLightViewIsTheLightAovRenderDraws) {
     REQUIRE_XVFB();
-    // The room lit by its lamp, from a bake: the viewer's light view, as a
-    // screenshot and as the window shows it, is `render --show light` pixel for
-    // pixel, and warm where the lamp's light falls. (Without a bake the viewer's
-    // GPU tracer would give the room the sky's light alone: none.)
+    // The room lit by its lamp: the viewer's light view, as a screenshot and as
+    // the window shows it, is `render --bake --show light` pixel for pixel, and
+    // warm where the lamp's light falls. The viewer has no bake: its GPU tracer
+    // gives the room the sky's light alone (none), and the room's light is baked
+    // on a thread of its own, which a script's frames wait for.
     const fs::path world = writeRoomWorld("room.json", "full"), bake = dir_ / "room.gfc";
     const RunResult baked = runGrotto("bake " + world.string() + " -o " + bake.string());
     ASSERT_EQ(baked.exitCode, 0) << baked.err;
     const fs::path script = writeText("light.json", R"({"actions": [
         {"frame": 1, "set": {"view": "light"}}, {"frame": 3, "screenshot": "shot.png"}]})");
     const fs::path shot = dir_ / "shot.png", window = dir_ / "window.png", still = dir_ / "render.png";
-    const RunResult v = runGrotto("view " + world.string() + " --bake " + bake.string() +
-                                      " --camera in --size 64x48 --hide-panel --script " +
+    const RunResult v = runGrotto("view " + world.string() + " --camera in --size 64x48 --hide-panel --script " +
                                       script.string() + " --frames 4 --capture-window " + window.string(),
                                   kUnderXvfb);
     ASSERT_EQ(v.exitCode, 0) << v.err;

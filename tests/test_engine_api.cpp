@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
 
 namespace grotto {
@@ -196,6 +197,42 @@ TEST(EngineApi, LoadsAWorldsBakeAndRefusesAnotherWorlds) {
     engine.edit(kDig);  // the cache follows the edit
     p = renderOnce(engine);
     EXPECT_EQ(p.ao.size(), 48u * 32u);
+    EXPECT_EQ(engine.validationMessages(), 0);
+}
+
+// A game's engine never waits for a bake: with full light the world's light is
+// baked on a thread of the engine's, and the frames after it has finished have it.
+TEST(EngineApi, FullLightWithoutABakeLightsASealedRoomOnceItsThreadHasBakedIt) {
+    const glm::ivec3 size(10, 6, 8), lamp(3, 2, 4);
+    VoxelGrid grid{.size = size, .materials = std::vector<uint8_t>(size_t(size.x) * size.y * size.z, 0)};
+    for (int z = 0; z < size.z; ++z)
+        for (int y = 0; y < size.y; ++y)
+            for (int x = 0; x < size.x; ++x) {
+                const bool wall = x == 0 || y == 0 || z == 0 || x == size.x - 1 || y == size.y - 1 || z == size.z - 1;
+                grid.materials[(size_t(z) * size.y + y) * size.x + x] = glm::ivec3(x, y, z) == lamp ? 2 : wall ? 1 : 0;
+            }
+    Material stone, glow;
+    stone.albedo = glm::vec3(0.5f);
+    glow.emissionColor = glm::vec3(1.0f, 0.8f, 0.6f), glow.emissionIntensity = 4.0f;
+    Engine engine({.width = 48, .height = 32, .validation = true});
+    engine.setWorld(grid, {stone, glow});
+    Lighting lighting = engine.lighting();
+    lighting.ambientFrom = AmbientSource::Full;
+    engine.setLighting(lighting);
+    engine.setAo({.method = "cache"});
+    engine.setCamera({.position = {8.5, 4.5, 1.5}, .target = {3.0, 1.0, 5.0}, .fovDegrees = 80});
+    engine.render();
+    engine.waitForLight();
+    EXPECT_EQ(engine.lightBaked(), 1.0);
+    const Pixels p = renderOnce(engine);
+    size_t surfaces = 0, dark = 0;
+    for (size_t i = 0; i < p.depth.size(); ++i) {
+        if (!std::isfinite(p.depth[i])) continue;
+        ++surfaces;
+        dark += p.rgba[4 * i] + p.rgba[4 * i + 1] + p.rgba[4 * i + 2] < 1e-3f;
+    }
+    EXPECT_EQ(surfaces, p.depth.size()) << "the camera is inside";
+    EXPECT_EQ(dark, 0u) << "every wall has the lamp's light, straight or bounced";
     EXPECT_EQ(engine.validationMessages(), 0);
 }
 

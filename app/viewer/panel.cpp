@@ -156,6 +156,8 @@ voxel::json drawPanel(PanelState& s) {
         ImGui::Text("clusters hidden %u of %u; chunks at levels %u %u %u %u", c.clustersHidden, c.clustersInView,
                     c.chunksAtLevel[0], c.chunksAtLevel[1], c.chunksAtLevel[2], c.chunksAtLevel[3]);
         ImGui::Text("solid voxels %llu", (unsigned long long)s.activeVoxels);
+        if (s.lightBaked < 1.0)
+            ImGui::Text("full light baking: %.0f%% (the sky's light until then)", 100.0 * s.lightBaked);
     }
     if (!s.message.empty()) ImGui::TextWrapped("%s", s.message.c_str());
     ImGui::PopItemWidth();

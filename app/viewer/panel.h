@@ -33,6 +33,7 @@ struct PanelState {
     std::deque<float> frameMs;               // recent frame times, oldest first
     uint64_t quads = 0, activeVoxels = 0;
     double speed = 0.0;                      // fly speed, world units per second
+    double lightBaked = 1.0;                 // the world's full light baking on its own thread: 0 to 1
     std::string message;                     // the last error or saved file, shown at the bottom
     // Editing: what a left click does, the brush and the material placed or painted.
     std::string editMode = "none";           // none, dig, place, paint

@@ -90,6 +90,14 @@ void Viewer::run() {
             ++frame_;
             continue;
         }
+        // The world's full light, baked on its own thread (no --bake): a script's
+        // frames wait for it, so that they do not depend on how fast it ran.
+        if (script_) session_->waitForLight();
+        else session_->takeBakedLight();
+        const LiveFaceCache* cache = session_->scene().faceCache();
+        panel_.lightBaked = cache ? cache->lightBaked() : 1.0;
+        if (cache && cache->lightError() && panel_.message.empty())
+            panel_.message = std::string("full light: ") + cache->lightError()->what();
         const auto beforeRender = Clock::now();
         panel_.stats = renderer().render(view.camera, view.index);
         const auto afterRender = Clock::now();

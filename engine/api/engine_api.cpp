@@ -258,6 +258,15 @@ void Engine::loadBake(const std::filesystem::path& file) {
     impl_->session->loadFaceCache(file);
 }
 
+double Engine::lightBaked() const {
+    const LiveFaceCache* cache = impl_->session ? impl_->session->scene().faceCache() : nullptr;
+    return cache ? cache->lightBaked() : 1.0;
+}
+
+void Engine::waitForLight() {
+    if (impl_->session) impl_->session->waitForLight();
+}
+
 void Engine::resize(uint32_t width, uint32_t height) {
     requireSize(width, height);
     impl_->width = width;
@@ -316,6 +325,7 @@ RenderedFrame Engine::renderPath(double seconds) {
 
 RenderedFrame Engine::Impl::render(const Camera& camera, const FrameSync* sync) {
     Renderer& renderer = session->renderer();
+    session->takeBakedLight();  // the world's full light, once its thread has baked it
     renderer.setDisplayImage(true);  // what the game shows
     renderer.setNormalsImage(true);  // what it composites with
     // Consecutive indices: the history accumulates.

@@ -5,11 +5,11 @@
 #include "voxel/light_bake.h"
 
 #include <algorithm>
+#include <utility>
 
 namespace grotto {
 
-voxel::FaceBakeSettings worldBakeSettings(const voxel::World& world, double radius, uint32_t texelsPerSide) {
-    const voxel::Lighting& light = world.desc().lighting;
+voxel::FaceBakeSettings lightingBakeSettings(const voxel::Lighting& light, double radius, uint32_t texelsPerSide) {
     const double sky = light.ambientIntensity;
     return {.radius = radius, .texelsPerSide = texelsPerSide, .sunDirection = glm::dvec3(light.sunDirection),
             .sunAngleDegrees = double(light.sunAngle), .fullLight = light.ambientFrom == voxel::AmbientSource::Full,
@@ -69,7 +69,38 @@ LiveFaceCache LiveFaceCache::progressive(GpuScene& scene, const voxel::BrickTabl
                                          const voxel::FaceBakeSettings& settings) {
     std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
     std::vector<voxel::FaceTexel> texels(faces.size() * settings.texelsPerSide * settings.texelsPerSide);
-    return LiveFaceCache(scene, world, std::move(faces), std::move(texels), settings);
+    LiveFaceCache cache(scene, world, std::move(faces), std::move(texels), settings);
+    if (settings.fullLight) cache.lightBake_ = std::make_unique<voxel::LightBakeThread>(world, settings);
+    return cache;
+}
+
+bool LiveFaceCache::takeBakedLight(const voxel::BrickTable& table, const voxel::World& world) {
+    if (!lightBake_ || !lightBake_->finished()) return false;
+    voxel::BakedLight baked;
+    try {
+        baked = lightBake_->take();
+    } catch (const Error& e) {
+        lightError_ = e;
+        lightBake_.reset();
+        return false;
+    }
+    lightBake_.reset();
+    faces_ = std::move(baked.faces);
+    texels_ = std::move(baked.texels);
+    glowing_ = std::move(baked.glowing);
+    if (const std::optional<IndexBox> changed = std::exchange(editedSinceBake_, std::nullopt))
+        editWithFullLight(table, world, *changed, nullptr);
+    else {
+        levelsFromTexels();
+        upload();
+    }
+    return true;
+}
+
+double LiveFaceCache::lightBaked() const { return lightBake_ ? std::min(lightBake_->done(), 0.999) : 1.0; }  // 1 once taken
+
+void LiveFaceCache::waitForLight() {
+    if (lightBake_) lightBake_->wait();
 }
 
 void LiveFaceCache::sync() {
@@ -98,22 +129,15 @@ size_t LiveFaceCache::unconverged() const {
 void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed,
                            voxel::CacheEditStats* stats) {
     sync();  // what the GPU traced since the last edit is carried over with the rest
+    // Full light is traced here: the GPU's tracer knows the sky's light alone.
+    // While the world's light is still baking, the faces hold the sky's light
+    // alone; the bake is brought up to this edit when it is taken.
+    if (settings_.fullLight && !lightBake_) return editWithFullLight(table, world, changed, stats);
+    if (lightBake_)
+        editedSinceBake_ = editedSinceBake_ ? editedSinceBake_->merged(changed) : changed;
     const std::vector<voxel::ExposedFace> before = faces_;
     std::vector<voxel::FaceReach> reach;
-    // Full light is traced here: the GPU's tracer knows the sky's light alone.
-    const bool full = settings_.fullLight;
-    const std::vector<glm::vec3> sentBefore =
-        full ? voxel::sentLight(world, faces_, texels_, settings_.texelsPerSide) : std::vector<glm::vec3>{};
-    voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, stats, full, &reach);
-    if (full) {
-        const voxel::RelightStats relit = voxel::relightAfterEdit(table, world, faces_, settings_.texelsPerSide, texels_,
-                                                                  reach, changed, before, sentBefore, glowing_);
-        glowing_ = voxel::glowingFaces(world, faces_);
-        if (stats) stats->relit = relit.faces;
-        levelsFromTexels();
-        upload();
-        return;
-    }
+    voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, stats, false, &reach);
     std::vector<uint8_t> levels(faces_.size(), 0);
     for (size_t f = 0; f < faces_.size(); ++f) {
         if (reach[f] == voxel::FaceReach::Stale) continue;  // traced again, coarse first, in view from the next frame
@@ -123,6 +147,20 @@ void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& w
         levels[f] = reach[f] == voxel::FaceReach::Untouched ? old : std::min<uint8_t>(old, 2);
     }
     levels_ = std::move(levels);
+    upload();
+}
+
+void LiveFaceCache::editWithFullLight(const voxel::BrickTable& table, const voxel::World& world,
+                                      const IndexBox& changed, voxel::CacheEditStats* stats) {
+    const std::vector<voxel::ExposedFace> before = faces_;
+    std::vector<voxel::FaceReach> reach;
+    const std::vector<glm::vec3> sentBefore = voxel::sentLight(world, faces_, texels_, settings_.texelsPerSide);
+    voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, stats, true, &reach);
+    const voxel::RelightStats relit = voxel::relightAfterEdit(table, world, faces_, settings_.texelsPerSide, texels_,
+                                                              reach, changed, before, sentBefore, glowing_);
+    glowing_ = voxel::glowingFaces(world, faces_);
+    if (stats) stats->relit = relit.faces;
+    levelsFromTexels();
     upload();
 }
 

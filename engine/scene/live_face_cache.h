@@ -2,18 +2,23 @@
 // The face cache of a live world (--ao cache): every exposed face's texels on the
 // host, laid out and uploaded into the scene's GpuScene::faceCache, from a bake
 // loaded from disk, made here on every core, or left empty for the GPU's tracer to
-// converge in view (engine/passes/face_cache_trace_pass.h). After an edit the
+// converge in view (engine/passes/face_cache_trace_pass.h; with full light, and
+// the world's light baked on a thread meanwhile). After an edit the
 // texels it reaches are left to that tracer too; with full light they are traced
 // here at once, and every face whose light the edit moved is lit again
 // (voxel/light_edit.h), before the next frame.
 #include "engine/scene/scene.h"
+#include "grotto/error.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
 #include "voxel/face_cache_edit.h"
 #include "voxel/face_cache_file.h"
+#include "voxel/light_bake_thread.h"
 #include "voxel/light_edit.h"
 
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -34,7 +39,9 @@ public:
     // Baked here on every core, as `grotto bake` with `settings` would.
     static LiveFaceCache bake(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
                               const voxel::FaceBakeSettings& settings);
-    // Nothing traced yet: the GPU's tracer converges the faces as they come into view.
+    // Nothing traced yet: the GPU's tracer converges the faces as they come into
+    // view. With full light, which that tracer does not carry (it traces the sky's
+    // light alone), the world's light is also baked on a thread of its own (below).
     static LiveFaceCache progressive(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
                                      const voxel::FaceBakeSettings& settings);
 
@@ -45,6 +52,20 @@ public:
     // light they are traced here, and the faces whose light moved lit again.
     void edited(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed,
                 voxel::CacheEditStats* stats = nullptr);
+
+    // The full light baked on its own thread, taken between frames: the faces as
+    // that bake left them, then brought up to the edits made since, as one edit
+    // of the box holding them all. False while it runs (and without one).
+    // `table` and `world` as they are now.
+    bool takeBakedLight(const voxel::BrickTable& table, const voxel::World& world);
+    // Is that bake running, or finished and not taken yet? Its progress, 0 to 1;
+    // 1 when there is none.
+    bool lightPending() const { return lightBake_ != nullptr; }
+    double lightBaked() const;
+    void waitForLight();  // until that bake has finished (takeBakedLight then takes it)
+    // What stopped that bake (the world too large for its memory budget, say), or
+    // null: the faces keep the sky's light alone then.
+    const Error* lightError() const { return lightError_ ? &*lightError_ : nullptr; }
 
     const voxel::FaceBakeSettings& settings() const { return settings_; }
     std::span<const voxel::ExposedFace> faces() const { return faces_; }
@@ -61,6 +82,9 @@ public:
 private:
     void upload();  // replaces the scene's GPU copy
     void levelsFromTexels();  // each face's level from its texels' rays
+    // An edit with full light: traced here, and the faces whose light moved lit again.
+    void editWithFullLight(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed,
+                           voxel::CacheEditStats* stats);
 
     GpuScene& scene_;
     std::vector<voxel::ExposedFace> faces_;
@@ -70,11 +94,20 @@ private:
     std::vector<voxel::GlowingFace> glowing_;  // with full light: the faces that glow, as of the last edit
     voxel::FaceBakeSettings settings_;
     double voxelSize_;
+    std::unique_ptr<voxel::LightBakeThread> lightBake_;  // progressive with full light, until taken
+    std::optional<IndexBox> editedSinceBake_;            // what edits changed since it started
+    std::optional<Error> lightError_;
 };
 
-// The settings a bake of `world` with AO radius `radius` (world units) and k
-// texels a side traces with: `grotto bake`'s defaults otherwise, the world's sun.
-voxel::FaceBakeSettings worldBakeSettings(const voxel::World& world, double radius,
-                                          uint32_t texelsPerSide = voxel::kDefaultBakeTexels);
+// The settings a bake with AO radius `radius` (world units) and k texels a side
+// traces with under `lighting`: `grotto bake`'s defaults otherwise, its sun, its
+// sky and whether it asks for full light.
+voxel::FaceBakeSettings lightingBakeSettings(const voxel::Lighting& lighting, double radius,
+                                             uint32_t texelsPerSide = voxel::kDefaultBakeTexels);
+// The same under the world's own lighting: what `grotto bake` traces.
+inline voxel::FaceBakeSettings worldBakeSettings(const voxel::World& world, double radius,
+                                                 uint32_t texelsPerSide = voxel::kDefaultBakeTexels) {
+    return lightingBakeSettings(world.desc().lighting, radius, texelsPerSide);
+}
 
 }  // namespace grotto

@@ -42,6 +42,9 @@ public:
     void bakeFaceCache(const voxel::FaceBakeSettings& settings);
     // Nothing traced yet: the renderer's tracer converges the faces in view.
     void progressiveFaceCache(const voxel::FaceBakeSettings& settings);
+    // The cache's full light baked on its own thread, once it has finished
+    // (LiveFaceCache::takeBakedLight): between frames. True when it was taken.
+    bool takeBakedLight() { return faceCache_ && faceCache_->takeBakedLight(bricks(), world_); }
     const LiveFaceCache* faceCache() const { return faceCache_ ? &*faceCache_ : nullptr; }
     LiveFaceCache* faceCache() { return faceCache_ ? &*faceCache_ : nullptr; }
 

@@ -168,6 +168,13 @@ public:
     // With "cache" the AO lives on the faces: readPixels() has it per pixel, and
     // RenderedFrame::ao is a 1x1 placeholder.
     void loadBake(const std::filesystem::path& file);
+    // With lighting.ambient.from "full" and no bake loaded, the GPU traces the
+    // sky's light alone: the world's full light (lamps, bounces) is baked on a
+    // thread of the engine's meanwhile, and the first render() after it has
+    // finished takes it. How far it is, 0 to 1 (1 when there is none to wait for),
+    // and a wait for it, for frames that must have it (a test, a capture).
+    double lightBaked() const;
+    void waitForLight();
     AoDesc ao() const;
     void resize(uint32_t width, uint32_t height);
     void cut();  // a camera cut: the next frame starts without temporal history
