@@ -240,7 +240,7 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
             passes_.get<ObjectLightPass>().record(cmd, targets_.gbuffer(), s.objectUniforms, image(TargetId::ObjectLight),
                                      image({TargetId::ObjectLightHistory, Copy::Previous}),
                                      image(TargetId::ObjectLightHistory), s.traceConstants,
-                                     *scene_.occupancy(), objectGrids_.buffer);
+                                     *scene_.occupancy(), objectGrids_.buffer, scene_.palette, *scene_.faceCache());
         });
     if (plan_.chain) recordAo(cmd);
     pass(cmd, CompositePass::declare(aoOutput()), [&] {

@@ -71,6 +71,16 @@ void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
     if (objects_)
         setObjectTraces(t, objects_->grids, objectGrids_.first, poses_, lastCamera_ ? lastPoses_ : poses_, scene_.voxelSize,
                         scene_.worldOrigin);
+    if (plan_.objectLight) {
+        // Objects over the face cache's full light: the light world faces send
+        // (their texels and materials), the sky's and the sun's, in its units.
+        const GpuFaceCache& cache = *scene_.faceCache();
+        const bool full = lighting_.ambientFrom == voxel::AmbientSource::Full && cache.sky().fullLight;
+        t.faceCache = glm::uvec4(cache.table(), cache.texelsPerSide(), cache.materialsFirst(), full ? 1u : 0u);
+        t.skyZenith = glm::vec4(lighting_.skyZenith * lighting_.ambientIntensity, 0.0f);
+        t.skyHorizon = glm::vec4(lighting_.skyHorizon * lighting_.ambientIntensity, 0.0f);
+        t.sunRadiance = glm::vec4(lighting_.sunColor * lighting_.sunIntensity, 0.0f);
+    }
     t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
     t.frameIndex = frameIndex;
     if (plan_.surfaceHistory) {

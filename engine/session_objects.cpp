@@ -27,9 +27,11 @@ void RenderSession::addObject(voxel::World world, voxel::ObjectDesc desc) {
         throw Error("addObject", "the world already holds " + std::to_string(objectWorlds_.size()) + " objects",
                     "at most " + std::to_string(GROTTO_MAX_OBJECTS) + ": remove one first");
     if (desc.keys.empty()) desc.keys.emplace_back();
+    ObjectGrid grid = objectGrid(world);
+    requireGlowFits(objects_->grids, &grid);  // before anything changes
     objects_->scenes.push_back(uploadMeshWithinBudget(ctx_, world, world.desc()));
     objects_->descs.push_back(desc);
-    objects_->grids.push_back(objectGrid(world));
+    objects_->grids.push_back(std::move(grid));
     ++objects_->gridsVersion;
     objectWorlds_.push_back(std::move(world));
     const voxel::ObjectPose pose = voxel::objectPose(desc, 0.0);

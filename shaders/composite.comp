@@ -184,7 +184,11 @@ vec3 shadeCached(ivec2 q, uint surface) {
     if (frame.ambient.w >= 1.5) {
         // Full light: the light every bounce brought, occlusion and bounces
         // already in it, so neither AO nor the multi-bounce fit applies.
-        vec3 full = seen && surfaceObject(surface) == 0u ? faceCacheFullLight(cachedTapsAt(q, surfaceFace(surface))) : open;
+        // With objects (object_light.comp): the light they take from a world face
+        // or give it by glowing, added; an object's face, its own light outright.
+        vec3 full = open;
+        if (surfaceObject(surface) != 0u) full = objectLight ? objectPart.rgb : open;
+        else if (seen) full = max(faceCacheFullLight(cachedTapsAt(q, surfaceFace(surface))) + objectPart.rgb, vec3(0.0));
         float cosSun = max(dot(normal, frame.sunDirection.xyz), 0.0);
         return materialOf(surface).rgb * (frame.sunRadiance.rgb * (cosSun * sunReach) + mix(open, full, frame.aoStrength.x)) +
                emissionOf(surface);

@@ -36,17 +36,22 @@ void main() {
     uint surface = texelFetch(surfaceTex, q, 0).r;
     vec4 c = vec4(1.0);
     bool found = false;
-    float objectPart = objectLight && surface != 0u ? imageLoad(objectLightImage, q).x : 0.0;
+    // With full light the object light pass gives light (rgb), not AO and sky weights.
+    bool fullLight = frame.ambient.w >= 1.5;
+    vec4 objectPart = objectLight && surface != 0u ? imageLoad(objectLightImage, q) : vec4(0.0);
     vec3 light = vec3(0.0);
     if (surface != 0u && surfaceObject(surface) == 0u) {
         c = cachedLightAt(q, surfaceFace(surface), found);
-        if (found && frame.ambient.w >= 1.5) light = faceCacheFullLight(cachedTapsAt(q, surfaceFace(surface)));
+        if (found && fullLight)
+            light = max(faceCacheFullLight(cachedTapsAt(q, surfaceFace(surface))) + objectPart.rgb, vec3(0.0));
         else if (found && frame.ambient.w >= 0.5)
             light = frame.ambient.rgb * (c.z * frame.skyHorizon.rgb + c.w * frame.skyZenith.rgb);
-    }
+    } else if (surface != 0u && objectLight && fullLight)
+        light = objectPart.rgb;
     imageStore(lightOut, q, vec4(light, 1.0));
-    float ao = found ? max(c.x - objectPart, 0.0) : c.x;
-    if (objectLight && surface != 0u && surfaceObject(surface) != 0u) ao = objectPart;
+    float aoTaken = fullLight ? 0.0 : objectPart.x;
+    float ao = found ? max(c.x - aoTaken, 0.0) : c.x;
+    if (objectLight && !fullLight && surface != 0u && surfaceObject(surface) != 0u) ao = objectPart.x;
     imageStore(aoOut, q, vec4(ao));
     if (cachedSun && (found || !tracedShadows) && all(lessThan(q, imageSize(sunOut))))
         imageStore(sunOut, q, vec4(found ? c.y * (tracedShadows ? imageLoad(sunOut, q).r : 1.0) : 1.0));

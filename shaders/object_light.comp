@@ -18,6 +18,24 @@
 // starts afresh; one in view of none, or only of objects too far and small to
 // change its light by 1/512, costs a test per object and writes 0.
 // Writes RGBA16F: AO (taken, or the object's own), horizon and zenith weights.
+//
+// With the cache's full light (trace.faceCache.w) it writes light instead (rgb,
+// irradiance over pi, as the cache's texels hold it), the same rays telling:
+//  - On a world surface: what objects change of its light. A ray that meets an
+//    object before any world face takes away what came along it (the sky's
+//    light, or the light the world face beyond sends: its material's albedo
+//    times its texels' light and sun, and its glow); the composite adds the
+//    result, negative there, to the cache's light.
+//  - On an object's face: its light outright: the sky's where a ray leaves, the
+//    light a world face sends where one meets it (the cache's, as above); light
+//    other objects reflect is left out (they are small).
+//  - On both: the light of objects' glowing faces (trace.glow), sampled, not
+//    waited for: each face's light in closed form (Lambert's polygon formula),
+//    and one shadow ray a frame drawn among them by it, through the world and the
+//    objects, so an unblocked lantern is exact and only its shadows are noisy
+//    (and averaged over the frames). Rays that meet a glowing object take
+//    nothing from its glow, so that light is not counted twice.
+#include "shared/frame.h"
 #include "shared/noise.h"
 #include "shared/objects.h"
 #include "shared/quad.h"
@@ -32,10 +50,15 @@ layout(set = 0, binding = 3, rgba16f) uniform writeonly image2D lightOut;
 // Light (halves: AO and horizon, zenith and frames), view depth (float bits), surface key.
 layout(set = 0, binding = 4, rgba32ui) uniform readonly uimage2D historyIn;
 layout(set = 0, binding = 5, rgba32ui) uniform writeonly uimage2D historyOut;
-#define GROTTO_TRACE_BINDING 6
+layout(set = 0, binding = 6, std140) uniform Palette { vec4 palette[GROTTO_PALETTE_VEC4S]; };
+#define GROTTO_TRACE_BINDING 7
 #define GROTTO_TRACE_OBJECTS
 #include "trace.glsl"
 #include "surface_point.glsl"
+uint faceCacheTable() { return trace.faceCache.x; }
+uint faceCacheK() { return trace.faceCache.y; }
+#define GROTTO_FACE_CACHE_BINDING 12
+#include "face_cache.glsl"
 
 ivec2 historySize() { return imageSize(historyIn); }
 vec4 historyTap(ivec2 t, out float depth, out uint key) {
@@ -57,6 +80,78 @@ vec2 skyWeights(vec3 d) {
     if (d.y < 0.0) return vec2(0.8, 0.0);
     float s = sqrt(min(d.y, 1.0));
     return vec2(1.0 - s, s);
+}
+
+vec3 skyRadiance(vec3 d) {
+    vec2 w = skyWeights(d);
+    return w.x * trace.skyHorizon.rgb + w.y * trace.skyZenith.rgb;
+}
+
+float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
+
+// The light a world face sends at point p (voxels from the camera's voxel) where a
+// ray met it: its material's albedo times the cache's light and sun there, and its glow.
+vec3 worldFaceLight(vec3 p, VoxelRayHit hit) {
+    if (hit.face < 0 || trace.faceCache.z == 0u) return vec3(0.0);
+    uint dir = uint(hit.face);
+    int face = faceCacheFace(hit.voxel, dir);
+    if (face < 0) return vec3(0.0);
+    uint material = (faceTexels[trace.faceCache.z + uint(face) / 4u] >> (8u * (uint(face) & 3u))) & 0xFFu;
+    if (material == 0u) return vec3(0.0);
+    FaceCacheTaps taps = faceCacheTaps(p, trace.cameraCell.xyz, dir);
+    bool found;
+    vec2 sunRange;
+    float sun = faceCacheBlend(taps, found, sunRange).y;
+    float cosSun = max(dot(faceAxisNormal(dir), trace.sunDirection.xyz), 0.0);
+    vec3 albedo = palette[2u * (material - 1u)].rgb, emission = palette[2u * (material - 1u) + 1u].rgb;
+    return albedo * (faceCacheFullLight(taps) + trace.sunRadiance.rgb * (cosSun * sun)) + emission;
+}
+
+// The share of the hemisphere about n at p a glowing face covers, cosine-weighted
+// (its form factor): Lambert's formula over the face clipped to the horizon.
+float glowFormFactor(vec3 p, vec3 n, GlowFace g) {
+    vec3 c[4] = vec3[4](g.corner.xyz, g.corner.xyz + g.edgeU.xyz, g.corner.xyz + g.edgeU.xyz + g.edgeV.xyz,
+                        g.corner.xyz + g.edgeV.xyz);
+    if (dot(p - c[0], cross(g.edgeU.xyz, g.edgeV.xyz)) <= 0.0) return 0.0;  // behind it
+    vec3 v[5];
+    int count = 0;
+    for (int i = 0; i < 4; ++i) {
+        vec3 a = c[i] - p, b = c[(i + 1) & 3] - p;
+        float da = dot(a, n), db = dot(b, n);
+        if (da >= 0.0) v[count++] = a;
+        if ((da >= 0.0) != (db >= 0.0)) v[count++] = a + (b - a) * (da / (da - db));
+    }
+    if (count < 3) return 0.0;
+    float sum = 0.0;
+    for (int i = 0; i < count; ++i) {
+        vec3 a = v[i], b = v[(i + 1) % count], x = cross(a, b);
+        float lx = length(x);
+        if (lx > 0.0) sum += atan(lx, dot(a, b)) * dot(n, x) / lx;
+    }
+    return clamp(abs(sum) / 6.28318530717958648, 0.0, 1.0);
+}
+
+// The glowing faces' light at p (normal n): in closed form, with one shadow ray
+// toward a point (u) of a face drawn (pick) by its share of that light.
+vec3 glowLight(VoxelRayStart start, vec3 p, vec3 n, bool openStart, vec2 u, float pick) {
+    uint count = min(uint(trace.objectCount.y), GROTTO_MAX_GLOW_FACES);
+    float total = 0.0;
+    for (uint i = 0u; i < count; ++i) total += glowFormFactor(p, n, trace.glow[i]) * luminance(trace.glow[i].radiance.rgb);
+    if (total <= 0.0) return vec3(0.0);
+    float target = pick * total, below = 0.0;
+    uint at = 0u;
+    for (; at + 1u < count; ++at) {
+        float share = glowFormFactor(p, n, trace.glow[at]) * luminance(trace.glow[at].radiance.rgb);
+        if (below + share > target && share > 0.0) break;
+        below += share;
+    }
+    GlowFace g = trace.glow[at];
+    vec3 toLight = g.corner.xyz + u.x * g.edgeU.xyz + u.y * g.edgeV.xyz - p;
+    float distance = length(toLight);
+    vec3 d = toLight / distance;
+    // Short of the face itself: its own voxel is behind it.
+    if (traceHit(start, d, max(distance - 1e-3, 0.0), openStart).t >= 0.0) return vec3(0.0);
+    return g.radiance.rgb * (total / luminance(g.radiance.rgb));
 }
 
 bool rowsDiffer(vec4 a[3], vec4 b[3]) { return a[0] != b[0] || a[1] != b[1] || a[2] != b[2]; }
@@ -87,7 +182,8 @@ void main() {
     vec3 position = surfaceViewPosition(q);
     VoxelRayStart start = surfaceRayStart(position, surface, normal);
     vec3 p = vec3(start.voxel - trace.cameraCell.xyz) + start.fraction;
-    bool seen = !world, moved = false;
+    bool full = trace.faceCache.w != 0u;
+    bool seen = !world || (full && trace.objectCount.y > 0), moved = false;
     for (int k = 0; k < trace.objectCount.x; ++k) {
         vec3 size = vec3(trace.objects[k].size.xyz);
         vec4 now = objectGridSphere(trace.objects[k].fromWorld[0], trace.objects[k].fromWorld[1],
@@ -108,7 +204,17 @@ void main() {
     vec3 light = vec3(0.0);  // AO, horizon and zenith weights: taken on the world, outright on objects
     for (uint i = 0u; i < specRays; ++i) {
         vec3 d = traceCosineRay(normal, noise, i);
-        if (world) {
+        if (full && world) {  // the light objects take from the world's surface
+            float object = traceObjects(start, d, kVoxelRayNever);
+            if (object < 0.0) continue;
+            VoxelRayHit wall = traceWorldHit(start, d, object, false);
+            if (wall.t >= 0.0) continue;  // a world face before the object: it changes nothing along d
+            wall = traceWorldHit(start, d, kVoxelRayNever, false);
+            light -= wall.t < 0.0 ? skyRadiance(d) : worldFaceLight(p + d * wall.t, wall);
+        } else if (full) {  // an object's own light
+            VoxelRayHit hit = traceHit(start, d, kVoxelRayNever, true);
+            light += hit.t < 0.0 ? skyRadiance(d) : worldFaceLight(p + d * hit.t, hit);
+        } else if (world) {
             float object = traceObjects(start, d, kVoxelRayNever);
             if (object < 0.0) continue;
             float wall = traceWorldHit(start, d, kVoxelRayNever, false).t;
@@ -121,6 +227,12 @@ void main() {
         }
     }
     light /= float(specRays);
+    if (full && trace.objectCount.y > 0) {
+        // Numbers of their own for the face drawn and the point on it.
+        vec2 u = gtaoNoise(uvec2(q), trace.frameIndex * 3u + 1u);
+        float pick = gtaoNoise(uvec2(q) + uvec2(17u, 29u), trace.frameIndex * 3u + 2u).x;
+        light += glowLight(start, p, normal, !world, u, pick);
+    }
     float frames = 1.0;
     bool found = false;
     vec4 h = (trace.shadowReset & 1u) != 0u || moved ? vec4(0.0) : surfaceHistory(q, position, normal, key, found);

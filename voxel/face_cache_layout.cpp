@@ -1,6 +1,7 @@
 #include "voxel/face_cache_layout.h"
 
 #include "voxel/face_brick_table.h"
+#include "voxel/world.h"
 
 #define GROTTO_FACE_CACHE_LAYOUT_ONLY
 #include "shaders/shared/face_cache.h"
@@ -118,6 +119,13 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
     out.records.insert(out.records.begin(), table.seeds.begin(), table.seeds.end());  // the seeds first
     out.table = table.shape;
     return out;
+}
+
+void appendFaceMaterials(FaceCacheArrays& a, std::span<const ExposedFace> faces, const World& world) {
+    a.materialsFirst = uint32_t(a.texels.size());
+    a.texels.resize(a.texels.size() + (a.faceOrder.size() + 3) / 4, 0u);
+    for (size_t g = 0; g < a.faceOrder.size(); ++g)
+        a.texels[a.materialsFirst + g / 4] |= uint32_t(world.material(faces[a.faceOrder[g]].cell) & 0xFF) << (8 * (g % 4));
 }
 
 }  // namespace grotto::voxel

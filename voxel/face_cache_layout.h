@@ -22,6 +22,10 @@ struct FaceCacheArrays {
     uint32_t texelsPerSide = 0;
     uint32_t faceCount = 0;
     uint32_t table = 0;              // the table's shape (FaceBrickTable::shape)
+    // Where `texels` goes on past the texels with each face's material id, a byte
+    // a face in the GPU's order, four a word (appendFaceMaterials): what a ray that
+    // meets a face needs to know the light the face sends. 0: not there.
+    uint32_t materialsFirst = 0;
     // On the GPU, with each face's level (2 bits, shaders/shared/face_trace.h).
     size_t bytes() const {
         return bricks.size() * 16 + records.size() * 4 + texels.size() * 4 + (size_t(faceCount) + 15) / 16 * 4;
@@ -47,6 +51,9 @@ glm::uvec2 packedTexel(std::span<const uint32_t> words, size_t texel);
 // A packed texel (packFaceTexel's bits) as sums of `rays` and `sunRays` rays: what
 // the GPU's tracer left, for the host's copy.
 FaceTexel unpackFaceTexel(glm::uvec2 bits, uint32_t rays, uint32_t sunRays, bool fullLight = false);
+
+// Appends each face's material id in `world` to a.texels (a.materialsFirst).
+void appendFaceMaterials(FaceCacheArrays& a, std::span<const ExposedFace> faces, const World& world);
 
 // What layFaceCache's arrays for `faces` at k texels a side take, without laying
 // them out (for `info` and `bench`).

@@ -7,10 +7,11 @@ namespace grotto {
 ObjectLightPass::ObjectLightPass(vk::Context& ctx)
     : ctx_(ctx),
       pass_(ctx, "object_light.comp",
-            withTraceBindings({VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                               VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                               VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                              true),
+            GpuFaceCache::withBindings(withTraceBindings(
+                {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                 VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+                 VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                true)),
             0, {kRays}) {}
 
 PassDecl ObjectLightPass::declare() {
@@ -25,14 +26,15 @@ PassDecl ObjectLightPass::declare() {
 void ObjectLightPass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Buffer& objectUniforms,
                              const vk::Image& light, const vk::Image& history, const vk::Image& nextHistory,
                              const vk::Buffer& traceConstants, const GpuOccupancy& occupancy,
-                             const vk::Buffer& objectGrids) {
+                             const vk::Buffer& objectGrids, const vk::Buffer& palette, const GpuFaceCache& faceCache) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
     pass_.dispatch(cmd,
-                   withTraceBindings({vk::sampledImage(ctx_.pointSampler, g.depth.view, ro),
-                                      vk::sampledImage(ctx_.pointSampler, g.surface.view, ro),
-                                      vk::uniformBuffer(objectUniforms.buffer), vk::storageImage(light.view),
-                                      vk::storageImage(history.view), vk::storageImage(nextHistory.view)},
-                                     traceConstants, occupancy, &objectGrids),
+                   faceCache.withBindings(withTraceBindings(
+                       {vk::sampledImage(ctx_.pointSampler, g.depth.view, ro),
+                        vk::sampledImage(ctx_.pointSampler, g.surface.view, ro), vk::uniformBuffer(objectUniforms.buffer),
+                        vk::storageImage(light.view), vk::storageImage(history.view), vk::storageImage(nextHistory.view),
+                        vk::uniformBuffer(palette.buffer)},
+                       traceConstants, occupancy, &objectGrids)),
                    light.extent, GROTTO_TRACE_GROUP);
 }
 

@@ -3,12 +3,15 @@
 // objects: at full resolution, only where an object is in view of a surface, the
 // AO and sky light objects take from world surfaces, and objects' own. Reads: the
 // G-buffer's depth and surface ids, the objects' normal tables, the trace constants,
-// the occupancy and the objects' grids, and the last frame's RGBA32UI history.
-// Writes: RGBA16F light (AO, horizon and zenith sky weights) and the next history.
+// the occupancy and the objects' grids, the palette and the face cache (with full
+// light: the light world faces send), and the last frame's RGBA32UI history.
+// Writes: RGBA16F light (AO, horizon and zenith sky weights; with full light, rgb
+// light) and the next history.
 #include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
 #include "engine/passes/gbuffer_pass.h"
+#include "engine/scene/face_cache_gpu.h"
 #include "engine/scene/occupancy.h"
 
 namespace grotto {
@@ -22,7 +25,8 @@ public:
     static PassDecl declare();
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Buffer& objectUniforms,
                 const vk::Image& light, const vk::Image& history, const vk::Image& nextHistory,
-                const vk::Buffer& traceConstants, const GpuOccupancy& occupancy, const vk::Buffer& objectGrids);
+                const vk::Buffer& traceConstants, const GpuOccupancy& occupancy, const vk::Buffer& objectGrids,
+                const vk::Buffer& palette, const GpuFaceCache& faceCache);
 
 private:
     vk::Context& ctx_;

@@ -46,6 +46,7 @@ public:
     uint32_t table() const { return table_; }
     uint32_t texelsPerSide() const { return texelsPerSide_; }
     uint32_t faceCount() const { return faceCount_; }
+    uint32_t materialsFirst() const { return materialsFirst_; }  // FaceCacheArrays::materialsFirst
     const Sun& sun() const { return sun_; }
     const FaceCacheSky& sky() const { return sky_; }
     const FaceCacheRays& rays() const { return rays_; }
@@ -82,7 +83,7 @@ public:
 private:
     vk::Context& ctx_;
     vk::Buffer bricks_, records_, texels_, levels_, requested_, queue_, header_;
-    uint32_t table_, texelsPerSide_, faceCount_;
+    uint32_t table_, texelsPerSide_, faceCount_, materialsFirst_;
     Sun sun_;
     FaceCacheRays rays_;
     FaceCacheSky sky_;

@@ -31,7 +31,7 @@ LiveFaceCache::LiveFaceCache(GpuScene& scene, const voxel::World& world, std::ve
       voxelSize_(world.voxelSize()) {
     if (settings_.fullLight) glowing_ = voxel::glowingFaces(world, faces_);
     levelsFromTexels();
-    upload();
+    upload(world);
 }
 
 void LiveFaceCache::levelsFromTexels() {
@@ -92,7 +92,7 @@ bool LiveFaceCache::takeBakedLight(const voxel::BrickTable& table, const voxel::
         editWithFullLight(table, world, *changed, nullptr);
     else {
         levelsFromTexels();
-        upload();
+        upload(world);
     }
     return true;
 }
@@ -147,7 +147,7 @@ void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& w
         levels[f] = reach[f] == voxel::FaceReach::Untouched ? old : std::min<uint8_t>(old, 2);
     }
     levels_ = std::move(levels);
-    upload();
+    upload(world);
 }
 
 void LiveFaceCache::editWithFullLight(const voxel::BrickTable& table, const voxel::World& world,
@@ -161,11 +161,13 @@ void LiveFaceCache::editWithFullLight(const voxel::BrickTable& table, const voxe
     glowing_ = voxel::glowingFaces(world, faces_);
     if (stats) stats->relit = relit.faces;
     levelsFromTexels();
-    upload();
+    upload(world);
 }
 
-void LiveFaceCache::upload() {
-    const voxel::FaceCacheArrays arrays = voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight);
+void LiveFaceCache::upload(const voxel::World& world) {
+    voxel::FaceCacheArrays arrays = voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight);
+    // With full light, what objects read of the light world faces send.
+    if (settings_.fullLight) voxel::appendFaceMaterials(arrays, faces_, world);
     std::vector<uint8_t> gpuLevels(arrays.faceOrder.size());
     for (size_t g = 0; g < gpuLevels.size(); ++g) gpuLevels[g] = levels_[arrays.faceOrder[g]];
     auto gpu = std::make_unique<GpuFaceCache>(

@@ -80,7 +80,7 @@ public:
     size_t unconverged() const;
 
 private:
-    void upload();  // replaces the scene's GPU copy
+    void upload(const voxel::World& world);  // replaces the scene's GPU copy
     void levelsFromTexels();  // each face's level from its texels' rays
     // An edit with full light: traced here, and the faces whose light moved lit again.
     void editWithFullLight(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed,

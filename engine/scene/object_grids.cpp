@@ -1,11 +1,14 @@
 #include "engine/scene/object_grids.h"
 
 #include "grotto/error.h"
+#include "shaders/shared/quad.h"
+#include "voxel/brick_table.h"
 #include "voxel/world.h"
 
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <string>
 
 namespace grotto {
 
@@ -30,7 +33,20 @@ ObjectGrid objectGrid(const voxel::World& object) {
                     const uint64_t bit = (uint64_t(c.x) * uint64_t(g.size.y) + uint64_t(c.y)) * uint64_t(g.size.z) + uint64_t(c.z);
                     g.bits[size_t(bit >> 5)] |= 1u << (bit & 31u);
                 }
+    if (std::any_of(object.desc().materials.begin(), object.desc().materials.end(),
+                    [](const voxel::Material& m) { return m.emits(); })) {
+        const voxel::BrickTable table(object);
+        g.glowing = voxel::glowingFaces(object, voxel::exposedFaces(table, object));
+    }
     return g;
+}
+
+void requireGlowFits(std::span<const ObjectGrid> grids, const ObjectGrid* adding) {
+    size_t faces = adding ? adding->glowing.size() : 0;
+    for (const ObjectGrid& g : grids) faces += g.glowing.size();
+    if (faces > GROTTO_MAX_GLOW_FACES)
+        throw Error("objects", "they glow on " + std::to_string(faces) + " faces in all",
+                    "at most " + std::to_string(GROTTO_MAX_GLOW_FACES) + ": fewer or smaller glowing parts");
 }
 
 GpuObjectGrids uploadObjectGrids(vk::Context& ctx, std::span<const ObjectGrid> grids) {
@@ -72,7 +88,29 @@ void setObjectTraces(gpu::TraceConstants& t, std::span<const ObjectGrid> grids, 
         gridRows(o.previousFromWorld, g, k < previous.size() ? previous[k] : poses[k], corner, voxelSize);
         o.size = glm::ivec4(g.size, int(first[k]));
     }
-    t.objectCount = glm::ivec4(used, 0, 0, 0);
+    // The glowing faces, placed: each corner and edge through the object's pose
+    // into the rays' voxels.
+    uint32_t glow = 0;
+    for (size_t k = 0; k < n; ++k) {
+        const ObjectGrid& g = grids[k];
+        const glm::dmat3 turn = glm::mat3_cast(poses[k].rotation);
+        for (const voxel::GlowingFace& f : g.glowing) {
+            if (glow == GROTTO_MAX_GLOW_FACES) break;  // refused where objects are added (requireGlowFits)
+            const uint32_t dir = f.face.dir;
+            glm::dvec3 c(f.face.cell), u(0.0), v(0.0);
+            c[int(gpu::faceAxis(dir))] += gpu::facePositive(dir) ? 1.0 : 0.0;
+            u[int(gpu::faceUAxis(dir))] = 1.0;  // cross(u, v) is the face's outward normal
+            v[int(gpu::faceVAxis(dir))] = 1.0;
+            const glm::dvec3 cornerWorld = poses[k].toWorld(g.origin + c * g.voxelSize);
+            const double scale = g.voxelSize / voxelSize;
+            gpu::GlowFace& out = t.glow[glow++];
+            out.corner = glm::vec4(glm::vec3((cornerWorld - corner) / voxelSize), 0.0f);
+            out.edgeU = glm::vec4(glm::vec3(turn * u * scale), 0.0f);
+            out.edgeV = glm::vec4(glm::vec3(turn * v * scale), 0.0f);
+            out.radiance = glm::vec4(glm::vec3(f.radiance), 0.0f);
+        }
+    }
+    t.objectCount = glm::ivec4(used, int(glow), 0, 0);
 }
 
 }  // namespace grotto

@@ -6,6 +6,7 @@
 // objects' voxels through them.
 #include "engine/vk/resources.h"
 #include "shaders/shared/trace.h"
+#include "voxel/light_edit.h"
 #include "voxel/object_pose.h"
 
 #include <glm/vec3.hpp>
@@ -23,9 +24,16 @@ struct ObjectGrid {
     double voxelSize = 1.0;    // the object's own, world units
     glm::dvec3 origin{0.0};    // object-local world position of voxel corner (0, 0, 0)
     std::vector<uint32_t> bits;  // cell (x, y, z) at bit (x * size.y + y) * size.z + z
+    // Its exposed faces whose material glows (voxel index units of its own), with
+    // their radiance: the lights the object gives the face cache's full light.
+    std::vector<voxel::GlowingFace> glowing;
 };
 
 ObjectGrid objectGrid(const voxel::World& object);
+// Refuses with grotto::Error (input) objects (`grids`, and `adding` when given)
+// that glow on more faces in all than the object light pass samples
+// (GROTTO_MAX_GLOW_FACES).
+void requireGlowFits(std::span<const ObjectGrid> grids, const ObjectGrid* adding = nullptr);
 
 // The grids one after another in a storage buffer (one zero word when there are
 // none, so the binding always has a buffer); first[k] is grid k's first word.
@@ -35,9 +43,9 @@ struct GpuObjectGrids {
 };
 GpuObjectGrids uploadObjectGrids(vk::Context& ctx, std::span<const ObjectGrid> grids);
 
-// Fills t.objectCount and t.objects for objects at `poses` (and `previous`, their
-// poses in the frame before), from t.cameraCell (set first, by traceConstants) and
-// the world's voxel size and origin.
+// Fills t.objectCount, t.objects and t.glow for objects at `poses` (and
+// `previous`, their poses in the frame before), from t.cameraCell (set first, by
+// traceConstants) and the world's voxel size and origin.
 void setObjectTraces(gpu::TraceConstants& t, std::span<const ObjectGrid> grids, std::span<const uint32_t> first,
                      std::span<const voxel::ObjectPose> poses, std::span<const voxel::ObjectPose> previous,
                      double voxelSize, glm::dvec3 worldOrigin);

@@ -43,6 +43,17 @@ struct ObjectTrace {
 };
 GROTTO_STATIC_ASSERT(sizeof(ObjectTrace) == 112);
 
+// A glowing face of an object, as a light the object light pass samples
+// (object_light.comp): a parallelogram in the rays' camera-relative world voxels.
+#define GROTTO_MAX_GLOW_FACES 128u
+struct GlowFace {
+    vec4 corner;    // xyz: a corner
+    vec4 edgeU;     // xyz: the edge along one side
+    vec4 edgeV;     // xyz: the other; the face's outward normal is along cross(edgeU, edgeV)
+    vec4 radiance;  // rgb: what it sends, the same in every direction
+};
+GROTTO_STATIC_ASSERT(sizeof(GlowFace) == 64);
+
 struct TraceConstants {
     vec4 ndcToViewMul_Add;   // view xy = ((full-res pixel + 0.5) * mul + add) * view depth
     vec4 depthAB;            // x, y: view depth = y / (depth buffer value + x)
@@ -65,11 +76,18 @@ struct TraceConstants {
     uint shadowHistory;             // the history's length cap, in frames
     uint shadowReset;               // bit 0: no usable history; bit 1: objects move (their pixels restart)
     // Objects block sun rays and voxel AO rays (passes built with GROTTO_TRACE_OBJECTS).
-    ivec4 objectCount;              // x: the entries of `objects` in use
+    ivec4 objectCount;              // x: the entries of `objects` in use; y: of `glow`
     ObjectTrace objects[GROTTO_MAX_OBJECTS];
+    // With the face cache's full light (object_light.comp): the light objects take
+    // from world faces, give them by glowing, and take themselves.
+    uvec4 faceCache;                // x: the cache's table shape; y: texels per face side;
+                                    // z: its faces' materials' first texel word; w: 1 with full light
+    vec4 skyZenith, skyHorizon;     // rgb: the sky's radiance at the zenith and the horizon
+    vec4 sunRadiance;               // rgb: the sun's light on a face turned to it (irradiance / pi)
+    GlowFace glow[GROTTO_MAX_GLOW_FACES];
 };
-GROTTO_STATIC_ASSERT(sizeof(TraceConstants) ==
-                     2 * 16 + 3 * 16 + 5 * 16 + 16 + 64 + 16 + 16 + 16 + 112 * GROTTO_MAX_OBJECTS);
+GROTTO_STATIC_ASSERT(sizeof(TraceConstants) == 2 * 16 + 3 * 16 + 5 * 16 + 16 + 64 + 16 + 16 + 16 +
+                                                   112 * GROTTO_MAX_OBJECTS + 4 * 16 + 64 * GROTTO_MAX_GLOW_FACES);
 
 GROTTO_NAMESPACE_END
 #endif
