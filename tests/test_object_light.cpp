@@ -6,7 +6,10 @@
 //    the AO radius of the step keep the cache's exactly;
 //  - a box on the grid lights the scene as the same voxels baked into the world:
 //    its AO and sky light, taken from the floor and its own;
-//  - a moving box's AO leaves no trail in the history.
+//  - a moving box's AO leaves no trail in the history;
+//  - with full light, against the path tracer: a glowing object lights the world
+//    with its shadows; an object takes the light the world's faces send; an
+//    object in a lamp-lit room shadows it.
 #include "engine/lab/light_reference.h"
 #include "engine/lab/surface_points.h"
 #include "engine/renderer.h"
@@ -312,6 +315,65 @@ TEST_F(ObjectLight, AGlowingObjectLightsTheWorldWithItsShadowsAsThePathTracerDoe
     }
     EXPECT_GT(shadowed, 50u) << "the wall must cast a shadow in view";
     EXPECT_GT(darkToo, shadowed * 95 / 100);
+}
+
+// A stone block (an object, 2 x 3 x 2) in a world with full light: its faces get
+// the light the world's faces send as the cache holds it.
+const voxel::World kBlock = voxel::test::denseWorld({2, 3, 2}, kLit, [](int, int, int) { return 1; });
+
+TEST_F(ObjectLight, AnObjectTakesTheLightTheWorldsFacesSendAsThePathTracerDoes) {
+    // A floor under the open sky (no sun), the block floating above it: its faces
+    // see the sky and the floor, whose light (the sky's, and what it bounces) the
+    // cache holds (before, an object's face took the open sky's light whichever
+    // way it faced).
+    voxel::WorldDesc sky = glowOnly();
+    sky.lighting.ambientIntensity = 1.0f;
+    const voxel::World world = voxel::test::denseWorld({16, 8, 12}, kLit, [](int, int y, int) { return y == 0 ? 1 : 0; }, sky);
+    const voxel::ObjectPose pose{glm::dvec3(8.0, 4.0, 6.0), glm::dquat(1.0, 0.0, 0.0, 0.0), glm::dvec3(1.0, 1.5, 1.0)};
+    LitScene scene(ctx(), world, kBlock, pose);
+    const Camera camera = makeCamera(test::lookAt({14.0, 6.0, 1.5}, {7.0, 1.0, 7.0}, 75.0), kW, kH);
+    const auto [f, ref] = scene.frameAndReference(ctx(), camera, 32);
+    const LightError onBlock = lightError(f, ref, [](uint32_t id) { return gpu::surfaceObject(id) != 0; });
+    const LightError onWorld = lightError(f, ref, [](uint32_t id) { return gpu::surfaceObject(id) == 0; });
+    std::printf("[ measured ] the block's faces: mean off by %.4f, median pixel %.4f (%zu pixels)\n", onBlock.meanRelative,
+                onBlock.median, onBlock.pixels);
+    std::printf("[ measured ] the floor: mean off by %.4f, median pixel %.4f (%zu pixels)\n", onWorld.meanRelative,
+                onWorld.median, onWorld.pixels);
+    ASSERT_GT(onBlock.pixels, 300u);
+    EXPECT_LT(onBlock.meanRelative, 0.02);
+    EXPECT_LT(onBlock.median, 0.05);
+    EXPECT_LT(onWorld.meanRelative, 0.04);  // the light the block reflects onto the floor is left out
+}
+
+TEST_F(ObjectLight, AnObjectInALampLitRoomShadowsItAsThePathTracerDoes) {
+    // A sealed room lit by one glowing voxel of the world, every bounce of its
+    // light baked in the cache, and the block standing on the floor: the frame
+    // takes the block's shadow out of the room's light per pixel. The block's own
+    // faces read the room's faces as the cache holds them, without the block's
+    // shadow on them: the face turned away from the lamp sees the wall behind it
+    // lit where the block shades it (printed; within a third).
+    voxel::Material lamp = lantern();
+    lamp.albedo = glm::vec3(0.8f);
+    const glm::ivec3 size(16, 8, 12), lampAt(4, 4, 6);
+    const voxel::World world = voxel::test::denseWorld(size, {stone(0.5f), lamp}, [&](int x, int y, int z) {
+        if (glm::ivec3(x, y, z) == lampAt) return 2;
+        return x == 0 || y == 0 || z == 0 || x == size.x - 1 || y == size.y - 1 || z == size.z - 1 ? 1 : 0;
+    }, glowOnly());
+    const voxel::ObjectPose pose{glm::dvec3(8.0, 2.5, 6.0), glm::dquat(1.0, 0.0, 0.0, 0.0), glm::dvec3(1.0, 1.5, 1.0)};
+    LitScene scene(ctx(), world, kBlock, pose);
+    const Camera camera = makeCamera(test::lookAt({14.0, 6.0, 1.5}, {7.0, 1.0, 7.0}, 75.0), kW, kH);
+    const auto [f, ref] = scene.frameAndReference(ctx(), camera, 32);
+    const LightError onBlock = lightError(f, ref, [](uint32_t id) { return gpu::surfaceObject(id) != 0; });
+    const LightError onRoom = lightError(f, ref, [](uint32_t id) { return gpu::surfaceObject(id) == 0; });
+    std::printf("[ measured ] the block's faces: mean off by %.4f, median pixel %.4f (%zu pixels)\n", onBlock.meanRelative,
+                onBlock.median, onBlock.pixels);
+    std::printf("[ measured ] the room's faces: mean off by %.4f, median pixel %.4f (%zu pixels)\n", onRoom.meanRelative,
+                onRoom.median, onRoom.pixels);
+    ASSERT_GT(onRoom.pixels, size_t(kW * kH / 4));
+    EXPECT_LT(onRoom.meanRelative, 0.02);
+    EXPECT_LT(onRoom.median, 0.08);
+    ASSERT_GT(onBlock.pixels, 200u);
+    EXPECT_LT(onBlock.meanRelative, 0.33);
 }
 
 }  // namespace
