@@ -28,7 +28,7 @@ void RenderSession::addObject(voxel::World world, voxel::ObjectDesc desc) {
                     "at most " + std::to_string(GROTTO_MAX_OBJECTS) + ": remove one first");
     if (desc.keys.empty()) desc.keys.emplace_back();
     ObjectGrid grid = objectGrid(world);
-    requireGlowFits(objects_->grids, &grid);  // before anything changes
+    requireGlowFits("addObject", objects_->grids, &grid);  // before anything changes
     objects_->scenes.push_back(uploadMeshWithinBudget(ctx_, world, world.desc()));
     objects_->descs.push_back(desc);
     objects_->grids.push_back(std::move(grid));

@@ -256,6 +256,17 @@ TEST_F(HostileInputs, JsonBombs) {
     expectCommandRefusedWithinCaps("info " + writeBytes("wide.json", wide).string(), "wide.json: is larger than 16 MiB");
 }
 
+// Objects that glow on more faces in all than the object light pass samples are
+// refused, naming the file and field, before anything is rendered or written.
+TEST_F(HostileInputs, ObjectsGlowingOnTooManyFaces) {
+    const std::string world = writeText("glow.json", R"({"grid": {"file": "good.vdb"},
+        "materials": [{"albedo": [0.5, 0.5, 0.5]}, {"albedo": [0, 0, 0], "emission": {"intensity": 2}}],
+        "lighting": {"ambient": {"from": "full"}}, "ao": {"method": "cache"},
+        "objects": [{"generator": {"kind": "box", "size": [8, 8, 8], "material": 2}, "keys": [{"time": 0, "position": [0, 0, 0]}]}]})")
+                                  .string();
+    expectCommandRefusedWithinCaps(render(world), "glow.json: field 'objects': the objects glow on 384 faces in all", out());
+}
+
 // Objects and edits whose memory passes the budget are refused from their sizes,
 // before any voxel is made (and before anything is written), not after minutes.
 TEST_F(HostileInputs, ObjectsAndEditsPastTheMemoryBudget) {

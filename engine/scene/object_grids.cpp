@@ -41,11 +41,11 @@ ObjectGrid objectGrid(const voxel::World& object) {
     return g;
 }
 
-void requireGlowFits(std::span<const ObjectGrid> grids, const ObjectGrid* adding) {
+void requireGlowFits(const std::string& where, std::span<const ObjectGrid> grids, const ObjectGrid* adding) {
     size_t faces = adding ? adding->glowing.size() : 0;
     for (const ObjectGrid& g : grids) faces += g.glowing.size();
     if (faces > GROTTO_MAX_GLOW_FACES)
-        throw Error("objects", "they glow on " + std::to_string(faces) + " faces in all",
+        throw Error(where, "the objects glow on " + std::to_string(faces) + " faces in all",
                     "at most " + std::to_string(GROTTO_MAX_GLOW_FACES) + ": fewer or smaller glowing parts");
 }
 

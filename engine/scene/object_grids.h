@@ -13,6 +13,7 @@
 
 #include <cstdint>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace grotto {
@@ -30,10 +31,10 @@ struct ObjectGrid {
 };
 
 ObjectGrid objectGrid(const voxel::World& object);
-// Refuses with grotto::Error (input) objects (`grids`, and `adding` when given)
-// that glow on more faces in all than the object light pass samples
-// (GROTTO_MAX_GLOW_FACES).
-void requireGlowFits(std::span<const ObjectGrid> grids, const ObjectGrid* adding = nullptr);
+// Refuses with grotto::Error (input), naming `where`, objects (`grids`, and
+// `adding` when given) that glow on more faces in all than the object light pass
+// samples (GROTTO_MAX_GLOW_FACES).
+void requireGlowFits(const std::string& where, std::span<const ObjectGrid> grids, const ObjectGrid* adding = nullptr);
 
 // The grids one after another in a storage buffer (one zero word when there are
 // none, so the binding always has a buffer); first[k] is grid k's first word.

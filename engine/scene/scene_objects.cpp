@@ -23,7 +23,7 @@ std::unique_ptr<SceneObjects> uploadObjects(vk::Context& ctx, std::span<const vo
         objects->grids.push_back(objectGrid(worlds[k]));
         objects->moving |= desc.objects[k].moves();
     }
-    requireGlowFits(objects->grids);
+    requireGlowFits(desc.source.string() + ": field 'objects'", objects->grids);
     return objects;
 }
 
