@@ -182,19 +182,23 @@ TEST_F(CliFullLight, TheReferenceLightAsAPngIsItsExrAsADisplayShowsIt) {
 
 TEST_F(CliFullLight, TheViewersLightViewIsTheLightAovRenderDraws) {
     REQUIRE_XVFB();
-    // The room lit by its lamp: the viewer's light view, as a screenshot and as
-    // the window shows it, is `render --bake --show light` pixel for pixel, and
+    // The room lit by its lamp: the viewer's light view is `render --bake --show
+    // light` pixel for pixel (and the window shows what it does), and
     // warm where the lamp's light falls. The viewer has no bake: its GPU tracer
     // gives the room the sky's light alone (none), and the room's light is baked
     // on a thread of its own, which a script's frames wait for.
     const fs::path world = writeRoomWorld("room.json", "full"), bake = dir_ / "room.gfc";
     const RunResult baked = runGrotto("bake " + world.string() + " -o " + bake.string());
     ASSERT_EQ(baked.exitCode, 0) << baked.err;
+    // Then a light placed with a click (edit mode "light": a voxel of the lamp's
+    // material in front of the face clicked) adds its light in the next frame.
     const fs::path script = writeText("light.json", R"({"actions": [
-        {"frame": 1, "set": {"view": "light"}}, {"frame": 3, "screenshot": "shot.png"}]})");
+        {"frame": 1, "set": {"view": "light"}}, {"frame": 3, "screenshot": "shot.png"},
+        {"frame": 4, "set": {"edit.mode": "light"}}, {"frame": 5, "click": [32, 24]},
+        {"frame": 6, "screenshot": "placed.png"}]})");
     const fs::path shot = dir_ / "shot.png", window = dir_ / "window.png", still = dir_ / "render.png";
     const RunResult v = runGrotto("view " + world.string() + " --camera in --size 64x48 --hide-panel --script " +
-                                      script.string() + " --frames 4 --capture-window " + window.string(),
+                                      script.string() + " --frames 7 --capture-window " + window.string(),
                                   kUnderXvfb);
     ASSERT_EQ(v.exitCode, 0) << v.err;
     const RunResult r = runGrotto("render " + world.string() + " --bake " + bake.string() +
@@ -203,7 +207,12 @@ TEST_F(CliFullLight, TheViewersLightViewIsTheLightAovRenderDraws) {
     const std::vector<uint8_t> a = readPixels8(shot), b = readPixels8(still), w = readPixels8(window);
     ASSERT_EQ(a.size(), 64u * 48u * 3u);
     EXPECT_EQ(a, b) << "the viewer's light view is not render's";
-    EXPECT_LE(worstDifference(a, w), 1);  // the window blits the same values
+    const std::vector<uint8_t> placed = readPixels8(dir_ / "placed.png");
+    ASSERT_EQ(placed.size(), a.size());
+    double before = 0.0, after = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) before += a[i], after += placed[i];
+    EXPECT_GT(after, 1.1 * before) << "the light placed adds its light in the next frame";
+    EXPECT_LE(worstDifference(placed, w), 1);  // the window blits the same values
     size_t warm = 0;
     for (size_t i = 0; i + 2 < a.size(); i += 3) warm += a[i] > a[i + 2] + 8;
     EXPECT_GT(warm, a.size() / 3 / 2) << "the lamp's warm light is missing";

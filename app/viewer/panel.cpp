@@ -126,7 +126,7 @@ voxel::json drawPanel(PanelState& s) {
         ImGui::Text("fly speed %.3g /s (wheel)", s.speed);
     }
     if (ImGui::CollapsingHeader("Edit")) {
-        combo("left click", s.editMode, {"none", "dig", "place", "paint"});
+        combo("left click", s.editMode, {"none", "dig", "place", "paint", "light"});
         float radius = float(s.brushRadius);
         if (ImGui::SliderFloat("brush radius", &radius, 0.5f, 64.0f, "%.1f voxels", ImGuiSliderFlags_Logarithmic))
             s.brushRadius = radius;

@@ -31,17 +31,26 @@ glm::dvec3 Viewer::pointUnder(glm::dvec2 pixel) const {
 // The panel's edit at a window pixel: dig and paint at the voxel hit, place in
 // front of the face it hit. `primary`: the left button; any other does nothing yet.
 // While a path is being recorded, the edit joins its edits track at this frame's time.
+// "light" places one voxel of the palette's first glowing material there.
 void Viewer::click(glm::dvec2 pixel, bool primary) {
     if (!primary || panel_.editMode == "none") return;
     const voxel::World& world = session_->world();
     const std::optional<voxel::RayHit> hit = pick(pixel).hit;
     if (!hit) return;
+    const bool light = panel_.editMode == "light";
+    const std::vector<voxel::Material>& palette = world.desc().materials;
+    const auto glowing = std::find_if(palette.begin(), palette.end(), [](const voxel::Material& m) { return m.emits(); });
+    if (light && glowing == palette.end()) {
+        panel_.message = "no material of this world glows: give one an emission (docs/worlds.md) to place lights";
+        return;
+    }
     glm::ivec3 voxel = hit->voxel;
-    if (panel_.editMode == "place" && hit->face >= 0) voxel[hit->face / 2] += hit->face % 2 == 0 ? 1 : -1;
+    if ((panel_.editMode == "place" || light) && hit->face >= 0) voxel[hit->face / 2] += hit->face % 2 == 0 ? 1 : -1;
     const double vs = world.voxelSize();
     const glm::dvec3 centre = world.origin() + (glm::dvec3(voxel) + 0.5) * vs;
     const double radius = std::max(panel_.brushRadius, 0.5) * vs;
-    const voxel::Edit edit = panel_.editMode == "dig"     ? voxel::Edit::carveSphere(centre, radius)
+    const voxel::Edit edit = light ? voxel::Edit::fillBox({voxel, voxel}, int(glowing - palette.begin()) + 1)
+                             : panel_.editMode == "dig"   ? voxel::Edit::carveSphere(centre, radius)
                              : panel_.editMode == "place" ? voxel::Edit::fillSphere(centre, radius, panel_.material)
                                                           : voxel::Edit::paintSphere(centre, radius, panel_.material);
     const voxel::EditResult r = session_->apply(edit);

@@ -58,13 +58,13 @@ void Viewer::setView(const nlohmann::json& value, const std::string& field) {
     panel_.view = v;
 }
 
-// The edit brush, as the panel sets it: edit.mode (none, dig, place, paint),
+// The edit brush, as the panel sets it: edit.mode (none, dig, place, paint, light),
 // edit.radius (voxels, 0.5 to 64), edit.material (1 to 255).
 void Viewer::setEdit(const std::string& key, const nlohmann::json& v, const std::string& field) {
     if (key == "edit.mode") {
         const std::string m = v.is_string() ? v.get<std::string>() : "";
-        if (m != "none" && m != "dig" && m != "place" && m != "paint")
-            refuse(field, "unknown mode " + v.dump(), "accepted: none, dig, place, paint");
+        if (m != "none" && m != "dig" && m != "place" && m != "paint" && m != "light")
+            refuse(field, "unknown mode " + v.dump(), "accepted: none, dig, place, paint, light");
         panel_.editMode = m;
     } else if (key == "edit.radius") {
         if (!v.is_number() || !(v.get<double>() >= 0.5 && v.get<double>() <= 64.0))
