@@ -90,7 +90,9 @@ vec3 skyRadiance(vec3 d) {
 float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 // The light a world face sends at point p (voxels from the camera's voxel) where a
-// ray met it: its material's albedo times the cache's light and sun there, and its glow.
+// ray met it: its material's albedo times the light and sun of the cache's texel
+// there, and its glow. The one texel the point lies on, not the composite's four
+// blended: a ray's light needs no smoothness, and each lookup costs a chain of loads.
 vec3 worldFaceLight(vec3 p, VoxelRayHit hit) {
     if (hit.face < 0 || trace.faceCache.z == 0u) return vec3(0.0);
     uint dir = uint(hit.face);
@@ -98,13 +100,14 @@ vec3 worldFaceLight(vec3 p, VoxelRayHit hit) {
     if (face < 0) return vec3(0.0);
     uint material = (faceTexels[trace.faceCache.z + uint(face) / 4u] >> (8u * (uint(face) & 3u))) & 0xFFu;
     if (material == 0u) return vec3(0.0);
-    FaceCacheTaps taps = faceCacheTaps(p, trace.cameraCell.xyz, dir);
-    bool found;
-    vec2 sunRange;
-    float sun = faceCacheBlend(taps, found, sunRange).y;
+    uint k = trace.faceCache.y;
+    vec3 local = clamp(p - vec3(hit.voxel - trace.cameraCell.xyz), 0.0, 0.999999);
+    uint i = min(uint(local[faceUAxis(dir)] * float(k)), k - 1u), j = min(uint(local[faceVAxis(dir)] * float(k)), k - 1u);
+    uvec2 bits = faceCacheTexel(uint(face) * k * k + j * k + i);
+    float sun = faceCacheUnpack(bits).y;
     float cosSun = max(dot(faceAxisNormal(dir), trace.sunDirection.xyz), 0.0);
     vec3 albedo = palette[2u * (material - 1u)].rgb, emission = palette[2u * (material - 1u) + 1u].rgb;
-    return albedo * (faceCacheFullLight(taps) + trace.sunRadiance.rgb * (cosSun * sun)) + emission;
+    return albedo * (faceCacheDecodeLight(bits.y) + trace.sunRadiance.rgb * (cosSun * sun)) + emission;
 }
 
 // The share of the hemisphere about n at p a glowing face covers, cosine-weighted
@@ -207,9 +210,8 @@ void main() {
         if (full && world) {  // the light objects take from the world's surface
             float object = traceObjects(start, d, kVoxelRayNever);
             if (object < 0.0) continue;
-            VoxelRayHit wall = traceWorldHit(start, d, object, false);
-            if (wall.t >= 0.0) continue;  // a world face before the object: it changes nothing along d
-            wall = traceWorldHit(start, d, kVoxelRayNever, false);
+            VoxelRayHit wall = traceWorldHit(start, d, kVoxelRayNever, false);
+            if (wall.t >= 0.0 && wall.t < object) continue;  // a world face first: the object changes nothing along d
             light -= wall.t < 0.0 ? skyRadiance(d) : worldFaceLight(p + d * wall.t, wall);
         } else if (full) {  // an object's own light
             VoxelRayHit hit = traceHit(start, d, kVoxelRayNever, true);
