@@ -241,7 +241,7 @@ struct LitScene {
         FrameImages f = converged(renderer, camera, frames);
         for (float& c : f.color) c /= lighting.exposure;
         LightReference ref = lightReference(live.world(), camera, voxel::lightSources(lighting),
-                                            {.spp = 512, .maxBounces = maxBounces}, &ctx, voxel::posedWorlds(worlds, poses));
+                                            {.spp = 256, .maxBounces = maxBounces}, &ctx, voxel::posedWorlds(worlds, poses));
         return {std::move(f), std::move(ref)};
     }
     LiveScene live;
@@ -304,7 +304,7 @@ TEST_F(ObjectLight, AGlowingObjectLightsTheWorldWithItsShadowsAsThePathTracerDoe
     std::printf("[ measured ] against every bounce: mean off by %.4f\n", bounced.meanRelative);
     ASSERT_GT(e.pixels, size_t(kW * kH / 4));
     EXPECT_LT(e.meanRelative, 0.03);
-    EXPECT_LT(e.median, 0.08);  // 24 shadow rays a pixel against 512 paths: both a few percent of noise
+    EXPECT_LT(e.median, 0.08);  // 24 shadow rays a pixel against 256 paths: both a few percent of noise
     // In the wall's shadow the floor is dark in both.
     size_t shadowed = 0, darkToo = 0;
     for (size_t i = 0; i < ref.radiance.size(); ++i) {
