@@ -263,18 +263,15 @@ TEST_F(Occupancy, EditsStagedThroughALiveSceneKeepGpuAndCpuInStep) {
     auto check = [&](const char* what, GpuScene* pending) {
         std::vector<glm::ivec3> cells;
         for (const voxel::IndexBox& b : touched) appendBox(cells, grown(b, 2));
-        // Each cell once: the edits' boxes overlap the world's and each other. Sorted
-        // as one integer each, which the sanitizers' unoptimised test code sorts
-        // several times faster than the cells themselves.
+        // Each cell once (the edits' boxes overlap), sorted as one integer each: the
+        // sanitizers' unoptimised test code sorts that several times faster.
         constexpr int kBias = 1 << 20;  // every edit lies within +-2^20 voxels
-        std::vector<uint64_t> keys(cells.size());
-        for (size_t i = 0; i < cells.size(); ++i)
-            keys[i] = uint64_t(cells[i].x + kBias) << 42 | uint64_t(cells[i].y + kBias) << 21 | uint64_t(cells[i].z + kBias);
+        std::vector<uint64_t> keys;
+        for (const glm::ivec3& c : cells) keys.push_back(uint64_t(c.x + kBias) << 42 | uint64_t(c.y + kBias) << 21 | uint64_t(c.z + kBias));
         std::sort(keys.begin(), keys.end());
         keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-        cells.resize(keys.size());
-        for (size_t i = 0; i < keys.size(); ++i)
-            cells[i] = glm::ivec3(int(keys[i] >> 42) - kBias, int(keys[i] >> 21 & 0x1FFFFF) - kBias, int(keys[i] & 0x1FFFFF) - kBias);
+        cells.clear();
+        for (uint64_t k : keys) cells.push_back(glm::ivec3(int(k >> 42), int(k >> 21 & 0x1FFFFF), int(k & 0x1FFFFF)) - kBias);
         const Agreement a = compare(w, cells, query.solid(*scene.gpu().occupancy(), cells, pending), what);
         EXPECT_EQ(a.mismatches, 0u) << what;
     };
