@@ -141,6 +141,8 @@ vec3 glowLight(VoxelRayStart start, vec3 p, vec3 n, bool openStart, vec2 u, floa
     float total = 0.0;
     for (uint i = 0u; i < count; ++i) total += glowFormFactor(p, n, trace.glow[i]) * luminance(trace.glow[i].radiance.rgb);
     if (total <= 0.0) return vec3(0.0);
+    // The shares again rather than kept: an array of 128 per invocation would cost
+    // more than a few faces' formula twice.
     float target = pick * total, below = 0.0;
     uint at = 0u;
     for (; at + 1u < count; ++at) {

@@ -279,6 +279,14 @@ LightError lightError(const FrameImages& f, const LightReference& ref, Keep keep
     return e;
 }
 
+// lightError over the objects' pixels (`objects`) or the world's, printed as `what`.
+LightError measured(const char* what, const FrameImages& f, const LightReference& ref, bool objects) {
+    const LightError e = lightError(f, ref, [&](uint32_t id) { return (gpu::surfaceObject(id) != 0) == objects; });
+    std::printf("[ measured ] %s: mean off by %.4f, median pixel %.4f (%zu pixels)\n", what, e.meanRelative, e.median,
+                e.pixels);
+    return e;
+}
+
 TEST_F(ObjectLight, AGlowingObjectLightsTheWorldWithItsShadowsAsThePathTracerDoes) {
     // A floor 24 x 24 with a wall 2 high across it, and a lantern (2 x 2 x 2,
     // glowing, reflecting nothing) hung above the floor beside the wall: the
@@ -297,9 +305,7 @@ TEST_F(ObjectLight, AGlowingObjectLightsTheWorldWithItsShadowsAsThePathTracerDoe
     // the reference reads a few percent more (printed).
     const auto [f, ref] = scene.frameAndReference(ctx(), camera, 24, 0);
     auto onWorld = [](uint32_t id) { return gpu::surfaceObject(id) == 0; };
-    const LightError e = lightError(f, ref, onWorld);
-    std::printf("[ measured ] world pixels lit by the lantern: mean off by %.4f, median pixel %.4f (%zu pixels)\n",
-                e.meanRelative, e.median, e.pixels);
+    const LightError e = measured("world pixels lit by the lantern", f, ref, false);
     const LightError bounced = lightError(f, scene.frameAndReference(ctx(), camera, 1).second, onWorld);
     std::printf("[ measured ] against every bounce: mean off by %.4f\n", bounced.meanRelative);
     ASSERT_GT(e.pixels, size_t(kW * kH / 4));
@@ -333,12 +339,8 @@ TEST_F(ObjectLight, AnObjectTakesTheLightTheWorldsFacesSendAsThePathTracerDoes) 
     LitScene scene(ctx(), world, kBlock, pose);
     const Camera camera = makeCamera(test::lookAt({14.0, 6.0, 1.5}, {7.0, 1.0, 7.0}, 75.0), kW, kH);
     const auto [f, ref] = scene.frameAndReference(ctx(), camera, 32);
-    const LightError onBlock = lightError(f, ref, [](uint32_t id) { return gpu::surfaceObject(id) != 0; });
-    const LightError onWorld = lightError(f, ref, [](uint32_t id) { return gpu::surfaceObject(id) == 0; });
-    std::printf("[ measured ] the block's faces: mean off by %.4f, median pixel %.4f (%zu pixels)\n", onBlock.meanRelative,
-                onBlock.median, onBlock.pixels);
-    std::printf("[ measured ] the floor: mean off by %.4f, median pixel %.4f (%zu pixels)\n", onWorld.meanRelative,
-                onWorld.median, onWorld.pixels);
+    const LightError onBlock = measured("the block's faces", f, ref, true);
+    const LightError onWorld = measured("the floor", f, ref, false);
     ASSERT_GT(onBlock.pixels, 300u);
     EXPECT_LT(onBlock.meanRelative, 0.02);
     EXPECT_LT(onBlock.median, 0.05);
@@ -363,12 +365,8 @@ TEST_F(ObjectLight, AnObjectInALampLitRoomShadowsItAsThePathTracerDoes) {
     LitScene scene(ctx(), world, kBlock, pose);
     const Camera camera = makeCamera(test::lookAt({14.0, 6.0, 1.5}, {7.0, 1.0, 7.0}, 75.0), kW, kH);
     const auto [f, ref] = scene.frameAndReference(ctx(), camera, 32);
-    const LightError onBlock = lightError(f, ref, [](uint32_t id) { return gpu::surfaceObject(id) != 0; });
-    const LightError onRoom = lightError(f, ref, [](uint32_t id) { return gpu::surfaceObject(id) == 0; });
-    std::printf("[ measured ] the block's faces: mean off by %.4f, median pixel %.4f (%zu pixels)\n", onBlock.meanRelative,
-                onBlock.median, onBlock.pixels);
-    std::printf("[ measured ] the room's faces: mean off by %.4f, median pixel %.4f (%zu pixels)\n", onRoom.meanRelative,
-                onRoom.median, onRoom.pixels);
+    const LightError onBlock = measured("the block's faces", f, ref, true);
+    const LightError onRoom = measured("the room's faces", f, ref, false);
     ASSERT_GT(onRoom.pixels, size_t(kW * kH / 4));
     EXPECT_LT(onRoom.meanRelative, 0.02);
     EXPECT_LT(onRoom.median, 0.08);
