@@ -3,6 +3,7 @@
 #include "grotto/error.h"
 #include "shaders/shared/quad.h"
 #include "shaders/shared/sky.h"
+#include "voxel/bounce_guide.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_cache_lookup.h"
 #include "voxel/form_factor.h"
@@ -22,6 +23,7 @@
 #include <map>
 #include <numbers>
 #include <numeric>
+#include <optional>
 
 namespace grotto::voxel {
 
@@ -231,11 +233,12 @@ private:
 
 uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& s) {
     // The hits (the base rays', and extraShare of them more for the noisy texels),
-    // the sky's sums, then glow, direct light, light, the next pass's and what
-    // each texel sends as float RGB, and the extra rays' counts and offsets.
+    // the drawn rays' hits and the faces they were drawn toward, the sky's sums,
+    // then glow, direct light, light, the next pass's and what each texel sends
+    // as float RGB, and the extra rays' counts and offsets.
     const double hits = s.rays * (1.0 + (s.relativeError > 0.0 && s.maxExtraRays > 0 ? s.extraShare : 0.0));
-    return texels * (uint64_t(std::ceil(hits)) * sizeof(uint32_t) + 6 * sizeof(double) + 5 * sizeof(glm::vec3) +
-                     2 * sizeof(uint32_t));
+    return texels * (uint64_t(std::ceil(hits)) * sizeof(uint32_t) + s.guidedRays * sizeof(GuidedHit) +
+                     sizeof(Drawn) + 6 * sizeof(double) + 5 * sizeof(glm::vec3) + 2 * sizeof(uint32_t));
 }
 
 void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& s) {
@@ -338,6 +341,10 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
     // below): their hits, texel m's at [extraStart[m], extraStart[m + 1]).
     std::vector<uint32_t> extraStart(traced + 1, 0), extraHits;
     auto raysOf = [&](size_t m) { return baseRays + (extraStart[m + 1] - extraStart[m]); };
+    // The rays drawn toward bright faces (below), none until the first passes have run.
+    const uint32_t guidedRays = s.guidedFaces > 0 ? s.guidedRays : 0;
+    std::vector<GuidedHit> guided(traced * guidedRays, GuidedHit{kMissed, 0.0f});
+    std::vector<Drawn> drawn(traced);
     std::vector<glm::vec3> direct(traced);
     auto setDirect = [&](size_t m) {
         direct[m] = glm::vec3(sky[m].radiance * (lights.skyIntensity / raysOf(m))) + glow[m];
@@ -356,11 +363,17 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
     const double floor = std::max(mean, 1e-30) * 1e-4;
     auto bounce = [&](size_t m) {
         glm::vec3 back(0.0f);
+        // kMissed, and the hits on faces drawn toward, have kHitOnDrawnFace set.
         for (const uint32_t* hit = &hits[m * baseRays]; hit != &hits[m * baseRays] + baseRays; ++hit)
-            if (*hit != kMissed) back += sent[*hit];
+            if (*hit < kHitOnDrawnFace) back += sent[*hit];
         for (uint32_t e = extraStart[m]; e < extraStart[m + 1]; ++e)
-            if (extraHits[e] != kMissed) back += sent[extraHits[e]];
-        return back / float(raysOf(m));
+            if (extraHits[e] < kHitOnDrawnFace) back += sent[extraHits[e]];
+        back /= float(raysOf(m));
+        if (guidedRays == 0) return back;
+        back += drawn[m].base(raysOf(m));
+        for (const GuidedHit* g = &guided[m * guidedRays]; g != &guided[m * guidedRays] + guidedRays; ++g)
+            if (g->reached()) back += g->weight * sent[g->texel];
+        return back;
     };
     auto converge = [&] {
         for (uint32_t pass = 0; pass < s.maxPasses; ++pass) {
@@ -387,8 +400,33 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
     };
     converge();
 
+    // Rays drawn toward the faces that pass each region the most light, as the
+    // converged light shows it (a sunlit patch, a lamp-lit wall;
+    // voxel/bounce_guide.h); the cosine rays' hits on them then count only as a
+    // control variate.
+    std::optional<BounceGuide> guide;
+    if (guidedRays > 0) {
+        const BounceGuide::Settings gs{s.guidedFaces, s.guideProbeRays, s.guidedNearest};
+        guide.emplace(faces, k, relit, sent, kMissed, gs, [&](glm::dvec3 start, glm::dvec3 dir) {
+            const std::optional<BrickHit> hit = table.firstHit(start, dir, std::numeric_limits<double>::infinity());
+            return hit ? scene.texelAt(*hit, start + dir * hit->t) : kMissed;
+        });
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, relit.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t n = r.begin(); n < r.end(); ++n) {
+                const glm::dvec3 normal = faceNormal(faces[relit[n]].dir);
+                for (size_t m = n * perFace; m < (n + 1) * perFace; ++m)
+                    drawn[m] = guide->draw(table, m, startOf(m) - normal * s.epsilon, normal, s.epsilon,
+                                           splitmix64(seedOf(m) ^ 5), {&hits[m * baseRays], baseRays},
+                                           luminance(glm::dvec3(light[m] - direct[m])),
+                                           {&guided[m * guidedRays], guidedRays});
+                rays[n] += guidedRays * perFace;
+            }
+        });
+    }
+
     // The standard error of each texel's light over its base rays, from what each
-    // ray brought (the sky's radiance, or the hit's); where it passes
+    // ray brought (the sky's radiance, or the hit's, or on a face drawn toward
+    // its share of the control variate, and the drawn rays'); where it passes
     // s.relativeError of the light (or of a hundredth of the mean, where the light
     // is dimmer), enough rays more to bring it there, up to s.maxExtraRays, in
     // all no more than s.extraShare of the base rays (each texel's cut alike).
@@ -399,13 +437,30 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
             for (size_t m = r.begin(); m < r.end(); ++m) {
                 double sum = luminance(sky[m].radiance) * lights.skyIntensity;
                 double squares = sky[m].squares * lights.skyIntensity * lights.skyIntensity;
-                for (const uint32_t* hit = &hits[m * baseRays]; hit != &hits[m * baseRays] + baseRays; ++hit)
-                    if (*hit != kMissed) {
-                        const double l = luminance(glm::dvec3(sent[*hit]));
-                        sum += l, squares += l * l;
-                    }
+                for (const uint32_t* hit = &hits[m * baseRays]; hit != &hits[m * baseRays] + baseRays; ++hit) {
+                    if (*hit == kMissed) continue;
+                    const double l = *hit < kHitOnDrawnFace
+                                         ? luminance(glm::dvec3(sent[*hit]))
+                                         : drawn[m].beta * luminance(glm::dvec3(
+                                                               guide->faceLight((*hit & ~kHitOnDrawnFace) / uint32_t(perFace))));
+                    sum += l, squares += l * l;
+                }
                 const double average = sum / baseRays;
-                const double error = std::sqrt(std::max(squares / baseRays - average * average, 0.0) / baseRays);
+                double variance = std::max(squares / baseRays - average * average, 0.0) / baseRays;
+                if (drawn[m].faces != 0 && guidedRays > 0) {
+                    // The drawn rays' part: each ray's own estimate, times guidedRays:
+                    // what it reached less beta times its face's mean light.
+                    double drawnSum = 0.0, drawnSquares = 0.0;
+                    for (const GuidedHit* g = &guided[m * guidedRays]; g != &guided[m * guidedRays] + guidedRays; ++g) {
+                        if (!g->reached()) continue;
+                        const double mean = drawn[m].beta * luminance(glm::dvec3(guide->faceLight(g->texel / uint32_t(perFace))));
+                        const double v = g->weight * guidedRays * (luminance(glm::dvec3(sent[g->texel])) - mean);
+                        drawnSum += v, drawnSquares += v * v;
+                    }
+                    const double drawnMean = drawnSum / guidedRays;
+                    variance += std::max(drawnSquares / guidedRays - drawnMean * drawnMean, 0.0) / guidedRays;
+                }
+                const double error = std::sqrt(variance);
                 const double target = s.relativeError * std::max(luminance(glm::dvec3(light[m])), dim);
                 if (!(error > target)) continue;
                 const double more = baseRays * ((error / target) * (error / target) - 1.0);
@@ -425,12 +480,13 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
                 if (n == 0) continue;
                 const SkySums more = traceTexelRays(table, scene, lights, startOf(m), faceNormal(faces[relit[m / perFace]].dir),
                                                     shiftOf(seedOf(m)), baseRays, n, &extraHits[extraStart[m]]);
+                if (guide) guide->takeIn(m, drawn[m], {&extraHits[extraStart[m]], n});
                 sky[m].radiance += more.radiance;
                 setDirect(m);
             }
         });
-        converge();
     }
+    if (extra > 0 || guidedRays > 0) converge();
     for (uint64_t n : rays) stats.rays += n;
     stats.rays += stats.extraRays;
     for (size_t m = 0; m < traced; ++m) texels[texelOf(m)].light = light[m];

@@ -12,7 +12,9 @@
 //  - Bounces by feedback: the same cosine rays remember the texel they hit, and
 //    each pass gives every texel what its hits send back (their albedo times their
 //    light and their sun), so pass n holds n bounces. Passes repeat until no
-//    texel's light changes by more than a tolerance of itself.
+//    texel's light changes by more than a tolerance of itself. The faces that
+//    pass a region the most light are drawn toward rather than waited for
+//    (voxel/bounce_guide.h): a room lit by a sunlit patch on its floor.
 // A texel's `light` is irradiance over pi: radiance leaving = albedo x (light +
 // the sun's direct light) + emission. OpenVDB-free interface.
 #include "voxel/face_bake.h"
@@ -26,6 +28,14 @@ namespace grotto::voxel {
 struct LightBakeSettings {
     uint32_t rays = 96;  // cosine rays per texel: the sky, and the hits bounces feed back through
     uint32_t emitterRays = 16;         // shadow rays per texel toward the glowing faces
+    // Rays per texel drawn toward the faces that pass its region the most light
+    // (voxel/bounce_guide.h): up to guidedFaces of them, found by guideProbeRays
+    // rays from each face of the region, none nearer than guidedNearest voxels.
+    // 0: bounces from the cosine rays alone.
+    uint32_t guidedRays = 16;
+    uint32_t guidedFaces = 16;
+    uint32_t guideProbeRays = 32;
+    double guidedNearest = 2.0;
     double tolerance = 1e-3;           // stop when a pass changes no texel's light by this share of it
     uint32_t maxPasses = 500;          // and in any case after this many bounces
     double epsilon = 1e-4;             // rays leave this far (voxels) in front of the face
