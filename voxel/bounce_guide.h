@@ -22,6 +22,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <span>
