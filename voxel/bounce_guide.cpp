@@ -3,6 +3,7 @@
 #include "shaders/shared/quad.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
+#include "voxel/face_square.h"
 #include "voxel/form_factor.h"
 #include "voxel/luminance.h"
 #include "voxel/ray_sampling.h"
@@ -19,24 +20,6 @@
 #include <tuple>
 
 namespace grotto::voxel {
-
-namespace {
-
-// A face's square, in voxel index units.
-struct FaceSquare {
-    glm::dvec3 corner, u, v, normal;
-    glm::dvec3 centre() const { return corner + 0.5 * (u + v); }
-};
-
-FaceSquare squareOf(const ExposedFace& f) {
-    glm::dvec3 corner(f.cell), u(0.0), v(0.0);
-    corner[int(gpu::faceAxis(f.dir))] += gpu::facePositive(f.dir) ? 1.0 : 0.0;
-    u[int(gpu::faceUAxis(f.dir))] = 1.0;
-    v[int(gpu::faceVAxis(f.dir))] = 1.0;
-    return {corner, u, v, faceNormal(f.dir)};
-}
-
-}  // namespace
 
 BounceGuide::BounceGuide(std::span<const ExposedFace> faces, uint32_t k, std::span<const uint32_t> relit,
                          std::span<const glm::vec3> sent, uint32_t missed, const Settings& settings,

@@ -7,6 +7,7 @@
 #include "shaders/shared/quad.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_cache_lookup.h"
+#include "voxel/face_square.h"
 #include "voxel/form_factor.h"
 #include "voxel/luminance.h"
 #include "voxel/ray_sampling.h"
@@ -148,11 +149,8 @@ private:
     };
 
     void addGlow(const ExposedFace& f, glm::dvec3 radiance) {
-        glm::dvec3 corner(f.cell), u(0.0), v(0.0);
-        corner[int(gpu::faceAxis(f.dir))] += gpu::facePositive(f.dir) ? 1.0 : 0.0;
-        u[int(gpu::faceUAxis(f.dir))] = 1.0;
-        v[int(gpu::faceVAxis(f.dir))] = 1.0;
-        glows_.push_back({corner, u, v, faceNormal(f.dir), corner + 0.5 * (u + v), radiance, luminance(radiance)});
+        const FaceSquare q = squareOf(f);
+        glows_.push_back({q.corner, q.u, q.v, q.normal, q.centre(), radiance, luminance(radiance)});
     }
 
     // Each region holding a face of `relit` lists the glowing faces that can reach
