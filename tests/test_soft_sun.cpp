@@ -38,8 +38,9 @@ std::vector<glm::dvec3> coneDirections(glm::dvec3 axis, double cosRadius, int n)
 }
 
 struct SoftSunError {
-    size_t points = 0;     // surface pixels compared
-    size_t penumbra = 0;   // of them, seeing between 5% and 95% of the disc on the CPU
+    size_t points = 0;     // surface pixels
+    size_t compared = 0;   // of them, those compared with the CPU
+    size_t penumbra = 0;   // of those, seeing between 5% and 95% of the disc on the CPU
     double meanAbs = 0.0;  // mean |GPU - CPU| visible fraction
     size_t outliers = 0;   // |GPU - CPU| > kOutlier
 };
@@ -47,7 +48,9 @@ constexpr double kOutlier = 0.25;
 
 // The last of `frames` frames of rooms/table at 160x90 with a sun `angle` degrees
 // wide, the camera stepping `step` world units to its right each frame (ending at
-// the table camera), against the CPU's visible fraction of the disc.
+// the table camera), against the CPU's visible fraction of the disc. The CPU's rays
+// take most of the time; under the sanitizers every 3rd surface pixel is compared
+// (3 is prime to the width: a diagonal pattern, not whole columns).
 SoftSunError softSunError(vk::Context& ctx, float angle, uint32_t frames, double step) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
     auto scene = uploadScene(ctx, world);
@@ -77,20 +80,21 @@ SoftSunError softSunError(vk::Context& ctx, float angle, uint32_t frames, double
     const SurfacePoints pts = surfacePoints(f, camera, vs, world.origin());
     test::SunRays rays(world);
     SoftSunError e;
-    for (size_t k = 0; k < pts.points.size(); ++k) {
+    e.points = pts.points.size();
+    for (size_t k = 0; k < pts.points.size(); k += size_t(test::underSanitizers(1, 3))) {
         const glm::dvec3 &p = pts.points[k], &n = pts.normals[k];
         int open = 0;
         for (const glm::dvec3& d : disc) open += glm::dot(n, d) > 0.0 && !rays.blocked(p, n, d);
         const double cpu = double(open) / double(disc.size()), diff = std::abs(f.shadow[pts.pixels[k]] - cpu);
-        ++e.points;
+        ++e.compared;
         e.penumbra += cpu > 0.05 && cpu < 0.95;
         e.meanAbs += diff;
         e.outliers += diff > kOutlier;
     }
-    e.meanAbs /= double(std::max<size_t>(e.points, 1));
-    std::printf("[ measured ] soft sun %.1f deg, %u frames, step %.3f: %zu points (%zu in the penumbra), "
+    e.meanAbs /= double(std::max<size_t>(e.compared, 1));
+    std::printf("[ measured ] soft sun %.1f deg, %u frames, step %.3f: %zu points, %zu compared (%zu in the penumbra), "
                 "mean |GPU - CPU| %.4f, %zu beyond %.2f\n",
-                angle, frames, step, e.points, e.penumbra, e.meanAbs, e.outliers, kOutlier);
+                angle, frames, step, e.points, e.compared, e.penumbra, e.meanAbs, e.outliers, kOutlier);
     return e;
 }
 
@@ -99,9 +103,9 @@ using SoftSun = GpuTest;
 TEST_F(SoftSun, StillCameraConvergesToTheVisibleFractionOfTheDisc) {
     const SoftSunError e = softSunError(ctx(), 8.0f, 64, 0.0);
     EXPECT_GT(e.points, size_t(160 * 90) / 2);
-    EXPECT_GT(double(e.penumbra), 0.03 * double(e.points));  // a real penumbra to get right
-    EXPECT_LT(e.meanAbs, 0.01);  // measured 0.004
-    EXPECT_LE(double(e.outliers), 0.001 * double(e.points));
+    EXPECT_GT(double(e.penumbra), 0.03 * double(e.compared));  // a real penumbra to get right
+    EXPECT_LT(e.meanAbs, 0.01);  // measured 0.004 (every 3rd pixel: 0.004)
+    EXPECT_LE(double(e.outliers), 0.001 * double(e.compared));
 }
 
 TEST_F(SoftSun, HistoryFollowsTheSurfaceAsTheCameraMoves) {
@@ -109,9 +113,9 @@ TEST_F(SoftSun, HistoryFollowsTheSurfaceAsTheCameraMoves) {
     // each pixel's own and smears the penumbra along the motion (mean error 0.047,
     // 6% of points beyond kOutlier, when tried).
     const SoftSunError e = softSunError(ctx(), 8.0f, 64, 0.02);
-    EXPECT_GT(double(e.penumbra), 0.03 * double(e.points));
-    EXPECT_LT(e.meanAbs, 0.012);  // measured 0.0057
-    EXPECT_LE(double(e.outliers), 0.002 * double(e.points));
+    EXPECT_GT(double(e.penumbra), 0.03 * double(e.compared));
+    EXPECT_LT(e.meanAbs, 0.012);  // measured 0.0057 (every 3rd pixel: 0.0057, 3 or 4 of 4800 beyond)
+    EXPECT_LE(double(e.outliers), 0.002 * double(e.compared));
 }
 
 TEST_F(SoftSun, FirstFramesAfterACutAnEditOrANewSunAreOneRayFromTheDisc) {

@@ -276,13 +276,13 @@ TEST_F(Occupancy, EditsStagedThroughALiveSceneKeepGpuAndCpuInStep) {
         EXPECT_EQ(a.mismatches, 0u) << what;
     };
 
-    // Round 1: edits inside the world; the empty tile gets voxels (a new tile near
-    // the others); far boxes make new tiles, more than the hash table has room for
-    // at half load (it is rebuilt) and than the bricks buffer has spare room for
-    // (it grows), and a large fill grows the masks buffer.
+    // Round 1: random edits inside the world (a quarter as many under the sanitizers); the
+    // empty tile gets voxels (a new tile near the others); far boxes make new tiles, more
+    // than the hash table has room for at half load (it is rebuilt) and than the bricks
+    // buffer has spare room for (it grows), and a large fill grows the masks buffer.
     const size_t masksBefore = scene.gpu().occupancy()->masks().size, bricksBefore = scene.gpu().occupancy()->bricks().size;
     const uint32_t hashBefore = scene.gpu().occupancy()->hashMask();
-    randomEdits(40);
+    randomEdits(test::underSanitizers(40, 10));
     apply(voxel::Edit::fillSphere(w.origin() + glm::dvec3(-30, 20, 30) * w.voxelSize(), 6.0 * w.voxelSize(), 2));
     apply(voxel::Edit::fillBox({{-60, 50, -60}, {60, 90, 60}}, 1));  // above the world: new tiles, many bricks
     for (int k = 0; k < 30; ++k) {
@@ -299,7 +299,7 @@ TEST_F(Occupancy, EditsStagedThroughALiveSceneKeepGpuAndCpuInStep) {
     // fills reuse; a far cluster goes entirely), one undone; a renderer's frame
     // records the uploads.
     apply(voxel::Edit::carveBox({{-70, -40, -50}, {20, 30, 10}}));
-    randomEdits(40);
+    randomEdits(test::underSanitizers(40, 10));
     apply(voxel::Edit::carveBox({{20000 - 4099 * 3 - 2, -3000 + 613 * 3 - 2, 11000 - 1500 * 3 - 2},
                                  {20000 - 4099 * 3 + 12, -3000 + 613 * 3 + 12, 11000 - 1500 * 3 + 12}}));
     apply(voxel::Edit::fillBox({{-5000, 7000, 9000}, {-4990, 7003, 9070}}, 3));

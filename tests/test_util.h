@@ -27,6 +27,17 @@ constexpr bool kAddressSanitizer = true;
 constexpr bool kAddressSanitizer = false;
 #endif
 
+// `full` in an ordinary build, `reduced` under the sanitizers (the sanitize
+// preset builds AddressSanitizer and UndefinedBehaviorSanitizer together), for
+// a loop that repeats one code path many times: the frames of a path, random
+// edits, seeds, points checked against the CPU. The sanitizers look for memory
+// errors, undefined behaviour and leaks, which the first iterations of such a
+// loop meet as well as the last; the numerical and visual checks run at full
+// strength in the other builds. A count (underSanitizers(1000, 250) edits) or a
+// stride (every underSanitizers(1, 4)th frame). Only for loops whose reduced
+// form can still fail; docs/hardening.md lists the tests that use it.
+constexpr int underSanitizers(int full, int reduced) { return kAddressSanitizer ? reduced : full; }
+
 // Resource caps for a run, set with setrlimit before grotto starts; 0 = none.
 // hangSeconds is a wall-clock guard against a test hanging, not a measurement:
 // the run is killed after it.
