@@ -47,7 +47,7 @@ void addBakeCommand(CLI::App& app) {
     cmd->add_option("--merge", args->merge, "Join these parts (bake --chunk) into one cache")->expected(1, -1);
     cmd->add_option("--rays", args->rays, "Cosine-weighted rays per texel (AO and sky)")
         ->capture_default_str()->check(CLI::Range(1u, 1u << 20));
-    cmd->add_option("--sun-rays", args->sunRays, "Rays per texel over the sun's disc (one for a point sun)")
+    cmd->add_option("--sun-rays", args->sunRays, "Rays per texel toward the sun, from all over the texel (and over a soft sun's disc)")
         ->capture_default_str()->check(CLI::Range(1u, 1u << 16));
     cmd->add_option("--texels", args->texels, "Texels per face side (k x k per face)")
         ->capture_default_str()->check(CLI::Range(1u, 16u));

@@ -92,7 +92,7 @@ void requireMatchingBakeIn(const std::string& folder, const voxel::World& world)
     voxel::requireBakeOf(world, radius, voxel::countExposedFaces(world).faces, bake);
 }
 
-bool onPath(const std::string& tool) {
+bool installed(const std::string& tool) {
     return std::system(("command -v " + tool + " >/dev/null 2>&1").c_str()) == 0;
 }
 
@@ -284,7 +284,7 @@ void addTradeoffCommand(CLI::App& app) {
             if (std::filesystem::path(args->plot).extension() != ".png")
                 throw Error(args->plot, "the plot is written as PNG", "name a .png file");
             requireOutputPath(args->plot);
-            if (!onPath("gnuplot"))
+            if (!installed("gnuplot"))
                 throw Error("--plot", "gnuplot is not installed", "install gnuplot-nox (scripts/setup.sh)");
         }
         if (!args->bakes.empty()) {

@@ -174,7 +174,12 @@ vec3 shadeCached(ivec2 q, uint surface) {
         vec4 c = faceCacheBlend(t, seen, sunRange);  // AO, sun, horizon and zenith weights
         // With the cache's sun, the shadow pass holds the objects' alone.
         float cosSun = dot(normal, frame.sunDirection.xyz);
-        if (shadowEdges && seen && cosSun > 0.0 && sunRange.y - sunRange.x > 0.5)  // the texels disagree by over half
+        // An edge: a point sun's texels not all lit nor all shadowed (a texel reads
+        // part lit where an edge of sunlight crosses it, however thin); a disc's
+        // disagreeing by over half (a penumbra narrower than the texels apart).
+        bool edge = frame.sunDirection.w > 0.5 ? sunRange.y > 0.5 / 255.0 && sunRange.x < 1.0 - 0.5 / 255.0
+                                               : sunRange.y - sunRange.x > 0.25;
+        if (shadowEdges && seen && cosSun > 0.0 && edge)
             listShadowEdge(q, c.y, exposed(materialOf(surface).rgb * frame.sunRadiance.rgb * (cosSun * sunReach)));
         if (cachedSun && seen) sunReach *= c.y;
         light = vec3(max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)));

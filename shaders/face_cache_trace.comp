@@ -81,6 +81,7 @@ void main() {
     uint sunOpen = 0u;
     bool pointSun = c.sun.w >= 1.0;
     vec2 sunShift = vec2(unitInterval(splitmix64(h ^ uvec2(1u, 0u))), unitInterval(splitmix64(h ^ uvec2(2u, 0u))));
+    vec2 spreadShift = vec2(unitInterval(splitmix64(h ^ uvec2(3u, 0u))), unitInterval(splitmix64(h ^ uvec2(4u, 0u))));
     vec3 s1, s2;
     texelTangents(c.sun.xyz, s1, s2);
     for (uint r = 0u; r < sunRays; ++r) {
@@ -89,7 +90,12 @@ void main() {
             vec3 cone = coneDirection(r2(r, sunShift), c.sun.w);
             d = s1 * cone.x + s2 * cone.y + c.sun.xyz * cone.z;
         }
-        if (dot(d, n) > 0.0 && leaves(start, d)) ++sunOpen;
+        // From all over the texel's square, so a thin edge of sunlight reads part lit.
+        VoxelRayStart from = start;
+        vec2 a = texelSpread(r, spreadShift);
+        from.fraction[ua] = (float(i) + a.x) / float(k);
+        from.fraction[va] = (float(j) + a.y) / float(k);
+        if (dot(d, n) > 0.0 && leaves(from, d)) ++sunOpen;
     }
     float samples = float(max(rays, 1u));
     uint aoSun = unorm(float(open) / samples, 8u) | unorm(sunRays > 0u ? float(sunOpen) / float(sunRays) : 1.0, 8u) << 8u;

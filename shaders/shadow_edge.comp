@@ -1,9 +1,9 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // Exact sun rays where a shadow edge crosses the face cache's texels: the
-// composite lists every pixel whose texels disagree on the sun by more than half
-// (a point sun: some lit, some not; a disc: a penumbra narrower than the texels
-// are apart), with the sun visibility it lit the pixel with and the sun's light
+// composite lists every pixel whose texels an edge crosses (a point sun: not all
+// lit nor all shadowed, since a texel's rays start all over its square; a disc:
+// disagreeing by over a quarter, a penumbra narrower than the texels are apart), with the sun visibility it lit the pixel with and the sun's light
 // there at full visibility. Here each listed pixel traces from its exact surface
 // point, one ray toward a point sun or 16 over the disc, and its colour takes the
 // difference. So a shadow's edge is as sharp as the voxels and the sun make it,

@@ -37,6 +37,9 @@ uvec2 texelSeed(ivec3 cell, uint dir, uint i, uint j) {
 const float kR2A = 1.0 / 1.32471795724474602596, kR2B = 1.0 / (1.32471795724474602596 * 1.32471795724474602596);
 vec2 r2(uint n, vec2 shift) { return fract(vec2(0.5) + float(n) * vec2(kR2A, kR2B) + shift); }
 
+// Where on a texel's square its sun ray n starts (voxel/ray_sampling.h's texelSpread).
+vec2 texelSpread(uint n, vec2 shift) { return fract(vec2(0.5) + float(n) * vec2(0.41421356237309505, 0.7320508075688772) + shift); }
+
 vec3 cosineDirection(vec2 u) {
     float r = sqrt(u.x), phi = 6.28318530717958648 * u.y;
     return vec3(r * cos(phi), r * sin(phi), sqrt(max(1.0 - u.x, 0.0)));

@@ -23,6 +23,7 @@ inline uint32_t faceCacheTable() { return gpuTwin->table; }
 inline uint32_t faceCacheK() { return gpuTwin->texelsPerSide; }
 }  // namespace grotto::gpu
 #include "shaders/shared/face_cache.h"
+#include "shaders/shared/quad.h"
 #include "voxel/reference_ao.h"
 
 #include <gtest/gtest.h>
@@ -167,24 +168,45 @@ TEST(FaceCache, AClosedRoomIsDarkInsideAndItsAoIsTheReferences) {
     EXPECT_LT(std::abs(meanDiff), 0.003) << "no bias";
 }
 
-// A point sun's visibility is one ray, World::raycast's answer from the texel.
-TEST(FaceCache, PointSunVisibilityIsTheRaycastsAnswer) {
+// A point sun's visibility is the share of the texel's square it reaches: its 16
+// rays start all over the square, so a texel an edge of sunlight crosses reads part
+// lit, and one wholly lit or wholly shadowed reads exactly that. Against
+// World::raycast from a 32 x 32 grid of points on each face (one texel a face).
+TEST(FaceCache, PointSunVisibilityIsTheLitShareOfTheTexelsSquare) {
     std::mt19937 rng(11);
     const World w = randomWorld(20, 0.18, rng);
     const std::vector<ExposedFace> faces = exposedFaces(w);
     const glm::dvec3 sun = glm::normalize(glm::dvec3(0.45, 0.8, 0.3));
     FaceBakeSettings s{.texelsPerSide = 1, .rays = 4, .sunDirection = sun};
+    ASSERT_EQ(s.sunRays, 16u);
     const std::vector<FaceTexel> t = bake(w, faces, s);
-    size_t lit = 0;
+    size_t lit = 0, dark = 0, part = 0;
+    double worst = 0.0;
     for (size_t f = 0; f < faces.size(); ++f) {
-        const glm::dvec3 n = faceNormal(faces[f].dir);
-        const glm::dvec3 p = texelPoint(faces[f], 1, 0, 0) + n * s.epsilon;
-        const bool open = glm::dot(n, sun) > 0.0 && !w.raycast(p, sun, 1e9);
-        ASSERT_EQ(t[f].sunOpen, open ? 1u : 0u) << "face " << f;
-        lit += open;
+        const glm::dvec3 n = faceNormal(faces[f].dir), centre = texelPoint(faces[f], 1, 0, 0);
+        glm::dvec3 u(0.0), v(0.0);
+        u[int(gpu::faceUAxis(faces[f].dir))] = 1.0, v[int(gpu::faceVAxis(faces[f].dir))] = 1.0;
+        constexpr int kGrid = 32;
+        int open = 0;
+        for (int a = 0; a < kGrid; ++a)
+            for (int b = 0; b < kGrid; ++b) {
+                const glm::dvec3 p = centre + u * ((a + 0.5) / kGrid - 0.5) + v * ((b + 0.5) / kGrid - 0.5) + n * s.epsilon;
+                open += glm::dot(n, sun) > 0.0 && !w.raycast(p, sun, 1e9);
+            }
+        const double share = double(open) / (kGrid * kGrid), read = double(t[f].sunOpen) / t[f].sunSamples;
+        ASSERT_EQ(t[f].sunSamples, 16u);
+        if (open == 0) EXPECT_EQ(t[f].sunOpen, 0u) << "face " << f << " is wholly shadowed";
+        if (open == kGrid * kGrid) EXPECT_EQ(t[f].sunOpen, 16u) << "face " << f << " is wholly lit";
+        if (share > 0.1 && share < 0.9) EXPECT_TRUE(read > 0.0 && read < 1.0) << "face " << f << ": " << share << " lit";
+        worst = std::max(worst, std::abs(read - share));
+        lit += open == kGrid * kGrid, dark += open == 0, part += open > 0 && open < kGrid * kGrid;
     }
-    EXPECT_GT(lit, faces.size() / 10);  // both answers occur
-    EXPECT_LT(lit, faces.size() / 2);
+    std::printf("%zu faces: %zu lit, %zu shadowed, %zu part lit; worst share off by %.3f\n", faces.size(), lit, dark,
+                part, worst);
+    EXPECT_LT(worst, 0.2) << "16 rays over a square an edge crosses";
+    EXPECT_GT(part, faces.size() / 50);  // every kind occurs
+    EXPECT_GT(lit, faces.size() / 20);
+    EXPECT_GT(dark, faces.size() / 10);
 }
 
 // Each texel's rays depend on the texel alone: parts baked apart, in any order, and

@@ -1,6 +1,7 @@
 #include "voxel/face_bake.h"
 
 #include "grotto/error.h"
+#include "shaders/shared/quad.h"
 #include "voxel/brick_table.h"
 #include "voxel/ray_sampling.h"
 
@@ -56,8 +57,11 @@ public:
     }
 
     // Adds the settings' rays to `t` from p (voxel units, on a face plane) with the
-    // axis normal n, its sequences turned by the hash h.
-    void trace(FaceTexel& t, glm::dvec3 p, glm::dvec3 n, uint64_t h) const {
+    // axis normal n, its sequences turned by the hash h. The sun's rays start all
+    // over the texel's square, whose sides are `u` and `v` about p (zero: the point
+    // alone), so a texel an edge of sunlight crosses reads part lit, however thin
+    // the light, and the frame traces the sun there per pixel.
+    void trace(FaceTexel& t, glm::dvec3 p, glm::dvec3 n, uint64_t h, glm::dvec3 u = {}, glm::dvec3 v = {}) const {
         glm::dvec3 t1, t2;
         tangents(n, t1, t2);
         p += n * s_.epsilon;
@@ -76,13 +80,16 @@ public:
         t.samples += s_.rays;
         t.skyHorizon += float(horizon), t.skyZenith += float(zenith);
         const glm::dvec2 sunShift(unitInterval(splitmix64(h ^ 1)), unitInterval(splitmix64(h ^ 2)));
+        const glm::dvec2 spreadShift(unitInterval(splitmix64(h ^ 3)), unitInterval(splitmix64(h ^ 4)));
         for (uint32_t ray = 0; ray < sunRays_; ++ray) {
             glm::dvec3 d = sun_;
+            const uint64_t index = uint64_t(t.sunSamples) + ray;
             if (!pointSun_) {
-                const glm::dvec3 c = coneDirection(r2(uint64_t(t.sunSamples) + ray, sunShift), cosHalf_);
+                const glm::dvec3 c = coneDirection(r2(index, sunShift), cosHalf_);
                 d = s1_ * c.x + s2_ * c.y + sun_ * c.z;
             }
-            if (glm::dot(d, n) > 0.0 && leaves(p, d)) ++t.sunOpen;
+            const glm::dvec2 a = texelSpread(index, spreadShift) - 0.5;
+            if (glm::dot(d, n) > 0.0 && leaves(p + u * a.x + v * a.y, d)) ++t.sunOpen;
         }
         t.sunSamples += sunRays_;
     }
@@ -119,10 +126,12 @@ void bakeFaces(const BrickTable& table, const World& world, std::span<const Expo
     tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t f = r.begin(); f < r.end(); ++f) {
             const ExposedFace& face = faces[f];
+            glm::dvec3 u(0.0), v(0.0);  // the texel's sides (texelPoint's axes)
+            u[int(gpu::faceUAxis(face.dir))] = 1.0 / k, v[int(gpu::faceVAxis(face.dir))] = 1.0 / k;
             for (uint32_t j = 0; j < k; ++j)
                 for (uint32_t i = 0; i < k; ++i)
                     tracer.trace(texels[f * perFace + j * k + i], texelPoint(face, k, i, j), faceNormal(face.dir),
-                                 texelSeed(face, i, j));
+                                 texelSeed(face, i, j), u, v);
         }
     });
 }

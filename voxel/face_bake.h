@@ -24,7 +24,7 @@ struct FaceBakeSettings {
     double radius = 4.0;                         // AO's R, world units (> 0)
     uint32_t texelsPerSide = kDefaultBakeTexels; // k: k x k texels per face
     uint32_t rays = kDefaultBakeRays;            // cosine-weighted rays per texel per call (AO and sky)
-    uint32_t sunRays = kDefaultBakeSunRays;      // rays per texel per call over the sun's disc (one for a point sun)
+    uint32_t sunRays = kDefaultBakeSunRays;      // rays per texel per call toward the sun, from all over the texel
     glm::dvec3 sunDirection{0.0, 1.0, 0.0};  // toward the sun, unit length
     double sunAngleDegrees = 0.0;    // the disc's angular diameter; 0: a point
     double epsilon = 1e-4;           // rays leave this far (voxels) in front of the face
@@ -39,12 +39,9 @@ struct FaceBakeSettings {
     glm::dvec3 skyZenith{0.0}, skyHorizon{0.0};
 };
 
-// The rays a texel gets over the sun's disc: one for a point sun, whatever sunRays
-// says; none for a bake without light.
-inline uint32_t sunRaysPerTexel(const FaceBakeSettings& s) {
-    if (!s.light) return 0;
-    return s.sunAngleDegrees > 0.0 ? s.sunRays : std::min(s.sunRays, 1u);
-}
+// The rays a texel gets toward the sun: sunRays, even for a point sun (they start
+// all over the texel's square); none for a bake without light.
+inline uint32_t sunRaysPerTexel(const FaceBakeSettings& s) { return s.light ? s.sunRays : 0; }
 
 // The hash a texel's rays are turned by: of its face and place alone, so a texel
 // traced again after an edit, or in another part of a bake, gets the same rays.

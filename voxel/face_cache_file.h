@@ -34,7 +34,7 @@ struct FaceCacheKey {
 struct FaceCacheHeader {
     FaceCacheKey key;
     uint32_t rays = 0;         // cosine-weighted rays a texel (AO and sky)
-    uint32_t sunRays = 0;      // rays a texel over the sun's disc (1 for a point sun)
+    uint32_t sunRays = 0;      // rays a texel toward the sun
     uint64_t totalFaces = 0;   // exposed faces in the world
     uint64_t firstFace = 0;    // this file's run: faces [first, first + count)
     uint64_t faceCount = 0;

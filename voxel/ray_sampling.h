@@ -27,6 +27,14 @@ inline glm::dvec2 r2(uint64_t n, glm::dvec2 shift) {
     return {u - std::floor(u), v - std::floor(v)};
 }
 
+// Point n of a second sequence in [0, 1)^2, shifted: where on a texel's square a
+// sun ray starts. A Weyl sequence on sqrt 2 and sqrt 3, not R2 again, so that the
+// place a ray starts from is not a function of its direction over the sun's disc.
+inline glm::dvec2 texelSpread(uint64_t n, glm::dvec2 shift) {
+    const double u = 0.5 + double(n) * 0.41421356237309505 + shift.x, v = 0.5 + double(n) * 0.7320508075688772 + shift.y;
+    return {u - std::floor(u), v - std::floor(v)};
+}
+
 // Two unit tangents completing the unit normal n (Duff et al. 2017, branchless).
 inline void tangents(glm::dvec3 n, glm::dvec3& t1, glm::dvec3& t2) {
     const double s = std::copysign(1.0, n.z), a = -1.0 / (s + n.z), b = n.x * n.y * a;

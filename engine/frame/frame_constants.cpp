@@ -11,7 +11,7 @@ namespace grotto {
 gpu::FrameUniforms frameUniforms(const Camera& camera, const voxel::Lighting& l, const AoOptions& ao) {
     gpu::FrameUniforms u{};
     u.viewProj = camera.viewProjRelative();
-    u.sunDirection = glm::vec4(l.sunDirection, 0.0f);
+    u.sunDirection = glm::vec4(l.sunDirection, l.sunAngle > 0.0f ? 0.0f : 1.0f);
     u.sunRadiance = glm::vec4(l.sunColor * l.sunIntensity, 0.0f);
     const voxel::AmbientSource source = ambientSource(l, ao);
     if (source != voxel::AmbientSource::Color) {  // w: 1 the sky's light, 2 the face cache's full light

@@ -1,6 +1,6 @@
 #pragma once
 // Sharp shadow edges over the face cache's sun (shaders/shadow_edge.comp): the
-// composite lists the pixels whose texels disagree on the sun by more than half,
+// composite lists the pixels whose texels a shadow edge crosses (composite.comp),
 // and this pass traces exact sun rays for each (one toward a point sun, 16 over a
 // disc) and corrects its colour. Reads the G-buffer's
 // depth and surface ids, the trace constants and the occupancy; writes the colour.

@@ -107,7 +107,7 @@ void LiveFaceCache::sync() {
     if (!scene_.faceCache_) return;
     const GpuFaceCache::Contents gpu = scene_.faceCache_->read();
     const uint32_t perFace = settings_.texelsPerSide * settings_.texelsPerSide;
-    const uint32_t sunRays = settings_.sunAngleDegrees > 0.0 ? settings_.sunRays : std::min(settings_.sunRays, 1u);
+    const uint32_t sunRays = voxel::sunRaysPerTexel(settings_);
     for (size_t g = 0; g < order_.size(); ++g) {
         const uint32_t f = order_[g];
         if (gpu.levels[g] == levels_[f]) continue;  // the tracer did not touch it

@@ -45,7 +45,7 @@ GROTTO_NAMESPACE_BEGIN
 struct FaceTraceConstants {
     vec4 sun;             // xyz: unit, toward the sun; w: cos of the disc's angular radius (1: a point)
     uint rays;            // cosine-weighted rays per texel, converged (AO and sky light)
-    uint sunRays;         // rays per texel over the sun's disc, converged (1 for a point sun)
+    uint sunRays;         // rays per texel toward the sun, converged
     uint coarseRays;      // the same for a first look at a face never traced
     uint coarseSunRays;
     float radiusVoxels;   // AO's R, in voxels

@@ -11,7 +11,7 @@ GROTTO_NAMESPACE_BEGIN
 
 struct FrameUniforms {
     mat4 viewProj;       // camera-relative world -> clip (reverse-Z)
-    vec4 sunDirection;   // xyz: unit vector toward the sun
+    vec4 sunDirection;   // xyz: unit vector toward the sun; w: 1 a point sun, 0 a disc
     vec4 sunRadiance;    // rgb: colour x intensity
     vec4 ambient;        // rgb: colour x intensity (from the sky: the intensity); w: 1 = from the sky
     vec4 skyZenith;      // rgb
