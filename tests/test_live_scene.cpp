@@ -151,7 +151,7 @@ MeshDiff diff(const voxel::Mesh& from, const voxel::Mesh& to) {
     return d;
 }
 
-class LiveScene : public GpuTest {
+class ChunkUpdates : public GpuTest {
 protected:
     static constexpr uint32_t kW = 256, kH = 160;
     Camera camera_ = makeCamera(test::lookAt({48, 50, 95}, {48, 10, 30}), kW, kH);
@@ -187,7 +187,7 @@ protected:
     }
 };
 
-TEST_F(LiveScene, UpdatedChunksDrawTheSameGBufferAsAFreshUpload) {
+TEST_F(ChunkUpdates, UpdatedChunksDrawTheSameGBufferAsAFreshUpload) {
     const voxel::World before = worldOf(baseWorld), after = worldOf(editedWorld);
     const voxel::Mesh meshBefore = before.mesh(), meshAfter = after.mesh();
     const MeshDiff d = diff(meshBefore, meshAfter);
@@ -244,7 +244,7 @@ TEST_F(LiveScene, UpdatedChunksDrawTheSameGBufferAsAFreshUpload) {
     EXPECT_EQ(differing(gbuffer(*live, before), original), 0u);
 }
 
-TEST_F(LiveScene, UpdatesStagedTwiceBeforeAFrameLandAsTheLast) {
+TEST_F(ChunkUpdates, UpdatesStagedTwiceBeforeAFrameLandAsTheLast) {
     const voxel::World before = worldOf(baseWorld), after = worldOf(editedWorld);
     const voxel::Mesh meshBefore = before.mesh(), meshAfter = after.mesh();
     auto live = uploadScene(ctx(), meshBefore, before.desc());
@@ -265,7 +265,7 @@ TEST_F(LiveScene, UpdatesStagedTwiceBeforeAFrameLandAsTheLast) {
     EXPECT_EQ(differing(gbuffer(*live, after), gbuffer(*fresh, after)), 0u);
 }
 
-TEST_F(LiveScene, BufferGrownTwiceBeforeAFrame) {
+TEST_F(ChunkUpdates, BufferGrownTwiceBeforeAFrame) {
     const voxel::World before = worldOf(baseWorld), after = worldOf(editedWorld);
     const voxel::Mesh meshBefore = before.mesh(), meshAfter = after.mesh();
     auto live = uploadScene(ctx(), meshBefore, before.desc());
@@ -298,7 +298,7 @@ TEST_F(LiveScene, BufferGrownTwiceBeforeAFrame) {
     EXPECT_EQ(differing(a, b), 0u);
 }
 
-TEST_F(LiveScene, BadChunkIsRefused) {
+TEST_F(ChunkUpdates, BadChunkIsRefused) {
     const voxel::World world = worldOf(baseWorld);
     auto live = uploadScene(ctx(), world.mesh(), world.desc());
     voxel::MeshChunkQuads q{{0, 0, 0}, {1, 0, 0, 0, 0, 0}, {}};  // claims a quad it does not have
@@ -358,7 +358,7 @@ INSTANTIATE_TEST_SUITE_P(NearAndFar, EditHistory, ::testing::Values(0.0, 1e6),
                          [](const auto& info) { return info.param == 0.0 ? "AtOrigin" : "Far"; });
 
 // Settings changed on a live renderer give what a fresh renderer with them gives.
-TEST_F(LiveScene, ResizeLightingAndAoMatchAFreshRenderer) {
+TEST_F(ChunkUpdates, ResizeLightingAndAoMatchAFreshRenderer) {
     const voxel::World world = worldOf(editedWorld);
     auto scene = uploadScene(ctx(), world.mesh(), world.desc());
     const voxel::Lighting light = world.desc().lighting;

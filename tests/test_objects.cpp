@@ -23,7 +23,7 @@ voxel::ObjectDesc movingDesc(glm::dvec3 pivot) {
     return d;
 }
 
-AoOptions options() {
+AoOptions objectsAo() {
     AoOptions o;
     o.estimator = estimatorPreset("high", 3.0);
     o.chain.temporalHistory = 16;
@@ -62,7 +62,7 @@ void checkMotion(vk::Context& ctx, const MotionCase& m) {
     const uint32_t w = m.cameraNow.width, h = m.cameraNow.height;
     FrameImages f;
     {
-        Renderer r(ctx, *scene, world.desc().lighting, options(), w, h, objects.get());
+        Renderer r(ctx, *scene, world.desc().lighting, objectsAo(), w, h, objects.get());
         r.setObjectPoses(std::vector<voxel::ObjectPose>{m.before});
         r.render(m.cameraBefore, 1);
         r.setObjectPoses(std::vector<voxel::ObjectPose>{m.now});
@@ -141,7 +141,7 @@ AoRun renderAo(vk::Context& ctx, const voxel::World& world, const voxel::World* 
     auto objects = box ? uploadObjects(ctx, boxes, desc) : nullptr;
     AoRun r;
     {
-        Renderer renderer(ctx, *scene, world.desc().lighting, options(), cam.width, cam.height, objects.get());
+        Renderer renderer(ctx, *scene, world.desc().lighting, objectsAo(), cam.width, cam.height, objects.get());
         if (box) renderer.setObjectPoses(std::vector<voxel::ObjectPose>{pose});
         for (uint32_t i = 1; i <= 8; ++i) renderer.render(cam, i);
         r.frame = renderer.readback(cam, true);
