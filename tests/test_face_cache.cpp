@@ -209,6 +209,25 @@ TEST(FaceCache, PointSunVisibilityIsTheLitShareOfTheTexelsSquare) {
     EXPECT_GT(dark, faces.size() / 10);
 }
 
+// A texel's sun rays start all over its square, so an edit its centre's ray
+// passes by, but a ray from the square's far side crosses, makes its sun stale.
+TEST(FaceCache, AnEditTheTexelsSquareSeesTowardTheSunMakesItsSunStale) {
+    const FaceBakeSettings s{.texelsPerSide = 1, .sunDirection = glm::normalize(glm::dvec3(0.25, 1.0, 0.0))};
+    const glm::dvec3 centre(0.5, 1.0, 0.5);  // the top (+y, direction 2) face of voxel (0, 0, 0), one texel
+    ASSERT_EQ(faceNormal(2), glm::dvec3(0.0, 1.0, 0.0));
+    const IndexBox box{{2, 5, 0}, {2, 5, 0}};  // from the centre the sun's ray passes it by a quarter voxel
+    const glm::dvec3 d = s.sunDirection, lo(2.0, 5.0, 0.0), hi(3.0, 6.0, 1.0);
+    auto meets = [&](glm::dvec3 p) {  // the ray p + t d through the box
+        const glm::dvec3 a = (lo - p) / d, b = (hi - p) / d;
+        const glm::dvec3 near = glm::min(a, b), far = glm::max(a, b);
+        return std::max({near.x, near.y, near.z, 0.0}) <= std::min({far.x, far.y, far.z});
+    };
+    ASSERT_FALSE(meets(centre + glm::dvec3(0.0, 1e-4, 0.0)));
+    ASSERT_TRUE(meets(centre + glm::dvec3(0.45, 1e-4, 0.0)));  // near the square's +x side
+    EXPECT_TRUE(staleAfterEdit(centre, 2, box, s, 1.0).sun);
+    EXPECT_FALSE(staleAfterEdit(centre, 2, IndexBox{{3, 5, 0}, {3, 5, 0}}, s, 1.0).sun);  // beyond every ray
+}
+
 // Each texel's rays depend on the texel alone: parts baked apart, in any order, and
 // rays added in two calls give the same counts as one bake.
 TEST(FaceCache, ABakeSplitIntoPartsEqualsOneBake) {

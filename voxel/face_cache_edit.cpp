@@ -43,7 +43,9 @@ StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed
     const glm::dvec3 sun = glm::normalize(s.sunDirection);
     const glm::dvec3 centre = 0.5 * (lo + hi);
     const double reach = glm::length(hi - lo) * 0.5 + glm::length(centre - point);  // farther than any box point
-    const double spread = std::tan(glm::radians(0.5 * s.sunAngleDegrees)) * reach + slack;
+    // The disc's spread over the distance, and the texel's square: its sun rays
+    // start up to half a texel from its centre along each of the face's axes.
+    const double spread = std::tan(glm::radians(0.5 * s.sunAngleDegrees)) * reach + 0.5 / std::max(s.texelsPerSide, 1u) + slack;
     stale.sun = rayMeetsBox(point, sun, lo - spread, hi + spread);
 
     glm::dvec3 normal(0.0);
