@@ -176,7 +176,7 @@ vec3 shadeCached(ivec2 q, uint surface) {
         float cosSun = dot(normal, frame.sunDirection.xyz);
         // An edge: a point sun's texels not all lit nor all shadowed (a texel reads
         // part lit where an edge of sunlight crosses it, however thin); a disc's
-        // disagreeing by over half (a penumbra narrower than the texels apart).
+        // disagreeing by over a quarter (a penumbra narrower than the texels apart).
         bool edge = frame.sunDirection.w > 0.5 ? sunRange.y > 0.5 / 255.0 && sunRange.x < 1.0 - 0.5 / 255.0
                                                : sunRange.y - sunRange.x > 0.25;
         if (shadowEdges && seen && cosSun > 0.0 && edge)
