@@ -9,7 +9,7 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev
   libopenvdb-dev libboost-dev libboost-iostreams-dev libtbb-dev   # for OpenVDB headers and its CMake module
-  libopenimageio-dev
+  libopenimageio-dev libpng-dev                                   # images; 8-bit PNGs written by libpng itself
   libgtest-dev libcli11-dev nlohmann-json3-dev
   gnuplot-nox                                                     # grotto tradeoff --plot
   ffmpeg                                                          # grotto flythrough --video

@@ -62,9 +62,15 @@ documented_run() {  # CMAKELISTS BUILD_DIR
     (cd "$run" && GROTTO_VALIDATION=1 LD_DEBUG=libs LD_DEBUG_OUTPUT="$run/loads" bash -c "$line") ||
         { echo "$1: '$line' failed" >&2; exit 1; }
     test -s "$run/out.png" || { echo "$1: '$line' wrote no out.png" >&2; exit 1; }
+    # The same run writing an EXR, which the image codec module encodes (an
+    # 8-bit PNG is written without it).
+    rm -f "$run"/loads.*
+    (cd "$run" && GROTTO_VALIDATION=1 LD_DEBUG=libs LD_DEBUG_OUTPUT="$run/loads" bash -c "${line/out.png/out.exr}") ||
+        { echo "$1: '${line/out.png/out.exr}' failed" >&2; exit 1; }
+    test -s "$run/out.exr" || { echo "$1: '${line/out.png/out.exr}' wrote no out.exr" >&2; exit 1; }
     installed_codec "$run" "$1"
 }
-# The image codec module that wrote the image was the installed one (found through
+# The image codec module that wrote the EXR was the installed one (found through
 # the run path Grotto::engine gives a game, or the installed grotto's own), not
 # the build tree's. The loader's account: LD_DEBUG=libs, written to DIR/loads.*.
 installed_codec() {  # DIR WHAT
@@ -73,7 +79,7 @@ installed_codec() {  # DIR WHAT
 }
 mkdir "$scratch/installed"
 GROTTO_VALIDATION=1 LD_DEBUG=libs LD_DEBUG_OUTPUT="$scratch/installed/loads" \
-    "$scratch/prefix/bin/grotto" render "$source/worlds/caves.json" --size 32x18 -o "$scratch/installed/out.png" >/dev/null
+    "$scratch/prefix/bin/grotto" render "$source/worlds/caves.json" --size 32x18 -o "$scratch/installed/out.exr" >/dev/null
 installed_codec "$scratch/installed" "the installed grotto"
 documented_run "$source/examples/embed/CMakeLists.txt" "$scratch/build"
 # The game loop: its own Vulkan device handed to Grotto, a world built in memory and dug into.

@@ -1,4 +1,5 @@
 #include "engine/image_codec/codec_library.h"
+#include "engine/image_codec/png_writer.h"
 
 #include "grotto/error.h"
 
@@ -88,6 +89,13 @@ const ImageCodec& imageCodec() {
 }
 
 void encodeImage(const grotto_image_to_encode& image, const std::function<void(std::string_view bytes)>& use) {
+    if (isPng8(image)) {  // without the module (png_writer.h)
+        std::string bytes;
+        char error[GROTTO_IMAGE_ERROR_SIZE] = "";
+        if (!writePng8(image, bytes, error)) throw Error::internal(image.target, std::string("cannot be encoded: ") + error);
+        use(bytes);
+        return;
+    }
     const ImageCodec& codec = imageCodec();
     grotto_encoded_image encoded;
     if (!codec.encode(&image, &encoded)) throw Error::internal(image.target, std::string("cannot be encoded: ") + encoded.error);
