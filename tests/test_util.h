@@ -1,5 +1,7 @@
 #pragma once
 // Helpers shared by the tests: scratch directories and running the grotto CLI.
+#include "common/sanitizers.h"
+
 #include <filesystem>
 #include <string>
 
@@ -21,11 +23,7 @@ struct RunResult {
 
 // AddressSanitizer reserves terabytes of address space and inflates resident
 // memory: memory caps and figures do not apply under it.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
+constexpr bool kAddressSanitizer = GROTTO_ASAN;
 
 // `full` in an ordinary build, `reduced` under the sanitizers (the sanitize
 // preset builds AddressSanitizer and UndefinedBehaviorSanitizer together), for
