@@ -6,6 +6,7 @@ set -euo pipefail
 
 packages=(
   cmake ninja-build g++ pkg-config
+  clang libclang-rt-14-dev                                        # the sanitize preset (docs/hardening.md)
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslang-tools
   libglm-dev
   libopenvdb-dev libboost-dev libboost-iostreams-dev libtbb-dev   # for OpenVDB headers and its CMake module

@@ -314,6 +314,7 @@ TEST_F(Temporal, DisoccludedPixelsShowNoGhostOfTheOccluder) {
             const glm::dvec3 world = end.pointAt(2 * x + 0.5, 2 * y + 0.5, z);
             const glm::dvec4 clip = firstClip * glm::dvec4(world, 1.0);
             const glm::dvec2 px = (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * glm::dvec2(w, h);
+            if (!std::isfinite(px.x) || !std::isfinite(px.y)) continue;  // the sky: no point to project
             const int bx = int(px.x) / 2, by = int(px.y) / 2;
             if (bx < 0 || by < 0 || bx >= int(before.w) || by >= int(before.h)) continue;
             if (!(before.at(before.depth, bx, by) < 25.0f)) continue;  // the pillar was in front
