@@ -6,7 +6,6 @@
 #include <csetjmp>
 #include <cstdio>
 #include <cstring>
-#include <new>
 
 namespace grotto {
 namespace {
@@ -27,13 +26,13 @@ struct Sink {
 void onWarning(png_structp, png_const_charp) {}
 
 void append(png_structp png, png_bytep data, png_size_t size) {
-    bool full = false;
+    bool failed = false;
     try {
         static_cast<Sink*>(png_get_io_ptr(png))->bytes->append(reinterpret_cast<const char*>(data), size);
-    } catch (const std::bad_alloc&) {
-        full = true;  // png_error leaves by longjmp: not from inside the handler
+    } catch (...) {  // no exception may cross libpng's C frames
+        failed = true;  // png_error leaves by longjmp: not from inside the handler
     }
-    if (full) png_error(png, "out of memory");
+    if (failed) png_error(png, "no memory left for the encoded image");
 }
 
 void flush(png_structp) {}
