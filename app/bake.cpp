@@ -12,6 +12,7 @@
 #include "common/atomic_file.h"
 #include "grotto/error.h"
 #include "voxel/brick_table.h"
+#include "voxel/daylight.h"
 #include "voxel/face_bake.h"
 #include "voxel/face_cache_file.h"
 #include "voxel/light_bake.h"
@@ -52,6 +53,7 @@ void addBakeCommand(CLI::App& app) {
     cmd->add_option("--texels", args->texels, "Texels per face side (k x k per face)")
         ->capture_default_str()->check(CLI::Range(1u, 16u));
     cmd->add_option("--radius", args->ao.set.radius, "AO radius R in world units (default: the world's)");
+    addTimeOfDayFlag(cmd, args->ao);
     addProgressOption(cmd, args->progress);
     cmd->callback([args] {
         const std::filesystem::path out = args->output;
@@ -66,7 +68,7 @@ void addBakeCommand(CLI::App& app) {
         }
         if (args->world.empty()) throw Error("bake", "a WORLD is required", "or --merge PART...");
         const std::optional<ChunkOfN> chunk = resolveChunk(args->chunk);  // refused before the world is read
-        const voxel::World world = voxel::World::load(args->world);
+        const voxel::World world = loadWorld(args->world, args->ao);
         const bool fullLight = world.desc().lighting.ambientFrom == voxel::AmbientSource::Full;
         if (fullLight && chunk)
             throw Error("--chunk", "a world with full light (lighting.ambient.from full) is baked whole",
@@ -76,7 +78,7 @@ void addBakeCommand(CLI::App& app) {
         const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
         uint64_t first = 0, count = faces.size();
         if (chunk) first = faces.size() * (chunk->k - 1) / chunk->n, count = faces.size() * chunk->k / chunk->n - first;
-        const voxel::Lighting& light = world.desc().lighting;
+        const voxel::Lighting light = voxel::lightingInEffect(world.desc().lighting);
         const voxel::FaceBakeSettings settings{.radius = radius, .texelsPerSide = args->texels, .rays = args->rays,
                                                .sunRays = args->sunRays, .sunDirection = glm::dvec3(light.sunDirection),
                                                .sunAngleDegrees = double(light.sunAngle), .fullLight = fullLight};

@@ -52,7 +52,7 @@ void addBenchCommand(CLI::App& app) {
         const Size size = parseSize(args->size);
         if (!args->json.empty()) requireOutputPath(args->json);
         auto t = std::chrono::steady_clock::now();
-        voxel::World world = voxel::World::load(args->world);
+        voxel::World world = loadWorld(args->world, args->ao);
         const double loadMs = msSince(t);
         t = std::chrono::steady_clock::now();
         voxel::Mesh mesh = world.mesh();

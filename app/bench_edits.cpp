@@ -7,6 +7,7 @@
 #include "app/options.h"
 #include "common/elapsed.h"
 #include "voxel/brick_table.h"
+#include "voxel/daylight.h"
 #include "voxel/face_cache_layout.h"
 #include "voxel/live_mesh.h"
 
@@ -77,9 +78,10 @@ EditBenchFigures benchEdits(const voxel::World& source, const EditBenchOptions& 
 
     // The same carve with the face cache kept up to date (its texels' values do
     // not change the cost: unbaked ones will do).
+    const voxel::Lighting light = voxel::lightingInEffect(source.desc().lighting);
     const voxel::FaceBakeSettings bake{.radius = kDefaultRadiusVoxels * source.voxelSize(),
-                                       .sunDirection = glm::dvec3(source.desc().lighting.sunDirection),
-                                       .sunAngleDegrees = double(source.desc().lighting.sunAngle)};
+                                       .sunDirection = glm::dvec3(light.sunDirection),
+                                       .sunAngleDegrees = double(light.sunAngle)};
     const std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(live.table, live.world);
     ms.clear();
     for (int i = 0; i < 3; ++i) {

@@ -12,6 +12,7 @@
 #include "engine/lab/light_metrics.h"
 #include "engine/lab/light_reference.h"
 #include "engine/lab/reference_view.h"
+#include "voxel/daylight.h"
 #include "voxel/face_cache_lookup.h"
 
 #include <algorithm>
@@ -48,7 +49,7 @@ std::string compareSkyLight(RenderSession& session, const Camera& camera, vk::Co
     const size_t pixels = size_t(camera.width) * camera.height;
     std::vector<float> cached(3 * pixels, 0.0f), reference(3 * pixels, 0.0f);
     std::vector<uint8_t> mask(3 * pixels, 0);
-    const voxel::Lighting& light = world.desc().lighting;
+    const voxel::Lighting light = voxel::lightingInEffect(world.desc().lighting);
     for (size_t i = 0; i < sp.points.size(); ++i) {
         const glm::vec3 a = light.skyHorizon * float(read[i].skyHorizon) + light.skyZenith * float(read[i].skyZenith);
         const glm::vec3 b = (light.skyHorizon * sky[i].skyHorizon + light.skyZenith * sky[i].skyZenith) / float(skySpp);
@@ -121,7 +122,7 @@ void addCompareCommand(CLI::App& app) {
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
-        voxel::World loaded = voxel::World::load(args->world);
+        voxel::World loaded = loadWorld(args->world, args->ao);
         const Camera camera = worldCamera(loaded, args->camera, size.width, size.height);
         const AoOptions ao = resolveAo(loaded, args->ao);
         if (!ao.enabled) throw Error("--ao", "off has no AO to compare", "pick gtao, ssao or hbao");

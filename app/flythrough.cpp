@@ -160,7 +160,7 @@ void run(const Args& a) {
         videoTools = findVideoTools();
         requireVideoOutput(a.video, size.width, size.height);
     }
-    voxel::World world = voxel::World::load(a.world);
+    voxel::World world = loadWorld(a.world, a.ao);
     const voxel::CameraPathDesc desc = findCameraPath(world, a.path);
     const CameraPath path(desc, world.camera("", size.aspect()));
     const int count = pathFrameCount(path, a.fps, a.path);

@@ -107,6 +107,25 @@ void addAoFlags(CLI::App* cmd, AoFlags& f) {
                   "With --ao cache and no --bake: bake nothing first; the GPU traces the faces in view as frames go, "
                   "within --cache-rays a frame (a still renders until they have converged)");
     addDetailFlags(cmd, f);
+    addTimeOfDayFlag(cmd, f);
+}
+
+void addTimeOfDayFlag(CLI::App* cmd, AoFlags& f) {
+    const voxel::Setting& s = voxel::setting("lighting.day.time");
+    cmd->add_option("--time-of-day", f.timeOfDay,
+                    "Hours of local solar time, 0 to 24 (12: noon): the sun on the world's day path (lighting.day; "
+                    "latitude 45, the equinox where the world states none), its colour and the sky following it")
+        ->check(finiteRange(s.lo, s.hi));
+}
+
+voxel::World loadWorld(const std::filesystem::path& path, const AoFlags& f) {
+    voxel::World world = voxel::World::load(path);
+    if (f.timeOfDay) {
+        voxel::Lighting l = world.desc().lighting;
+        l.sunFrom = voxel::SunSource::Day, l.timeOfDay = float(*f.timeOfDay);
+        world.setLighting(l);
+    }
+    return world;
 }
 
 void addDetailFlags(CLI::App* cmd, AoFlags& f) {

@@ -64,11 +64,18 @@ struct AoFlags {
     std::string bake;  // --bake: a face cache from grotto bake (implies --ao cache)
     bool progressive = false;  // --progressive: --ao cache without a bake starts empty, traced on the GPU in view
     nlohmann::ordered_json detail = nlohmann::ordered_json::object();  // the "detail" block's fields given
+    std::optional<double> timeOfDay;  // --time-of-day: hours; the sun on the world's day path
 };
 void addAoFlags(CLI::App* cmd, AoFlags& flags);
 // Only --lod-bias and --occlusion-culling (addAoFlags adds them too): for a
 // command that chooses the AO settings itself.
 void addDetailFlags(CLI::App* cmd, AoFlags& flags);
+// --time-of-day alone: for a command that takes no AO flags (bake, reference).
+void addTimeOfDayFlag(CLI::App* cmd, AoFlags& flags);
+
+// World::load, then the lighting flags over the world's (--time-of-day puts its
+// sun on the day's path at that hour). Throws as World::load does.
+voxel::World loadWorld(const std::filesystem::path& path, const AoFlags& flags);
 
 // The world's "ao" block with the flags given over it (--quality replaces the
 // world's slices, steps and rays): what a viewer starts from.

@@ -47,6 +47,7 @@ void addReferenceCommand(CLI::App& app) {
     cmd->add_option("--spp", args->spp, "Rays per pixel (>= 1; 10000 keeps every standard error below 0.005)")
         ->required();
     cmd->add_option("--radius", args->ao.set.radius, "AO radius R in world units (default: the world's GTAO radius)");
+    addTimeOfDayFlag(cmd, args->ao);
     cmd->add_option("-o,--output", args->output,
                     "Output .exr (with --light full also .png: the light as a display shows it, the world's exposure and tone map)")
         ->required();
@@ -76,7 +77,7 @@ void addReferenceCommand(CLI::App& app) {
         if (args->light == "full" && args->ao.set.radius)
             throw Error("--radius", "applies to --light ao only", "the light's paths have no radius");
         requireOutputPath(out);
-        const voxel::World world = voxel::World::load(args->world);
+        const voxel::World world = loadWorld(args->world, args->ao);
         const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         if (args->light == "full") {
             const std::vector<voxel::World> objects = voxel::loadObjectWorlds(world.desc());

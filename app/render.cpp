@@ -83,7 +83,7 @@ void addRenderCommand(CLI::App& app) {
         if (imageFormatFor(out) != ImageFormat::Png && !args->show.empty())
             throw Error(out.string(), "--show needs a .png output", "EXR holds every AOV with --aov");
         requireOutputPath(out);
-        voxel::World world = voxel::World::load(args->world);
+        voxel::World world = loadWorld(args->world, args->ao);
         const Camera camera = worldCamera(world, args->camera, size.width, size.height);
         AoOptions ao = resolveAo(world, args->ao);
         // The engine's error would name the AOV; the command line names the flag, before any frame.

@@ -77,7 +77,7 @@ void addStabilityCommand(CLI::App& app) {
         const Size size = parseSize(args->size);
         const std::filesystem::path out = args->output;
         requireOutputPath(out);
-        voxel::World world = voxel::World::load(args->world);
+        voxel::World world = loadWorld(args->world, args->ao);
         const voxel::CameraPathDesc pathDesc = findCameraPath(world, args->path);
         const CameraPath path(pathDesc, world.camera("", size.aspect()));
         // Within the path: past its last key the camera stands still, which would flatter every metric.

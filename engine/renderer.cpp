@@ -11,6 +11,7 @@
 #include "grotto/error.h"
 #include "engine/frame/render_memory.h"
 #include "shaders/shared/face_trace.h"
+#include "voxel/daylight.h"
 
 #include <chrono>
 #include <utility>
@@ -19,7 +20,7 @@ namespace grotto {
 
 Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lighting, const AoOptions& ao,
                    uint32_t width, uint32_t height, const SceneObjects* objects)
-    : ctx_(ctx), scene_(scene), lighting_(lighting), ao_(ao), targets_(ctx), objects_(objects), passes_(ctx) {
+    : ctx_(ctx), scene_(scene), given_(lighting), lighting_(voxel::lightingInEffect(lighting)), ao_(ao), targets_(ctx), objects_(objects), passes_(ctx) {
     if (objects_) poses_ = objects_->poses(0.0), objectScenes_ = objects_->list();
     try {
         requireAo(ao_);
@@ -126,13 +127,14 @@ void Renderer::restart(const FramePlan& plan) {
     resetHistory();
 }
 
-void Renderer::setLighting(const voxel::Lighting& lighting) {
+void Renderer::setLighting(const voxel::Lighting& given) {
+    const voxel::Lighting lighting = voxel::lightingInEffect(given);
     const FramePlan plan = planFor(width(), height(), ao_, lighting);
     // Uniforms only, unless passes or targets change or the ambient's source (its light everywhere).
     const bool restarts = passes_.changes(plan) || targets_.changes(plan) || lighting.ambientFrom != lighting_.ambientFrom;
     if (restarts) requireRenderFits(ctx_, plan, "lighting");  // a soft sun's history may not fit
     if (lighting.sunDirection != lighting_.sunDirection || lighting.sunAngle != lighting_.sunAngle) surfaceCamera_.reset();
-    lighting_ = lighting;
+    given_ = given, lighting_ = lighting;
     if (restarts) restart(plan);
     else plan_ = plan;
 }

@@ -135,7 +135,7 @@ public:
     // What its frames do now: their passes and targets (frame_plan.h).
     const FramePlan& plan() const { return plan_; }
     const AoOptions& ao() const { return ao_; }
-    const voxel::Lighting& lighting() const { return lighting_; }
+    const voxel::Lighting& lighting() const { return given_; }
 
 private:
     // Turns an image only a game or a window reads on or off (`flag`: displayOn_ or normalsOn_).
@@ -188,7 +188,8 @@ private:
 
     vk::Context& ctx_;
     GpuScene& scene_;
-    voxel::Lighting lighting_;
+    voxel::Lighting given_;     // as set: what lighting() returns
+    voxel::Lighting lighting_;  // in effect: the day's sun and sky at its time (voxel/daylight.h)
     AoOptions ao_;
     FrameTargets targets_;
     bool displayOn_ = false;

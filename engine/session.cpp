@@ -148,6 +148,11 @@ RenderSession::PathFrame RenderSession::pathFrame(double time, uint32_t width, u
     f.cut = lastPathTime_ && path_->cutBetween(*lastPathTime_, time);
     if (f.cut) renderer().resetHistory();
     f.edited = edits_->applyUpTo(time, *scene_, &renderer());
+    if (!pathDesc_.day.empty()) {  // the path's hour: the day's sun and sky then
+        voxel::Lighting l = lighting();
+        l.sunFrom = voxel::SunSource::Day, l.timeOfDay = float(voxel::hourAt(pathDesc_.day, time));
+        setLighting(l);
+    }
     setTime(time);
     lastPathTime_ = time;
     return f;

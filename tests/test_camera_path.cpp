@@ -387,6 +387,39 @@ TEST_F(PathFiles, BadEditsNameFileAndField) {
                 {"order.json", "edits[1].time", "must not decrease"});
 }
 
+TEST_F(PathFiles, ADayTrackGivesTheHourAtEveryTime) {
+    const fs::path file = write("day.json", std::string(R"({"keys": )") + kGoodKeys +
+                                                R"(, "day": [{"time": 1, "hours": 6}, {"time": 3, "hours": 30}]})");
+    const voxel::CameraPathDesc p = voxel::loadCameraPath(file);
+    ASSERT_EQ(p.day.size(), 2u);
+    EXPECT_DOUBLE_EQ(voxel::hourAt(p.day, 0.0), 6.0);   // held before the first key
+    EXPECT_DOUBLE_EQ(voxel::hourAt(p.day, 1.5), 12.0);  // linear between keys
+    EXPECT_DOUBLE_EQ(voxel::hourAt(p.day, 2.5), 0.0);   // 24: midnight again
+    EXPECT_DOUBLE_EQ(voxel::hourAt(p.day, 2.75), 3.0);
+    EXPECT_DOUBLE_EQ(voxel::hourAt(p.day, 9.0), 6.0);   // 30 held after the last, modulo 24
+    const std::vector<voxel::DayKey> back{{0.0, 20.0}, {1.0, 8.0}, {2.0, 8.0}};  // hours may fall, or stand
+    EXPECT_DOUBLE_EQ(voxel::hourAt(back, 0.5), 14.0);
+    EXPECT_DOUBLE_EQ(voxel::hourAt(back, 1.5), 8.0);
+    EXPECT_TRUE(voxel::loadCameraPath(write("plain.json", std::string(R"({"keys": )") + kGoodKeys + "}")).day.empty());
+}
+
+TEST_F(PathFiles, BadDayTracksNameFileAndField) {
+    auto path = [&](const std::string& name, const std::string& track) {
+        return write(name, std::string(R"({"keys": )") + kGoodKeys + R"(, "day": )" + track + "}");
+    };
+    expectError(path("one.json", R"([{"time": 0, "hours": 6}])"), {"one.json", "day", "at least two"});
+    expectError(path("notarray.json", R"({"time": 0, "hours": 6})"), {"notarray.json", "day", "array"});
+    expectError(path("nohours.json", R"([{"time": 0, "hours": 6}, {"time": 1}])"), {"nohours.json", "day[1].hours", "missing"});
+    expectError(path("far.json", R"([{"time": 0, "hours": 6}, {"time": 1, "hours": 300}])"), {"far.json", "day[1].hours", "out of range"});
+    expectError(path("neg.json", R"([{"time": 0, "hours": -1}, {"time": 1, "hours": 3}])"), {"neg.json", "day[0].hours", "out of range"});
+    expectError(path("order.json", R"([{"time": 2, "hours": 6}, {"time": 2, "hours": 8}])"), {"order.json", "day[1].time", "increase strictly"});
+    expectError(path("extra.json", R"([{"time": 0, "hours": 6, "minutes": 3}, {"time": 1, "hours": 8}])"),
+                {"extra.json", "day[0].minutes", "unknown field"});
+    expectError(write("world-day.json", std::string(R"({"grid": {"file": "x.vdb"}, "paths": {"p": {"keys": )") + kGoodKeys +
+                                            R"(, "day": [{"time": 0, "hours": 6}, {"time": 1, "hours": "noon"}]}}})"),
+                {"world-day.json", "paths.p.day[1].hours"});
+}
+
 // Found by fuzz_world_json: a good path with an unknown field beside its keys. The
 // reader refuses the field when it goes out of scope, after the path was parsed;
 // returned straight from there, the parsed path leaked (clang). The leak check of

@@ -144,5 +144,55 @@ TEST(Daylight, TheSkyDimsFromHighSunToNightThroughItsKeys) {
     EXPECT_GT(sunset.horizon.r / sunset.horizon.b, 2.0 * day.horizon.r / day.horizon.b);
 }
 
+void expectSameLight(const Lighting& a, const Lighting& b) {
+    EXPECT_EQ(a.sunDirection, b.sunDirection);
+    EXPECT_EQ(a.sunColor, b.sunColor);
+    EXPECT_EQ(a.skyZenith, b.skyZenith);
+    EXPECT_EQ(a.skyHorizon, b.skyHorizon);
+    EXPECT_EQ(a.ambientColor, b.ambientColor);
+}
+
+TEST(Daylight, AFixedSunIsInEffectAsItIsEvenBelowTheHorizon) {
+    Lighting fixed;
+    fixed.sunDirection = glm::vec3(0.3f, -0.5f, 0.2f);  // below: a fixed sun is taken as given
+    fixed.timeOfDay = 0.0f;                              // the hour is the day's, not a fixed sun's
+    expectSameLight(lightingInEffect(fixed), fixed);
+}
+
+TEST(Daylight, TheDaysSunStandsOnItsPathDimmedByTheAir) {
+    Lighting day;
+    day.sunFrom = SunSource::Day;
+    day.latitude = 51.5f, day.dayOfYear = 172.0f, day.timeOfDay = 12.0f;
+    day.sunColor = glm::vec3(2.0f, 1.8f, 1.5f);
+    const Lighting noon = lightingInEffect(day);
+    EXPECT_EQ(noon.sunFrom, SunSource::Direction);
+    const double e = elevationDegrees(glm::dvec3(noon.sunDirection));
+    EXPECT_NEAR(e, 90.0 - std::abs(51.5 - solarDeclination(172.0)), 1e-4);
+    const glm::dvec3 air = airTransmittance(e);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(noon.sunColor[c], day.sunColor[c] * air[c], 1e-5);
+    // High sun: the world's own sky (the keys hold above 30 degrees).
+    EXPECT_EQ(noon.skyZenith, day.skyZenith);
+    EXPECT_EQ(noon.skyHorizon, day.skyHorizon);
+    // In effect already: resolving again changes nothing.
+    expectSameLight(lightingInEffect(noon), noon);
+}
+
+TEST(Daylight, AtMidnightTheSunLightsNothingAndTheSkyIsDark) {
+    Lighting day;
+    day.sunFrom = SunSource::Day;
+    day.latitude = 45.0f, day.dayOfYear = 80.0f, day.timeOfDay = 0.0f;
+    day.ambientColor = glm::vec3(0.3f);
+    const Lighting night = lightingInEffect(day);
+    EXPECT_LT(night.sunDirection.y, -0.7f);  // 45 degrees below, near the equinox
+    EXPECT_EQ(night.sunColor, glm::vec3(0.0f));
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_LT(night.skyZenith[c], 0.005f * day.skyZenith[c]);
+        EXPECT_LT(night.ambientColor[c], 0.005f * day.ambientColor[c]);
+    }
+    // 24 is midnight again.
+    day.timeOfDay = 24.0f;
+    EXPECT_NEAR(lightingInEffect(day).sunDirection.y, night.sunDirection.y, 1e-5f);
+}
+
 }  // namespace
 }  // namespace grotto::voxel

@@ -104,6 +104,19 @@ TEST(EngineApi, SettingsChangeInPlace) {
     double litSum = 0.0, darkSum = 0.0;
     for (size_t i = 0; i < p.rgba.size(); ++i) litSum += lit.rgba[i], darkSum += p.rgba[i];
     EXPECT_LT(darkSum, 0.8 * litSum) << "without sun and ambient only the sky is left";
+    // The time of day: midnight's sun lights nothing and its sky is dark. The
+    // engine keeps the lighting as set (the day and its hour), not as in effect.
+    voxel::Lighting midnight = dark;
+    midnight.sunIntensity = 1.0f, midnight.ambientIntensity = 0.7f;
+    midnight.sunFrom = voxel::SunSource::Day, midnight.timeOfDay = 0.0f;
+    engine.setLighting(midnight);
+    EXPECT_EQ(engine.lighting().sunFrom, voxel::SunSource::Day);
+    EXPECT_EQ(engine.lighting().timeOfDay, 0.0f);
+    p = renderOnce(engine);
+    double litRgb = 0.0, nightRgb = 0.0;
+    for (size_t i = 0; i < p.rgba.size(); ++i)
+        if (i % 4 != 3) litRgb += lit.rgba[i], nightRgb += p.rgba[i];
+    EXPECT_LT(nightRgb, 0.05 * litRgb);
     engine.setAo({.method = "gtao", .quality = "low"});
     const RenderedFrame frame = engine.render();
     EXPECT_EQ(frame.ao.extent.width, 17u) << "AO at half resolution, rounded up";

@@ -5,6 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include <cmath>
+
 namespace grotto::voxel {
 namespace fs = std::filesystem;
 
@@ -31,7 +33,39 @@ PathKey parseKey(Reader r) {
     return k;
 }
 
+std::vector<DayKey> parseDayTrack(Reader& path, const fs::path& file, const std::string& field) {
+    const json& track = path.at("day");
+    const std::string where = (field.empty() ? "" : field + ".") + "day";
+    if (!track.is_array() || track.size() < 2)
+        path.fail("day", "expected an array of at least two keys", "e.g. [{\"time\": 0, \"hours\": 6}, {\"time\": 60, \"hours\": 30}]");
+    std::vector<DayKey> keys;
+    for (size_t i = 0; i < track.size(); ++i) {
+        const std::string name = where + "[" + std::to_string(i) + "]";
+        Reader r(file, track[i], name);
+        for (const char* needed : {"time", "hours"})
+            if (!r.has(needed)) r.fail(needed, "missing", "each key of a day track gives a path 'time' and the 'hours' then");
+        keys.push_back({.time = r.number("time", 0.0, 0.0, 1e7), .hours = r.number("hours", 0.0, 0.0, 240.0)});
+        if (i > 0 && !(keys[i].time > keys[i - 1].time))
+            r.fail("time", Reader::format(keys[i].time) + " does not come after the previous key's " + Reader::format(keys[i - 1].time),
+                   "key times must increase strictly");
+    }
+    return keys;
+}
+
 }  // namespace
+
+double hourAt(const std::vector<DayKey>& track, double time) {
+    double hours = track.front().hours;
+    if (time >= track.back().time) {
+        hours = track.back().hours;
+    } else if (time > track.front().time) {
+        size_t i = 1;
+        while (track[i].time <= time) ++i;
+        const DayKey &a = track[i - 1], &b = track[i];
+        hours = a.hours + (b.hours - a.hours) * (time - a.time) / (b.time - a.time);
+    }
+    return std::fmod(hours, 24.0);
+}
 
 CameraPathDesc parseCameraPath(Reader& r, const fs::path& file, const std::string& field) {
     CameraPathDesc p;
@@ -50,6 +84,7 @@ CameraPathDesc parseCameraPath(Reader& r, const fs::path& file, const std::strin
     if (p.nearPlane && p.farPlane && *p.farPlane != 0.0 && *p.farPlane <= *p.nearPlane)
         r.fail("far", "must exceed 'near' (or be 0 for an infinite far plane)");
     if (r.has("edits")) p.edits = parseEditTrack(r, "edits", field);
+    if (r.has("day")) p.day = parseDayTrack(r, file, field);
     if (!r.has("keys")) r.fail("keys", "missing", "a path needs at least two keys");
     const json& keys = r.at("keys");
     if (!keys.is_array()) r.fail("keys", "expected an array of keys");

@@ -38,6 +38,16 @@ struct TimedEdit {
     std::string field;  // where in the file ("paths.dig.edits[2]"), for errors found later
 };
 
+// A key of the "day" track: the hour of the day at a path time.
+struct DayKey {
+    double time = 0.0;   // seconds; strictly increasing, >= 0
+    double hours = 0.0;  // hours of local solar time, 0 to 240, increasing or not; 24 and 0 are the same hour
+};
+
+// The hour of a day track at path `time`: linear between keys, held before the
+// first and after the last, taken modulo 24 (a track from 0 to 24 is one whole day).
+double hourAt(const std::vector<DayKey>& track, double time);
+
 // How the camera moves between keys.
 enum class PathInterpolation {
     Smooth,  // a centripetal Catmull-Rom curve, squad rotations, monotone cubic fov
@@ -51,6 +61,7 @@ struct CameraPathDesc {
     PathInterpolation interpolation = PathInterpolation::Smooth;
     bool constantSpeed = false;    // reparametrise by arc length (smooth paths only)
     std::vector<TimedEdit> edits;  // the "edits" track, in time order; empty = a static world
+    std::vector<DayKey> day;       // the "day" track; empty = the world's lighting as it is
     // Unset = the world's camera conventions (its default camera).
     std::optional<double> fovDegrees, nearPlane, farPlane;
 };

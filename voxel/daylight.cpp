@@ -89,4 +89,24 @@ SkyGradient skyAt(const SkyGradient& day, double elevationDeg, std::span<const S
     return {day.zenith * scale.zenith, day.horizon * scale.horizon};
 }
 
+SunPath sunPathOf(const Lighting& l) {
+    return {.latitude = double(l.latitude), .day = double(l.dayOfYear), .north = double(l.north)};
+}
+
+Lighting lightingInEffect(const Lighting& l) {
+    if (l.sunFrom != SunSource::Day) return l;
+    Lighting now = l;
+    now.sunFrom = SunSource::Direction;
+    const glm::dvec3 toward = sunDirectionAt(sunPathOf(l), double(l.timeOfDay));
+    const double elevation = elevationDegrees(toward);
+    now.sunDirection = glm::vec3(toward);
+    now.sunColor = glm::vec3(glm::dvec3(l.sunColor) * airTransmittance(elevation) * discAboveHorizon(elevation));
+    const SkyGradient unit{glm::dvec3(1.0), glm::dvec3(1.0)};
+    const SkyGradient scale = skyAt(unit, elevation);
+    now.skyZenith = glm::vec3(glm::dvec3(l.skyZenith) * scale.zenith);
+    now.skyHorizon = glm::vec3(glm::dvec3(l.skyHorizon) * scale.horizon);
+    now.ambientColor = glm::vec3(glm::dvec3(l.ambientColor) * scale.zenith);
+    return now;
+}
+
 }  // namespace grotto::voxel

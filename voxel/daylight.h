@@ -5,6 +5,8 @@
 //
 // World axes: y up; north is `SunPath::north` degrees from -z toward +x (0:
 // north is -z and east is +x, as a map drawn looking down).
+#include "grotto/settings.h"
+
 #include <glm/vec3.hpp>
 
 #include <span>
@@ -70,5 +72,15 @@ std::span<const SkyKey> defaultSkyKeys();
 // elevation and in the logarithm of each channel (the sky dims by orders of
 // magnitude through twilight); held beyond the first and last keys.
 SkyGradient skyAt(const SkyGradient& day, double elevationDeg, std::span<const SkyKey> keys = defaultSkyKeys());
+
+// The day's path a lighting states (its latitude, day of the year and north).
+SunPath sunPathOf(const Lighting& lighting);
+
+// The light in effect: `lighting` itself for a fixed sun; for the day's sun
+// (SunSource::Day), a fixed sun at its time: the direction on the path; the
+// colour times airTransmittance and discAboveHorizon (so 0 at night); the sky
+// gradient by skyAt; the constant ambient by the sky's zenith scale. What the
+// renderer, the bake and the path tracer all light with.
+Lighting lightingInEffect(const Lighting& lighting);
 
 }  // namespace grotto::voxel

@@ -2,6 +2,7 @@
 
 #include "common/atomic_file.h"
 #include "grotto/error.h"
+#include "voxel/daylight.h"
 
 #include <algorithm>
 #include <bit>
@@ -92,7 +93,7 @@ uint64_t solidVoxelHash(const World& world) {
 }
 
 uint64_t lightHash(const World& world) {
-    const Lighting& l = world.desc().lighting;
+    const Lighting l = lightingInEffect(world.desc().lighting);
     uint64_t h = 0x6c69'6768'7466'756cull;
     auto add = [&h](float v) { h = mix(h, std::bit_cast<uint32_t>(v)); };
     auto addColor = [&add](glm::vec3 c) { add(c.r), add(c.g), add(c.b); };
@@ -103,7 +104,7 @@ uint64_t lightHash(const World& world) {
 }
 
 FaceCacheKey faceCacheKey(const World& world, double radius, uint32_t texelsPerSide) {
-    const Lighting& l = world.desc().lighting;
+    const Lighting l = lightingInEffect(world.desc().lighting);
     return {.voxelHash = solidVoxelHash(world),
             .radiusVoxels = radius / world.voxelSize(),
             .texelsPerSide = texelsPerSide,

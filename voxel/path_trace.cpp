@@ -11,6 +11,7 @@
 #include "shaders/shared/sky.h"
 #include "shaders/shared/quad.h"
 #include "voxel/brick_table.h"
+#include "voxel/daylight.h"
 #include "voxel/face_cache.h"
 #include "voxel/luminance.h"
 #include "voxel/ray_sampling.h"
@@ -28,7 +29,8 @@
 
 namespace grotto::voxel {
 
-LightSources lightSources(const Lighting& l) {
+LightSources lightSources(const Lighting& lighting) {
+    const Lighting l = lightingInEffect(lighting);
     LightSources s;
     s.skyZenith = glm::dvec3(l.skyZenith);
     s.skyHorizon = glm::dvec3(l.skyHorizon);

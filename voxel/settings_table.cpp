@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdio>
 #include <iterator>
+#include <type_traits>
 
 namespace grotto::voxel {
 namespace {
@@ -21,6 +22,7 @@ constexpr auto kQualities = [] {
 }();
 constexpr std::string_view kToneMaps[] = {"filmic", "linear"};  // ToneMap's order
 constexpr std::string_view kAmbientSources[] = {"color", "sky", "full"};  // AmbientSource's order
+constexpr std::string_view kSunSources[] = {"direction", "day"};  // SunSource's order
 constexpr std::string_view kThicknessModes[] = {"constant", "distance", "voxels"};  // ThicknessMode's order
 
 // Colours are linear RGB; above 1 is allowed (a bright sun), up to 1000.
@@ -34,7 +36,7 @@ const Setting kSettings[] = {
     // Lighting (no flags: a world's light is its own).
     {.key = "lighting.sun.direction", .type = T::Direction, .desc = &Lighting::sunDirection,
      .lo = -kMaxDirection, .hi = kMaxDirection, .uiLo = -1.0, .uiHi = 1.0,
-     .help = "Toward the sun; any length but zero"},
+     .help = "Toward the sun; any length but zero (sun.from direction)"},
     {.key = "lighting.sun.color", .type = T::Color, .desc = &Lighting::sunColor, .lo = 0.0, .hi = kMaxRadiance,
      .help = "The sun's colour, linear RGB"},
     {.key = "lighting.sun.intensity", .type = T::Number, .desc = &Lighting::sunIntensity, .lo = 0.0,
@@ -43,6 +45,19 @@ const Setting kSettings[] = {
      .help = "Exact voxel shadows from the sun"},
     {.key = "lighting.sun.angle", .type = T::Number, .desc = &Lighting::sunAngle, .lo = 0.0, .hi = 30.0,
      .help = "The sun's angular diameter in degrees; 0: a point, hard shadows"},
+    {.key = "lighting.sun.from", .type = T::Choice, .desc = &Lighting::sunFrom,
+     .help = "direction: a fixed sun along sun.direction, its colour and the sky as given; day: the sun on the "
+             "day's path at day.time, its colour and the sky (given for the high sun) dimming and reddening as it "
+             "sets, night below the horizon",
+     .choices = kSunSources},
+    {.key = "lighting.day.time", .type = T::Number, .desc = &Lighting::timeOfDay, .lo = 0.0, .hi = 24.0,
+     .help = "Hours of local solar time (12: noon), for sun.from day"},
+    {.key = "lighting.day.latitude", .type = T::Number, .desc = &Lighting::latitude, .lo = -90.0, .hi = 90.0,
+     .help = "Degrees north of the equator the world lies at, for sun.from day"},
+    {.key = "lighting.day.day_of_year", .type = T::Number, .desc = &Lighting::dayOfYear, .lo = 1.0, .hi = 365.0,
+     .help = "The day of the year (80: the March equinox, 172: the June solstice), for sun.from day"},
+    {.key = "lighting.day.north", .type = T::Number, .desc = &Lighting::north, .lo = -360.0, .hi = 360.0,
+     .help = "Degrees from -z toward +x where north lies (0: north is -z, east +x), for sun.from day"},
     {.key = "lighting.ambient.color", .type = T::Color, .desc = &Lighting::ambientColor, .lo = 0.0,
      .hi = kMaxRadiance, .help = "The ambient light's colour, linear RGB"},
     {.key = "lighting.ambient.intensity", .type = T::Number, .desc = &Lighting::ambientIntensity, .lo = 0.0,
@@ -198,8 +213,13 @@ std::string defaultText(const Setting& s) {
     const WorldDesc desc;
     if (s.type == SettingType::Choice) {
         if (const auto* m = std::get_if<std::string AoDesc::*>(&s.desc)) return desc.ao.*(*m);
-        if (const auto* m = std::get_if<ToneMap Lighting::*>(&s.desc)) return std::string(s.choices[size_t(desc.lighting.*(*m))]);
-        return std::string(s.choices[size_t(desc.lighting.*std::get<AmbientSource Lighting::*>(s.desc))]);
+        return std::visit(Overloaded{[&]<class E>(E Lighting::*m) -> std::string requires std::is_enum_v<E> {
+                                         return std::string(s.choices[size_t(desc.lighting.*m)]);
+                                     },
+                                     [&](auto) -> std::string {
+                                         throw Error::internal("settings table", "'" + std::string(s.key) + "' is no choice");
+                                     }},
+                          s.desc);
     }
     if (s.type == SettingType::Color || s.type == SettingType::Direction) {
         const glm::vec3 v = desc.lighting.*std::get<glm::vec3 Lighting::*>(s.desc);

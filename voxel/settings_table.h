@@ -28,7 +28,8 @@ enum class SettingType {
 // Where a setting lives in a world's description (AO: unset = the preset's).
 using DescMember = std::variant<std::string AoDesc::*, std::optional<double> AoDesc::*, std::optional<int> AoDesc::*,
                                 std::optional<bool> AoDesc::*, float Lighting::*, bool Lighting::*,
-                                glm::vec3 Lighting::*, ToneMap Lighting::*, AmbientSource Lighting::*, double Detail::*,
+                                glm::vec3 Lighting::*, ToneMap Lighting::*, AmbientSource Lighting::*, SunSource Lighting::*,
+                                double Detail::*,
                                 bool Detail::*>;
 // Where an AO setting lives among the settings in effect; none for method and
 // quality (they choose the estimator and preset) and for lighting and detail.

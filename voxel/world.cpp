@@ -147,6 +147,7 @@ World& World::operator=(const World& other) {
 }
 
 const WorldDesc& World::desc() const { return impl_->desc; }
+void World::setLighting(const Lighting& lighting) { impl_->desc.lighting = lighting; }
 double World::voxelSize() const { return impl_->voxelSize; }
 glm::dvec3 World::origin() const { return impl_->origin; }
 

@@ -69,6 +69,8 @@ public:
                            WorldDesc desc = {});
 
     const WorldDesc& desc() const;
+    // Replaces the lighting (a command line's or a viewer's time of day); the voxels stay.
+    void setLighting(const Lighting& lighting);
     double voxelSize() const;
     glm::dvec3 origin() const;   // world position of voxel corner (0, 0, 0)
     IndexBox bounds() const;

@@ -31,6 +31,7 @@ using grotto::AoDesc;
 using grotto::CameraDesc;
 using grotto::Lighting;
 using grotto::Material;
+using grotto::SunSource;
 using grotto::ToneMap;
 
 // How much of the world the G-buffer draws: levels of detail and occlusion culling.

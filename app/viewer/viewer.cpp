@@ -31,7 +31,7 @@ constexpr size_t kGraphFrames = 120;
 Viewer::Viewer(const ViewOptions& o)
     : options_(o),
       script_(o.script ? std::optional<ViewScript>(ViewScript::load(*o.script)) : std::nullopt),
-      loaded_(voxel::World::load(o.world)),
+      loaded_(app::loadWorld(o.world, o.ao)),
       desc_(loaded_.desc()),
       window_("grotto view - " + o.world.filename().string(), o.size.width, o.size.height),
       imgui_(window_.handle),

@@ -1,6 +1,7 @@
 #include "engine/frame/frame_plan.h"
 
 #include "grotto/error.h"
+#include "voxel/daylight.h"
 
 #include <algorithm>
 
@@ -41,7 +42,7 @@ FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const 
 
     p.shadows = lighting.sunShadows && scene.occupancy;
     p.shadowHistory = p.shadows && lighting.sunAngle > 0.0f;
-    p.cachedSun = p.shadows && p.faceCache && scene.faceCache && sameSun(*scene.faceCache, lighting);
+    p.cachedSun = p.shadows && p.faceCache && scene.faceCache && sameSun(*scene.faceCache, voxel::lightingInEffect(lighting));
     p.tracedShadows = p.shadows && (!p.cachedSun || p.objects);
     p.softShadows = p.tracedShadows && lighting.sunAngle > 0.0f;
     p.shadowEdges = p.cachedSun;
@@ -54,7 +55,8 @@ FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const 
 FramePlan planWorldFrame(const voxel::WorldDesc& desc, uint32_t width, uint32_t height, const AoOptions& ao,
                          bool objects, const FrameRequest& request) {
     SceneFacts scene{.occupancy = true};
-    if (faceCached(ao)) scene.faceCache = SceneFacts::CacheSun{desc.lighting.sunDirection, desc.lighting.sunAngle};
+    const voxel::Lighting light = voxel::lightingInEffect(desc.lighting);
+    if (faceCached(ao)) scene.faceCache = SceneFacts::CacheSun{light.sunDirection, light.sunAngle};
     scene.objects = objects && !desc.objects.empty();
     scene.movingObjects = scene.objects && std::any_of(desc.objects.begin(), desc.objects.end(), [](const auto& o) { return o.moves(); });
     return planFrame(width, height, ao, desc.lighting, scene, request);

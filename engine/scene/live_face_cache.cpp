@@ -1,6 +1,7 @@
 #include "engine/scene/live_face_cache.h"
 
 #include "shaders/shared/face_trace.h"
+#include "voxel/daylight.h"
 #include "voxel/face_cache_layout.h"
 #include "voxel/light_bake.h"
 
@@ -9,7 +10,8 @@
 
 namespace grotto {
 
-voxel::FaceBakeSettings lightingBakeSettings(const voxel::Lighting& light, double radius, uint32_t texelsPerSide) {
+voxel::FaceBakeSettings lightingBakeSettings(const voxel::Lighting& lighting, double radius, uint32_t texelsPerSide) {
+    const voxel::Lighting light = voxel::lightingInEffect(lighting);
     const double sky = light.ambientIntensity;
     return {.radius = radius, .texelsPerSide = texelsPerSide, .sunDirection = glm::dvec3(light.sunDirection),
             .sunAngleDegrees = double(light.sunAngle), .fullLight = light.ambientFrom == voxel::AmbientSource::Full,

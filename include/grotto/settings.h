@@ -43,6 +43,12 @@ enum class AmbientSource {
     Full,   // the face cache's full light: the sky, the glowing materials and every bounce (ao.method cache, baked)
 };
 
+// Where the sun stands.
+enum class SunSource {
+    Direction,  // sunDirection, the colour and the sky as given: a fixed sun from anywhere, even below
+    Day,        // the day's path at timeOfDay; the sun's colour and the sky follow its elevation (docs/lighting.md)
+};
+
 struct Lighting {
     glm::vec3 sunDirection{0.466002f, 0.828449f, 0.310668f};  // toward the sun, unit length ((0.45, 0.8, 0.3) normalised)
     glm::vec3 sunColor{1.0f, 0.95f, 0.85f};
@@ -56,6 +62,13 @@ struct Lighting {
     glm::vec3 skyHorizon{0.75f, 0.82f, 0.92f};
     float exposure = 0.6f;      // radiance multiplier before the tone map (docs/lighting.md: why 0.6)
     ToneMap toneMap = ToneMap::Filmic;
+    // The day (sunFrom Day): sunColor x sunIntensity and the sky are then the high
+    // sun's, dimmed and reddened as it sets; sunDirection is ignored.
+    SunSource sunFrom = SunSource::Direction;
+    float timeOfDay = 12.0f;  // hours of local solar time, 0 to 24 (12: noon)
+    float latitude = 45.0f;   // degrees north, -90 to 90
+    float dayOfYear = 80.0f;  // 1 to 365 (80: the March equinox)
+    float north = 0.0f;       // degrees from -z toward +x where north lies (0: north is -z, east +x)
 };
 
 // The AO settings, as a world file's "ao" block: method, preset and any
