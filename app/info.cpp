@@ -115,8 +115,10 @@ void addInfoCommand(CLI::App& app) {
         if (d.paths.empty()) std::printf("paths          none\n");
         for (const auto& [name, p] : d.paths) {
             const size_t cuts = size_t(std::count_if(p.keys.begin(), p.keys.end(), [](const voxel::PathKey& k) { return k.cut; }));
-            std::printf("path           %s: %zu keys over %g s, %zu shot%s\n", printable(name).c_str(), p.keys.size(),
+            std::printf("path           %s: %zu keys over %g s, %zu shot%s", printable(name).c_str(), p.keys.size(),
                         p.keys.empty() ? 0.0 : p.keys.back().time, cuts + 1, cuts ? "s" : "");
+            if (!p.day.empty()) std::printf(", a day from %g to %g h", p.day.front().hours, p.day.back().hours);
+            std::printf("\n");
         }
         // Each object as loaded (or generated): where its voxels come from, how many, and how it moves.
         const std::vector<voxel::World> objects = voxel::loadObjectWorlds(d);

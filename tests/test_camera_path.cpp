@@ -435,7 +435,7 @@ TEST_F(PathFiles, UnknownFieldBesideGoodKeysIsRefusedWithoutLeaking) {
 // Every shipped path has >= 2 keys, and its camera never sits in, or passes
 // through, solid voxels: checked at 30 samples a second with a margin around it.
 TEST(ShippedPaths, CameraStaysOutOfSolid) {
-    const std::map<std::string, std::string> required = {{"rooms", "orbit"}, {"caves", "walk"}, {"thin", "fence"}, {"demo", "orbit"}, {"mine", "walk"}};
+    const std::map<std::string, std::string> required = {{"rooms", "orbit"}, {"caves", "walk"}, {"thin", "fence"}, {"demo", "orbit"}, {"mine", "walk"}, {"houses", "day"}};
     for (const auto& [worldName, pathName] : required) {
         const voxel::World world = voxel::World::load(test::worldsDir() / (worldName + ".json"));
         const auto& paths = world.desc().paths;

@@ -44,6 +44,8 @@ TEST_F(CliTimeOfDay, APathsDayTrackLightsEachFrameAsThatHourRenders) {
         EXPECT_LE(worstDifference(flown, readPixels8(still)), 1) << "frame " << frame << " against " << hours << " h";
         means.push_back(mean(flown));
     }
+    const RunResult info = runGrotto("info " + world.string());
+    EXPECT_NE(info.out.find("path           p: 2 keys over 1 s, 1 shot, a day from 0 to 24 h"), std::string::npos) << info.out;
     // Midnight is dark, noon the brightest; at the equinox 6 and 18 h are sunrise and sunset.
     EXPECT_LT(means[0], 0.1 * means[2]);
     EXPECT_LT(means[1], 0.8 * means[2]);

@@ -17,7 +17,8 @@ constexpr double kSunRadiusDeg = 0.2665;
 // relative to the sun at 30 degrees (0.435 at the horizon, 0.52 at 5, 0.70 at
 // 15); twilight's keys are dimmer and bluer overhead, warmer along the horizon,
 // but compress the real range (the sky's luminance falls about 1000 times by
-// -6 degrees, here 30 times) so a night is dark and still seen.
+// -6 degrees, here 30 times) so twilight lasts; by -18 the sky is 1/300 of the
+// day's: dark at a day's exposure, seen at a night's.
 constexpr std::array<SkyKey, 8> kKeys{{
     {-18.0, {{0.002, 0.0025, 0.004}, {0.002, 0.0022, 0.003}}},
     {-12.0, {{0.006, 0.008, 0.014}, {0.008, 0.008, 0.011}}},
