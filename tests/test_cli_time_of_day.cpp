@@ -1,7 +1,9 @@
 // The time of day through the command line: a path's day track lights each
 // frame as `render --time-of-day` lights that hour, the day brightens to noon
-// and goes dark at midnight, and a world's day out of range is refused by name.
+// and goes dark at midnight, the viewer's script sets the hour as render does,
+// and a world's day out of range is refused by name.
 #include "cli_fixture.h"
+#include "tests/virtual_display.h"
 
 #include <gtest/gtest.h>
 
@@ -51,6 +53,24 @@ TEST_F(CliTimeOfDay, APathsDayTrackLightsEachFrameAsThatHourRenders) {
     EXPECT_LT(means[1], 0.8 * means[2]);
     EXPECT_LT(means[3], 0.8 * means[2]);
     EXPECT_GT(means[1], means[0]);
+}
+
+TEST_F(CliTimeOfDay, TheViewersHourIsTheHourRenderLights) {
+    REQUIRE_XVFB();
+    const fs::path world = writeDayWorld();
+    const fs::path script = writeText("dusk.json", R"({"actions": [
+        {"frame": 0, "set": {"lighting.sun.from": "day", "lighting.day.time": 17.25}}, {"frame": 3, "screenshot": "dusk.png"}]})");
+    const RunResult v = runGrotto("view " + world.string() + " --size 48x32 --script " + script.string() + " --frames 4", kUnderXvfb);
+    ASSERT_EQ(v.exitCode, 0) << v.err;
+    const fs::path still = dir_ / "still.png";
+    const RunResult r = runGrotto("render " + world.string() + " --camera c --size 48x32 --time-of-day 17.25 -o " + still.string());
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    const std::vector<uint8_t> shown = readPixels8(dir_ / "dusk.png"), rendered = readPixels8(still);
+    EXPECT_LE(worstDifference(shown, rendered), 1);
+    // Not the world's own fixed sun: the hour changed the image.
+    const fs::path noon = dir_ / "noon.png";
+    ASSERT_EQ(runGrotto("render " + world.string() + " --camera c --size 48x32 -o " + noon.string()).exitCode, 0);
+    EXPECT_GT(worstDifference(shown, readPixels8(noon)), 16);
 }
 
 TEST_F(CliTimeOfDay, AWorldsDayOutOfRangeIsRefusedByName) {
