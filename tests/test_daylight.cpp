@@ -58,19 +58,26 @@ TEST(Daylight, TheSunRisesWhereAndWhenTheClosedFormsSay) {
 }
 
 TEST(Daylight, DaysLastEighteenAndAHalfHoursAtSixtyNorthInJune) {
-    auto daylightHours = [](const SunPath& path) {
+    // Hours with the sun up, counted minute by minute, against daylightHours' closed form.
+    auto hoursUp = [](const SunPath& path) {
         int up = 0;
         const int steps = 24 * 600;
         for (int k = 0; k < steps; ++k) up += sunDirectionAt(path, 24.0 * (k + 0.5) / steps).y > 0.0;
         return 24.0 * up / steps;
     };
+    auto length = [](const SunPath& path) { return daylightHours(path).set - daylightHours(path).rise; };
     const double d = solarDeclination(172) * kDegree;
     const double expected = 2.0 * std::acos(-std::tan(60.0 * kDegree) * std::tan(d)) / kDegree / 15.0;
     EXPECT_NEAR(expected, 18.5, 0.1);
-    EXPECT_NEAR(daylightHours({.latitude = 60.0, .day = 172.0}), expected, 0.01);
-    EXPECT_NEAR(daylightHours({.latitude = 0.0, .day = 172.0}), 12.0, 0.01);
-    EXPECT_NEAR(daylightHours({.latitude = 80.0, .day = 172.0}), 24.0, 1e-9) << "the midnight sun";
-    EXPECT_NEAR(daylightHours({.latitude = 80.0, .day = 355.0}), 0.0, 1e-9) << "the polar night";
+    for (const SunPath& path : {SunPath{.latitude = 60.0, .day = 172.0}, SunPath{.latitude = 0.0, .day = 172.0},
+                                SunPath{.latitude = -35.0, .day = 20.0}})
+        EXPECT_NEAR(length(path), hoursUp(path), 0.01) << path.latitude;
+    EXPECT_NEAR(length({.latitude = 60.0, .day = 172.0}), expected, 1e-9);
+    EXPECT_NEAR(sunDirectionAt({.latitude = 60.0, .day = 172.0}, daylightHours({.latitude = 60.0, .day = 172.0}).rise).y, 0.0, 1e-12);
+    EXPECT_NEAR(hoursUp({.latitude = 80.0, .day = 172.0}), 24.0, 1e-9) << "the midnight sun";
+    EXPECT_EQ(length({.latitude = 80.0, .day = 172.0}), 24.0);
+    EXPECT_NEAR(hoursUp({.latitude = 80.0, .day = 355.0}), 0.0, 1e-9) << "the polar night";
+    EXPECT_EQ(length({.latitude = 80.0, .day = 355.0}), 0.0);
 }
 
 TEST(Daylight, NorthTurnsThePathAboutTheVertical) {

@@ -50,6 +50,14 @@ glm::dvec3 sunDirectionAt(const SunPath& path, double hours) {
     return glm::normalize(east * eastAxis + north * northAxis + glm::dvec3(0.0, up, 0.0));
 }
 
+Daylight daylightHours(const SunPath& path) {
+    const double c = -std::tan(path.latitude * kDegree) * std::tan(solarDeclination(path.day) * kDegree);
+    if (c <= -1.0) return {0.0, 24.0};
+    if (c >= 1.0) return {12.0, 12.0};
+    const double halfDay = std::acos(c) / kDegree / 15.0;
+    return {12.0 - halfDay, 12.0 + halfDay};
+}
+
 double elevationDegrees(const glm::dvec3& towardSun) { return std::asin(std::clamp(towardSun.y, -1.0, 1.0)) / kDegree; }
 
 double discAboveHorizon(double elevationDeg) {

@@ -32,6 +32,14 @@ double solarDeclination(double day);
 // Below the horizon too (up < 0): the night's sun, which lights nothing.
 glm::dvec3 sunDirectionAt(const SunPath& path, double hours);
 
+// The hours of local solar time the sun's centre is above a flat horizon on the
+// path's day: h0 = acos(-tan phi tan d) either side of noon, {0, 24} in a polar
+// day and {12, 12} in a polar night.
+struct Daylight {
+    double rise = 0.0, set = 24.0;
+};
+Daylight daylightHours(const SunPath& path);
+
 // The sun's elevation above the horizon in degrees, for a unit direction.
 double elevationDegrees(const glm::dvec3& towardSun);
 
