@@ -79,9 +79,11 @@ void addBakeCommand(CLI::App& app) {
         uint64_t first = 0, count = faces.size();
         if (chunk) first = faces.size() * (chunk->k - 1) / chunk->n, count = faces.size() * chunk->k / chunk->n - first;
         const voxel::Lighting light = voxel::lightingInEffect(world.desc().lighting);
+        const bool day = world.desc().lighting.sunFrom == voxel::SunSource::Day;  // light is the hour's, a fixed sun
         const voxel::FaceBakeSettings settings{.radius = radius, .texelsPerSide = args->texels, .rays = args->rays,
                                                .sunRays = args->sunRays, .sunDirection = glm::dvec3(light.sunDirection),
-                                               .sunAngleDegrees = double(light.sunAngle), .fullLight = fullLight};
+                                               .sunAngleDegrees = double(light.sunAngle), .fullLight = fullLight,
+                                               .day = day ? std::optional(voxel::sunPathOf(light)) : std::nullopt};
         if (fullLight) voxel::requireLightBakeFits(world, faces.size(), args->texels, {});
         voxel::FaceCacheFile cache{.header = {.key = voxel::faceCacheKey(world, radius, args->texels),
                                               .rays = settings.rays, .sunRays = voxel::sunRaysPerTexel(settings),
@@ -101,6 +103,7 @@ void addBakeCommand(CLI::App& app) {
         }
         voxel::saveFaceCache(cache, out);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+            if (day) lightNote += ", the day's sun at " + std::to_string(voxel::kDaySunPositions) + " positions";
         std::printf("wrote %s (faces %llu to %llu of %llu, %u x %u texels each, %u rays a texel%s, %.1f s)\n", out.c_str(),
                     (unsigned long long)first, (unsigned long long)(first + count), (unsigned long long)faces.size(),
                     args->texels, args->texels, args->rays, lightNote.c_str(), seconds);

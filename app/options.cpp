@@ -250,9 +250,14 @@ voxel::CameraPathDesc lookUpCameraPath(const voxel::World& world, const std::str
 
 }  // namespace
 
-voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name) {
+voxel::CameraPathDesc findCameraPath(voxel::World& world, const std::string& name) {
     voxel::CameraPathDesc path = lookUpCameraPath(world, name);
     checkPathEdits(path, world);
+    if (!path.day.empty()) {
+        voxel::Lighting l = world.desc().lighting;
+        l.sunFrom = voxel::SunSource::Day, l.timeOfDay = float(voxel::hourAt(path.day, 0.0));
+        world.setLighting(l);
+    }
     return path;
 }
 

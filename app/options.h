@@ -50,8 +50,10 @@ int pathFrameCount(const CameraPath& path, int fps, const std::string& name);
 // A path named in the world file, or a path file given directly (a path .json, or
 // a glTF .glb/.gltf whose animated camera becomes the path: voxel/gltf/gltf_camera.h),
 // with its edits checked against the world (checkPathEdits); throws grotto::Error
-// (input) listing the world's paths when there is no such one.
-voxel::CameraPathDesc findCameraPath(const voxel::World& world, const std::string& name);
+// (input) listing the world's paths when there is no such one. A path with a
+// day track lights `world` by the day's sun from its first hour on, so a face
+// cache given or baked for its frames is the day's (docs/face-cache.md).
+voxel::CameraPathDesc findCameraPath(voxel::World& world, const std::string& name);
 
 // --path NAME and --path-file FILE, one of them required, both into `path`.
 void addPathOptions(CLI::App* cmd, std::string& path);

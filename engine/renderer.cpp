@@ -25,7 +25,7 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
     try {
         requireAo(ao_);
         // Before any allocation can fail halfway.
-        const FramePlan plan = planFor(width, height, ao_, lighting_);
+        const FramePlan plan = planFor(width, height, ao_, given_);
         requireRenderFits(ctx, plan, "image size");
         for (auto& s : slots_) s = std::make_unique<FrameSlot>(ctx);
         VkSemaphoreTypeCreateInfo type{.sType = VK_STRUCTURE_TYPE_SEMAPHORE_TYPE_CREATE_INFO,
@@ -43,7 +43,8 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
 SceneFacts Renderer::sceneFacts() const {
     SceneFacts facts{.occupancy = scene_.occupancy() != nullptr, .objects = objects_ != nullptr,
                      .movingObjects = objects_ && objects_->moving};
-    if (const GpuFaceCache* cache = scene_.faceCache()) facts.faceCache = {cache->sun().direction, cache->sun().angleDegrees};
+    if (const GpuFaceCache* cache = scene_.faceCache())
+        facts.faceCache = {cache->sun().direction, cache->sun().angleDegrees, cache->sun().day};
     return facts;
 }
 
@@ -116,7 +117,7 @@ void Renderer::release() {
 }
 
 void Renderer::resize(uint32_t width, uint32_t height) {
-    const FramePlan plan = planFor(width, height, ao_, lighting_);
+    const FramePlan plan = planFor(width, height, ao_, given_);
     requireRenderFits(ctx_, plan, "image size");
     restart(plan);
 }
@@ -129,7 +130,7 @@ void Renderer::restart(const FramePlan& plan) {
 
 void Renderer::setLighting(const voxel::Lighting& given) {
     const voxel::Lighting lighting = voxel::lightingInEffect(given);
-    const FramePlan plan = planFor(width(), height(), ao_, lighting);
+    const FramePlan plan = planFor(width(), height(), ao_, given);
     // Uniforms only, unless passes or targets change or the ambient's source (its light everywhere).
     const bool restarts = passes_.changes(plan) || targets_.changes(plan) || lighting.ambientFrom != lighting_.ambientFrom;
     if (restarts) requireRenderFits(ctx_, plan, "lighting");  // a soft sun's history may not fit
@@ -152,7 +153,7 @@ void Renderer::requireAo(const AoOptions& ao) const {
 
 void Renderer::setAo(const AoOptions& ao) {
     requireAo(ao);
-    const FramePlan plan = planFor(width(), height(), ao, lighting_);
+    const FramePlan plan = planFor(width(), height(), ao, given_);
     requireRenderFits(ctx_, plan, "AO settings");
     ao_ = ao;
     restart(plan);

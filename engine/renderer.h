@@ -144,7 +144,7 @@ private:
     SceneFacts sceneFacts() const;
     // The frame at a size with these settings, this scene and what the caller asked for.
     FramePlan planFor(uint32_t width, uint32_t height, const AoOptions& ao, const voxel::Lighting& lighting) const;
-    FramePlan wantedPlan() const { return planFor(width(), height(), ao_, lighting_); }  // at the current size
+    FramePlan wantedPlan() const { return planFor(width(), height(), ao_, given_); }  // at the current size
     // Takes `plan` as the frame's: its passes made, dropped or remade (once no
     // frame in flight uses those it frees).
     void applyPlan(const FramePlan& plan);

@@ -25,6 +25,16 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
         const CameraVoxel v = cameraVoxel(camera, scene_.voxelSize, scene_.worldOrigin);
         uniforms.cameraCell = glm::ivec4(v.cell, int32_t(frameIndex & 0x7fffffffu));
         uniforms.cameraFraction = glm::vec4(v.fraction, float(1.0 / scene_.voxelSize));
+        // The day's sun from the cache: the positions either side of the hour.
+        if (plan_.cachedSun && cache.sun().day) {
+            const voxel::SunPath& path = *cache.sun().day;
+            const int count = int(voxel::kDaySunPositions);
+            const voxel::SunPositionSpan span = voxel::sunPositionSpan(path, double(given_.timeOfDay), count);
+            const uint32_t before = uint32_t(span.before), after = uint32_t(span.before + 1);
+            uniforms.daySun = glm::uvec4(cache.daySunFirst(), before, after, 0u);
+            uniforms.daySunBefore = glm::vec4(glm::vec3(voxel::sunDirectionAt(path, voxel::sunPositionHour(path, int(before), count))), 0.0f);
+            uniforms.daySunAfter = glm::vec4(glm::vec3(voxel::sunDirectionAt(path, voxel::sunPositionHour(path, int(after), count))), 0.0f);
+        }
     }
     std::memcpy(s.frame.mapped(), &uniforms, sizeof uniforms);
     if (plan_.chain) {

@@ -174,14 +174,12 @@ vec3 shadeCached(ivec2 q, uint surface) {
         vec4 c = faceCacheBlend(t, seen, sunRange);  // AO, sun, horizon and zenith weights
         // With the cache's sun, the shadow pass holds the objects' alone.
         float cosSun = dot(normal, frame.sunDirection.xyz);
-        // An edge: a point sun's texels not all lit nor all shadowed (a texel reads
-        // part lit where an edge of sunlight crosses it, however thin); a disc's
-        // disagreeing by over a quarter (a penumbra narrower than the texels apart).
-        bool edge = frame.sunDirection.w > 0.5 ? sunRange.y > 0.5 / 255.0 && sunRange.x < 1.0 - 0.5 / 255.0
-                                               : sunRange.y - sunRange.x > 0.25;
-        if (shadowEdges && seen && cosSun > 0.0 && edge)
-            listShadowEdge(q, c.y, exposed(materialOf(surface).rgb * frame.sunRadiance.rgb * (cosSun * sunReach)));
-        if (cachedSun && seen) sunReach *= c.y;
+        bool edge = false;
+        float sun = cachedSun ? cachedSunAt(t, c, sunRange, normal, edge) : 1.0;
+        // No rays where the sun gives no light (the day's, at night).
+        if (shadowEdges && seen && cosSun > 0.0 && edge && frame.sunRadiance.r + frame.sunRadiance.g + frame.sunRadiance.b > 0.0)
+            listShadowEdge(q, sun, exposed(materialOf(surface).rgb * frame.sunRadiance.rgb * (cosSun * sunReach)));
+        if (cachedSun && seen) sunReach *= sun;
         light = vec3(max(c.x - objectPart.x, 0.0), max(c.zw - objectPart.yz, vec2(0.0)));
     }
     vec3 ambient = open;

@@ -25,9 +25,23 @@ FaceCacheTaps cachedTapsAt(ivec2 q, uint face) {
     return faceCacheTaps(cachedPointAt(q, face), frame.cameraCell.xyz, face);
 }
 
-// The light cached at that point.
-vec4 cachedLightAt(ivec2 q, uint face, out bool found) {
-    vec2 sunRange;
-    return faceCacheBlend(cachedTapsAt(q, face), found, sunRange);
-}
 
+// The cache's sun visibility at taps `t` of a surface with normal `normal` (c and
+// sunRange: faceCacheBlend's): with the day's sun, from the positions either side
+// of the hour; else the texels' own. `edge`: the texels cannot say, and a ray per
+// pixel must (a point sun's texels not all lit nor all shadowed: a texel reads
+// part lit where an edge of sunlight crosses it, however thin; a disc's
+// disagreeing by over a quarter: a penumbra narrower than the texels apart; the
+// day's positions or texels disagreeing).
+float cachedSunAt(FaceCacheTaps t, vec4 c, vec2 sunRange, vec3 normal, out bool edge) {
+    if (frame.daySun.x != 0u) {
+        // A position behind the face reads dark, as the face is then: where the
+        // sun crosses the face's plane between the two, they disagree.
+        float sun = faceCacheDaySun(t, frame.daySun.x, (1u << frame.daySun.y) | (1u << frame.daySun.z), edge);
+        edge = edge || (dot(normal, frame.daySunBefore.xyz) <= 0.0 && dot(normal, frame.daySunAfter.xyz) <= 0.0);
+        return sun;
+    }
+    edge = frame.sunDirection.w > 0.5 ? sunRange.y > 0.5 / 255.0 && sunRange.x < 1.0 - 0.5 / 255.0
+                                      : sunRange.y - sunRange.x > 0.25;
+    return c.y;
+}

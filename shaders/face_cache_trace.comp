@@ -4,7 +4,8 @@
 // face_cache_plan.comp took this frame, each tracing the texel's whole sequence of
 // rays (the CPU bake's, voxel/face_bake.cpp) afresh, so a texel traced again
 // continues nothing and needs no sums kept. It writes the texel's packed bits
-// (shared/face_cache.h) and its face's level. With full light, a texel traced
+// (shared/face_cache.h), with the day's sun its bits for each position, and its
+// face's level. With full light, a texel traced
 // here holds the sky's light alone until the world is baked again.
 #include "shared/face_trace.h"
 #include "shared/quad.h"
@@ -17,7 +18,8 @@ layout(set = 0, binding = 0, std430) readonly buffer Queue { uvec4 queue[]; };
 layout(set = 0, binding = 1, std430) buffer Header { uint header[]; };
 layout(set = 0, binding = 2, std430) buffer Levels { uint levels[]; };
 layout(set = 0, binding = 3, std430) buffer FaceTexels { uint faceTexels[]; };
-#define GROTTO_TRACE_BINDING 4
+layout(set = 0, binding = 4, std430) readonly buffer DaySun { vec4 dayPositions[]; };  // xyz: toward the sun
+#define GROTTO_TRACE_BINDING 5
 #include "trace.glsl"
 #include "texel_rays.glsl"
 
@@ -103,6 +105,16 @@ void main() {
                      ? faceCacheEncodeLight((horizon * c.skyHorizon.rgb + zenith * c.skyZenith.rgb) / samples)
                      : packHalf2x16(vec2(horizon, zenith) / samples);
     storeTexel(face * texels + t, aoSun, light);
+    // The day's positions, from the centre, at every level: a sun seen once is
+    // seen exact, and where these bits disagree the frame traces per pixel.
+    if (c.dayPositions > 0u) {
+        uint bits = 0u;
+        for (uint m = 0u; m < c.dayPositions; ++m) {
+            vec3 d = dayPositions[m].xyz;
+            if (dot(d, n) > 0.0 && leaves(start, d)) bits |= 1u << m;
+        }
+        faceTexels[c.daySunFirst + face * texels + t] = bits;
+    }
     if (t == 0u) {
         uint shiftBits = (face & 15u) * 2u;
         atomicAnd(levels[face >> 4u], ~(3u << shiftBits));

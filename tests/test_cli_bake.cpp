@@ -41,7 +41,7 @@ TEST_F(Bake, PartsJoinedInAnyOrderAreTheWholeBakeByteForByte) {
     const RunResult r = runGrotto("bake --merge " + parts + "-o " + merged.string());
     ASSERT_EQ(r.exitCode, 0) << r.err;
     const std::string a = fileBytes(whole), b = fileBytes(merged);
-    EXPECT_GT(a.size(), 104u + 100u * 4u * 24u);  // a header and hundreds of faces of 2 x 2 texels
+    EXPECT_GT(a.size(), 132u + 100u * 4u * 24u);  // a header and hundreds of faces of 2 x 2 texels
     EXPECT_TRUE(a == b);
 }
 
@@ -87,7 +87,7 @@ TEST_F(Bake, BadArgumentsPartsAndFilesAreRefused) {
     for (int i = 0; i < 8; ++i) huge[88 + i] = char(0x7f);  // the face count, at byte 88
     damaged("huge.gfc", huge, "faces");
     std::string counts = good;  // a texel with more open rays than rays
-    counts[104 + 4] = char(0xff);  // the first texel's open rays (the header is 104 bytes)
+    counts[132 + 4] = char(0xff);  // the first texel's open rays (the header is 132 bytes)
     damaged("counts.gfc", counts, "texel 0", "leave a gap");
 }
 
@@ -111,6 +111,22 @@ TEST_F(Bake, RenderReadsItsWorldsBakeAndRefusesAnyOther) {
     expectRefused(render + part.string(), "a part of a bake", png);
     expectRefused(render + bakeFile.string() + " --ao gtao", "--bake", png);
     expectRefused(render + bakeFile.string() + " --progressive", "--progressive: starts the face cache empty", png);
+
+    // The day's sun (--time-of-day): one bake serves every hour, and is no fixed sun's.
+    const fs::path day = dir_ / "day.gfc", dayPart = dir_ / "day-part.gfc";
+    ASSERT_EQ(runGrotto(bake(pillars_, day, "--time-of-day 10")).exitCode, 0);
+    ASSERT_EQ(runGrotto(bake(pillars_, dayPart, "--time-of-day 10 --chunk 2/2")).exitCode, 0);
+    EXPECT_EQ(fileBytes(day).size(), fileBytes(bakeFile).size() + 4 * (fileBytes(bakeFile).size() - 132) / 24)
+        << "4 bytes a texel more";
+    for (const char* hour : {"6.5", "13", "18.25"}) {
+        const RunResult r = runGrotto(render + day.string() + " --time-of-day " + hour);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_TRUE(fs::remove(png));
+    }
+    expectRefused(render + day.string(), "day's sun: baked for latitude 45", png);
+    expectRefused(render + bakeFile.string() + " --time-of-day 12", "day's sun: baked for none", png);
+    expectRefused("bake --merge " + part.string() + " " + dayPart.string() + " -o " + (dir_ / "mixed.gfc").string(),
+                  "day's sun", dir_ / "mixed.gfc");
 }
 
 // --progressive: no bake; the GPU traces what the still sees until none is left,

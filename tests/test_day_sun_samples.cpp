@@ -5,7 +5,8 @@
 // arc). At random hours a point's two neighbouring positions either disagree
 // (a shadow edge passing: the frame would trace that pixel) or agree; a miss is
 // where they agree and the sun at that hour does not. A face turned from the sun
-// needs neither: the frame knows it from the normal. docs/face-cache.md, "The
+// needs neither: the frame knows it from the normal. A position behind the face
+// reads dark (shaders/face_cache_surface.glsl's rule). docs/face-cache.md, "The
 // day's sun", has the figures.
 #include "tests/test_util.h"
 #include "voxel/daylight.h"
@@ -61,12 +62,12 @@ TEST(DaySunSamples, ThirtyTwoPositionsMissUnderAHalfPercentOfHousesDay) {
                 if (truth == Behind) continue;  // no light, nothing to look up
                 s.facing += 1.0;
                 const int i = std::min(m - 2, int((h - day.rise) / (day.set - day.rise) * (m - 1)));
-                // A neighbour behind the face says nothing; two that say differently are an edge.
-                Sun a = Sun(states[size_t(i)]), b = Sun(states[size_t(i) + 1]);
-                if (a == Behind) a = b;
-                if (b == Behind) b = a;
-                if (a != b || a == Behind) s.edges += 1.0;
-                else if (a != truth) s.missed += 1.0;
+                // A neighbour behind the face reads dark, as the face is then (the
+                // cache's bit); two that read differently are an edge, and so are
+                // two behind it while the sun between them is not.
+                const Sun a = Sun(states[size_t(i)]), b = Sun(states[size_t(i) + 1]);
+                if ((a == Reaching) != (b == Reaching) || (a == Behind && b == Behind)) s.edges += 1.0;
+                else if ((a == Reaching) != (truth == Reaching)) s.missed += 1.0;
             }
         }
         s.missed /= s.facing, s.edges /= s.facing;

@@ -35,8 +35,9 @@ inline uint32_t faceCacheK() { return gpuTwin->texelsPerSide; }
 #include <functional>
 #include <limits>
 #include <numbers>
-#include <tuple>
+#include <cstdio>
 #include <random>
+#include <tuple>
 
 namespace grotto::voxel {
 namespace {
@@ -402,12 +403,12 @@ TEST(FaceCache, BadSettingsAreRefused) {
 // the AO and sun a fresh bake before the edit did (and the same sky, unless the
 // rule left its sky for later, off by little), or traced again and equal to the
 // fresh bake.
-TEST(FaceCache, AnEditRetracesWhatItCanReachAndTouchesNothingElse) {
+// Random edits of a random world baked with `s`: after each, what the rule says
+// the edit reaches equals a fresh bake, and the rest is carried over and still right.
+void checkEditsRetraceWhatTheyReach(const FaceBakeSettings& s) {
     std::mt19937 rng(25);
     World w = randomWorld(28, 0.08, rng);
     BrickTable table(w);
-    const FaceBakeSettings s{.radius = 2.0, .texelsPerSide = 2, .rays = 12, .sunRays = 3,
-                             .sunDirection = glm::normalize(glm::dvec3(0.3, 0.9, -0.2)), .sunAngleDegrees = 4.0};
     std::vector<ExposedFace> faces = exposedFaces(table, w);
     std::vector<FaceTexel> texels = bake(w, faces, s), truth = texels;  // truth: a fresh bake of the world now
     std::uniform_int_distribution<int> at(0, 27), extent(0, 4);
@@ -446,6 +447,7 @@ TEST(FaceCache, AnEditRetracesWhatItCanReachAndTouchesNothingElse) {
                 const FaceTexel& was = truth[j];
                 ASSERT_EQ(fresh[i].open, was.open) << "edit " << e << ", face " << f << ": AO the rule missed";
                 ASSERT_EQ(fresh[i].sunOpen, was.sunOpen) << "edit " << e << ", face " << f << ": sun the rule missed";
+                ASSERT_EQ(fresh[i].daySun, was.daySun) << "edit " << e << ", face " << f << ": the day's sun the rule missed";
                 ++carried;
                 const bool skyFar =
                     staleAfterEdit(texelPoint(faces[f], 2, t % 2, t / 2), faces[f].dir, result.voxels, s, 1.0).skyFar;
@@ -467,6 +469,50 @@ TEST(FaceCache, AnEditRetracesWhatItCanReachAndTouchesNothingElse) {
     ASSERT_GT(far, 100u);
     // Left for later, the far texels' sky is off by less than the rule's bound on average.
     EXPECT_LT(farError / double(far), kSkyStaleShare);
+}
+
+TEST(FaceCache, AnEditRetracesWhatItCanReachAndTouchesNothingElse) {
+    checkEditsRetraceWhatTheyReach({.radius = 2.0, .texelsPerSide = 2, .rays = 12, .sunRays = 3,
+                                    .sunDirection = glm::normalize(glm::dvec3(0.3, 0.9, -0.2)), .sunAngleDegrees = 4.0});
+}
+
+// The day's sun: the box swept along the whole day's path.
+TEST(FaceCache, AnEditRetracesTheDaysSunAlongTheBoxSweptOverTheDay) {
+    checkEditsRetraceWhatTheyReach({.radius = 2.0, .texelsPerSide = 2, .rays = 12, .day = SunPath{48.0, 172.0, 20.0}});
+}
+
+// Each texel's bit for a position of the day's sun is World::raycast's answer
+// from its centre toward that position (0 where the sun is behind the face).
+TEST(FaceCache, TheDaysSunBitsAreExactRaysFromTheTexelsCentre) {
+    std::mt19937 rng(44);
+    const World w = randomWorld(20, 0.1, rng);
+    const SunPath path{48.0, 172.0, 20.0};
+    const FaceBakeSettings s{.radius = 2.0, .texelsPerSide = 2, .rays = 2, .day = path};
+    const std::vector<ExposedFace> faces = exposedFaces(w);
+    const std::vector<FaceTexel> texels = bake(w, faces, s);
+    const std::vector<glm::dvec3> sun = daySunDirections(path);
+    ASSERT_EQ(sun.size(), size_t(kDaySunPositions));
+    EXPECT_NEAR(elevationDegrees(sun.front()), 0.0, 1e-9) << "the first at sunrise";
+    EXPECT_NEAR(elevationDegrees(sun.back()), 0.0, 1e-9) << "the last at sunset";
+    size_t compared = 0, differing = 0, lit = 0;
+    for (size_t f = 0; f < faces.size(); ++f) {
+        const glm::dvec3 n = faceNormal(faces[f].dir);
+        for (uint32_t t = 0; t < 4; ++t) {
+            const FaceTexel& texel = texels[f * 4 + t];
+            ASSERT_EQ(texel.dayPositions, kDaySunPositions);
+            EXPECT_EQ(texel.sunSamples, 0u) << "no fixed sun's rays";
+            const glm::dvec3 from = texelPoint(faces[f], 2, t % 2, t / 2) + n * 1e-4;
+            for (uint32_t m = 0; m < kDaySunPositions; ++m) {
+                const bool exact = glm::dot(sun[m], n) > 0.0 && !w.raycast(from, sun[m], 1e6);
+                const bool bit = (texel.daySun >> m) & 1u;
+                ++compared, lit += exact, differing += bit != exact;
+            }
+        }
+    }
+    std::printf("[ measured ] %zu of %zu bits differ from World::raycast, %zu lit\n", differing, compared, lit);
+    EXPECT_GT(lit, compared / 10);
+    EXPECT_LT(lit, compared * 9 / 10);
+    EXPECT_LE(differing, compared / 10000) << "rays that graze a voxel edge";
 }
 
 // The row-at-a-time count equals the listed faces, and the bricks holding them,

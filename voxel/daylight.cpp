@@ -58,6 +58,18 @@ Daylight daylightHours(const SunPath& path) {
     return {12.0 - halfDay, 12.0 + halfDay};
 }
 
+double sunPositionHour(const SunPath& path, int position, int count) {
+    const Daylight d = daylightHours(path);
+    return d.rise + (d.set - d.rise) * double(position) / double(count - 1);
+}
+
+SunPositionSpan sunPositionSpan(const SunPath& path, double hours, int count) {
+    const Daylight d = daylightHours(path);
+    const double at = d.set > d.rise ? std::clamp((hours - d.rise) / (d.set - d.rise), 0.0, 1.0) * (count - 1) : 0.0;
+    const int before = std::min(int(at), count - 2);
+    return {before, at - before};
+}
+
 double elevationDegrees(const glm::dvec3& towardSun) { return std::asin(std::clamp(towardSun.y, -1.0, 1.0)) / kDegree; }
 
 double discAboveHorizon(double elevationDeg) {

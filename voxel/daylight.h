@@ -18,6 +18,7 @@ struct SunPath {
     double latitude = 45.0;  // degrees, -90 (south pole) to 90
     double day = 80.0;       // day of the year, 1 to 365 (80: the March equinox)
     double north = 0.0;      // degrees from -z toward +x
+    bool operator==(const SunPath&) const = default;
 };
 
 // The sun's declination on `day` in degrees: -23.44 cos(360 (day + 10) / 365),
@@ -39,6 +40,18 @@ struct Daylight {
     double rise = 0.0, set = 24.0;
 };
 Daylight daylightHours(const SunPath& path);
+
+// The day's sun positions a face cache keeps (docs/face-cache.md, "The day's
+// sun"): `count` (>= 2) evenly spaced in hour from sunrise to sunset, the first
+// at sunrise and the last at sunset, and the hour of each.
+double sunPositionHour(const SunPath& path, int position, int count);
+// Where the hour `hours` falls among them: the position at or before it (0 to
+// count - 2) and how far on toward the next (0 to 1), clamped to the day.
+struct SunPositionSpan {
+    int before = 0;
+    double toward = 0.0;
+};
+SunPositionSpan sunPositionSpan(const SunPath& path, double hours, int count);
 
 // The sun's elevation above the horizon in degrees, for a unit direction.
 double elevationDegrees(const glm::dvec3& towardSun);

@@ -54,6 +54,7 @@ public:
         const IndexBox bounds = world.bounds();
         lo_ = glm::dvec3(bounds.min), hi_ = glm::dvec3(bounds.max) + 1.0;
         tangents(sun_, s1_, s2_);
+        if (daySunPositions(s)) day_ = daySunDirections(*s.day);
     }
 
     // Adds the settings' rays to `t` from p (voxel units, on a face plane) with the
@@ -92,6 +93,13 @@ public:
             if (glm::dot(d, n) > 0.0 && leaves(p + u * a.x + v * a.y, d)) ++t.sunOpen;
         }
         t.sunSamples += sunRays_;
+        // The day's positions, once, from the centre: the frame traces wherever
+        // neighbouring texels or positions disagree, so one ray each suffices.
+        if (t.dayPositions == day_.size()) return;
+        t.daySun = 0;
+        for (size_t m = 0; m < day_.size(); ++m)
+            if (glm::dot(day_[m], n) > 0.0 && leaves(p, day_[m])) t.daySun |= 1u << m;
+        t.dayPositions = uint32_t(day_.size());
     }
 
 private:
@@ -102,6 +110,7 @@ private:
     const FaceBakeSettings& s_;
     double tAo_;
     glm::dvec3 sun_, s1_, s2_, lo_, hi_;
+    std::vector<glm::dvec3> day_;  // toward the sun at the day's positions
     bool pointSun_;
     uint32_t sunRays_;
     double cosHalf_;

@@ -4,6 +4,7 @@
 // follow one low-discrepancy sequence turned by a hash of the face and texel, so
 // a texel gets the same bits whichever faces share its call, in whatever order:
 // a bake split into parts and joined equals one bake.
+#include "voxel/daylight.h"
 #include "voxel/face_cache.h"
 
 #include <glm/vec3.hpp>
@@ -11,6 +12,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -37,11 +39,16 @@ struct FaceBakeSettings {
     // rays then leave the sky weights to the light bake's rays.
     bool fullLight = false;
     glm::dvec3 skyZenith{0.0}, skyHorizon{0.0};
+    // The day's sun (lighting.sun.from day): one ray a position along its path
+    // from each texel's centre (FaceTexel::daySun) instead of sunRays toward one sun.
+    std::optional<SunPath> day;
 };
 
 // The rays a texel gets toward the sun: sunRays, even for a point sun (they start
-// all over the texel's square); none for a bake without light.
-inline uint32_t sunRaysPerTexel(const FaceBakeSettings& s) { return s.light ? s.sunRays : 0; }
+// all over the texel's square); none for a bake without light, or for the day's sun.
+inline uint32_t sunRaysPerTexel(const FaceBakeSettings& s) { return s.light && !s.day ? s.sunRays : 0; }
+// The day's positions a texel traces: kDaySunPositions with the day's sun and light.
+inline uint32_t daySunPositions(const FaceBakeSettings& s) { return s.light && s.day ? kDaySunPositions : 0; }
 
 // The hash a texel's rays are turned by: of its face and place alone, so a texel
 // traced again after an edit, or in another part of a bake, gets the same rays.

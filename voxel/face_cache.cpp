@@ -21,6 +21,13 @@ constexpr glm::ivec3 kStep[6] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {
 
 }  // namespace
 
+std::vector<glm::dvec3> daySunDirections(const SunPath& path) {
+    std::vector<glm::dvec3> out;
+    for (uint32_t m = 0; m < kDaySunPositions; ++m)
+        out.push_back(sunDirectionAt(path, sunPositionHour(path, int(m), int(kDaySunPositions))));
+    return out;
+}
+
 std::vector<ExposedFace> exposedFaces(const World& world) { return exposedFaces(BrickTable(world), world); }
 
 std::vector<ExposedFace> exposedFaces(const BrickTable& table, const World& world) {

@@ -8,9 +8,12 @@
 //  - sky light: the same rays run on through the whole world; an open one adds the
 //    sky gradient's radiance in its direction (shaders/shared/sky.h), kept as the
 //    weights of its two colours, so a new sky re-weights without tracing;
-//  - sun visibility: the share of rays toward the sun's disc that leave the world.
+//  - sun visibility: the share of rays toward the sun's disc that leave the world;
+//  - or, for the day's moving sun, whether a ray from the texel's centre toward
+//    each of kDaySunPositions positions along the day's path leaves the world.
 // Counts stay beside the sums, so more rays can be added later and a texel's
 // convergence is known. OpenVDB-free interface.
+#include "voxel/daylight.h"
 #include "voxel/world.h"
 
 #include <glm/vec3.hpp>
@@ -21,6 +24,13 @@
 namespace grotto::voxel {
 
 class BrickTable;
+
+// The day's sun positions a texel keeps a bit for (voxel/daylight.h's
+// sunPositionHour): 32 miss 0.08% of sunlit samples on houses' day
+// (docs/face-cache.md, "The day's sun: how many positions").
+inline constexpr uint32_t kDaySunPositions = 32;
+// Toward the sun at each of them along `path`.
+std::vector<glm::dvec3> daySunDirections(const SunPath& path);
 
 // A solid voxel's face whose neighbour across it is open. `dir` as RayHit::face:
 // 0..5 = +X -X +Y -Y +Z -Z (the direction the face looks).
@@ -59,6 +69,10 @@ struct FaceTexel {
     float skyZenith = 0.0f;   // likewise for the zenith colour
     uint32_t sunSamples = 0;  // rays toward the sun's disc cast
     uint32_t sunOpen = 0;     // of those, leaving the world
+    // The day's sun (a bake with FaceBakeSettings::day): bit m set where the ray
+    // toward position m leaves the world; 0 for a position behind the face.
+    uint32_t daySun = 0;
+    uint32_t dayPositions = 0;  // positions traced: 0, or kDaySunPositions
     // Full light (voxel/light_bake.h), when baked: the irradiance over pi from
     // the sky, the glowing faces and every bounce, but not the sun's direct beam.
     glm::vec3 light{0.0f};

@@ -33,7 +33,7 @@ double distanceToBox(glm::dvec3 p, glm::dvec3 lo, glm::dvec3 hi) {
 }  // namespace
 
 StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed, const FaceBakeSettings& s,
-                          double voxelSize) {
+                          double voxelSize, std::span<const glm::dvec3> daySun) {
     StaleParts stale;
     if (changed.empty()) return stale;
     const glm::dvec3 lo(changed.min), hi(glm::dvec3(changed.max) + 1.0);
@@ -46,10 +46,18 @@ StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed
     // The disc's spread over the distance, and the texel's square: its sun rays
     // start up to half a texel from its centre along each of the face's axes.
     const double spread = std::tan(glm::radians(0.5 * s.sunAngleDegrees)) * reach + 0.5 / std::max(s.texelsPerSide, 1u) + slack;
-    stale.sun = rayMeetsBox(point, sun, lo - spread, hi + spread);
-
     glm::dvec3 normal(0.0);
     normal[dir >> 1] = (dir & 1) == 0 ? 1.0 : -1.0;
+    if (daySunPositions(s)) {
+        // One ray a position from the texel's centre (face_bake.h).
+        std::vector<glm::dvec3> found;
+        if (daySun.empty()) found = daySunDirections(*s.day), daySun = found;
+        for (const glm::dvec3& d : daySun)
+            stale.sun = stale.sun || (glm::dot(d, normal) > 0.0 && rayMeetsBox(point, d, lo - slack, hi + slack));
+    } else {
+        stale.sun = rayMeetsBox(point, sun, lo - spread, hi + spread);
+    }
+
     const double r = glm::length(hi - lo) * 0.5, d = glm::length(centre - point);
     if (glm::dot(centre - point, normal) > -r) {  // some of the box in front of the face
         const bool near = d <= r || (r * r) / (d * d) > kSkyStaleShare;
@@ -68,13 +76,14 @@ void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox
     std::vector<uint32_t> retrace;
     uint64_t far = 0;
     if (reach) reach->assign(now.size(), FaceReach::Untouched);
+    const std::vector<glm::dvec3> daySun = daySunPositions(s) ? daySunDirections(*s.day) : std::vector<glm::dvec3>{};
     for (size_t f = 0; f < now.size(); ++f) {
         const auto it = std::lower_bound(faces.begin(), faces.end(), now[f]);
         const bool existed = it != faces.end() && *it == now[f];
         StaleParts worst;
         for (uint32_t j = 0; j < k && existed; ++j)
             for (uint32_t i = 0; i < k; ++i) {
-                const StaleParts p = staleAfterEdit(texelPoint(now[f], k, i, j), now[f].dir, changed, s, world.voxelSize());
+                const StaleParts p = staleAfterEdit(texelPoint(now[f], k, i, j), now[f].dir, changed, s, world.voxelSize(), daySun);
                 worst.ao |= p.ao, worst.sun |= p.sun, worst.skyNear |= p.skyNear, worst.skyFar |= p.skyFar;
             }
         const size_t old = size_t(it - faces.begin());

@@ -33,13 +33,15 @@ struct StaleParts {
 //  - AO: its rays end R voxels out: stale when the edited box grown by R holds the point;
 //  - sun: stale when a ray toward some point of the sun's disc can cross the box:
 //    the ray toward the disc's centre passes within the box grown by the disc's
-//    spread over the distance;
+//    spread over the distance; with the day's sun, when the ray from the point
+//    toward one of its positions facing the face does: the box swept along the
+//    day (`daySun`: daySunDirections of the settings' path, found here when empty);
 //  - sky: its rays run on through the world, so any edit in front of the face can
 //    reach it: near when the sphere around the box covers more than kSkyStaleShare
 //    of its cosine-weighted hemisphere (a sphere of radius r at distance d covers
 //    at most (r / d)^2), far otherwise.
 StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed, const FaceBakeSettings& settings,
-                          double voxelSize);
+                          double voxelSize, std::span<const glm::dvec3> daySun = {});
 
 // The cache of a world after an edit of `changed`: `faces` and `texels` as they
 // were before, replaced by the world's exposed faces now, each texel carried over

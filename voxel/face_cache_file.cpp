@@ -18,11 +18,14 @@ namespace grotto::voxel {
 namespace {
 
 constexpr char kMagic[8] = {'G', 'R', 'O', 'T', 'T', 'O', 'F', 'C'};
-constexpr uint32_t kVersion = 3;  // 2: the rays a texel recorded; 3: full light
-constexpr size_t kHeaderBytes = 104;
-constexpr size_t kTexelBytes = 24, kLightBytes = 12;  // the light's three floats follow when it is baked
+constexpr uint32_t kVersion = 4;  // 2: the rays a texel recorded; 3: full light; 4: the day's sun
+constexpr size_t kHeaderBytes = 132;
+// The light's three floats follow when it is baked, the day's sun bits with its path.
+constexpr size_t kTexelBytes = 24, kLightBytes = 12, kDayBytes = 4;
 
-size_t texelBytes(const FaceCacheHeader& h) { return kTexelBytes + (h.key.lightHash != 0 ? kLightBytes : 0); }
+size_t texelBytes(const FaceCacheHeader& h) {
+    return kTexelBytes + (h.key.lightHash != 0 ? kLightBytes : 0) + (h.key.day ? kDayBytes : 0);
+}
 constexpr uint32_t kMaxTexelsPerSide = 16;
 
 uint64_t mix(uint64_t h, uint64_t v) {
@@ -64,6 +67,9 @@ std::optional<Difference> firstDifference(const FaceCacheHeader& a, const FaceCa
                 {"world's faces", std::to_string(h.totalFaces)},
                 {"AO radius", exact(h.key.radiusVoxels) + " voxels"},
                 {"texels per side", std::to_string(h.key.texelsPerSide)},
+                {"day's sun", h.key.day ? "latitude " + exact(h.key.day->latitude) + ", day " + exact(h.key.day->day) +
+                                              ", north " + exact(h.key.day->north)
+                                        : std::string("none")},
                 {"sun direction", "(" + exact(s.x) + ", " + exact(s.y) + ", " + exact(s.z) + ")"},
                 {"sun angle", exact(h.key.sunAngleDegrees) + " degrees"},
                 {"full light", h.key.lightHash == 0 ? std::string("none") : "for lighting and materials " + hex(h.key.lightHash)},
@@ -105,11 +111,13 @@ uint64_t lightHash(const World& world) {
 
 FaceCacheKey faceCacheKey(const World& world, double radius, uint32_t texelsPerSide) {
     const Lighting l = lightingInEffect(world.desc().lighting);
+    const bool day = world.desc().lighting.sunFrom == SunSource::Day;  // l: the hour's sun, fixed
     return {.voxelHash = solidVoxelHash(world),
             .radiusVoxels = radius / world.voxelSize(),
             .texelsPerSide = texelsPerSide,
-            .sunDirection = glm::dvec3(l.sunDirection),
+            .sunDirection = day ? glm::dvec3(0.0) : glm::dvec3(l.sunDirection),
             .sunAngleDegrees = double(l.sunAngle),
+            .day = day ? std::optional(sunPathOf(l)) : std::nullopt,
             .lightHash = l.ambientFrom == AmbientSource::Full ? lightHash(world) : 0};
 }
 
@@ -133,10 +141,14 @@ void saveFaceCache(const FaceCacheFile& c, const std::filesystem::path& path) {
     put(out, h.faceCount);
     put(out, h.rays);
     put(out, h.sunRays);
+    put(out, h.key.day ? kDaySunPositions : 0u);
+    const SunPath day = h.key.day.value_or(SunPath{0.0, 0.0, 0.0});
+    put(out, day.latitude), put(out, day.day), put(out, day.north);
     for (const FaceTexel& t : c.texels) {
         put(out, t.samples), put(out, t.open), put(out, t.skyHorizon), put(out, t.skyZenith);
         put(out, t.sunSamples), put(out, t.sunOpen);
         if (h.key.lightHash != 0) put(out, t.light.r), put(out, t.light.g), put(out, t.light.b);
+        if (h.key.day) put(out, t.daySun);
     }
     writeAtomically(path, out);
 }
@@ -175,8 +187,20 @@ FaceCacheHeader readFaceCacheHeader(const std::filesystem::path& path) {
                               " lies outside the world's " + std::to_string(h.totalFaces));
     h.rays = take<uint32_t>(head, at);
     h.sunRays = take<uint32_t>(head, at);
-    if (h.rays == 0 || h.sunRays == 0) throw Error(name, "rays: " + std::to_string(h.rays) + " a texel and " +
-                                                         std::to_string(h.sunRays) + " over the sun's disc; a bake casts at least 1");
+    const uint32_t positions = take<uint32_t>(head, at);
+    SunPath day;
+    day.latitude = take<double>(head, at), day.day = take<double>(head, at), day.north = take<double>(head, at);
+    if (positions != 0 && positions != kDaySunPositions)
+        throw Error(name, "day's sun: " + std::to_string(positions) + " positions", "accepted: 0 or " + std::to_string(kDaySunPositions));
+    if (positions != 0) {
+        if (!(std::abs(day.latitude) <= 90.0 && day.day >= 1.0 && day.day <= 366.0 && std::isfinite(day.north)))
+            throw Error(name, "day's sun: latitude, day of the year or north out of range");
+        h.key.day = day;
+    }
+    // A fixed sun takes at least a ray; the day's sun takes its positions instead.
+    if (h.rays == 0 || (h.sunRays == 0) != bool(h.key.day))
+        throw Error(name, "rays: " + std::to_string(h.rays) + " a texel and " + std::to_string(h.sunRays) +
+                              " over the sun's disc; a bake casts at least 1, and sun rays only for a fixed sun");
     const uint64_t perFace = uint64_t(h.key.texelsPerSide) * h.key.texelsPerSide * texelBytes(h);
     // The texels must be exactly the rest of the file (checked without overflow).
     if (h.faceCount > (size - kHeaderBytes) / perFace || size - kHeaderBytes != h.faceCount * perFace)
@@ -208,6 +232,7 @@ void readFaceCacheTexels(const std::filesystem::path& path, const FaceCacheHeade
                 if (!(t.light.r >= 0.0f && t.light.g >= 0.0f && t.light.b >= 0.0f) || !std::isfinite(t.light.r + t.light.g + t.light.b))
                     throw Error(name, "texel " + std::to_string(first + size_t(&t - run.data())) + ": light negative or not finite");
             }
+            if (h.key.day) t.daySun = take<uint32_t>(block, at), t.dayPositions = kDaySunPositions;
             if (t.samples != h.rays || t.sunSamples != h.sunRays || t.open > t.samples || t.sunOpen > t.sunSamples ||
                 !(t.skyHorizon >= 0.0f && t.skyZenith >= 0.0f) || !std::isfinite(t.skyHorizon + t.skyZenith) ||
                 // A ray's weights sum to 1 at most; without full light only the

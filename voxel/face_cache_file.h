@@ -5,12 +5,14 @@
 // in voxels, texels per face side, the sun). The faces themselves are not stored:
 // the world lists them (exposedFaces), and the hash says it is the same world.
 // Parts joined in order are byte for byte the file one bake of the whole writes.
+#include "voxel/daylight.h"
 #include "voxel/face_cache.h"
 
 #include <glm/vec3.hpp>
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -21,8 +23,11 @@ struct FaceCacheKey {
     uint64_t voxelHash = 0;      // solidVoxelHash of the world
     double radiusVoxels = 0.0;   // AO's R over the voxel size
     uint32_t texelsPerSide = 0;
-    glm::dvec3 sunDirection{0.0};
+    glm::dvec3 sunDirection{0.0};  // 0 with the day's sun
     double sunAngleDegrees = 0.0;
+    // The day's sun: its path, whose kDaySunPositions positions each texel holds
+    // a bit for (FaceTexel::daySun); none for one fixed sun.
+    std::optional<SunPath> day;
     // With full light (lighting.ambient.from full): a hash of all the light
     // depends on (the sky, the sun, every material's albedo and emission); 0: none.
     uint64_t lightHash = 0;
@@ -34,7 +39,7 @@ struct FaceCacheKey {
 struct FaceCacheHeader {
     FaceCacheKey key;
     uint32_t rays = 0;         // cosine-weighted rays a texel (AO and sky)
-    uint32_t sunRays = 0;      // rays a texel toward the sun
+    uint32_t sunRays = 0;      // rays a texel toward the sun (0 with the day's sun)
     uint64_t totalFaces = 0;   // exposed faces in the world
     uint64_t firstFace = 0;    // this file's run: faces [first, first + count)
     uint64_t faceCount = 0;

@@ -56,18 +56,18 @@ FaceTexel unpackFaceTexel(glm::uvec2 bits, uint32_t rays, uint32_t sunRays, bool
     return t;
 }
 
-size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide) {
+size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide, bool daySun) {
     std::vector<glm::ivec3> bricks;
     bricks.reserve(faces.size());
     for (const ExposedFace& f : faces) bricks.push_back(f.cell >> 3);
     std::sort(bricks.begin(), bricks.end(), BrickLess{});
     bricks.erase(std::unique(bricks.begin(), bricks.end()), bricks.end());
-    return faceCacheGpuBytes(ExposedFaceCount{faces.size(), bricks.size()}, texelsPerSide);
+    return faceCacheGpuBytes(ExposedFaceCount{faces.size(), bricks.size()}, texelsPerSide, daySun);
 }
 
-size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide) {
-
-    const size_t texelWords = 3 * ((count.faces * texelsPerSide * texelsPerSide + 1) / 2);
+size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide, bool daySun) {
+    const size_t texels = count.faces * texelsPerSide * texelsPerSide;
+    const size_t texelWords = 3 * ((texels + 1) / 2) + (daySun ? texels : 0);
     const size_t levelWords = (count.faces + 15) / 16;  // each face's level for the GPU's tracer, 2 bits
     return faceBrickTableBytes(count.bricks) + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + texelWords * 4 + levelWords * 4;
 }
@@ -126,6 +126,14 @@ void appendFaceMaterials(FaceCacheArrays& a, std::span<const ExposedFace> faces,
     a.texels.resize(a.texels.size() + (a.faceOrder.size() + 3) / 4, 0u);
     for (size_t g = 0; g < a.faceOrder.size(); ++g)
         a.texels[a.materialsFirst + g / 4] |= uint32_t(world.material(faces[a.faceOrder[g]].cell) & 0xFF) << (8 * (g % 4));
+}
+
+void appendDaySun(FaceCacheArrays& a, std::span<const FaceTexel> texels) {
+    const size_t perFace = size_t(a.texelsPerSide) * a.texelsPerSide;
+    a.daySunFirst = uint32_t(a.texels.size());
+    a.texels.reserve(a.texels.size() + a.faceOrder.size() * perFace);
+    for (const uint32_t f : a.faceOrder)
+        for (size_t t = 0; t < perFace; ++t) a.texels.push_back(texels[f * perFace + t].daySun);
 }
 
 }  // namespace grotto::voxel

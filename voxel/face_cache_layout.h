@@ -26,6 +26,9 @@ struct FaceCacheArrays {
     // a face in the GPU's order, four a word (appendFaceMaterials): what a ray that
     // meets a face needs to know the light the face sends. 0: not there.
     uint32_t materialsFirst = 0;
+    // Where `texels` goes on with each texel's day's sun bits (FaceTexel::daySun),
+    // a word a texel in the texels' order (appendDaySun). 0: not there.
+    uint32_t daySunFirst = 0;
     // On the GPU, with each face's level (2 bits, shaders/shared/face_trace.h).
     size_t bytes() const {
         return bricks.size() * 16 + records.size() * 4 + texels.size() * 4 + (size_t(faceCount) + 15) / 16 * 4;
@@ -54,10 +57,13 @@ FaceTexel unpackFaceTexel(glm::uvec2 bits, uint32_t rays, uint32_t sunRays, bool
 
 // Appends each face's material id in `world` to a.texels (a.materialsFirst).
 void appendFaceMaterials(FaceCacheArrays& a, std::span<const ExposedFace> faces, const World& world);
+// Appends each texel's day's sun bits, `texels` as layFaceCache took them, to
+// a.texels (a.daySunFirst): 4 bytes a texel.
+void appendDaySun(FaceCacheArrays& a, std::span<const FaceTexel> texels);
 
 // What layFaceCache's arrays for `faces` at k texels a side take, without laying
-// them out (for `info` and `bench`).
-size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide);
-size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide);
+// them out (for `info` and `bench`); with `daySun`, appendDaySun's words too.
+size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide, bool daySun = false);
+size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide, bool daySun = false);
 
 }  // namespace grotto::voxel

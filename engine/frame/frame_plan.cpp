@@ -8,8 +8,12 @@
 namespace grotto {
 namespace {
 
-// The cache's sun is the lighting's: the same direction and size.
-bool sameSun(const SceneFacts::CacheSun& baked, const voxel::Lighting& lighting) {
+// The cache's sun is the lighting's (as given, not yet in effect): the day's
+// along the same path, or the same direction and size.
+bool sameSun(const SceneFacts::CacheSun& baked, const voxel::Lighting& given) {
+    if (baked.day)
+        return given.sunFrom == voxel::SunSource::Day && *baked.day == voxel::sunPathOf(given) && baked.angleDegrees == given.sunAngle;
+    const voxel::Lighting lighting = voxel::lightingInEffect(given);
     return glm::length(glm::normalize(baked.direction) - glm::normalize(lighting.sunDirection)) < 1e-6f &&
            baked.angleDegrees == lighting.sunAngle;
 }
@@ -42,10 +46,11 @@ FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const 
 
     p.shadows = lighting.sunShadows && scene.occupancy;
     p.shadowHistory = p.shadows && lighting.sunAngle > 0.0f;
-    p.cachedSun = p.shadows && p.faceCache && scene.faceCache && sameSun(*scene.faceCache, voxel::lightingInEffect(lighting));
+    p.cachedSun = p.shadows && p.faceCache && scene.faceCache && sameSun(*scene.faceCache, lighting);
     p.tracedShadows = p.shadows && (!p.cachedSun || p.objects);
     p.softShadows = p.tracedShadows && lighting.sunAngle > 0.0f;
     p.shadowEdges = p.cachedSun;
+    p.daySun = p.cachedSun && scene.faceCache->day;
 
     p.objectRays = p.tracedShadows || p.objectLight || (p.chain && tracesVoxels(ao.method));
     p.surfaceHistory = p.softShadows || p.objectLight;
@@ -56,7 +61,10 @@ FramePlan planWorldFrame(const voxel::WorldDesc& desc, uint32_t width, uint32_t 
                          bool objects, const FrameRequest& request) {
     SceneFacts scene{.occupancy = true};
     const voxel::Lighting light = voxel::lightingInEffect(desc.lighting);
-    if (faceCached(ao)) scene.faceCache = SceneFacts::CacheSun{light.sunDirection, light.sunAngle};
+    if (faceCached(ao))
+        scene.faceCache = SceneFacts::CacheSun{light.sunDirection, light.sunAngle,
+                                               desc.lighting.sunFrom == voxel::SunSource::Day
+                                                   ? std::optional(voxel::sunPathOf(desc.lighting)) : std::nullopt};
     scene.objects = objects && !desc.objects.empty();
     scene.movingObjects = scene.objects && std::any_of(desc.objects.begin(), desc.objects.end(), [](const auto& o) { return o.moves(); });
     return planFrame(width, height, ao, desc.lighting, scene, request);

@@ -5,6 +5,7 @@
 // targets exist (frame_targets.h), the memory estimate (render_memory.h) and the
 // commands' own checks all read these decisions; nothing decides them again.
 #include "engine/ao_settings.h"
+#include "voxel/daylight.h"
 #include "voxel/world_desc.h"
 
 #include <vulkan/vulkan.h>
@@ -21,6 +22,7 @@ struct SceneFacts {
     struct CacheSun {
         glm::vec3 direction{0.0f, 1.0f, 0.0f};
         float angleDegrees = 0.0f;
+        std::optional<voxel::SunPath> day;  // baked for the day's sun along this path instead
     };
     std::optional<CacheSun> faceCache;
     bool objects = false;        // the caller's objects (drawn, even an empty list that may grow)
@@ -53,6 +55,8 @@ struct FramePlan {
     bool tracedShadows = false;  // the shadow pass: sun shadows the cache does not give (objects', a moved sun)
     bool softShadows = false;    // traced with jittered rays accumulated in a history
     bool shadowEdges = false;    // exact sun rays on the cache's shadow edges
+    bool daySun = false;         // with the cache's sun, the day's: its positions' disagreements sweep
+                                 // areas as the sun rises and sets, so the edge list holds every pixel
     // Objects.
     bool objects = false;
     bool movingObjects = false;

@@ -25,7 +25,7 @@ FaceCacheTracePass::FaceCacheTracePass(vk::Context& ctx)
                GpuFaceCache::withRequestBindings(
                    GpuFaceCache::withBindings({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kSampled, kSampled}))),
       plan_(ctx, "face_cache_plan.comp", {kBuffer}, sizeof(gpu::FaceTraceConstants)),
-      trace_(ctx, "face_cache_trace.comp", withTraceBindings({kBuffer, kBuffer, kBuffer, kBuffer}),
+      trace_(ctx, "face_cache_trace.comp", withTraceBindings({kBuffer, kBuffer, kBuffer, kBuffer, kBuffer}),
              sizeof(gpu::FaceTraceConstants)) {}
 
 void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, VkExtent2D size, const vk::Buffer& frame,
@@ -47,6 +47,8 @@ void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, Vk
         .budget = budget,
         .width = size.width,
         .height = size.height,
+        .dayPositions = sun.day ? voxel::kDaySunPositions : 0u,
+        .daySunFirst = cache.daySunFirst(),
         .skyZenith = glm::vec4(cache.sky().zenith, cache.sky().fullLight ? 1.0f : 0.0f),
         .skyHorizon = glm::vec4(cache.sky().horizon, 0.0f)};
     if (cache.faceCount() == 0) return;
@@ -69,7 +71,8 @@ void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, Vk
                             withTraceBindings({vk::storageBuffer(cache.queue().buffer),
                                                vk::storageBuffer(cache.header().buffer),
                                                vk::storageBuffer(cache.levels().buffer),
-                                               vk::storageBuffer(cache.texels().buffer)},
+                                               vk::storageBuffer(cache.texels().buffer),
+                                               vk::storageBuffer(cache.dayPositions().buffer)},
                                               traceConstants, occupancy),
                             cache.header().buffer, GROTTO_FACE_DISPATCH * sizeof(uint32_t), &c);
     // The requests start afresh for the composite, which asks for the next frame:

@@ -9,11 +9,11 @@
 
 namespace grotto {
 
-ShadowEdgePass::ShadowEdgePass(vk::Context& ctx, uint32_t width, uint32_t height)
+ShadowEdgePass::ShadowEdgePass(vk::Context& ctx, uint32_t width, uint32_t height, bool daySun)
     : ctx_(ctx), args_(ctx, "shadow_edge_args.comp", {kBuffer}),
       trace_(ctx, "shadow_edge.comp",
              withTraceBindings({kSampled, kSampled, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kBuffer})) {
-    const uint32_t capacity = std::max(1024u, uint32_t(uint64_t(width) * height / 8));
+    const uint32_t capacity = std::max(1024u, uint32_t(uint64_t(width) * height / (daySun ? 1 : 8)));
     std::vector<uint32_t> words(GROTTO_EDGE_HEADER_WORDS + 8 * size_t(capacity), 0u);
     words[GROTTO_EDGE_CAPACITY] = capacity;
     edges_ = vk::uploadBuffer(ctx, words.data(), words.size() * sizeof(uint32_t),

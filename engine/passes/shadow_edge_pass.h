@@ -4,7 +4,8 @@
 // and this pass traces exact sun rays for each (one toward a point sun, 16 over a
 // disc) and corrects its colour. Reads the G-buffer's
 // depth and surface ids, the trace constants and the occupancy; writes the colour.
-// Owns the list (a frame's pixels / 8 at most: the rest keep the texels' sun).
+// Owns the list (a frame's pixels / 8 at most: the rest keep the texels' sun;
+// every pixel with the day's sun, whose first and last hour list all the ground).
 #include "engine/frame/frame_plan.h"
 #include "engine/frame/pass_decl.h"
 #include "engine/passes/compute_pass.h"
@@ -17,9 +18,9 @@ namespace grotto {
 
 class ShadowEdgePass {
 public:
-    ShadowEdgePass(vk::Context& ctx, uint32_t width, uint32_t height);
+    ShadowEdgePass(vk::Context& ctx, uint32_t width, uint32_t height, bool daySun);
     static bool runs(const FramePlan& plan) { return plan.shadowEdges; }
-    static auto key(const FramePlan& plan) { return std::tuple(plan.width, plan.height); }  // its list's size
+    static auto key(const FramePlan& plan) { return std::tuple(plan.width, plan.height, plan.daySun); }  // its list's size
     ~ShadowEdgePass();
     ShadowEdgePass(const ShadowEdgePass&) = delete;
     ShadowEdgePass& operator=(const ShadowEdgePass&) = delete;

@@ -20,6 +20,7 @@ uint32_t capacityFor(uint32_t faces, uint32_t k) {
 GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Sun sun, FaceCacheRays rays,
                            std::span<const uint8_t> levels, FaceCacheSky sky)
     : ctx_(ctx), table_(a.table), texelsPerSide_(a.texelsPerSide), faceCount_(a.faceCount), materialsFirst_(a.materialsFirst),
+      daySunFirst_(a.daySunFirst),
       sun_(sun), rays_(rays), sky_(sky) {
     const uint32_t capacity = capacityFor(a.faceCount, a.texelsPerSide);  // the queue's, kept in its header
     // Empty arrays (a world with no faces) still bind: one zero word each.
@@ -31,6 +32,9 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
     for (size_t f = 0; f < levels.size(); ++f) levelWords[f / 16] |= uint32_t(levels[f] & 3u) << (2 * (f % 16));
     const std::vector<uint32_t> requested((size_t(faceCount_) + 31) / 32, 0u);
     const std::vector<glm::uvec4> queue(2 * size_t(capacity), glm::uvec4(0));
+    std::vector<glm::vec4> positions(voxel::kDaySunPositions, glm::vec4(0.0f));
+    if (sun_.day)
+        for (uint32_t m = 0; const glm::dvec3& d : voxel::daySunDirections(*sun_.day)) positions[m++] = glm::vec4(glm::vec3(d), 0.0f);
     try {
         bricks_ = upload(a.bricks.data(), a.bricks.size() * sizeof(glm::uvec4));
         records_ = upload(a.records.data(), a.records.size() * sizeof(uint32_t));
@@ -38,6 +42,7 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
         levels_ = upload(levelWords.data(), levelWords.size() * sizeof(uint32_t));
         requested_ = upload(requested.data(), requested.size() * sizeof(uint32_t));
         queue_ = upload(queue.data(), queue.size() * sizeof(glm::uvec4));
+        dayPositions_ = upload(positions.data(), positions.size() * sizeof(glm::vec4));
         header_ = vk::createBuffer(ctx, GROTTO_FACE_HEADER_WORDS * sizeof(uint32_t),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT,
@@ -49,13 +54,14 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
             return (l & 3u) != GROTTO_FACE_LEVEL_CONVERGED;
         }));
     } catch (...) {
-        for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_}) vk::destroy(ctx_, *b);
+        for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_, &dayPositions_}) vk::destroy(ctx_, *b);
         throw;
     }
 }
 
 GpuFaceCache::~GpuFaceCache() {
-    for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_}) vk::destroy(ctx_, *b);
+    for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_, &dayPositions_})
+        vk::destroy(ctx_, *b);
 }
 
 std::vector<VkDescriptorType> GpuFaceCache::withBindings(std::vector<VkDescriptorType> own) {

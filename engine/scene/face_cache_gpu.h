@@ -6,8 +6,10 @@
 // for this frame and the queue of them.
 #include "engine/vk/pipeline.h"
 #include "engine/vk/resources.h"
+#include "voxel/daylight.h"
 #include "voxel/face_cache_layout.h"
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -17,6 +19,9 @@ namespace grotto {
 struct FaceCacheSun {
     glm::vec3 direction{0.0f, 1.0f, 0.0f};
     float angleDegrees = 0.0f;
+    // The day's sun: the path whose positions each texel holds a bit for
+    // (voxel::FaceTexel::daySun) instead of one sun's visibility.
+    std::optional<voxel::SunPath> day;
 };
 
 // With full light: the sky a texel traced on the GPU (without the bake) is lit
@@ -47,12 +52,15 @@ public:
     uint32_t texelsPerSide() const { return texelsPerSide_; }
     uint32_t faceCount() const { return faceCount_; }
     uint32_t materialsFirst() const { return materialsFirst_; }  // FaceCacheArrays::materialsFirst
+    uint32_t daySunFirst() const { return daySunFirst_; }        // FaceCacheArrays::daySunFirst
     const Sun& sun() const { return sun_; }
     const FaceCacheSky& sky() const { return sky_; }
     const FaceCacheRays& rays() const { return rays_; }
     // The cache's own arrays and levels (what `info` and `bench` report); the
     // tracer's queue and request bits come on top.
     size_t gpuBytes() const { return size_t(bricks_.size + records_.size + texels_.size + levels_.size); }
+    // Of those, the day's sun bits' (0 without).
+    size_t daySunBytes() const { return daySunFirst_ ? size_t(faceCount_) * texelsPerSide_ * texelsPerSide_ * 4 : 0; }
 
     // Appends the three buffers' bindings (bricks, records, texels) to a pass's own.
     static std::vector<VkDescriptorType> withBindings(std::vector<VkDescriptorType> own);
@@ -65,6 +73,7 @@ public:
 
     // The tracer's buffers (face_cache_trace_pass.h).
     const vk::Buffer& texels() const { return texels_; }
+    const vk::Buffer& dayPositions() const { return dayPositions_; }  // toward the sun at each, a vec4 each
     const vk::Buffer& levels() const { return levels_; }
     const vk::Buffer& requested() const { return requested_; }
     const vk::Buffer& queue() const { return queue_; }
@@ -82,8 +91,8 @@ public:
 
 private:
     vk::Context& ctx_;
-    vk::Buffer bricks_, records_, texels_, levels_, requested_, queue_, header_;
-    uint32_t table_, texelsPerSide_, faceCount_, materialsFirst_;
+    vk::Buffer bricks_, records_, texels_, levels_, requested_, queue_, header_, dayPositions_;
+    uint32_t table_, texelsPerSide_, faceCount_, materialsFirst_, daySunFirst_;
     Sun sun_;
     FaceCacheRays rays_;
     FaceCacheSky sky_;

@@ -15,7 +15,8 @@ voxel::FaceBakeSettings lightingBakeSettings(const voxel::Lighting& lighting, do
     const double sky = light.ambientIntensity;
     return {.radius = radius, .texelsPerSide = texelsPerSide, .sunDirection = glm::dvec3(light.sunDirection),
             .sunAngleDegrees = double(light.sunAngle), .fullLight = light.ambientFrom == voxel::AmbientSource::Full,
-            .skyZenith = glm::dvec3(light.skyZenith) * sky, .skyHorizon = glm::dvec3(light.skyHorizon) * sky};
+            .skyZenith = glm::dvec3(light.skyZenith) * sky, .skyHorizon = glm::dvec3(light.skyHorizon) * sky,
+            .day = lighting.sunFrom == voxel::SunSource::Day ? std::optional(voxel::sunPathOf(lighting)) : std::nullopt};
 }
 
 namespace {
@@ -117,10 +118,11 @@ void LiveFaceCache::sync() {
         const bool full = levels_[f] >= 2;
         const uint32_t rays = full ? settings_.rays : std::min<uint32_t>(GROTTO_FACE_COARSE_RAYS, settings_.rays);
         const uint32_t sun = full ? sunRays : std::min<uint32_t>(GROTTO_FACE_COARSE_SUN_RAYS, sunRays);
-        for (uint32_t t = 0; t < perFace; ++t)
-            texels_[size_t(f) * perFace + t] =
-                voxel::unpackFaceTexel(voxel::packedTexel(gpu.texelWords, g * perFace + t), rays, sun,
-                                       settings_.fullLight);
+        for (uint32_t t = 0; t < perFace; ++t) {
+            voxel::FaceTexel& texel = texels_[size_t(f) * perFace + t];
+            texel = voxel::unpackFaceTexel(voxel::packedTexel(gpu.texelWords, g * perFace + t), rays, sun, settings_.fullLight);
+            if (daySunFirst_) texel.daySun = gpu.texelWords[daySunFirst_ + g * perFace + t], texel.dayPositions = voxel::kDaySunPositions;
+        }
     }
 }
 
@@ -170,15 +172,19 @@ void LiveFaceCache::upload(const voxel::World& world) {
     voxel::FaceCacheArrays arrays = voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight);
     // With full light, what objects read of the light world faces send.
     if (settings_.fullLight) voxel::appendFaceMaterials(arrays, faces_, world);
+    if (voxel::daySunPositions(settings_)) voxel::appendDaySun(arrays, texels_);
     std::vector<uint8_t> gpuLevels(arrays.faceOrder.size());
     for (size_t g = 0; g < gpuLevels.size(); ++g) gpuLevels[g] = levels_[arrays.faceOrder[g]];
     auto gpu = std::make_unique<GpuFaceCache>(
-        scene_.ctx, arrays, GpuFaceCache::Sun{glm::vec3(settings_.sunDirection), float(settings_.sunAngleDegrees)},
-        FaceCacheRays{settings_.rays, settings_.sunRays, float(settings_.radius / voxelSize_)}, gpuLevels,
+        scene_.ctx, arrays,
+        GpuFaceCache::Sun{glm::vec3(settings_.sunDirection), float(settings_.sunAngleDegrees),
+                          voxel::daySunPositions(settings_) ? settings_.day : std::nullopt},
+        FaceCacheRays{settings_.rays, voxel::sunRaysPerTexel(settings_), float(settings_.radius / voxelSize_)}, gpuLevels,
         FaceCacheSky{settings_.fullLight, glm::vec3(settings_.skyZenith), glm::vec3(settings_.skyHorizon)});
     vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still read the old copy
     scene_.faceCache_ = std::move(gpu);
     order_ = arrays.faceOrder;
+    daySunFirst_ = arrays.daySunFirst;
 }
 
 }  // namespace grotto

@@ -19,6 +19,8 @@
 //            (a float's range, so a texel that sees a sliver of sky keeps it);
 //            with full light, the texel's light (irradiance over pi) as RGB9E5,
 //            three 9-bit mantissas sharing a 5-bit exponent.
+//            A cache baked for the day's moving sun has a word more a texel after
+//            them (faceCacheDaySun): a bit for each of 32 sun positions along the day.
 // The includer defines, before including it (or GROTTO_FACE_CACHE_LAYOUT_ONLY):
 //   uvec4 faceCacheBrickEntry(uint slot); uint faceCacheRecordWord(uint word);
 //   uint faceCacheTexelWord(uint word); uint faceCacheK(); and
@@ -58,6 +60,7 @@ using std::min;
 
 #define GROTTO_FACE_RECORD_WORDS 104u  // 6 x 16 mask words, 6 bases, 2 words of half counts
 #define GROTTO_FACE_TEXEL_BYTES 6u
+#define GROTTO_DAY_SUN_POSITIONS 32u  // voxel::kDaySunPositions
 
 // The words `texels` texels take.
 GROTTO_INLINE uint faceCacheTexelWords(uint texels) { return 3u * ((texels + 1u) / 2u); }
@@ -278,6 +281,27 @@ GROTTO_FUNCTION vec3 faceCacheFullLight(FaceCacheTaps t) {
         weight += t.weight[c];
     }
     return weight > 0.0f ? sum / weight : vec3(0.0f);
+}
+
+// The day's sun at the taps (a cache baked with it: each texel's bits, one a
+// position along the day, 0 where the sun is behind the face; a word a texel
+// from word `first` of the texels), read at the bits `positions` (the two either
+// side of the hour): the share of them lit, over the taps; `edge` where they
+// disagree (a shadow edge passing through, in space or in time): the frame
+// traces the sun there.
+GROTTO_FUNCTION float faceCacheDaySun(FaceCacheTaps t, uint first, uint positions, GROTTO_OUT(bool) edge) {
+    uint lit = 0u, dark = 0u;
+    float sum = 0.0f, weight = 0.0f;
+    for (int c = 0; c < 4; ++c) {
+        if (t.weight[c] <= 0.0f) continue;
+        uint bits = faceCacheTexelWord(first + t.texel[c]) & positions;
+        lit |= bits;
+        dark |= positions & ~bits;
+        sum += t.weight[c] * float(bitCount(bits));
+        weight += t.weight[c];
+    }
+    edge = lit != 0u && dark != 0u;
+    return weight <= 0.0f ? 0.0f : sum / (weight * float(bitCount(positions)));
 }
 
 GROTTO_FUNCTION vec4 faceCacheAt(vec3 p, ivec3 origin, uint dir, GROTTO_OUT(bool) found) {

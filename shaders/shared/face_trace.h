@@ -53,7 +53,9 @@ struct FaceTraceConstants {
     uint texelsPerSide;   // k
     uint budget;          // rays per frame for the second list (and for the first at full rays)
     uint width, height;   // the frame's, for the request pass's dispatch
-    uint pad0, pad1;
+    // The day's sun: its positions (0: none, one sun as `sun`), whose directions
+    // the tracer's positions buffer holds, and the first word of the texels' bits.
+    uint dayPositions, daySunFirst;
     // With full light (w of the first 1): the sky's two colours times its
     // intensity, for the light word of a texel traced here (the sky's light alone).
     vec4 skyZenith, skyHorizon;

@@ -29,8 +29,14 @@ struct FrameUniforms {
     vec4 depthAB;        // x, y: view depth = y / (depth buffer value + x)
     ivec4 cameraCell;    // xyz: the voxel holding the camera (index space); w: the frame's index
     vec4 cameraFraction; // xyz: the camera within that voxel, in voxels; w: 1 / voxel size
+    // The day's sun from the face cache (shared/face_cache.h's faceCacheDaySun):
+    // x the first word of its bits, 0 without; y and z the positions before and
+    // after the hour; daySunBefore and daySunAfter: toward the sun at those two.
+    uvec4 daySun;
+    vec4 daySunBefore;
+    vec4 daySunAfter;
 };
-GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16 + 16 * GROTTO_SKY_LIGHT_ROWS + 3 * 16);
+GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16 + 16 * GROTTO_SKY_LIGHT_ROWS + 6 * 16);
 
 // G-buffer push constants: one chunk's corner in whole voxels from the camera's
 // voxel, and the camera's place in that voxel. A vertex's position is computed from
