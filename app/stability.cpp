@@ -40,7 +40,7 @@ using json = nlohmann::json;
 struct Args {
     std::string world, path, size = "320x180", output, baseline, frames;
     int fps = 24, spp = 256, referenceEvery = 4;
-    bool quiet = false;
+    bool quiet = false, sun = false;
     Tolerance tolerance;
     AoFlags ao;
 };
@@ -72,6 +72,9 @@ void addStabilityCommand(CLI::App& app) {
     cmd->add_option("--tolerance-absolute", args->tolerance.absolute, "Absolute tolerance added to it")
         ->capture_default_str()->check(finiteRange(0.0, 1.0))->needs(baseline);
     cmd->add_flag("--quiet", args->quiet, "No progress lines, only the results");
+    cmd->add_flag("--sun", args->sun,
+                  "Also measure the sun each frame shows against exact rays from its pixels (CPU), from the frame "
+                  "rendered again lit by the sun alone");
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -121,7 +124,8 @@ void addStabilityCommand(CLI::App& app) {
             runStability(ctx, *session, ao,
                          {.first = first, .last = range.last, .fps = args->fps, .spp = args->spp,
                           .referenceEvery = args->referenceEvery, .width = size.width, .height = size.height,
-                          .pathHasEdits = !pathDesc.edits.empty(), .quiet = args->quiet});
+                          .pathHasEdits = !pathDesc.edits.empty(), .pathHasDay = !pathDesc.day.empty(),
+                          .sun = args->sun, .quiet = args->quiet});
         session.reset();
         requireNoValidationMessages(ctx);
         // Perfect scores over no pixels would pass any baseline: refuse them.
@@ -151,6 +155,14 @@ void addStabilityCommand(CLI::App& app) {
                     figure(flicker["raw"]), figure(flicker["spatial"]), figure(flicker["temporal"]),
                     figure(flicker["temporal"]) / std::max(figure(flicker["spatial"]), 1e-12), figure(flicker["reference"]));
         std::printf("display colour flicker %.4f (sRGB, over the same pixels)\n", figure(result["color"]["flicker"]));
+        if (result["color"].contains("flicker_light_held"))
+            std::printf("display colour flicker with the light held %.4f (the day's change of light left out)\n",
+                        figure(result["color"]["flicker_light_held"]));
+        if (result.contains("sun"))
+            std::printf("sun: as exact rays at %.3f%% of %zu surface pixels (worst frame %d: %.3f%%)\n",
+                        100.0 * figure(result["sun"]["share_exact"]), result["sun"]["surface_pixels"].get<size_t>(),
+                        result["sun"]["worst_frame"].value("frame", 0),
+                        100.0 * result["sun"]["worst_frame"].value("share_exact", 1.0));
         const json& steady = result["error_mean"];
         std::printf("error vs reference (%zu frames from frame %d): spatial rmse %.4f psnr %.2f dB, temporal rmse %.4f psnr %.2f dB\n",
                     m.steadyFrames, m.steadyFrom, figure(steady["spatial"]["rmse"]), figure(steady["spatial"]["psnr"]),

@@ -1,9 +1,11 @@
 // A stability run along a path (docs/metrics.md): each frame of the playing path
 // rendered and compared with the frame before (flicker of the raw, spatial and
-// temporal AO, of the reference and of the display colour), with the reference
+// temporal AO, of the reference and of the display colour, that with the light
+// held too on a path through the day), with the reference
 // traced on pairs of frames (error, ghosting by age since disocclusion), the
 // pixels near each of the path's edits measured against references of the world
-// before and after it, and the cost per pass; summarised as the run's figures.
+// before and after it, the sun against exact rays (--sun), and the cost per pass;
+// summarised as the run's figures.
 #include "app/stability_run.h"
 
 #include "app/ao_cost.h"
@@ -14,6 +16,7 @@
 #include "engine/camera_path.h"
 #include "engine/lab/ao_metrics.h"
 #include "engine/lab/edit_metrics.h"
+#include "engine/lab/sun_agreement.h"
 #include "engine/lab/surface_points.h"
 #include "engine/lab/temporal_metrics.h"
 #include "engine/image_output.h"
@@ -158,7 +161,9 @@ StabilityFigures runStability(vk::Context& ctx, RenderSession& session, const Ao
     std::vector<EditEvent> events;
     std::map<std::string, std::vector<double>> passMs;
     std::vector<double> wallMs, chainMs, temporalMs;
-    Mean flickerRaw, flickerSpatial, flickerTemporal, flickerReference, flickerColor;
+    Mean flickerRaw, flickerSpatial, flickerTemporal, flickerReference, flickerColor, flickerHeld;
+    SunAgreement sunAll;
+    json sunWorst;  // the frame whose sun was off at the largest share of its pixels facing the sun
     FrameThumbnails thumbnails;  // the display colour of some frames, for a later run to be compared with
     size_t matchedPixels = 0, referencePixels = 0;  // what the flicker and error figures were measured over
     std::map<int, std::pair<Mean, Mean>> ghosting;  // age -> temporal, spatial MAE
@@ -173,6 +178,12 @@ StabilityFigures runStability(vk::Context& ctx, RenderSession& session, const Ao
         std::vector<voxel::ObjectPose> beforePoses;
         std::vector<float> beforeReference;
         std::vector<uint16_t> age;
+        // Renderers of their own (their own histories), sharing the scene: one lit
+        // by the frame before's light, one by the sun alone.
+        std::optional<Renderer> held, sunOnly;
+        if (o.pathHasDay) held.emplace(ctx, live.gpu(), session.lighting(), ao, o.width, o.height, session.objects());
+        if (o.sun) sunOnly.emplace(ctx, live.gpu(), sunAlone(session.lighting()), ao, o.width, o.height, session.objects());
+        voxel::Lighting lightBefore = session.lighting();
         std::optional<Progress> progress;
         if (!o.quiet) progress.emplace(o.last - o.first + 1, stdout);
         for (int i = o.first; i <= o.last; ++i) {
@@ -200,6 +211,22 @@ StabilityFigures runStability(vk::Context& ctx, RenderSession& session, const Ao
                 flickerSpatial.add(flicker(now.spatial, before.spatial, match));
                 flickerTemporal.add(flicker(now.temporal, before.temporal, match));
                 flickerColor.add(colorFlicker(now, before, match));
+            }
+            if (held) {
+                held->setLighting(lightBefore);
+                held->render(camera, uint32_t(i));
+                if (i > first) flickerHeld.add(colorFlicker(aoFrame(held->readback(camera, true), camera, scale), before, match));
+                lightBefore = session.lighting();
+            }
+            if (sunOnly) {
+                const voxel::Lighting sunLight = sunAlone(session.lighting());
+                sunOnly->setLighting(sunLight);
+                sunOnly->render(camera, uint32_t(i));
+                const SunAgreement s = sunAgainstRays(sunOnly->readback(camera, true), camera, world, posed, sunLight);
+                sunAll.surface += s.surface, sunAll.facing += s.facing, sunAll.off += s.off, sunAll.aovOff += s.aovOff;
+                const double exact = s.surface ? 1.0 - double(s.off) / double(s.surface) : 1.0;
+                if (sunWorst.is_null() || exact < sunWorst["share_exact"].get<double>())
+                    sunWorst = {{"frame", i}, {"share_exact", exact}, {"off_pixels", s.off}, {"surface_pixels", s.surface}};
             }
             if (keepsThumbnail(i, first, o.last))
                 thumbnails.emplace_back(i, colorThumbnail(srgb8Pixels(frame), frame.width, frame.height));
@@ -300,6 +327,13 @@ StabilityFigures runStability(vk::Context& ctx, RenderSession& session, const Ao
                  {"color", {{"flicker", flickerColor.value()}, {"thumbnails", thumbnailsJson(thumbnails)}}},
                  {"error_mean", steady}, {"error_mean_from_frame", steadyFrom}, {"error", errors},
                  {"ghosting", ghostCurve}, {"cost_ms", cost}};
+    if (o.pathHasDay) f.figures["color"]["flicker_light_held"] = flickerHeld.value();
+    if (o.sun) {
+        const double share = sunAll.surface ? 1.0 - double(sunAll.off) / double(sunAll.surface) : 1.0;
+        f.figures["sun"] = {{"surface_pixels", sunAll.surface}, {"facing_pixels", sunAll.facing},
+                            {"off_pixels", sunAll.off}, {"share_exact", share}, {"worst_frame", sunWorst},
+                            {"aov_off_pixels", sunAll.aovOff}};
+    }
     if (o.pathHasEdits) {
         // The worst over the run's edits; a run whose windows were cut short has no recovery figure.
         double staleMax = 0.0;

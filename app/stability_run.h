@@ -17,13 +17,19 @@ struct StabilityRunOptions {
     int referenceEvery = 4;   // a pair of consecutive frames traced every K frames
     uint32_t width = 0, height = 0;
     bool pathHasEdits = false;  // report the edits' figures (empty when none fell in the range)
+    // The path keys the time of day: the colour's flicker is also measured with
+    // the light held (each frame rendered again under the frame before's light),
+    // which leaves out the change the light itself makes.
+    bool pathHasDay = false;
+    bool sun = false;           // the sun each frame shows against exact rays (engine/lab/sun_agreement.h)
     bool quiet = false;         // no progress lines
 };
 
 struct StabilityFigures {
     // "reference" (frames, rays), "flicker", "color", "error_mean",
-    // "error_mean_from_frame", "error", "ghosting", "cost_ms" and, for a path with
-    // edits, "edits" and "edit_recovery": the run's JSON beside its settings.
+    // "error_mean_from_frame", "error", "ghosting", "cost_ms", for a path with
+    // edits "edits" and "edit_recovery", and with the sun measured "sun": the
+    // run's JSON beside its settings.
     nlohmann::json figures;
     size_t matchedPixels = 0, referencePixels = 0;  // what the flicker and error figures were measured over
     int steadyFrom = 0;                             // the first frame of the steady-state error means

@@ -38,7 +38,7 @@ float cachedSunAt(FaceCacheTaps t, vec4 c, vec2 sunRange, vec3 normal, out bool 
         // A position behind the face reads dark, as the face is then: where the
         // sun crosses the face's plane between the two, they disagree.
         float sun = faceCacheDaySun(t, frame.daySun.x, (1u << frame.daySun.y) | (1u << frame.daySun.z), edge);
-        edge = edge || (dot(normal, frame.daySunBefore.xyz) <= 0.0 && dot(normal, frame.daySunAfter.xyz) <= 0.0);
+        edge = edge || frame.daySun.w != 0u || (dot(normal, frame.daySunBefore.xyz) <= 0.0 && dot(normal, frame.daySunAfter.xyz) <= 0.0);
         return sun;
     }
     edge = frame.sunDirection.w > 0.5 ? sunRange.y > 0.5 / 255.0 && sunRange.x < 1.0 - 0.5 / 255.0

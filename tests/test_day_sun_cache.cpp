@@ -9,7 +9,7 @@
 //  - the frame plan keeps the cache's sun at every hour of its day, and at no
 //    other day's or fixed sun's.
 #include "engine/frame/frame_plan.h"
-#include "engine/lab/surface_points.h"
+#include "engine/lab/sun_agreement.h"
 #include "engine/renderer.h"
 #include "engine/scene/live_scene.h"
 #include "shaders/shared/face_trace.h"
@@ -19,7 +19,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <map>
 #include <random>
 
 namespace grotto {
@@ -36,12 +35,10 @@ AoOptions dayCacheAo(const voxel::World& world, uint32_t budget) {
     return ao;
 }
 
-// houses' lighting on its day at `hour`, with no ambient light: a pixel's colour
-// is its sun term alone.
-voxel::Lighting sunAlone(const voxel::World& world, double hour) {
+// The world's lighting on its day at `hour`.
+voxel::Lighting dayAt(const voxel::World& world, double hour) {
     voxel::Lighting l = world.desc().lighting;
     l.sunFrom = voxel::SunSource::Day, l.timeOfDay = float(hour);
-    l.ambientFrom = voxel::AmbientSource::Color, l.ambientIntensity = 0.0f;
     return l;
 }
 
@@ -52,38 +49,13 @@ voxel::FaceBakeSettings daySettings(const voxel::World& world) {
     return s;
 }
 
-struct SunAgreement {
-    size_t surface = 0, facing = 0;  // surface pixels; of those, facing the sun
-    size_t off = 0;                  // the frame's sun unlike the exact ray's
-    size_t texelsOff = 0;            // the texels' sun alone (the shadow AOV) unlike it
-};
-
-// A frame at `hour` with the cache's sun against exact rays from each pixel's
-// point (World::raycast): its sun share is the pixel's colour over its albedo,
-// over the brightest of its facing (the sun lights those in full).
+// A frame at `hour` with the cache's sun, lit by the sun alone, against exact rays.
 SunAgreement compareAt(vk::Context& ctx, LiveScene& scene, const voxel::World& world, const Camera& camera, double hour) {
-    const voxel::Lighting light = sunAlone(world, hour);
+    const voxel::Lighting light = sunAlone(dayAt(world, hour));
     Renderer renderer(ctx, scene.gpu(), light, dayCacheAo(world, 0), kWidth, kHeight);
     EXPECT_TRUE(renderer.plan().cachedSun && !renderer.plan().tracedShadows) << "hour " << hour;
     renderer.render(camera);
-    const FrameImages f = renderer.readback(camera, true);
-    const SurfacePoints sp = surfacePoints(f, camera, world.voxelSize(), world.origin());
-    const glm::dvec3 sun = glm::dvec3(voxel::lightingInEffect(light).sunDirection);
-    auto facing = [](glm::dvec3 n) { return int(std::lround(n.x)) * 9 + int(std::lround(n.y)) * 3 + int(std::lround(n.z)); };
-    auto share = [&](size_t i) { return f.color[4 * sp.pixels[i]] / std::max(f.albedo[3 * sp.pixels[i]], 1e-6f); };
-    std::map<int, float> brightest;
-    for (size_t i = 0; i < sp.points.size(); ++i)
-        brightest[facing(sp.normals[i])] = std::max(brightest[facing(sp.normals[i])], share(i));
-    SunAgreement s;
-    s.surface = sp.points.size();
-    for (size_t i = 0; i < sp.points.size(); ++i) {
-        if (glm::dot(sp.normals[i], sun) <= 0.0) continue;
-        ++s.facing;
-        const double exact = world.raycast(sp.points[i] + sp.normals[i] * 1e-4, sun, 1e6) ? 0.0 : 1.0;
-        s.off += std::abs(share(i) / brightest[facing(sp.normals[i])] - exact) > 0.5;
-        s.texelsOff += std::abs(f.shadow[sp.pixels[i]] - exact) > 0.25;  // a disagreement reads 0.5 or so
-    }
-    return s;
+    return sunAgainstRays(renderer.readback(camera, true), camera, world, {}, light);
 }
 
 TEST_F(DaySunCache, AtRandomHoursTheSunEqualsRaysTracedPerPixel) {
@@ -101,13 +73,13 @@ TEST_F(DaySunCache, AtRandomHoursTheSunEqualsRaysTracedPerPixel) {
     for (const double h : hours) {
         const SunAgreement s = compareAt(ctx(), scene, world, camera, h);
         std::printf("[ measured ] %.2f h: sun off at %zu of %zu surface pixels (%zu facing the sun); texels alone %zu\n", h,
-                    s.off, s.surface, s.facing, s.texelsOff);
-        all.surface += s.surface, all.facing += s.facing, all.off += s.off, all.texelsOff += s.texelsOff;
+                    s.off, s.surface, s.facing, s.aovOff);
+        all.surface += s.surface, all.facing += s.facing, all.off += s.off, all.aovOff += s.aovOff;
     }
     ASSERT_GT(all.facing, all.surface / 4);
     EXPECT_LE(double(all.off), 0.005 * double(all.surface));
     EXPECT_LE(double(all.off), 0.005 * double(all.facing));
-    EXPECT_GT(all.texelsOff, 4 * std::max<size_t>(all.off, 1)) << "the traced edges close the gap the texels leave";
+    EXPECT_GT(all.aovOff, 4 * std::max<size_t>(all.off, 1)) << "the traced edges close the gap the texels leave";
 }
 
 TEST_F(DaySunCache, TheGpusTracerWritesTheBakesBits) {
@@ -116,7 +88,7 @@ TEST_F(DaySunCache, TheGpusTracerWritesTheBakesBits) {
     const voxel::FaceBakeSettings settings = daySettings(world);
     scene.progressiveFaceCache(settings);
     const Camera camera = makeCamera(world.camera("ground", double(kWidth) / kHeight), kWidth, kHeight);
-    Renderer renderer(ctx(), scene.gpu(), sunAlone(world, 10.0), dayCacheAo(world, 1'000'000'000u), kWidth, kHeight);
+    Renderer renderer(ctx(), scene.gpu(), dayAt(world, 10.0), dayCacheAo(world, 1'000'000'000u), kWidth, kHeight);
     renderer.render(camera);
     LiveFaceCache& cache = *scene.faceCache();
     cache.sync();
@@ -143,17 +115,17 @@ TEST_F(DaySunCache, TheFramePlanKeepsTheCachesSunAtEveryHourOfItsDayOnly) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "houses.json");
     LiveScene scene(ctx(), voxel::World(world));
     scene.bakeFaceCache(daySettings(world));
-    Renderer renderer(ctx(), scene.gpu(), sunAlone(world, 6.0), dayCacheAo(world, 0), 32, 18);
+    Renderer renderer(ctx(), scene.gpu(), dayAt(world, 6.0), dayCacheAo(world, 0), 32, 18);
     for (double h : {0.0, 5.0, 12.0, 19.5, 23.9}) {
-        renderer.setLighting(sunAlone(world, h));
+        renderer.setLighting(dayAt(world, h));
         EXPECT_TRUE(renderer.plan().cachedSun && renderer.plan().shadowEdges) << h << " h";
     }
-    voxel::Lighting otherDay = sunAlone(world, 12.0);
+    voxel::Lighting otherDay = dayAt(world, 12.0);
     otherDay.dayOfYear = 80.0f;
     renderer.setLighting(otherDay);
     EXPECT_FALSE(renderer.plan().cachedSun) << "another day's path: its sun traced";
     EXPECT_TRUE(renderer.plan().tracedShadows);
-    voxel::Lighting fixed = sunAlone(world, 12.0);
+    voxel::Lighting fixed = dayAt(world, 12.0);
     fixed.sunFrom = voxel::SunSource::Direction;
     renderer.setLighting(fixed);
     EXPECT_FALSE(renderer.plan().cachedSun) << "a fixed sun is no position's";

@@ -31,7 +31,8 @@ struct FrameUniforms {
     vec4 cameraFraction; // xyz: the camera within that voxel, in voxels; w: 1 / voxel size
     // The day's sun from the face cache (shared/face_cache.h's faceCacheDaySun):
     // x the first word of its bits, 0 without; y and z the positions before and
-    // after the hour; daySunBefore and daySunAfter: toward the sun at those two.
+    // after the hour; w 1 before sunrise or after sunset (every pixel traced);
+    // daySunBefore and daySunAfter: toward the sun at those two.
     uvec4 daySun;
     vec4 daySunBefore;
     vec4 daySunAfter;
