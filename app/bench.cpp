@@ -103,6 +103,7 @@ void addBenchCommand(CLI::App& app) {
         const size_t hostBytes = stats.hostBytes + scene.hostBytes();
         const size_t gpuBytes = scene.gpuBytes();
         const size_t cacheBytes = scene.faceCache() ? scene.faceCache()->gpuBytes() : 0;  // within gpuBytes
+        const size_t dayBytes = scene.faceCache() ? scene.faceCache()->daySunBytes() : 0;  // within cacheBytes
         const size_t cachedFaces = session->scene().faceCache() ? session->scene().faceCache()->faces().size() : 0;
         // After the frames and the memory figures, so both see the scene as uploaded.
         std::optional<SceneUpdateCost> update;
@@ -119,6 +120,7 @@ void addBenchCommand(CLI::App& app) {
             {"memory", {{"grid_memusage_bytes", stats.sourceGridBytes}, {"host_bytes", hostBytes},
                         {"gpu_scene_bytes", gpuBytes}, {"gpu_target_bytes", targetBytes},
                         {"gpu_face_cache_bytes", cacheBytes}, {"face_cache_faces", cachedFaces},
+                        {"gpu_face_cache_day_sun_bytes", dayBytes},
                         {"world_to_grid_ratio", double(hostBytes + gpuBytes) / double(std::max<size_t>(1, stats.sourceGridBytes))}}}};
         std::printf("%s on %s, %ux%u, median of %d frames after %d warm-up\n", args->world.c_str(),
                     ctx.deviceName().c_str(), size.width, size.height, args->frames, args->warmup);
@@ -149,6 +151,8 @@ void addBenchCommand(CLI::App& app) {
         if (cachedFaces)
             std::printf("  face cache: %zu B GPU (in the world's) for %zu exposed faces, %.1f B a face\n", cacheBytes,
                         cachedFaces, double(cacheBytes) / double(cachedFaces));
+        if (cachedFaces && dayBytes)
+            std::printf("    of which the day's sun: %zu B, %.1f B a face\n", dayBytes, double(dayBytes) / double(cachedFaces));
         if (edits) {
             printEditFigures(*edits);
             j["edits"] = editFiguresJson(*edits);

@@ -96,9 +96,13 @@ void addInfoCommand(CLI::App& app) {
         {  // what a bake at the default k adds (--ao cache, docs/face-cache.md)
             const voxel::ExposedFaceCount faces = voxel::countExposedFaces(w);
             const size_t bytes = voxel::faceCacheGpuBytes(faces, voxel::kDefaultBakeTexels);
-            std::printf("face cache     %llu exposed faces; baked at %u x %u texels, %zu bytes on the GPU (%.1f a face)\n",
+            // A bake for the day's sun (lighting.sun.from day, a path's day track): a word a texel more.
+            const size_t day = voxel::faceCacheGpuBytes(faces, voxel::kDefaultBakeTexels, true) - bytes;
+            const double perFace = faces.faces ? 1.0 / double(faces.faces) : 0.0;
+            std::printf("face cache     %llu exposed faces; baked at %u x %u texels, %zu bytes on the GPU (%.1f a face); "
+                        "for the day's sun %zu more (%.1f a face)\n",
                         (unsigned long long)faces.faces, voxel::kDefaultBakeTexels, voxel::kDefaultBakeTexels, bytes,
-                        faces.faces ? double(bytes) / double(faces.faces) : 0.0);
+                        double(bytes) * perFace, day, double(day) * perFace);
         }
         if (b.empty())
             std::printf("bounds         empty\n");

@@ -8,6 +8,7 @@
 #include "voxel/face_bake.h"
 #include "voxel/face_brick_table.h"
 #include "voxel/face_cache_edit.h"
+#include "voxel/face_cache_file.h"
 #include "voxel/face_cache_layout.h"
 #include "voxel/face_cache_lookup.h"
 
@@ -31,7 +32,9 @@ inline uint32_t faceCacheK() { return gpuTwin->texelsPerSide; }
 #include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <filesystem>
 #include <functional>
 #include <limits>
 #include <numbers>
@@ -479,6 +482,52 @@ TEST(FaceCache, AnEditRetracesWhatItCanReachAndTouchesNothingElse) {
 // The day's sun: the box swept along the whole day's path.
 TEST(FaceCache, AnEditRetracesTheDaysSunAlongTheBoxSweptOverTheDay) {
     checkEditsRetraceWhatTheyReach({.radius = 2.0, .texelsPerSide = 2, .rays = 12, .day = SunPath{48.0, 172.0, 20.0}});
+}
+
+// A bake for the day's sun written and read back: its path in the header, its
+// bits in the texels; another path's world, or a fixed sun's, refuses it.
+TEST(FaceCache, ADayBakesFileKeepsItsPathAndBits) {
+    std::mt19937 rng(45);
+    World w = randomWorld(12, 0.15, rng);
+    Lighting l = w.desc().lighting;
+    l.sunFrom = SunSource::Day, l.latitude = -33.5f, l.dayOfYear = 300.0f, l.north = 12.0f, l.timeOfDay = 9.0f;
+    w.setLighting(l);
+    const FaceCacheKey key = faceCacheKey(w, 2.0, 2);
+    ASSERT_TRUE(key.day.has_value());
+    EXPECT_EQ(*key.day, sunPathOf(l));
+    EXPECT_EQ(key.sunDirection, glm::dvec3(0.0)) << "no one hour's sun";
+    const std::vector<ExposedFace> faces = exposedFaces(w);
+    FaceCacheFile file{.header = {.key = key, .rays = 4, .sunRays = 0, .totalFaces = faces.size(), .faceCount = faces.size()}};
+    file.texels = bake(w, faces, {.radius = 2.0, .texelsPerSide = 2, .rays = 4, .day = key.day});
+    const std::filesystem::path path = std::filesystem::temp_directory_path() / "grotto-day-bake-round-trip.gfc";
+    saveFaceCache(file, path);
+    const FaceCacheFile back = loadFaceCache(path);
+    EXPECT_EQ(back.header.key, key);
+    EXPECT_EQ(back.texels, file.texels);
+    size_t lit = 0;
+    for (const FaceTexel& t : back.texels) lit += size_t(std::popcount(t.daySun));
+    EXPECT_GT(lit, back.texels.size()) << "bits kept";
+    // Any hour of the same day takes it; another day, or a fixed sun, does not.
+    auto refusal = [&]() -> std::string {
+        try {
+            requireMatchingBake(back.header, faceCacheKey(w, 2.0, 2), faces.size(), path);
+        } catch (const Error& e) {
+            return e.what();
+        }
+        return "taken";
+    };
+    l.timeOfDay = 17.5f;
+    w.setLighting(l);
+    EXPECT_NO_THROW(requireMatchingBake(back.header, faceCacheKey(w, 2.0, 2), faces.size(), path));
+    l.dayOfYear = 301.0f;
+    w.setLighting(l);
+    EXPECT_NE(refusal().find("day's sun: baked for latitude -33.5, day 300, north 12, the world asks latitude -33.5, day 301"),
+              std::string::npos) << refusal();
+    l.sunFrom = SunSource::Direction;
+    w.setLighting(l);
+    EXPECT_NE(refusal().find("day's sun: baked for latitude -33.5, day 300, north 12, the world asks none"), std::string::npos)
+        << refusal();
+    std::filesystem::remove(path);
 }
 
 // Each texel's bit for a position of the day's sun is World::raycast's answer

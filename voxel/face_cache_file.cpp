@@ -158,14 +158,17 @@ FaceCacheHeader readFaceCacheHeader(const std::filesystem::path& path) {
     std::error_code ec;
     const uintmax_t size = std::filesystem::file_size(path, ec);
     if (ec) throw Error(name, "cannot read the face cache: " + ec.message());
-    if (size < kHeaderBytes) throw Error(name, "header: " + std::to_string(size) + " bytes, shorter than a face cache's header");
+    // The magic and version first: an older version's header is another size.
+    constexpr size_t kLead = sizeof kMagic + sizeof kVersion;
+    if (size < kLead) throw Error(name, "header: " + std::to_string(size) + " bytes, shorter than a face cache's header");
     std::ifstream in(path, std::ios::binary);
-    std::string head(kHeaderBytes, '\0');
+    std::string head(std::min<uintmax_t>(size, kHeaderBytes), '\0');
     if (!in.read(head.data(), std::streamsize(head.size()))) throw Error(name, "cannot read the face cache's header");
     if (std::memcmp(head.data(), kMagic, sizeof kMagic) != 0) throw Error(name, "magic: not a Grotto face cache (grotto bake writes them)");
     size_t at = sizeof kMagic;
     if (const uint32_t v = take<uint32_t>(head, at); v != kVersion)
         throw Error(name, "version " + std::to_string(v) + " is not this Grotto's", "accepted: " + std::to_string(kVersion) + "; bake it again");
+    if (size < kHeaderBytes) throw Error(name, "header: " + std::to_string(size) + " bytes, shorter than a face cache's header");
     FaceCacheHeader h;
     h.key.texelsPerSide = take<uint32_t>(head, at);
     if (h.key.texelsPerSide == 0 || h.key.texelsPerSide > kMaxTexelsPerSide)
