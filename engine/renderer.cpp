@@ -134,7 +134,12 @@ void Renderer::setLighting(const voxel::Lighting& given) {
     // Uniforms only, unless passes or targets change or the ambient's source (its light everywhere).
     const bool restarts = passes_.changes(plan) || targets_.changes(plan) || lighting.ambientFrom != lighting_.ambientFrom;
     if (restarts) requireRenderFits(ctx_, plan, "lighting");  // a soft sun's history may not fit
-    if (lighting.sunDirection != lighting_.sunDirection || lighting.sunAngle != lighting_.sunAngle) surfaceCamera_.reset();
+    // A moved sun stales the histories that hold it: a soft sun's shadow, and the
+    // light objects take with full light (the cache's sun on the faces they see).
+    // Objects' AO and sky weights hold no sun: a day's moving sun keeps them.
+    const bool holdsSun = plan.softShadows || (plan.objectLight && ambientSource(lighting, ao_) == voxel::AmbientSource::Full);
+    if (holdsSun && (lighting.sunDirection != lighting_.sunDirection || lighting.sunAngle != lighting_.sunAngle))
+        surfaceCamera_.reset();
     given_ = given, lighting_ = lighting;
     if (restarts) restart(plan);
     else plan_ = plan;
