@@ -37,13 +37,13 @@ struct Sampled {
 };
 
 TEST(DaySunSamples, ThirtyTwoPositionsMissUnderAHalfPercentOfHousesDay) {
-    const World world = World::load(test::worldsDir() / "houses.json");
+    const World world = World::load(grotto::test::worldsDir() / "houses.json");
     const SunPath path = sunPathOf(world.desc().lighting);
     const Daylight day = daylightHours(path);
     ASSERT_GT(day.set - day.rise, 15.0) << "houses' day: latitude 48 in June";
     std::vector<glm::dvec3> points, normals;
     const std::vector<ExposedFace> faces = exposedFaces(world);
-    for (size_t f = 0; f < faces.size(); f += size_t(test::underSanitizers(5, 41)))
+    for (size_t f = 0; f < faces.size(); f += size_t(grotto::test::underSanitizers(5, 41)))
         for (uint32_t t = 0; t < 9; ++t)
             points.push_back(texelPoint(faces[f], 3, t % 3, t / 3)), normals.push_back(faceNormal(faces[f].dir));
     std::mt19937_64 rng(44);

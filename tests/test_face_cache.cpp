@@ -1,15 +1,14 @@
 // The face cache's CPU rays (voxel/face_cache.h, voxel/face_bake.h): which faces
 // are exposed, and each texel's AO, sky light and sun visibility against closed
 // forms (an open floor, a closed room), the reference AO at the same points, and
-// World::raycast toward the sun; a bake split into parts equals one bake; after
-// random edits, what the edit can reach is traced again and nothing else touched.
+// World::raycast toward the sun; a bake split into parts equals one bake
+// (edits and the day's sun: test_face_cache_edit.cpp).
 #include "grotto/error.h"
-#include "tests/test_util.h"
+#include "tests/face_cache_worlds.h"
 #include "voxel/brick_table.h"
 #include "voxel/face_bake.h"
 #include "voxel/face_brick_table.h"
 #include "voxel/face_cache_edit.h"
-#include "voxel/face_cache_file.h"
 #include "voxel/face_cache_layout.h"
 #include "voxel/face_cache_lookup.h"
 
@@ -46,33 +45,10 @@ inline uint32_t faceCacheK() { return gpuTwin->texelsPerSide; }
 namespace grotto::voxel {
 namespace {
 
-World denseWorld(glm::ivec3 size, const std::function<bool(glm::ivec3)>& solid) {
-    std::vector<uint8_t> m(size_t(size.x) * size.y * size.z, 0);
-    for (int z = 0; z < size.z; ++z)
-        for (int y = 0; y < size.y; ++y)
-            for (int x = 0; x < size.x; ++x)
-                if (solid({x, y, z})) m[(size_t(z) * size.y + y) * size.x + x] = 1;
-    return World::fromDense(size, m.data(), 1.0, glm::dvec3(0.0));
-}
-
-// A cube of `side` voxels, each solid with probability `density`, drawn from `rng`.
-World randomWorld(int side, double density, std::mt19937& rng) {
-    std::bernoulli_distribution fill(density);
-    std::vector<bool> cells(size_t(side) * side * side);
-    for (size_t k = 0; k < cells.size(); ++k) cells[k] = fill(rng);
-    return denseWorld({side, side, side}, [&](glm::ivec3 v) { return cells[(size_t(v.z) * side + v.y) * side + v.x]; });
-}
-
-std::vector<FaceTexel> bake(const World& w, std::span<const ExposedFace> faces, const FaceBakeSettings& s) {
-    std::vector<FaceTexel> t(faces.size() * s.texelsPerSide * s.texelsPerSide);
-    bakeFaces(BrickTable(w), w, faces, s, t);
-    return t;
-}
-
 TEST(FaceCache, ExposedFacesAreTheSolidVoxelsOpenSides) {
-    EXPECT_EQ(exposedFaces(denseWorld({3, 3, 3}, [](glm::ivec3 v) { return v == glm::ivec3(1); })).size(), 6u);
-    EXPECT_EQ(exposedFaces(denseWorld({4, 3, 3}, [](glm::ivec3 v) { return v.y == 1 && v.z == 1 && v.x >= 1 && v.x <= 2; })).size(), 10u);
-    const World cube = denseWorld({5, 5, 5}, [](glm::ivec3 v) { return glm::all(glm::greaterThan(v, glm::ivec3(0))) && glm::all(glm::lessThan(v, glm::ivec3(4))); });
+    EXPECT_EQ(exposedFaces(grotto::test::solidWorld({3, 3, 3}, [](glm::ivec3 v) { return v == glm::ivec3(1); })).size(), 6u);
+    EXPECT_EQ(exposedFaces(grotto::test::solidWorld({4, 3, 3}, [](glm::ivec3 v) { return v.y == 1 && v.z == 1 && v.x >= 1 && v.x <= 2; })).size(), 10u);
+    const World cube = grotto::test::solidWorld({5, 5, 5}, [](glm::ivec3 v) { return glm::all(glm::greaterThan(v, glm::ivec3(0))) && glm::all(glm::lessThan(v, glm::ivec3(4))); });
     const std::vector<ExposedFace> faces = exposedFaces(cube);
     ASSERT_EQ(faces.size(), 54u);  // 6 sides of 3 x 3
     EXPECT_TRUE(std::is_sorted(faces.begin(), faces.end()));
@@ -104,12 +80,12 @@ TEST(FaceCache, TexelsTileTheFaceOnItsPlane) {
 // the upper hemisphere is 2 * integral of u^1.5 = 0.8, so zenith 0.8, horizon 0.2;
 // its underside sees only the darker horizon below (0.8); a side face half of each.
 TEST(FaceCache, AnOpenFloorSeesTheSkyAsTheClosedFormsSay) {
-    const World floor = denseWorld({33, 2, 33}, [](glm::ivec3 v) { return v.y == 0; });
+    const World floor = grotto::test::solidWorld({33, 2, 33}, [](glm::ivec3 v) { return v.y == 0; });
     const std::vector<ExposedFace> faces = {{{16, 0, 16}, 2}, {{16, 0, 16}, 3}, {{32, 0, 16}, 0}};
     const std::vector<ExposedFace> all = exposedFaces(floor);
     for (const ExposedFace& f : faces) ASSERT_TRUE(std::binary_search(all.begin(), all.end(), f));
     FaceBakeSettings s{.radius = 4.0, .texelsPerSide = 2, .rays = 1024, .sunDirection = {0.45, 0.8, 0.3}};
-    const std::vector<FaceTexel> t = bake(floor, faces, s);
+    const std::vector<FaceTexel> t = grotto::test::bakeAll(floor, faces, s);
     const FaceTexel& top = t[0];
     EXPECT_EQ(top.samples, 1024u);
     EXPECT_EQ(top.open, 1024u);
@@ -134,14 +110,14 @@ TEST(FaceCache, AnOpenFloorSeesTheSkyAsTheClosedFormsSay) {
 // A closed room's inside sees no sky and no sun, whatever the sun does; its AO is
 // the reference's at the same points, within the two estimates' error.
 TEST(FaceCache, AClosedRoomIsDarkInsideAndItsAoIsTheReferences) {
-    const World clipped = denseWorld({12, 12, 12}, [](glm::ivec3 v) {  // the room's walls alone
+    const World clipped = grotto::test::solidWorld({12, 12, 12}, [](glm::ivec3 v) {  // the room's walls alone
         const bool inside = glm::all(glm::greaterThanEqual(v, glm::ivec3(1))) && glm::all(glm::lessThanEqual(v, glm::ivec3(10)));
         return inside && (glm::any(glm::equal(v, glm::ivec3(1))) || glm::any(glm::equal(v, glm::ivec3(10))));
     });
     const std::vector<ExposedFace> faces = exposedFaces(clipped);
     FaceBakeSettings s{.radius = 4.0, .texelsPerSide = 2, .rays = 256, .sunRays = 8, .sunDirection = {0.0, 1.0, 0.0},
                        .sunAngleDegrees = 5.0};
-    const std::vector<FaceTexel> t = bake(clipped, faces, s);
+    const std::vector<FaceTexel> t = grotto::test::bakeAll(clipped, faces, s);
     std::vector<glm::dvec3> points, normals;
     std::vector<size_t> inside;
     for (size_t f = 0; f < faces.size(); ++f) {
@@ -179,12 +155,12 @@ TEST(FaceCache, AClosedRoomIsDarkInsideAndItsAoIsTheReferences) {
 // World::raycast from a 32 x 32 grid of points on each face (one texel a face).
 TEST(FaceCache, PointSunVisibilityIsTheLitShareOfTheTexelsSquare) {
     std::mt19937 rng(11);
-    const World w = randomWorld(20, 0.18, rng);
+    const World w = grotto::test::randomWorld(20, 0.18, rng);
     const std::vector<ExposedFace> faces = exposedFaces(w);
     const glm::dvec3 sun = glm::normalize(glm::dvec3(0.45, 0.8, 0.3));
     FaceBakeSettings s{.texelsPerSide = 1, .rays = 4, .sunDirection = sun};
     ASSERT_EQ(s.sunRays, 16u);
-    const std::vector<FaceTexel> t = bake(w, faces, s);
+    const std::vector<FaceTexel> t = grotto::test::bakeAll(w, faces, s);
     size_t lit = 0, dark = 0, part = 0;
     double worst = 0.0;
     for (size_t f = 0; f < faces.size(); ++f) {
@@ -237,13 +213,13 @@ TEST(FaceCache, AnEditTheTexelsSquareSeesTowardTheSunMakesItsSunStale) {
 // rays added in two calls give the same counts as one bake.
 TEST(FaceCache, ABakeSplitIntoPartsEqualsOneBake) {
     std::mt19937 rng(5);
-    const World w = randomWorld(16, 0.25, rng);
+    const World w = grotto::test::randomWorld(16, 0.25, rng);
     const std::vector<ExposedFace> faces = exposedFaces(w);
     FaceBakeSettings s{.texelsPerSide = 2, .rays = 64, .sunRays = 4, .sunAngleDegrees = 2.0};
-    const std::vector<FaceTexel> whole = bake(w, faces, s);
+    const std::vector<FaceTexel> whole = grotto::test::bakeAll(w, faces, s);
     const size_t half = faces.size() / 3;
-    std::vector<FaceTexel> parts = bake(w, std::span(faces).subspan(half), s);
-    const std::vector<FaceTexel> first = bake(w, std::span(faces).first(half), s);
+    std::vector<FaceTexel> parts = grotto::test::bakeAll(w, std::span(faces).subspan(half), s);
+    const std::vector<FaceTexel> first = grotto::test::bakeAll(w, std::span(faces).first(half), s);
     parts.insert(parts.begin(), first.begin(), first.end());
     EXPECT_TRUE(parts == whole);
 
@@ -264,7 +240,7 @@ TEST(FaceCache, ABakeSplitIntoPartsEqualsOneBake) {
 // coplanar exposed faces: a field linear over a floor comes back exactly, away
 // from the floor's rim; at a convex edge the missing neighbours drop out.
 TEST(FaceCache, LookupBlendsTexelsAcrossCoplanarFaces) {
-    const World floor = denseWorld({8, 2, 8}, [](glm::ivec3 v) { return v.y == 0; });
+    const World floor = grotto::test::solidWorld({8, 2, 8}, [](glm::ivec3 v) { return v.y == 0; });
     const std::vector<ExposedFace> faces = exposedFaces(floor);
     for (uint32_t k : {1u, 2u, 3u}) {
         std::vector<FaceTexel> texels(faces.size() * k * k);
@@ -297,10 +273,10 @@ TEST(FaceCache, LookupBlendsTexelsAcrossCoplanarFaces) {
 // read equals the CPU lookup up to the texels' 8-bit quantisation.
 TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
     std::mt19937 rng(9);
-    const World w = randomWorld(20, 0.3, rng);
+    const World w = grotto::test::randomWorld(20, 0.3, rng);
     const std::vector<ExposedFace> faces = exposedFaces(w);
     for (uint32_t k : {1u, 2u}) {
-        const std::vector<FaceTexel> texels = bake(w, faces, {.texelsPerSide = k, .rays = 16, .sunRays = 1});
+        const std::vector<FaceTexel> texels = grotto::test::bakeAll(w, faces, {.texelsPerSide = k, .rays = 16, .sunRays = 1});
         const FaceCacheArrays arrays = layFaceCache(faces, texels, k);
         EXPECT_EQ(faceCacheGpuBytes(faces, k), arrays.bytes());
         gpu::gpuTwin = &arrays;
@@ -394,7 +370,7 @@ TEST(FaceCache, TheBrickTableFindsEachBrickAndNoOther) {
 }
 
 TEST(FaceCache, BadSettingsAreRefused) {
-    const World w = denseWorld({3, 3, 3}, [](glm::ivec3 v) { return v == glm::ivec3(1); });
+    const World w = grotto::test::solidWorld({3, 3, 3}, [](glm::ivec3 v) { return v == glm::ivec3(1); });
     const std::vector<ExposedFace> faces = exposedFaces(w);
     std::vector<FaceTexel> t(faces.size());
     EXPECT_THROW(bakeFaces(BrickTable(w), w, faces, {.radius = 0.0, .texelsPerSide = 1}, t), Error);
@@ -402,176 +378,12 @@ TEST(FaceCache, BadSettingsAreRefused) {
     EXPECT_THROW(bakeFaces(BrickTable(w), w, faces, {.texelsPerSide = 2}, t), Error);
 }
 
-// Random carves and fills of a random world: after each, every texel is either
-// carried over bit for bit, and then a fresh bake of the edited world gives it
-// the AO and sun a fresh bake before the edit did (and the same sky, unless the
-// rule left its sky for later, off by little), or traced again and equal to the
-// fresh bake.
-// Random edits of a random world baked with `s`: after each, what the rule says
-// the edit reaches equals a fresh bake, and the rest is carried over and still right.
-void checkEditsRetraceWhatTheyReach(const FaceBakeSettings& s, int edits = 6) {
-    std::mt19937 rng(25);
-    World w = randomWorld(28, 0.08, rng);
-    BrickTable table(w);
-    std::vector<ExposedFace> faces = exposedFaces(table, w);
-    std::vector<FaceTexel> texels = bake(w, faces, s), truth = texels;  // truth: a fresh bake of the world now
-    std::uniform_int_distribution<int> at(0, 27), extent(0, 4);
-    size_t carried = 0, retraced = 0, far = 0;
-    double farError = 0.0;
-    for (int e = 0; e < edits; ++e) {
-        const glm::ivec3 lo(at(rng), at(rng), at(rng));
-        const IndexBox box{lo, glm::min(lo + glm::ivec3(extent(rng), extent(rng), extent(rng)), glm::ivec3(27))};
-        const EditResult result = w.apply(e % 2 ? Edit::fillBox(box, 1) : Edit::carveBox(box));
-        ASSERT_FALSE(result.voxels.empty());
-        table.update(w, result.voxels);
-        const std::vector<ExposedFace> before = faces;
-        const std::vector<FaceTexel> old = texels;
-        CacheEditStats stats;
-        updateAfterEdit(table, w, result.voxels, s, faces, texels, &stats);
-        ASSERT_EQ(faces, exposedFaces(table, w));
-        const std::vector<FaceTexel> fresh = bake(w, faces, s);
-        const uint32_t perFace = 4;
-        size_t tracedFaces = 0;
-        for (size_t f = 0; f < faces.size(); ++f) {
-            const auto it = std::lower_bound(before.begin(), before.end(), faces[f]);
-            const bool existed = it != before.end() && *it == faces[f];
-            bool stale = !existed;
-            for (uint32_t t = 0; t < perFace && existed; ++t)
-                stale |= staleAfterEdit(texelPoint(faces[f], 2, t % 2, t / 2), faces[f].dir, result.voxels, s, 1.0).now();
-            tracedFaces += stale;
-            for (uint32_t t = 0; t < perFace; ++t) {
-                const size_t i = f * perFace + t;
-                if (stale) {
-                    ASSERT_EQ(texels[i], fresh[i]) << "edit " << e << ", face " << f << " traced again";
-                    ++retraced;
-                    continue;
-                }
-                const size_t j = size_t(it - before.begin()) * perFace + t;
-                ASSERT_EQ(texels[i], old[j]) << "edit " << e << ", face " << f << " carried over";
-                const FaceTexel& was = truth[j];
-                ASSERT_EQ(fresh[i].open, was.open) << "edit " << e << ", face " << f << ": AO the rule missed";
-                ASSERT_EQ(fresh[i].sunOpen, was.sunOpen) << "edit " << e << ", face " << f << ": sun the rule missed";
-                ASSERT_EQ(fresh[i].daySun, was.daySun) << "edit " << e << ", face " << f << ": the day's sun the rule missed";
-                ++carried;
-                const bool skyFar =
-                    staleAfterEdit(texelPoint(faces[f], 2, t % 2, t / 2), faces[f].dir, result.voxels, s, 1.0).skyFar;
-                if (!skyFar) {
-                    ASSERT_EQ(fresh[i], was) << "edit " << e << ", face " << f << ": sky the rule missed";
-                    continue;
-                }
-                ++far;
-                farError += std::abs(double(fresh[i].skyHorizon + fresh[i].skyZenith) -
-                                     double(was.skyHorizon + was.skyZenith)) / was.samples;
-            }
-        }
-        truth = fresh;
-        EXPECT_EQ(stats.traced, tracedFaces);
-        EXPECT_EQ(stats.carried, faces.size() - tracedFaces);
-    }
-    EXPECT_GT(carried, 10 * retraced / 4);  // most of the world untouched
-    EXPECT_GT(retraced, 500u);
-    ASSERT_GT(far, 100u);
-    // Left for later, the far texels' sky is off by less than the rule's bound on average.
-    EXPECT_LT(farError / double(far), kSkyStaleShare);
-}
-
-TEST(FaceCache, AnEditRetracesWhatItCanReachAndTouchesNothingElse) {
-    checkEditsRetraceWhatTheyReach({.radius = 2.0, .texelsPerSide = 2, .rays = 12, .sunRays = 3,
-                                    .sunDirection = glm::normalize(glm::dvec3(0.3, 0.9, -0.2)), .sunAngleDegrees = 4.0});
-}
-
-// The day's sun: the box swept along the whole day's path.
-TEST(FaceCache, AnEditRetracesTheDaysSunAlongTheBoxSweptOverTheDay) {
-    checkEditsRetraceWhatTheyReach({.radius = 2.0, .texelsPerSide = 2, .rays = 12, .day = SunPath{48.0, 172.0, 20.0}},
-                                   grotto::test::underSanitizers(6, 3));
-}
-
-// A bake for the day's sun written and read back: its path in the header, its
-// bits in the texels; another path's world, or a fixed sun's, refuses it.
-TEST(FaceCache, ADayBakesFileKeepsItsPathAndBits) {
-    std::mt19937 rng(45);
-    World w = randomWorld(12, 0.15, rng);
-    Lighting l = w.desc().lighting;
-    l.sunFrom = SunSource::Day, l.latitude = -33.5f, l.dayOfYear = 300.0f, l.north = 12.0f, l.timeOfDay = 9.0f;
-    w.setLighting(l);
-    const FaceCacheKey key = faceCacheKey(w, 2.0, 2);
-    ASSERT_TRUE(key.day.has_value());
-    EXPECT_EQ(*key.day, sunPathOf(l));
-    EXPECT_EQ(key.sunDirection, glm::dvec3(0.0)) << "no one hour's sun";
-    const std::vector<ExposedFace> faces = exposedFaces(w);
-    FaceCacheFile file{.header = {.key = key, .rays = 4, .sunRays = 0, .totalFaces = faces.size(), .faceCount = faces.size()}};
-    file.texels = bake(w, faces, {.radius = 2.0, .texelsPerSide = 2, .rays = 4, .day = key.day});
-    const std::filesystem::path path = std::filesystem::temp_directory_path() / "grotto-day-bake-round-trip.gfc";
-    saveFaceCache(file, path);
-    const FaceCacheFile back = loadFaceCache(path);
-    EXPECT_EQ(back.header.key, key);
-    EXPECT_EQ(back.texels, file.texels);
-    size_t lit = 0;
-    for (const FaceTexel& t : back.texels) lit += size_t(std::popcount(t.daySun));
-    EXPECT_GT(lit, back.texels.size()) << "bits kept";
-    // Any hour of the same day takes it; another day, or a fixed sun, does not.
-    auto refusal = [&]() -> std::string {
-        try {
-            requireMatchingBake(back.header, faceCacheKey(w, 2.0, 2), faces.size(), path);
-        } catch (const Error& e) {
-            return e.what();
-        }
-        return "taken";
-    };
-    l.timeOfDay = 17.5f;
-    w.setLighting(l);
-    EXPECT_NO_THROW(requireMatchingBake(back.header, faceCacheKey(w, 2.0, 2), faces.size(), path));
-    l.dayOfYear = 301.0f;
-    w.setLighting(l);
-    EXPECT_NE(refusal().find("day's sun: baked for latitude -33.5, day 300, north 12, the world asks latitude -33.5, day 301"),
-              std::string::npos) << refusal();
-    l.sunFrom = SunSource::Direction;
-    w.setLighting(l);
-    EXPECT_NE(refusal().find("day's sun: baked for latitude -33.5, day 300, north 12, the world asks none"), std::string::npos)
-        << refusal();
-    std::filesystem::remove(path);
-}
-
-// Each texel's bit for a position of the day's sun is World::raycast's answer
-// from its centre toward that position (0 where the sun is behind the face).
-TEST(FaceCache, TheDaysSunBitsAreExactRaysFromTheTexelsCentre) {
-    std::mt19937 rng(44);
-    const World w = randomWorld(20, 0.1, rng);
-    const SunPath path{48.0, 172.0, 20.0};
-    const FaceBakeSettings s{.radius = 2.0, .texelsPerSide = 2, .rays = 2, .day = path};
-    const std::vector<ExposedFace> faces = exposedFaces(w);
-    const std::vector<FaceTexel> texels = bake(w, faces, s);
-    const std::vector<glm::dvec3> sun = daySunDirections(path);
-    ASSERT_EQ(sun.size(), size_t(kDaySunPositions));
-    EXPECT_NEAR(elevationDegrees(sun.front()), 0.0, 1e-9) << "the first at sunrise";
-    EXPECT_NEAR(elevationDegrees(sun.back()), 0.0, 1e-9) << "the last at sunset";
-    size_t compared = 0, differing = 0, lit = 0;
-    for (size_t f = 0; f < faces.size(); ++f) {
-        const glm::dvec3 n = faceNormal(faces[f].dir);
-        for (uint32_t t = 0; t < 4; ++t) {
-            const FaceTexel& texel = texels[f * 4 + t];
-            ASSERT_EQ(texel.dayPositions, kDaySunPositions);
-            EXPECT_EQ(texel.sunSamples, 0u) << "no fixed sun's rays";
-            const glm::dvec3 from = texelPoint(faces[f], 2, t % 2, t / 2) + n * 1e-4;
-            for (uint32_t m = 0; m < kDaySunPositions; ++m) {
-                const bool exact = glm::dot(sun[m], n) > 0.0 && !w.raycast(from, sun[m], 1e6);
-                const bool bit = (texel.daySun >> m) & 1u;
-                ++compared, lit += exact, differing += bit != exact;
-            }
-        }
-    }
-    std::printf("[ measured ] %zu of %zu bits differ from World::raycast, %zu lit\n", differing, compared, lit);
-    EXPECT_GT(lit, compared / 10);
-    EXPECT_LT(lit, compared * 9 / 10);
-    EXPECT_LE(differing, compared / 10000) << "rays that graze a voxel edge";
-}
-
 // The row-at-a-time count equals the listed faces, and the bricks holding them,
 // on random worlds with solid bricks at negative indices and across brick borders.
 TEST(FaceCache, CountingEqualsListing) {
     std::mt19937 rng(33);
     for (double density : {0.05, 0.3, 0.7, 1.0}) {
-        World w = randomWorld(21, density, rng);
+        World w = grotto::test::randomWorld(21, density, rng);
         w.apply(Edit::fillBox({{-9, -3, -17}, {-2, 4, -5}}, 1));
         w.apply(Edit::carveBox({{-5, 0, -9}, {-4, 1, -8}}));
         const std::vector<ExposedFace> faces = exposedFaces(w);
