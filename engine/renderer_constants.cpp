@@ -33,9 +33,7 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
             const uint32_t before = uint32_t(span.before), after = uint32_t(span.before + 1);
             // Before sunrise and after sunset the disc's last sliver lies beyond the
             // positions (the first and last stand at the horizon): traced per pixel.
-            const voxel::Daylight daylight = voxel::daylightHours(path);
-            const bool beyond = !(given_.timeOfDay >= daylight.rise && given_.timeOfDay <= daylight.set);
-            uniforms.daySun = glm::uvec4(cache.daySunFirst(), before, after, beyond ? 1u : 0u);
+            uniforms.daySun = glm::uvec4(cache.daySunFirst(), before, after, span.beyond ? 1u : 0u);
             uniforms.daySunBefore = glm::vec4(glm::vec3(voxel::sunDirectionAt(path, voxel::sunPositionHour(path, int(before), count))), 0.0f);
             uniforms.daySunAfter = glm::vec4(glm::vec3(voxel::sunDirectionAt(path, voxel::sunPositionHour(path, int(after), count))), 0.0f);
         }

@@ -67,7 +67,7 @@ SunPositionSpan sunPositionSpan(const SunPath& path, double hours, int count) {
     const Daylight d = daylightHours(path);
     const double at = d.set > d.rise ? std::clamp((hours - d.rise) / (d.set - d.rise), 0.0, 1.0) * (count - 1) : 0.0;
     const int before = std::min(int(at), count - 2);
-    return {before, at - before};
+    return {before, at - before, !(hours >= d.rise && hours <= d.set)};
 }
 
 double elevationDegrees(const glm::dvec3& towardSun) { return std::asin(std::clamp(towardSun.y, -1.0, 1.0)) / kDegree; }

@@ -46,10 +46,12 @@ Daylight daylightHours(const SunPath& path);
 // at sunrise and the last at sunset, and the hour of each.
 double sunPositionHour(const SunPath& path, int position, int count);
 // Where the hour `hours` falls among them: the position at or before it (0 to
-// count - 2) and how far on toward the next (0 to 1), clamped to the day.
+// count - 2) and how far on toward the next (0 to 1), clamped to the day;
+// `beyond`: the hour lies before sunrise or after sunset.
 struct SunPositionSpan {
     int before = 0;
     double toward = 0.0;
+    bool beyond = false;
 };
 SunPositionSpan sunPositionSpan(const SunPath& path, double hours, int count);
 
