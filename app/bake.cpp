@@ -84,11 +84,13 @@ void addBakeCommand(CLI::App& app) {
                                                .sunRays = args->sunRays, .sunDirection = glm::dvec3(light.sunDirection),
                                                .sunAngleDegrees = double(light.sunAngle), .fullLight = fullLight,
                                                .day = day ? std::optional(voxel::sunPathOf(light)) : std::nullopt};
-        if (fullLight) voxel::requireLightBakeFits(world, faces.size(), args->texels, {});
+        const voxel::LightSources lights = voxel::lightSources(world.desc().lighting);
+        if (fullLight) voxel::requireLightBakeFits(world, faces.size(), args->texels, {}, voxel::lightBakeChannels(lights));
         voxel::FaceCacheFile cache{.header = {.key = voxel::faceCacheKey(world, radius, args->texels),
                                               .rays = settings.rays, .sunRays = voxel::sunRaysPerTexel(settings),
                                               .totalFaces = faces.size(), .firstFace = first, .faceCount = count}};
         cache.texels.resize(cache.header.texelCount());
+        if (voxel::hasDayLight(cache.header)) cache.dayLight.resize(faces.size() * voxel::kDayLightWords);
         const auto start = std::chrono::steady_clock::now();
         FaceBakeProgress progress(stderr, args->progress,
                                   chunk ? nlohmann::ordered_json{{"chunk", chunk->text()}} : nlohmann::ordered_json::object());
@@ -97,13 +99,14 @@ void addBakeCommand(CLI::App& app) {
         progress.finish();
         std::string lightNote;
         if (fullLight) {
-            const voxel::LightBakeStats light = voxel::bakeLight(table, world, faces, args->texels,
-                                                                 voxel::lightSources(world.desc().lighting), {}, cache.texels);
+            const voxel::LightBakeStats light =
+                voxel::bakeLight(table, world, faces, args->texels, lights, {}, cache.texels, {}, cache.dayLight);
             lightNote = ", full light in " + std::to_string(light.passes) + " bounce passes";
+            if (day) lightNote += " (by source, for every hour)";
         }
         voxel::saveFaceCache(cache, out);
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-            if (day) lightNote += ", the day's sun at " + std::to_string(voxel::kDaySunPositions) + " positions";
+        if (day) lightNote += ", the day's sun at " + std::to_string(voxel::kDaySunPositions) + " positions";
         std::printf("wrote %s (faces %llu to %llu of %llu, %u x %u texels each, %u rays a texel%s, %.1f s)\n", out.c_str(),
                     (unsigned long long)first, (unsigned long long)(first + count), (unsigned long long)faces.size(),
                     args->texels, args->texels, args->rays, lightNote.c_str(), seconds);

@@ -104,6 +104,7 @@ void addBenchCommand(CLI::App& app) {
         const size_t gpuBytes = scene.gpuBytes();
         const size_t cacheBytes = scene.faceCache() ? scene.faceCache()->gpuBytes() : 0;  // within gpuBytes
         const size_t dayBytes = scene.faceCache() ? scene.faceCache()->daySunBytes() : 0;  // within cacheBytes
+        const size_t dayLightBytes = scene.faceCache() ? scene.faceCache()->dayLightBytes() : 0;  // likewise
         const size_t cachedFaces = session->scene().faceCache() ? session->scene().faceCache()->faces().size() : 0;
         // After the frames and the memory figures, so both see the scene as uploaded.
         std::optional<SceneUpdateCost> update;
@@ -120,7 +121,7 @@ void addBenchCommand(CLI::App& app) {
             {"memory", {{"grid_memusage_bytes", stats.sourceGridBytes}, {"host_bytes", hostBytes},
                         {"gpu_scene_bytes", gpuBytes}, {"gpu_target_bytes", targetBytes},
                         {"gpu_face_cache_bytes", cacheBytes}, {"face_cache_faces", cachedFaces},
-                        {"gpu_face_cache_day_sun_bytes", dayBytes},
+                        {"gpu_face_cache_day_sun_bytes", dayBytes}, {"gpu_face_cache_day_light_bytes", dayLightBytes},
                         {"world_to_grid_ratio", double(hostBytes + gpuBytes) / double(std::max<size_t>(1, stats.sourceGridBytes))}}}};
         std::printf("%s on %s, %ux%u, median of %d frames after %d warm-up\n", args->world.c_str(),
                     ctx.deviceName().c_str(), size.width, size.height, args->frames, args->warmup);

@@ -98,11 +98,13 @@ void addInfoCommand(CLI::App& app) {
             const size_t bytes = voxel::faceCacheGpuBytes(faces, voxel::kDefaultBakeTexels);
             // A bake for the day's sun (lighting.sun.from day, a path's day track): a word a texel more.
             const size_t day = voxel::faceCacheGpuBytes(faces, voxel::kDefaultBakeTexels, true) - bytes;
+            // With full light, its light over the day: sky weights a texel, day words a face.
+            const size_t dayLight = voxel::faceCacheGpuBytes(faces, voxel::kDefaultBakeTexels, true, true) - bytes - day;
             const double perFace = faces.faces ? 1.0 / double(faces.faces) : 0.0;
             std::printf("face cache     %llu exposed faces; baked at %u x %u texels, %zu bytes on the GPU (%.1f a face); "
-                        "for the day's sun %zu more (%.1f a face)\n",
+                        "for the day's sun %zu more (%.1f a face), with full light over the day %zu more (%.1f a face)\n",
                         (unsigned long long)faces.faces, voxel::kDefaultBakeTexels, voxel::kDefaultBakeTexels, bytes,
-                        double(bytes) * perFace, day, double(day) * perFace);
+                        double(bytes) * perFace, day, double(day) * perFace, dayLight, double(dayLight) * perFace);
         }
         if (b.empty())
             std::printf("bounds         empty\n");

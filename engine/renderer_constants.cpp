@@ -7,6 +7,7 @@
 #include "engine/frame/object_frame.h"
 #include "engine/passes/trace_inputs.h"
 
+#include <bit>
 #include <cmath>
 #include <cstring>
 
@@ -37,6 +38,14 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
             uniforms.daySunBefore = glm::vec4(glm::vec3(voxel::sunDirectionAt(path, voxel::sunPositionHour(path, int(before), count))), 0.0f);
             uniforms.daySunAfter = glm::vec4(glm::vec3(voxel::sunDirectionAt(path, voxel::sunPositionHour(path, int(after), count))), 0.0f);
         }
+        // Full light over the day: the bounce positions either side of the hour.
+        if (uniforms.ambient.w >= 1.5f && cache.dayLightFirst() && cache.sun().day) {
+            const voxel::SunPositionSpan at =
+                voxel::sunPositionSpan(*cache.sun().day, double(given_.timeOfDay), int(voxel::kDaySunPositions));
+            const voxel::DayBounceSpan b = voxel::dayBounceSpan(at.before + at.toward);
+            uniforms.dayLight = glm::uvec4(cache.dayLightFirst(), cache.dayFacesFirst(), b.before | b.after << 16,
+                                           std::bit_cast<uint32_t>(float(b.toward)));
+        }
     }
     std::memcpy(s.frame.mapped(), &uniforms, sizeof uniforms);
     if (plan_.chain) {
@@ -56,7 +65,7 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
             previousFrame_ = frameIndex;
         }
     }
-    writeTraceConstants(camera, frameIndex);  // before the edits are cleared: they restart a soft sun's history
+    writeTraceConstants(camera, frameIndex, uniforms.dayLight);  // before the edits are cleared: they restart a soft sun's history
     invalidated_.clear();  // edits before this frame; later ones go to the next
     // The frame before (for motion and the temporal plane test); this one's own where there was none.
     if (objects_) {
@@ -75,7 +84,7 @@ void Renderer::refreshObjectGrids() {
     objectGridsVersion_ = version;
 }
 
-void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
+void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex, glm::uvec4 dayLight) {
     if (!plan_.scene.occupancy) return;
     const double radius = ao_.enabled ? ao_.estimator.radius : 1.0;
     gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy(), scene_.voxelSize, scene_.worldOrigin,
@@ -92,6 +101,7 @@ void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex) {
         t.skyZenith = glm::vec4(lighting_.skyZenith * lighting_.ambientIntensity, 0.0f);
         t.skyHorizon = glm::vec4(lighting_.skyHorizon * lighting_.ambientIntensity, 0.0f);
         t.sunRadiance = glm::vec4(lighting_.sunColor * lighting_.sunIntensity, 0.0f);
+        t.dayLight = full ? dayLight : glm::uvec4(0u);
     }
     t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
     t.frameIndex = frameIndex;

@@ -107,7 +107,11 @@ vec3 worldFaceLight(vec3 p, VoxelRayHit hit) {
     float sun = faceCacheUnpack(bits).y;
     float cosSun = max(dot(faceAxisNormal(dir), trace.sunDirection.xyz), 0.0);
     vec3 albedo = palette[2u * (material - 1u)].rgb, emission = palette[2u * (material - 1u) + 1u].rgb;
-    return albedo * (faceCacheDecodeLight(bits.y) + trace.sunRadiance.rgb * (cosSun * sun)) + emission;
+    vec3 light = faceCacheDecodeLight(bits.y);
+    if (trace.dayLight.x != 0u)
+        light += faceCacheDayLight(uint(face) * k * k + j * k + i, k, trace.dayLight, trace.skyZenith.rgb, trace.skyHorizon.rgb,
+                                   trace.sunRadiance.rgb);
+    return albedo * (light + trace.sunRadiance.rgb * (cosSun * sun)) + emission;
 }
 
 // The share of the hemisphere about n at p a glowing face covers, cosine-weighted

@@ -28,6 +28,13 @@ std::vector<glm::dvec3> daySunDirections(const SunPath& path) {
     return out;
 }
 
+DayBounceSpan dayBounceSpan(double at) {
+    uint32_t b = 0;
+    while (b + 2 < kDayBouncePositions && at >= double(dayBouncePosition(b + 1))) ++b;
+    const double lo = dayBouncePosition(b), hi = dayBouncePosition(b + 1);
+    return {b, b + 1, std::clamp((at - lo) / (hi - lo), 0.0, 1.0)};
+}
+
 std::vector<ExposedFace> exposedFaces(const World& world) { return exposedFaces(BrickTable(world), world); }
 
 std::vector<ExposedFace> exposedFaces(const BrickTable& table, const World& world) {

@@ -32,6 +32,27 @@ inline constexpr uint32_t kDaySunPositions = 32;
 // Toward the sun at each of them along `path`.
 std::vector<glm::dvec3> daySunDirections(const SunPath& path);
 
+// Full light over the day (voxel/light_bake.h) keeps, for each face, the light
+// bounced to it split by where it came from, so that a frame at any hour sums it
+// with that hour's colours and traces nothing: the light of a zenith-coloured
+// and of a horizon-coloured sky (each white, radiance 1) after their first
+// bounce, then that of a white sun of irradiance pi at kDayBouncePositions of
+// the day's positions (dayBouncePosition), interpolated between them.
+inline constexpr uint32_t kDayBouncePositions = 16;
+inline constexpr uint32_t kDayLightWords = 2 + kDayBouncePositions;
+// The day's sun position (0 to kDaySunPositions - 1) bounce position b stands at:
+// spread evenly from sunrise (0) to sunset (the last).
+inline constexpr uint32_t dayBouncePosition(uint32_t b) {
+    return (b * (kDaySunPositions - 1) + (kDayBouncePositions - 1) / 2) / (kDayBouncePositions - 1);
+}
+// The two bounce positions either side of the continuous position `at` (0 to
+// kDaySunPositions - 1, sunPositionSpan's before + toward) and the weight of the second.
+struct DayBounceSpan {
+    uint32_t before = 0, after = 0;
+    double toward = 0.0;
+};
+DayBounceSpan dayBounceSpan(double at);
+
 // A solid voxel's face whose neighbour across it is open. `dir` as RayHit::face:
 // 0..5 = +X -X +Y -Y +Z -Z (the direction the face looks).
 struct ExposedFace {

@@ -18,7 +18,8 @@ namespace grotto::voxel {
 namespace {
 
 constexpr char kMagic[8] = {'G', 'R', 'O', 'T', 'T', 'O', 'F', 'C'};
-constexpr uint32_t kVersion = 4;  // 2: the rays a texel recorded; 3: full light; 4: the day's sun
+// 2: the rays a texel recorded; 3: full light; 4: the day's sun; 5: full light over the day
+constexpr uint32_t kVersion = 5;
 constexpr size_t kHeaderBytes = 132;
 // The light's three floats follow when it is baked, the day's sun bits with its path.
 constexpr size_t kTexelBytes = 24, kLightBytes = 12, kDayBytes = 4;
@@ -26,6 +27,8 @@ constexpr size_t kTexelBytes = 24, kLightBytes = 12, kDayBytes = 4;
 size_t texelBytes(const FaceCacheHeader& h) {
     return kTexelBytes + (h.key.lightHash != 0 ? kLightBytes : 0) + (h.key.day ? kDayBytes : 0);
 }
+// Full light over the day: after the texels, each face's day words as three floats.
+size_t faceBytes(const FaceCacheHeader& h) { return hasDayLight(h) ? kDayLightWords * 12 : 0; }
 constexpr uint32_t kMaxTexelsPerSide = 16;
 
 uint64_t mix(uint64_t h, uint64_t v) {
@@ -103,8 +106,13 @@ uint64_t lightHash(const World& world) {
     uint64_t h = 0x6c69'6768'7466'756cull;
     auto add = [&h](float v) { h = mix(h, std::bit_cast<uint32_t>(v)); };
     auto addColor = [&add](glm::vec3 c) { add(c.r), add(c.g), add(c.b); };
-    addColor(l.skyZenith), addColor(l.skyHorizon), add(l.ambientIntensity);
-    addColor(l.sunColor * l.sunIntensity), addColor(l.sunDirection), add(l.sunAngle);
+    // Over the day the bake keeps each source's light apart, white: the sky and
+    // the sun are the frame's to colour, at any hour.
+    if (world.desc().lighting.sunFrom == SunSource::Day) h = mix(h, 0x646179);
+    else {
+        addColor(l.skyZenith), addColor(l.skyHorizon), add(l.ambientIntensity);
+        addColor(l.sunColor * l.sunIntensity), addColor(l.sunDirection), add(l.sunAngle);
+    }
     for (const Material& m : world.desc().materials) addColor(m.albedo), addColor(m.emission());
     return h != 0 ? h : 1;
 }
@@ -123,9 +131,9 @@ FaceCacheKey faceCacheKey(const World& world, double radius, uint32_t texelsPerS
 
 void saveFaceCache(const FaceCacheFile& c, const std::filesystem::path& path) {
     const FaceCacheHeader& h = c.header;
-    if (c.texels.size() != h.texelCount())
+    if (c.texels.size() != h.texelCount() || c.dayLight.size() != (hasDayLight(h) ? h.faceCount * kDayLightWords : 0))
         throw Error::internal(path.string(), "a face cache of " + std::to_string(c.texels.size()) + " texels where its header says " +
-                                                 std::to_string(h.texelCount()));
+                                                 std::to_string(h.texelCount()) + ", or day's light not its header's");
     std::string out;
     out.reserve(kHeaderBytes + c.texels.size() * texelBytes(h));
     out.append(kMagic, sizeof kMagic);
@@ -150,6 +158,7 @@ void saveFaceCache(const FaceCacheFile& c, const std::filesystem::path& path) {
         if (h.key.lightHash != 0) put(out, t.light.r), put(out, t.light.g), put(out, t.light.b);
         if (h.key.day) put(out, t.daySun);
     }
+    for (const glm::vec3& v : c.dayLight) put(out, v.r), put(out, v.g), put(out, v.b);
     writeAtomically(path, out);
 }
 
@@ -204,7 +213,7 @@ FaceCacheHeader readFaceCacheHeader(const std::filesystem::path& path) {
     if (h.rays == 0 || (h.sunRays == 0) != bool(h.key.day))
         throw Error(name, "rays: " + std::to_string(h.rays) + " a texel and " + std::to_string(h.sunRays) +
                               " over the sun's disc; a bake casts at least 1, and sun rays only for a fixed sun");
-    const uint64_t perFace = uint64_t(h.key.texelsPerSide) * h.key.texelsPerSide * texelBytes(h);
+    const uint64_t perFace = uint64_t(h.key.texelsPerSide) * h.key.texelsPerSide * texelBytes(h) + faceBytes(h);
     // The texels must be exactly the rest of the file (checked without overflow).
     if (h.faceCount > (size - kHeaderBytes) / perFace || size - kHeaderBytes != h.faceCount * perFace)
         throw Error(name, "texels: the file holds " + std::to_string(size - kHeaderBytes) + " bytes after its header, " +
@@ -247,10 +256,30 @@ void readFaceCacheTexels(const std::filesystem::path& path, const FaceCacheHeade
     }
 }
 
+void readFaceCacheDayLight(const std::filesystem::path& path, const FaceCacheHeader& h, std::span<glm::vec3> dayLight) {
+    const std::string name = path.string();
+    if (dayLight.size() != (hasDayLight(h) ? h.faceCount * kDayLightWords : 0))
+        throw Error::internal(name, "room for " + std::to_string(dayLight.size()) + " day's light words, the header says otherwise");
+    if (dayLight.empty()) return;
+    std::ifstream in(path, std::ios::binary);
+    in.seekg(std::streamoff(kHeaderBytes + h.texelCount() * texelBytes(h)));
+    std::string block(dayLight.size() * 12, '\0');
+    if (!in.read(block.data(), std::streamsize(block.size()))) throw Error(name, "day's light: cannot read it");
+    size_t at = 0;
+    for (size_t w = 0; w < dayLight.size(); ++w) {
+        glm::vec3& v = dayLight[w];
+        v.r = take<float>(block, at), v.g = take<float>(block, at), v.b = take<float>(block, at);
+        if (!(v.r >= 0.0f && v.g >= 0.0f && v.b >= 0.0f) || !std::isfinite(v.r + v.g + v.b))
+            throw Error(name, "day's light of face " + std::to_string(h.firstFace + w / kDayLightWords) + ": negative or not finite");
+    }
+}
+
 FaceCacheFile loadFaceCache(const std::filesystem::path& path) {
     FaceCacheFile c{.header = readFaceCacheHeader(path)};
     c.texels.resize(c.header.texelCount());
     readFaceCacheTexels(path, c.header, c.texels);
+    c.dayLight.resize(hasDayLight(c.header) ? c.header.faceCount * kDayLightWords : 0);
+    readFaceCacheDayLight(path, c.header, c.dayLight);
     return c;
 }
 
@@ -311,10 +340,13 @@ FaceCacheFile mergeFaceCaches(const std::vector<std::filesystem::path>& paths) {
     FaceCacheFile out{.header = parts[ref]};
     out.header.firstFace = 0, out.header.faceCount = out.header.totalFaces;
     out.texels.resize(out.header.texelCount());
-    size_t at = 0;
+    const size_t words = hasDayLight(out.header) ? kDayLightWords : 0;
+    out.dayLight.resize(out.header.faceCount * words);
+    size_t at = 0, face = 0;
     for (size_t k : order) {
         readFaceCacheTexels(paths[k], parts[k], std::span(out.texels).subspan(at, parts[k].texelCount()));
-        at += parts[k].texelCount();
+        readFaceCacheDayLight(paths[k], parts[k], std::span(out.dayLight).subspan(face * words, parts[k].faceCount * words));
+        at += parts[k].texelCount(), face += parts[k].faceCount;
     }
     return out;
 }

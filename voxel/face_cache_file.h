@@ -46,9 +46,13 @@ struct FaceCacheHeader {
     uint64_t texelCount() const { return faceCount * key.texelsPerSide * key.texelsPerSide; }
 };
 
+// Does the file keep full light over the day (each face's day words, face_cache.h)?
+inline bool hasDayLight(const FaceCacheHeader& h) { return h.key.day && h.key.lightHash != 0; }
+
 struct FaceCacheFile {
     FaceCacheHeader header;
     std::vector<FaceTexel> texels; // header.texelCount(), as bakeFaces lays them out
+    std::vector<glm::vec3> dayLight;  // with hasDayLight: kDayLightWords a face (voxel/light_bake.h)
 };
 
 // The key a bake of `world` with AO radius `radius` (world units) and k texels a
@@ -73,7 +77,10 @@ FaceCacheHeader readFaceCacheHeader(const std::filesystem::path& path);
 // The texels `header` (read from `path`) claims, read a block at a time into
 // `texels` (header.texelCount() of them), each checked.
 void readFaceCacheTexels(const std::filesystem::path& path, const FaceCacheHeader& header, std::span<FaceTexel> texels);
-// Both: the whole file.
+// With hasDayLight(header): each face's day words, after the texels
+// (header.faceCount x kDayLightWords), each checked.
+void readFaceCacheDayLight(const std::filesystem::path& path, const FaceCacheHeader& header, std::span<glm::vec3> dayLight);
+// All three: the whole file.
 FaceCacheFile loadFaceCache(const std::filesystem::path& path);
 
 // Throws grotto::Error (input) naming `path` and the first field in which

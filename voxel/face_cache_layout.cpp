@@ -14,6 +14,9 @@
 
 namespace grotto::voxel {
 
+static_assert(kDaySunPositions == GROTTO_DAY_SUN_POSITIONS && kDayLightWords == GROTTO_DAY_LIGHT_WORDS,
+              "the shaders' day sizes are the cache's");
+
 namespace {
 
 uint32_t unorm(double v, uint32_t bits) {
@@ -56,18 +59,19 @@ FaceTexel unpackFaceTexel(glm::uvec2 bits, uint32_t rays, uint32_t sunRays, bool
     return t;
 }
 
-size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide, bool daySun) {
+size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide, bool daySun, bool dayLight) {
     std::vector<glm::ivec3> bricks;
     bricks.reserve(faces.size());
     for (const ExposedFace& f : faces) bricks.push_back(f.cell >> 3);
     std::sort(bricks.begin(), bricks.end(), BrickLess{});
     bricks.erase(std::unique(bricks.begin(), bricks.end()), bricks.end());
-    return faceCacheGpuBytes(ExposedFaceCount{faces.size(), bricks.size()}, texelsPerSide, daySun);
+    return faceCacheGpuBytes(ExposedFaceCount{faces.size(), bricks.size()}, texelsPerSide, daySun, dayLight);
 }
 
-size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide, bool daySun) {
+size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide, bool daySun, bool dayLight) {
     const size_t texels = count.faces * texelsPerSide * texelsPerSide;
-    const size_t texelWords = 3 * ((texels + 1) / 2) + (daySun ? texels : 0);
+    const size_t texelWords = 3 * ((texels + 1) / 2) + (daySun ? texels : 0) +
+                              (dayLight ? texels + count.faces * kDayLightWords : 0);
     const size_t levelWords = (count.faces + 15) / 16;  // each face's level for the GPU's tracer, 2 bits
     return faceBrickTableBytes(count.bricks) + count.bricks * GROTTO_FACE_RECORD_WORDS * 4 + texelWords * 4 + levelWords * 4;
 }
@@ -134,6 +138,17 @@ void appendDaySun(FaceCacheArrays& a, std::span<const FaceTexel> texels) {
     a.texels.reserve(a.texels.size() + a.faceOrder.size() * perFace);
     for (const uint32_t f : a.faceOrder)
         for (size_t t = 0; t < perFace; ++t) a.texels.push_back(texels[f * perFace + t].daySun);
+}
+
+void appendDayLight(FaceCacheArrays& a, std::span<const FaceTexel> texels, std::span<const glm::vec3> dayLight) {
+    const size_t perFace = size_t(a.texelsPerSide) * a.texelsPerSide;
+    a.dayLightFirst = uint32_t(a.texels.size());
+    a.texels.reserve(a.texels.size() + a.faceOrder.size() * (perFace + kDayLightWords));
+    for (const uint32_t f : a.faceOrder)
+        for (size_t t = 0; t < perFace; ++t) a.texels.push_back(packFaceTexel(texels[f * perFace + t], false).y);
+    a.dayFacesFirst = uint32_t(a.texels.size());
+    for (const uint32_t f : a.faceOrder)
+        for (size_t w = 0; w < kDayLightWords; ++w) a.texels.push_back(gpu::faceCacheEncodeLight(dayLight[f * kDayLightWords + w]));
 }
 
 }  // namespace grotto::voxel

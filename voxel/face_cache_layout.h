@@ -29,6 +29,11 @@ struct FaceCacheArrays {
     // Where `texels` goes on with each texel's day's sun bits (FaceTexel::daySun),
     // a word a texel in the texels' order (appendDaySun). 0: not there.
     uint32_t daySunFirst = 0;
+    // Full light over the day (appendDayLight): where `texels` goes on with each
+    // texel's sky weights (two halfs a word, in the texels' order), and then
+    // with each face's kDayLightWords day words (RGB9E5, faces in record
+    // order). 0: not there; the light words then hold the glowing faces' light alone.
+    uint32_t dayLightFirst = 0, dayFacesFirst = 0;
     // On the GPU, with each face's level (2 bits, shaders/shared/face_trace.h).
     size_t bytes() const {
         return bricks.size() * 16 + records.size() * 4 + texels.size() * 4 + (size_t(faceCount) + 15) / 16 * 4;
@@ -60,10 +65,16 @@ void appendFaceMaterials(FaceCacheArrays& a, std::span<const ExposedFace> faces,
 // Appends each texel's day's sun bits, `texels` as layFaceCache took them, to
 // a.texels (a.daySunFirst): 4 bytes a texel.
 void appendDaySun(FaceCacheArrays& a, std::span<const FaceTexel> texels);
+// Appends each texel's sky weights, then each face's day words (`dayLight`,
+// kDayLightWords a face in `faces`' order) to a.texels (a.dayLightFirst,
+// a.dayFacesFirst): 4 bytes a texel and 40 a face.
+void appendDayLight(FaceCacheArrays& a, std::span<const FaceTexel> texels, std::span<const glm::vec3> dayLight);
 
 // What layFaceCache's arrays for `faces` at k texels a side take, without laying
-// them out (for `info` and `bench`); with `daySun`, appendDaySun's words too.
-size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide, bool daySun = false);
-size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide, bool daySun = false);
+// them out (for `info` and `bench`); with `daySun`, appendDaySun's words too,
+// with `dayLight` appendDayLight's.
+size_t faceCacheGpuBytes(std::span<const ExposedFace> faces, uint32_t texelsPerSide, bool daySun = false,
+                         bool dayLight = false);
+size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide, bool daySun = false, bool dayLight = false);
 
 }  // namespace grotto::voxel

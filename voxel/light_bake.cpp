@@ -4,6 +4,7 @@
 #include "shaders/shared/quad.h"
 #include "shaders/shared/sky.h"
 #include "voxel/bounce_guide.h"
+#include "voxel/day_light_solve.h"
 #include "voxel/brick_table.h"
 #include "voxel/light_scene.h"
 #include "voxel/luminance.h"
@@ -25,18 +26,28 @@
 
 namespace grotto::voxel {
 
-uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& s) {
+uint32_t lightBakeChannels(const LightSources& lights) { return lights.day ? 1 + kDayLightWords : 1; }
+
+uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& s, uint32_t channels) {
     // The hits (the base rays', and extraShare of them more for the noisy texels),
     // the drawn rays' hits and the faces they were drawn toward, the sky's sums,
     // then glow, direct light, light, the next pass's and what each texel sends
     // as float RGB, and the extra rays' counts and offsets.
     const double hits = s.rays * (1.0 + (s.relativeError > 0.0 && s.maxExtraRays > 0 ? s.extraShare : 0.0));
-    return texels * (uint64_t(std::ceil(hits)) * sizeof(uint32_t) + s.guidedRays * sizeof(GuidedHit) +
-                     sizeof(Drawn) + 6 * sizeof(double) + 5 * sizeof(glm::vec3) + 2 * sizeof(uint32_t));
+    const uint64_t perTexel = uint64_t(std::ceil(hits)) * sizeof(uint32_t) + s.guidedRays * sizeof(GuidedHit) +
+                              sizeof(Drawn) + 6 * sizeof(double) + 5 * sizeof(glm::vec3) + 2 * sizeof(uint32_t);
+    // With the day's words: each face's row, 8 bytes a term, its rays' hits
+    // merged by face (counted as a quarter of them: houses keeps a tenth), and
+    // each face's words' sources, what it sends and the next pass's (a face of
+    // at least 4 texels).
+    const uint64_t day = channels > 1 ? uint64_t(std::ceil(hits) + s.guidedRays) * 8 / 4 +
+                                            (channels * (sizeof(float) + 2 * sizeof(glm::vec3)) + sizeof(glm::vec3)) / 4
+                                      : 0;
+    return texels * (perTexel + day);
 }
 
-void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& s) {
-    if (const uint64_t need = lightBakeBytes(faces * k * k, s); need > budgetRoom(world))
+void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& s, uint32_t channels) {
+    if (const uint64_t need = lightBakeBytes(faces * k * k, s, channels); need > budgetRoom(world))
         refuseOverBudget(world, "full light's bake of " + std::to_string(faces) + " faces needs " + mibText(need));
 }
 
@@ -74,12 +85,22 @@ SkySums traceTexelRays(const BrickTable& table, const LightScene& scene, const L
 
 LightBakeStats relightFaces(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
                             const LightSources& lights, const LightBakeSettings& s, std::span<FaceTexel> texels,
-                            std::span<const uint32_t> relit, const BakeProgress& progress) {
+                            std::span<const uint32_t> relit, const BakeProgress& progress, std::span<glm::vec3> dayLight) {
     const size_t perFace = size_t(k) * k, count = faces.size() * perFace, traced = relit.size() * perFace;
     if (texels.size() != count) throw Error::internal("relightFaces", "texels and faces differ in count");
-    requireLightBakeFits(world, relit.size(), k, s);
+    // Full light over the day: the texels keep the glowing faces' light alone,
+    // and each face its day words (voxel/day_light_solve.h). Without room for
+    // them, the hour's sun stands still.
+    const bool day = lights.day && !dayLight.empty();
+    if (day && dayLight.size() != faces.size() * kDayLightWords)
+        throw Error::internal("relightFaces", "the day's light and faces differ in count");
+    requireLightBakeFits(world, relit.size(), k, s, day ? lightBakeChannels(lights) : 1);
     const LightScene scene(world, faces, k, texels, relit);
     const glm::dvec3 sunDirection = glm::normalize(lights.sunDirection);
+    // With the day's sun the rays take a white sky of radiance 1: the sky's two
+    // words' sum, what the noise of the light is judged by.
+    LightSources rayLights = lights;
+    if (day) rayLights.skyZenith = rayLights.skyHorizon = glm::dvec3(1.0), rayLights.skyIntensity = 1.0;
     const uint32_t baseRays = std::max(s.rays, 1u);
     // The texel of the m-th texel relit; where its rays start; how they are turned.
     auto texelOf = [&](size_t m) { return size_t(relit[m / perFace]) * perFace + m % perFace; };
@@ -107,7 +128,7 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
             for (size_t m = n * perFace; m < (n + 1) * perFace; ++m) {
                 const uint64_t h = seedOf(m);
                 const glm::dvec3 start = startOf(m);
-                sky[m] = traceTexelRays(table, scene, lights, start, normal, shiftOf(h), 0, baseRays, &hits[m * baseRays]);
+                sky[m] = traceTexelRays(table, scene, rayLights, start, normal, shiftOf(h), 0, baseRays, &hits[m * baseRays]);
                 rays[n] += baseRays;
                 glow[m] = glm::vec3(scene.glowLight(table, face.cell, face.dir, start - normal * s.epsilon, normal,
                                                     s.emitterRays, splitmix64(h ^ 3), s.epsilon, rays[n]));
@@ -120,12 +141,34 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
     });
 
     // What each texel sends back to the rays that hit it: its albedo times its
-    // light and its sun. The texels not relit send what they hold throughout.
+    // light and its sun (with the day's sun, its glowing faces' light alone). The
+    // texels not relit send what they hold throughout.
     std::vector<glm::vec3> sent(count);
     auto sends = [&](size_t t, glm::vec3 light) {
         const ExposedFace& face = faces[t / perFace];
-        const double sun = std::max(glm::dot(faceNormal(face.dir), sunDirection), 0.0) * texels[t].sun();
+        const double sun = day ? 0.0 : std::max(glm::dot(faceNormal(face.dir), sunDirection), 0.0) * texels[t].sun();
         return glm::vec3(scene.albedo(t / perFace)) * (light + glm::vec3(lights.sun * sun));
+    };
+    // The day's words: every face's white sources, and what the relit faces'
+    // rays bring back, merged by face.
+    DaySources sources;
+    if (day) sources = daySources(faces, k, texels, *lights.day, [&](size_t f) { return glm::vec3(scene.albedo(f)); });
+    // A texel's own light, or what it sends, with its face's day words: summed as
+    // the noise and the bright faces are judged, the day's sun spread over its
+    // positions. `part`: what of each word (its bounced light, with its source,
+    // or what the face sends).
+    enum class Part { Bounced, Light, Sent };
+    auto summed = [&](size_t t, glm::vec3 own, Part part) {
+        if (!day) return own;
+        const size_t f = t / perFace;
+        for (uint32_t w = 0; w < kDayLightWords; ++w) {
+            const float share = w < 2 ? 1.0f : 1.0f / float(kDayBouncePositions);
+            const glm::vec3 word = dayLight[f * kDayLightWords + w];
+            own += share * (part == Part::Sent     ? daySent(sources, dayLight, f, w)
+                            : part == Part::Light ? word + sources.direct[f * kDayLightWords + w]
+                                                  : word);
+        }
+        return own;
     };
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count, 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t t = r.begin(); t < r.end(); ++t) sent[t] = sends(t, texels[t].light);
@@ -141,7 +184,7 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
     std::vector<Drawn> drawn(traced);
     std::vector<glm::vec3> direct(traced);
     auto setDirect = [&](size_t m) {
-        direct[m] = glm::vec3(sky[m].radiance * (lights.skyIntensity / raysOf(m))) + glow[m];
+        direct[m] = day ? glow[m] : glm::vec3(sky[m].radiance * (lights.skyIntensity / raysOf(m))) + glow[m];
     };
     for (size_t m = 0; m < traced; ++m) setDirect(m);
 
@@ -164,7 +207,9 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
             if (extraHits[e] < kHitOnDrawnFace) back += sent[extraHits[e]];
         back /= float(raysOf(m));
         if (guidedRays == 0) return back;
-        back += drawn[m].base(raysOf(m));
+        // The control variate holds the guide's light: with the day's sun, the
+        // words summed, not this light; the drawn rays alone stay unbiased.
+        if (!day) back += drawn[m].base(raysOf(m));
         for (const GuidedHit* g = &guided[m * guidedRays]; g != &guided[m * guidedRays] + guidedRays; ++g)
             if (g->reached()) back += g->weight * sent[g->texel];
         return back;
@@ -193,6 +238,30 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
         }
     };
     converge();
+    // The day's words, each relit face taking what its texels' rays hit: the
+    // cosine rays but those on faces drawn toward, which the drawn rays bring.
+    auto solveDay = [&] {
+        if (!day) return;
+        std::vector<FaceRow> rows(relit.size());
+        tbb::parallel_for(tbb::blocked_range<size_t>(0, relit.size(), 64), [&](const tbb::blocked_range<size_t>& r) {
+            for (size_t n = r.begin(); n < r.end(); ++n) {
+                FaceRow& row = rows[n];
+                for (size_t m = n * perFace; m < (n + 1) * perFace; ++m) {
+                    const float share = 1.0f / float(raysOf(m) * perFace);
+                    auto take = [&](uint32_t hit) {
+                        if (hit < kHitOnDrawnFace) row.emplace_back(hit / uint32_t(perFace), share);
+                    };
+                    for (size_t i = m * baseRays; i < (m + 1) * baseRays; ++i) take(hits[i]);
+                    for (uint32_t e = extraStart[m]; e < extraStart[m + 1]; ++e) take(extraHits[e]);
+                    for (const GuidedHit* g = &guided[m * guidedRays]; g != &guided[m * guidedRays] + guidedRays; ++g)
+                        if (g->reached()) row.emplace_back(g->texel / uint32_t(perFace), g->weight / float(perFace));
+                }
+                mergeByFace(row);
+            }
+        });
+        stats.passes = std::max(stats.passes, solveDayLight(relit, rows, sources, s.tolerance, s.maxPasses, dayLight));
+    };
+    solveDay();
 
     // Rays drawn toward the faces that pass each region the most light, as the
     // converged light shows it (a sunlit patch, a lamp-lit wall;
@@ -201,17 +270,23 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
     std::optional<BounceGuide> guide;
     if (guidedRays > 0) {
         const BounceGuide::Settings gs{s.guidedFaces, s.guideProbeRays, s.guidedNearest};
-        guide.emplace(faces, k, relit, sent, kMissed, gs, [&](glm::dvec3 start, glm::dvec3 dir) {
-            const std::optional<BrickHit> hit = table.firstHit(start, dir, std::numeric_limits<double>::infinity());
-            return hit ? scene.texelAt(*hit, start + dir * hit->t) : kMissed;
-        });
+        std::vector<glm::vec3> summedSent;
+        if (day) {
+            summedSent.resize(count);
+            for (size_t t = 0; t < count; ++t) summedSent[t] = summed(t, sent[t], Part::Sent);
+        }
+        guide.emplace(faces, k, relit, day ? std::span<const glm::vec3>(summedSent) : std::span<const glm::vec3>(sent),
+                      kMissed, gs, [&](glm::dvec3 start, glm::dvec3 dir) {
+                          const std::optional<BrickHit> hit = table.firstHit(start, dir, std::numeric_limits<double>::infinity());
+                          return hit ? scene.texelAt(*hit, start + dir * hit->t) : kMissed;
+                      });
         tbb::parallel_for(tbb::blocked_range<size_t>(0, relit.size(), 16), [&](const tbb::blocked_range<size_t>& r) {
             for (size_t n = r.begin(); n < r.end(); ++n) {
                 const glm::dvec3 normal = faceNormal(faces[relit[n]].dir);
                 for (size_t m = n * perFace; m < (n + 1) * perFace; ++m)
                     drawn[m] = guide->draw(table, m, startOf(m) - normal * s.epsilon, normal, s.epsilon,
                                            splitmix64(seedOf(m) ^ 5), {&hits[m * baseRays], baseRays},
-                                           luminance(glm::dvec3(light[m] - direct[m])),
+                                           luminance(glm::dvec3(summed(texelOf(m), light[m] - direct[m], Part::Bounced))),
                                            {&guided[m * guidedRays], guidedRays});
                 rays[n] += guidedRays * perFace;
             }
@@ -224,17 +299,23 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
     // s.relativeError of the light (or of a hundredth of the mean, where the light
     // is dimmer), enough rays more to bring it there, up to s.maxExtraRays, in
     // all no more than s.extraShare of the base rays (each texel's cut alike).
+    // With the day's sun, the mean of the light summed with the day's words.
+    if (day) {
+        mean = 0.0;
+        for (size_t m = 0; m < traced; ++m) mean += luminance(glm::dvec3(summed(texelOf(m), light[m], Part::Light))) / double(traced);
+    }
     const double dim = 0.01 * mean;
     std::vector<uint32_t> wanted(traced, 0);
     if (s.relativeError > 0.0 && s.maxExtraRays > 0)
         tbb::parallel_for(tbb::blocked_range<size_t>(0, traced, 1024), [&](const tbb::blocked_range<size_t>& r) {
             for (size_t m = r.begin(); m < r.end(); ++m) {
-                double sum = luminance(sky[m].radiance) * lights.skyIntensity;
-                double squares = sky[m].squares * lights.skyIntensity * lights.skyIntensity;
+                double sum = luminance(sky[m].radiance) * rayLights.skyIntensity;
+                double squares = sky[m].squares * rayLights.skyIntensity * rayLights.skyIntensity;
+                auto sentAt = [&](uint32_t t) { return luminance(glm::dvec3(summed(t, sent[t], Part::Sent))); };
                 for (const uint32_t* hit = &hits[m * baseRays]; hit != &hits[m * baseRays] + baseRays; ++hit) {
                     if (*hit == kMissed) continue;
                     const double l = *hit < kHitOnDrawnFace
-                                         ? luminance(glm::dvec3(sent[*hit]))
+                                         ? sentAt(*hit)
                                          : drawn[m].beta * luminance(glm::dvec3(
                                                                guide->faceLight((*hit & ~kHitOnDrawnFace) / uint32_t(perFace))));
                     sum += l, squares += l * l;
@@ -248,14 +329,14 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
                     for (const GuidedHit* g = &guided[m * guidedRays]; g != &guided[m * guidedRays] + guidedRays; ++g) {
                         if (!g->reached()) continue;
                         const double mean = drawn[m].beta * luminance(glm::dvec3(guide->faceLight(g->texel / uint32_t(perFace))));
-                        const double v = g->weight * guidedRays * (luminance(glm::dvec3(sent[g->texel])) - mean);
+                        const double v = g->weight * guidedRays * (sentAt(g->texel) - mean);
                         drawnSum += v, drawnSquares += v * v;
                     }
                     const double drawnMean = drawnSum / guidedRays;
                     variance += std::max(drawnSquares / guidedRays - drawnMean * drawnMean, 0.0) / guidedRays;
                 }
                 const double error = std::sqrt(variance);
-                const double target = s.relativeError * std::max(luminance(glm::dvec3(light[m])), dim);
+                const double target = s.relativeError * std::max(luminance(glm::dvec3(summed(texelOf(m), light[m], Part::Light))), dim);
                 if (!(error > target)) continue;
                 const double more = baseRays * ((error / target) * (error / target) - 1.0);
                 wanted[m] = uint32_t(std::min(std::ceil(more / 32.0) * 32.0, double(s.maxExtraRays)));
@@ -272,7 +353,7 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
             for (size_t m = r.begin(); m < r.end(); ++m) {
                 const uint32_t n = extraStart[m + 1] - extraStart[m];
                 if (n == 0) continue;
-                const SkySums more = traceTexelRays(table, scene, lights, startOf(m), faceNormal(faces[relit[m / perFace]].dir),
+                const SkySums more = traceTexelRays(table, scene, rayLights, startOf(m), faceNormal(faces[relit[m / perFace]].dir),
                                                     shiftOf(seedOf(m)), baseRays, n, &extraHits[extraStart[m]]);
                 if (guide) guide->takeIn(m, drawn[m], {&extraHits[extraStart[m]], n});
                 sky[m].radiance += more.radiance;
@@ -280,7 +361,7 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
             }
         });
     }
-    if (extra > 0 || guidedRays > 0) converge();
+    if (extra > 0 || guidedRays > 0) converge(), solveDay();
     for (uint64_t n : rays) stats.rays += n;
     stats.rays += stats.extraRays;
     for (size_t m = 0; m < traced; ++m) texels[texelOf(m)].light = light[m];
@@ -324,10 +405,10 @@ std::vector<uint32_t> facesSeeingChange(const BrickTable& table, const World& wo
 
 LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
                          const LightSources& lights, const LightBakeSettings& s, std::span<FaceTexel> texels,
-                         const BakeProgress& progress) {
+                         const BakeProgress& progress, std::span<glm::vec3> dayLight) {
     std::vector<uint32_t> every(faces.size());
     std::iota(every.begin(), every.end(), 0u);
-    return relightFaces(table, world, faces, k, lights, s, texels, every, progress);
+    return relightFaces(table, world, faces, k, lights, s, texels, every, progress, dayLight);
 }
 
 }  // namespace grotto::voxel

@@ -57,14 +57,20 @@ struct LightBakeStats {
     uint64_t extraRays = 0;   // of those, cosine rays more where the light was noisy
 };
 
-// The bytes the bounce passes keep for `texels` texels: what a bake checks
-// against its memory budget before it starts.
-uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& settings);
+// The channels a bake of `lights` keeps the light in: one, all of it; with the
+// day's sun (lights.day), 1 + kDayLightWords: the glowing faces' light, then
+// the face's day words (voxel/face_cache.h), each a white source's light.
+uint32_t lightBakeChannels(const LightSources& lights);
+
+// The bytes the bounce passes keep for `texels` texels of `channels` channels:
+// what a bake checks against its memory budget before it starts.
+uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& settings, uint32_t channels = 1);
 
 // The remembered hits grow with the faces: throws grotto::Error (input) naming the
 // world's file when a bake of `faces` faces at k texels a side would not fit its
 // memory budget. For callers to ask before any of the bake's work.
-void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& settings);
+void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& settings,
+                          uint32_t channels = 1);
 
 // Sets each texel's `light`, and its sky weights from these rays (bakeFaces with
 // fullLight leaves them to this). `faces`: every exposed face of the world
@@ -73,16 +79,22 @@ void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const 
 // on the thread count. `progress` is told each pass (done = passes, total = the
 // most). Throws grotto::Error (input) when lightBakeBytes is over the world's
 // memory budget, before anything is allocated, and (internal) for mismatched spans.
+// With the day's sun (lights.day) the light is kept by source, so that any hour
+// sums it without tracing: each texel's `light` holds the glowing faces' light
+// alone, its sky weights the sky's direct light, and `dayLight` (kDayLightWords
+// a face) each face's bounced light of the sky's two colours and of the sun at
+// each bounce position.
 LightBakeStats bakeLight(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
                          const LightSources& lights, const LightBakeSettings& settings, std::span<FaceTexel> texels,
-                         const BakeProgress& progress = {});
+                         const BakeProgress& progress = {}, std::span<glm::vec3> dayLight = {});
 
 // bakeLight for the faces `relit` alone (indices into `faces`, ascending), the
-// others' light standing as their texels hold it: what their hits send back
+// others' light standing as their texels (and dayLight) hold it: what their hits send back
 // through every pass. After an edit, the faces whose light it moved.
 LightBakeStats relightFaces(const BrickTable& table, const World& world, std::span<const ExposedFace> faces, uint32_t k,
                             const LightSources& lights, const LightBakeSettings& settings, std::span<FaceTexel> texels,
-                            std::span<const uint32_t> relit, const BakeProgress& progress = {});
+                            std::span<const uint32_t> relit, const BakeProgress& progress = {},
+                            std::span<glm::vec3> dayLight = {});
 
 // The faces, of those `skip` does not mark, that see a change of light: `change`
 // holds the change of the radiance each texel sends (0 where none), and a face

@@ -39,16 +39,18 @@ void LightBakeThread::run(World world, FaceBakeSettings settings) {
         baked.faces = exposedFaces(table, world);
         const uint32_t k = settings.texelsPerSide;
         const LightBakeSettings light;
-        requireLightBakeFits(world, baked.faces.size(), k, light);
+        const LightSources lights = lightSources(world.desc().lighting);
+        requireLightBakeFits(world, baked.faces.size(), k, light, lightBakeChannels(lights));
         baked.texels.resize(baked.faces.size() * k * k);
+        if (lights.day) baked.dayLight.resize(baked.faces.size() * kDayLightWords);
         auto share = [&](double from, size_t done, size_t total) {
             if (stop_.load(std::memory_order_relaxed)) throw Stopped{};
             done_.store(from + 0.5 * double(done) / double(std::max<size_t>(total, 1)), std::memory_order_relaxed);
         };
         bakeFacesInSteps(table, world, baked.faces, settings, baked.texels,
                          [&](size_t done, size_t total) { share(0.0, done, total); });
-        bakeLight(table, world, baked.faces, k, lightSources(world.desc().lighting), light, baked.texels,
-                  [&](size_t done, size_t total) { share(0.5, done, total); });
+        bakeLight(table, world, baked.faces, k, lights, light, baked.texels,
+                  [&](size_t done, size_t total) { share(0.5, done, total); }, baked.dayLight);
         baked.glowing = glowingFaces(world, baked.faces);
         result_ = std::move(baked);
         done_.store(1.0, std::memory_order_relaxed);

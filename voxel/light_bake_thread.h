@@ -18,6 +18,7 @@ struct BakedLight {
     std::vector<ExposedFace> faces;     // exposedFaces of the world copied
     std::vector<FaceTexel> texels;      // bakeFaces, then bakeLight, with the settings given
     std::vector<GlowingFace> glowing;   // glowingFaces of it
+    std::vector<glm::vec3> dayLight;    // with the day's sun: kDayLightWords a face (bakeLight)
 };
 
 class LightBakeThread {

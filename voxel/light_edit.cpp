@@ -108,43 +108,82 @@ std::vector<uint32_t> facesToRelight(std::span<const ExposedFace> faces, std::sp
 
 
 
-// What a texel sends back but for its glow, by the world's materials and sun.
+// What a texel sends back but for its glow, by the world's materials and sun;
+// over the day, with its face's day words (k x k texels a face).
 class Sender {
 public:
-    explicit Sender(const World& world)
-        : world_(world), lights_(lightSources(world.desc().lighting)), toSun_(glm::normalize(lights_.sunDirection)) {}
+    Sender(const World& world, uint32_t k, std::span<const glm::vec3> dayLight)
+        : world_(world), lights_(lightSources(world.desc().lighting)), toSun_(glm::normalize(lights_.sunDirection)),
+          perFace_(size_t(k) * k), dayLight_(lights_.day ? dayLight : std::span<const glm::vec3>()) {
+        if (!dayLight_.empty()) {
+            const std::vector<glm::dvec3> toSun = daySunDirections(*lights_.day);
+            for (uint32_t b = 0; b < kDayBouncePositions; ++b) bounceSun_.push_back(toSun[dayBouncePosition(b)]);
+        }
+    }
     const LightSources& lights() const { return lights_; }
-    glm::vec3 operator()(const ExposedFace& f, const FaceTexel& t) const {
+    // The light texel t (of face `f`) receives but for the sun's direct beam:
+    // its light and, over the day, its face's words with their sources, the
+    // sun spread over its positions (as the bake judges the light).
+    glm::vec3 received(size_t t, const ExposedFace& f, const FaceTexel& x) const {
+        if (dayLight_.empty()) return x.light;
+        const glm::vec3* words = &dayLight_[t / perFace_ * kDayLightWords];
+        const float samples = float(std::max(x.samples, 1u));
+        glm::vec3 light = x.light + words[0] + x.skyZenith / samples + words[1] + x.skyHorizon / samples;
+        for (uint32_t b = 0; b < kDayBouncePositions; ++b) {
+            const bool lit = (x.daySun >> dayBouncePosition(b)) & 1u;
+            const float sun = lit ? float(std::max(glm::dot(faceNormal(f.dir), bounceSun_[b]), 0.0)) : 0.0f;
+            light += (words[2 + b] + sun) / float(kDayBouncePositions);
+        }
+        return light;
+    }
+    glm::vec3 operator()(size_t t, const ExposedFace& f, const FaceTexel& x) const {
         const std::vector<Material>& materials = world_.desc().materials;
         const int id = world_.material(f.cell);
         const glm::vec3 albedo = id >= 1 && size_t(id) <= materials.size() ? materials[size_t(id) - 1].albedo : glm::vec3(0.0f);
-        const double sun = std::max(glm::dot(faceNormal(f.dir), toSun_), 0.0) * t.sun();
-        return albedo * (t.light + glm::vec3(lights_.sun * sun));
+        if (!dayLight_.empty()) return albedo * received(t, f, x);
+        const double sun = std::max(glm::dot(faceNormal(f.dir), toSun_), 0.0) * x.sun();
+        return albedo * (x.light + glm::vec3(lights_.sun * sun));
     }
 
 private:
     const World& world_;
     LightSources lights_;
     glm::dvec3 toSun_;
+    size_t perFace_;
+    std::span<const glm::vec3> dayLight_;
+    std::vector<glm::dvec3> bounceSun_;  // toward the sun at each bounce position
 };
 
 }  // namespace
 
 std::vector<glm::vec3> sentLight(const World& world, std::span<const ExposedFace> faces,
-                                 std::span<const FaceTexel> texels, uint32_t k) {
-    const Sender sends(world);
+                                 std::span<const FaceTexel> texels, uint32_t k, std::span<const glm::vec3> dayLight) {
+    const Sender sends(world, k, dayLight);
     const size_t perFace = size_t(k) * k;
     std::vector<glm::vec3> sent(texels.size());
-    for (size_t t = 0; t < texels.size(); ++t) sent[t] = sends(faces[t / perFace], texels[t]);
+    for (size_t t = 0; t < texels.size(); ++t) sent[t] = sends(t, faces[t / perFace], texels[t]);
     return sent;
+}
+
+std::vector<glm::vec3> carriedDayLight(std::span<const ExposedFace> before, std::span<const ExposedFace> after,
+                                       std::span<const glm::vec3> dayLight) {
+    std::vector<glm::vec3> carried(after.size() * kDayLightWords, glm::vec3(0.0f));
+    for (size_t f = 0; f < after.size(); ++f) {
+        const auto it = std::lower_bound(before.begin(), before.end(), after[f]);
+        if (it == before.end() || !(*it == after[f])) continue;
+        std::copy_n(dayLight.begin() + (it - before.begin()) * kDayLightWords, kDayLightWords,
+                    carried.begin() + ptrdiff_t(f * kDayLightWords));
+    }
+    return carried;
 }
 
 RelightStats relightAfterEdit(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
                               uint32_t k, std::span<FaceTexel> texels, std::span<const FaceReach> reach,
                               const IndexBox& changed, std::span<const ExposedFace> before,
-                              std::span<const glm::vec3> sentBefore, std::span<const GlowingFace> glowingBefore) {
+                              std::span<const glm::vec3> sentBefore, std::span<const GlowingFace> glowingBefore,
+                              std::span<glm::vec3> dayLight) {
     const size_t perFace = size_t(k) * k;
-    const Sender sends(world);
+    const Sender sends(world, k, dayLight);
     const LightSources& lights = sends.lights();
     auto glowOf = [](std::span<const GlowingFace> glowing, const ExposedFace& f) {
         const auto it = std::lower_bound(glowing.begin(), glowing.end(), f,
@@ -166,7 +205,8 @@ RelightStats relightAfterEdit(const BrickTable& table, const World& world, std::
     std::vector<double> threshold(faces.size(), 0.0);
     double mean = 0.0;
     for (size_t f = 0; f < faces.size(); ++f) {
-        for (size_t t = f * perFace; t < (f + 1) * perFace; ++t) threshold[f] += luminance(glm::dvec3(texels[t].light));
+        for (size_t t = f * perFace; t < (f + 1) * perFace; ++t)
+            threshold[f] += luminance(glm::dvec3(sends.received(t, faces[f], texels[t])));
         threshold[f] /= double(perFace);
         mean += threshold[f] / double(faces.size());
     }
@@ -179,11 +219,11 @@ RelightStats relightAfterEdit(const BrickTable& table, const World& world, std::
     // the faces that see it receive changed by.
     std::vector<glm::vec3> change(texels.size(), glm::vec3(0.0f));
     while (!round.empty()) {
-        relightFaces(table, world, faces, k, lights, {}, texels, round);
+        relightFaces(table, world, faces, k, lights, {}, texels, round, {}, dayLight);
         stats.faces += round.size();
         for (const uint32_t f : round) {
             relit[f] = 1;
-            for (size_t t = f * perFace; t < (f + 1) * perFace; ++t) change[t] = sends(faces[f], texels[t]) - was[t];
+            for (size_t t = f * perFace; t < (f + 1) * perFace; ++t) change[t] = sends(t, faces[f], texels[t]) - was[t];
         }
         if (stats.rounds == kRelightRounds) break;
         round = facesSeeingChange(table, world, faces, k, texels, change, threshold, relit, kProbeRays);

@@ -42,16 +42,25 @@ struct RelightStats {
 // What each texel of `faces` (k x k each) sends back but for its glow: albedo x
 // (its light and its sun), by `world`'s materials. Kept before an edit (12 bytes
 // a texel) for relightAfterEdit.
+// Over the day, with `dayLight` (kDayLightWords a face): the texels' light with
+// their faces' words, the sun spread over its positions.
 std::vector<glm::vec3> sentLight(const World& world, std::span<const ExposedFace> faces,
-                                 std::span<const FaceTexel> texels, uint32_t k);
+                                 std::span<const FaceTexel> texels, uint32_t k, std::span<const glm::vec3> dayLight = {});
+
+// Each face's day words (kDayLightWords a face) carried from the faces `before`
+// an edit to those `after` it; 0 for a face the edit made.
+std::vector<glm::vec3> carriedDayLight(std::span<const ExposedFace> before, std::span<const ExposedFace> after,
+                                       std::span<const glm::vec3> dayLight);
 
 // The full light of a world after an edit of `changed`, updateAfterEdit already
 // run with its rays traced at once: `faces` and `texels` as it left them,
 // `before` the faces then, `sentBefore` their sentLight then and `glowingBefore`
-// the glowing faces then.
+// the glowing faces then. With the day's sun, `dayLight` (kDayLightWords a face
+// of `faces`, carried over) is lit again with them.
 RelightStats relightAfterEdit(const BrickTable& table, const World& world, std::span<const ExposedFace> faces,
                               uint32_t k, std::span<FaceTexel> texels, std::span<const FaceReach> reach,
                               const IndexBox& changed, std::span<const ExposedFace> before,
-                              std::span<const glm::vec3> sentBefore, std::span<const GlowingFace> glowingBefore);
+                              std::span<const glm::vec3> sentBefore, std::span<const GlowingFace> glowingBefore,
+                              std::span<glm::vec3> dayLight = {});
 
 }  // namespace grotto::voxel

@@ -38,6 +38,7 @@ LightSources lightSources(const Lighting& lighting) {
     s.sunDirection = glm::normalize(glm::dvec3(l.sunDirection));
     s.sun = glm::dvec3(l.sunColor) * double(l.sunIntensity);
     s.sunAngleDegrees = l.sunAngle;
+    if (lighting.sunFrom == SunSource::Day) s.day = sunPathOf(lighting);
     return s;
 }
 

@@ -5,12 +5,14 @@
 // materials' emission, the sky's gradient and the sun's disc, in one scale of
 // radiance (docs/lighting.md, "Units"). Unbiased: paths end by Russian roulette,
 // not at a fixed length. OpenVDB-free interface.
+#include "voxel/daylight.h"
 #include "voxel/reference_ao.h"
 #include "voxel/world.h"
 
 #include <glm/vec3.hpp>
 
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -25,6 +27,9 @@ struct LightSources {
     // (irradiance / pi): lighting.sun's colour x intensity. 0: no sun.
     glm::dvec3 sun{0.0};
     double sunAngleDegrees = 0.0;                // the disc's angular diameter; 0: a point
+    // The day's sun (lighting.sun.from day): the path the sun above stands on at
+    // the hour. A full-light bake then keeps the light of every hour (face_cache.h).
+    std::optional<SunPath> day;
 };
 LightSources lightSources(const Lighting& lighting);
 

@@ -20,7 +20,7 @@ uint32_t capacityFor(uint32_t faces, uint32_t k) {
 GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Sun sun, FaceCacheRays rays,
                            std::span<const uint8_t> levels, FaceCacheSky sky)
     : ctx_(ctx), table_(a.table), texelsPerSide_(a.texelsPerSide), faceCount_(a.faceCount), materialsFirst_(a.materialsFirst),
-      daySunFirst_(a.daySunFirst),
+      daySunFirst_(a.daySunFirst), dayLightFirst_(a.dayLightFirst), dayFacesFirst_(a.dayFacesFirst),
       sun_(sun), rays_(rays), sky_(sky) {
     const uint32_t capacity = capacityFor(a.faceCount, a.texelsPerSide);  // the queue's, kept in its header
     // Empty arrays (a world with no faces) still bind: one zero word each.

@@ -53,6 +53,8 @@ public:
     uint32_t faceCount() const { return faceCount_; }
     uint32_t materialsFirst() const { return materialsFirst_; }  // FaceCacheArrays::materialsFirst
     uint32_t daySunFirst() const { return daySunFirst_; }        // FaceCacheArrays::daySunFirst
+    uint32_t dayLightFirst() const { return dayLightFirst_; }    // FaceCacheArrays::dayLightFirst
+    uint32_t dayFacesFirst() const { return dayFacesFirst_; }    // FaceCacheArrays::dayFacesFirst
     const Sun& sun() const { return sun_; }
     const FaceCacheSky& sky() const { return sky_; }
     const FaceCacheRays& rays() const { return rays_; }
@@ -61,6 +63,10 @@ public:
     size_t gpuBytes() const { return size_t(bricks_.size + records_.size + texels_.size + levels_.size); }
     // Of those, the day's sun bits' (0 without).
     size_t daySunBytes() const { return daySunFirst_ ? size_t(faceCount_) * texelsPerSide_ * texelsPerSide_ * 4 : 0; }
+    // And full light over the day's: the texels' sky weights and the faces' day words.
+    size_t dayLightBytes() const {
+        return dayLightFirst_ ? size_t(faceCount_) * (texelsPerSide_ * texelsPerSide_ + voxel::kDayLightWords) * 4 : 0;
+    }
 
     // Appends the three buffers' bindings (bricks, records, texels) to a pass's own.
     static std::vector<VkDescriptorType> withBindings(std::vector<VkDescriptorType> own);
@@ -92,7 +98,7 @@ public:
 private:
     vk::Context& ctx_;
     vk::Buffer bricks_, records_, texels_, levels_, requested_, queue_, header_, dayPositions_;
-    uint32_t table_, texelsPerSide_, faceCount_, materialsFirst_, daySunFirst_;
+    uint32_t table_, texelsPerSide_, faceCount_, materialsFirst_, daySunFirst_, dayLightFirst_, dayFacesFirst_;
     Sun sun_;
     FaceCacheRays rays_;
     FaceCacheSky sky_;

@@ -29,8 +29,9 @@ uint8_t levelOf(std::span<const voxel::FaceTexel> texels, const voxel::FaceBakeS
 }  // namespace
 
 LiveFaceCache::LiveFaceCache(GpuScene& scene, const voxel::World& world, std::vector<voxel::ExposedFace> faces,
-                             std::vector<voxel::FaceTexel> texels, const voxel::FaceBakeSettings& settings)
-    : scene_(scene), faces_(std::move(faces)), texels_(std::move(texels)), settings_(settings),
+                             std::vector<voxel::FaceTexel> texels, const voxel::FaceBakeSettings& settings,
+                             std::vector<glm::vec3> dayLight)
+    : scene_(scene), faces_(std::move(faces)), texels_(std::move(texels)), dayLight_(std::move(dayLight)), settings_(settings),
       voxelSize_(world.voxelSize()) {
     if (settings_.fullLight) glowing_ = voxel::glowingFaces(world, faces_);
     levelsFromTexels();
@@ -51,21 +52,25 @@ LiveFaceCache LiveFaceCache::load(GpuScene& scene, const voxel::BrickTable& tabl
     const voxel::FaceCacheHeader header = voxel::requireBakeOf(world, radius, faces.size(), bake);
     std::vector<voxel::FaceTexel> texels(header.texelCount());
     voxel::readFaceCacheTexels(bake, header, texels);
+    std::vector<glm::vec3> dayLight(voxel::hasDayLight(header) ? header.faceCount * voxel::kDayLightWords : 0);
+    voxel::readFaceCacheDayLight(bake, header, dayLight);
     voxel::FaceBakeSettings settings = worldBakeSettings(world, radius, header.key.texelsPerSide);
     // Faces traced after an edit get as many rays as the bake gave its texels.
     settings.rays = header.rays, settings.sunRays = header.sunRays;
-    return LiveFaceCache(scene, world, std::move(faces), std::move(texels), settings);
+    return LiveFaceCache(scene, world, std::move(faces), std::move(texels), settings, std::move(dayLight));
 }
 
 LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
                                   const voxel::FaceBakeSettings& settings) {
     std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
-    if (settings.fullLight) voxel::requireLightBakeFits(world, faces.size(), settings.texelsPerSide, {});
+    const voxel::LightSources lights = voxel::lightSources(world.desc().lighting);
+    if (settings.fullLight)
+        voxel::requireLightBakeFits(world, faces.size(), settings.texelsPerSide, {}, voxel::lightBakeChannels(lights));
     std::vector<voxel::FaceTexel> texels(faces.size() * settings.texelsPerSide * settings.texelsPerSide);
     voxel::bakeFaces(table, world, faces, settings, texels);
-    if (settings.fullLight)
-        voxel::bakeLight(table, world, faces, settings.texelsPerSide, voxel::lightSources(world.desc().lighting), {}, texels);
-    return LiveFaceCache(scene, world, std::move(faces), std::move(texels), settings);
+    std::vector<glm::vec3> dayLight(settings.fullLight && lights.day ? faces.size() * voxel::kDayLightWords : 0);
+    if (settings.fullLight) voxel::bakeLight(table, world, faces, settings.texelsPerSide, lights, {}, texels, {}, dayLight);
+    return LiveFaceCache(scene, world, std::move(faces), std::move(texels), settings, std::move(dayLight));
 }
 
 LiveFaceCache LiveFaceCache::progressive(GpuScene& scene, const voxel::BrickTable& table, const voxel::World& world,
@@ -91,6 +96,7 @@ bool LiveFaceCache::takeBakedLight(const voxel::BrickTable& table, const voxel::
     faces_ = std::move(baked.faces);
     texels_ = std::move(baked.texels);
     glowing_ = std::move(baked.glowing);
+    dayLight_ = std::move(baked.dayLight);
     if (const std::optional<IndexBox> changed = std::exchange(editedSinceBake_, std::nullopt))
         editWithFullLight(table, world, *changed, nullptr);
     else {
@@ -158,10 +164,11 @@ void LiveFaceCache::editWithFullLight(const voxel::BrickTable& table, const voxe
                                       const IndexBox& changed, voxel::CacheEditStats* stats) {
     const std::vector<voxel::ExposedFace> before = faces_;
     std::vector<voxel::FaceReach> reach;
-    const std::vector<glm::vec3> sentBefore = voxel::sentLight(world, faces_, texels_, settings_.texelsPerSide);
+    const std::vector<glm::vec3> sentBefore = voxel::sentLight(world, faces_, texels_, settings_.texelsPerSide, dayLight_);
     voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, stats, true, &reach);
+    if (!dayLight_.empty()) dayLight_ = voxel::carriedDayLight(before, faces_, dayLight_);
     const voxel::RelightStats relit = voxel::relightAfterEdit(table, world, faces_, settings_.texelsPerSide, texels_,
-                                                              reach, changed, before, sentBefore, glowing_);
+                                                              reach, changed, before, sentBefore, glowing_, dayLight_);
     glowing_ = voxel::glowingFaces(world, faces_);
     if (stats) stats->relit = relit.faces;
     levelsFromTexels();
@@ -173,6 +180,7 @@ void LiveFaceCache::upload(const voxel::World& world) {
     // With full light, what objects read of the light world faces send.
     if (settings_.fullLight) voxel::appendFaceMaterials(arrays, faces_, world);
     if (voxel::daySunPositions(settings_)) voxel::appendDaySun(arrays, texels_);
+    if (!dayLight_.empty()) voxel::appendDayLight(arrays, texels_, dayLight_);
     std::vector<uint8_t> gpuLevels(arrays.faceOrder.size());
     for (size_t g = 0; g < gpuLevels.size(); ++g) gpuLevels[g] = levels_[arrays.faceOrder[g]];
     auto gpu = std::make_unique<GpuFaceCache>(

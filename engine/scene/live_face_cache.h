@@ -27,9 +27,11 @@ namespace grotto {
 class LiveFaceCache {
 public:
     // `texels`: k x k for each of `faces` (exposedFaces of `world`, in order),
-    // traced with `settings`. Uploads them into `scene`.
+    // traced with `settings`; `dayLight`: full light over the day's words
+    // (kDayLightWords a face, voxel/light_bake.h) or none. Uploads them into `scene`.
     LiveFaceCache(GpuScene& scene, const voxel::World& world, std::vector<voxel::ExposedFace> faces,
-                  std::vector<voxel::FaceTexel> texels, const voxel::FaceBakeSettings& settings);
+                  std::vector<voxel::FaceTexel> texels, const voxel::FaceBakeSettings& settings,
+                  std::vector<glm::vec3> dayLight = {});
 
     // A bake of the world (`grotto bake`) with AO radius `radius` (world units);
     // throws grotto::Error (input) naming the file and the first field that is not
@@ -72,6 +74,7 @@ public:
     // The texels and each face's level (shaders/shared/face_trace.h) as of the
     // last sync(): what the GPU's tracer traced since is on the GPU alone.
     std::span<const voxel::FaceTexel> texels() const { return texels_; }
+    std::span<const glm::vec3> dayLight() const { return dayLight_; }
     std::span<const uint8_t> levels() const { return levels_; }
     // Brings the GPU tracer's texels into the host's copy (waits for the device);
     // their values come back as the GPU holds them, quantised (face_cache.h).
@@ -89,6 +92,7 @@ private:
     GpuScene& scene_;
     std::vector<voxel::ExposedFace> faces_;
     std::vector<voxel::FaceTexel> texels_;
+    std::vector<glm::vec3> dayLight_;  // full light over the day: kDayLightWords a face, or none
     std::vector<uint8_t> levels_;  // per face
     std::vector<uint32_t> order_;  // the GPU's face g is faces_[order_[g]]
     uint32_t daySunFirst_ = 0;     // where the GPU's texel words hold the day's sun bits (0: none)

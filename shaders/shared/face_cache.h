@@ -21,6 +21,11 @@
 //            three 9-bit mantissas sharing a 5-bit exponent.
 //            A cache baked for the day's moving sun has a word more a texel after
 //            them (faceCacheDaySun): a bit for each of 32 sun positions along the day.
+//            With full light over the day (faceCacheDayLight) the light word holds
+//            the glowing faces' light alone; after the words above come each
+//            texel's sky weights (two halfs), then GROTTO_DAY_LIGHT_WORDS RGB9E5
+//            words a face: its bounced light of a white zenith and horizon sky and
+//            of a white sun at each of the day's bounce positions.
 // The includer defines, before including it (or GROTTO_FACE_CACHE_LAYOUT_ONLY):
 //   uvec4 faceCacheBrickEntry(uint slot); uint faceCacheRecordWord(uint word);
 //   uint faceCacheTexelWord(uint word); uint faceCacheK(); and
@@ -52,6 +57,8 @@ inline vec2 unpackHalf2x16(uint v) { return glm::unpackHalf2x16(v); }
 inline float exp2(float v) { return std::exp2(v); }
 inline float log2(float v) { return std::log2(v); }
 inline int bitCount(uint v) { return std::popcount(v); }
+inline float uintBitsToFloat(uint v) { return std::bit_cast<float>(v); }
+using glm::mix;
 inline int findLSB(int v) { return std::countr_zero(uint(v)); }
 using std::floor;
 using std::max;
@@ -61,6 +68,7 @@ using std::min;
 #define GROTTO_FACE_RECORD_WORDS 104u  // 6 x 16 mask words, 6 bases, 2 words of half counts
 #define GROTTO_FACE_TEXEL_BYTES 6u
 #define GROTTO_DAY_SUN_POSITIONS 32u  // voxel::kDaySunPositions
+#define GROTTO_DAY_LIGHT_WORDS 18u  // voxel::kDayLightWords: 2 skies and 16 bounce positions
 
 // The words `texels` texels take.
 GROTTO_INLINE uint faceCacheTexelWords(uint texels) { return 3u * ((texels + 1u) / 2u); }
@@ -281,6 +289,30 @@ GROTTO_FUNCTION vec3 faceCacheFullLight(FaceCacheTaps t) {
         weight += t.weight[c];
     }
     return weight > 0.0f ? sum / weight : vec3(0.0f);
+}
+
+// Full light over the day, at the hour `day` describes (x: the texels' sky
+// weights' first word; y: the faces' day words' first; z: the bounce positions
+// either side of the hour, before | after << 16; w: the second's weight, as
+// float bits). A texel's sky weights (horizon, zenith: its direct light per
+// unit radiance of each colour) ...
+GROTTO_FUNCTION vec2 faceCacheDaySkyWeights(uint texel, uvec4 day) {
+    return unpackHalf2x16(faceCacheTexelWord(day.x + texel));
+}
+// ... and what face `face` (in record order) receives bounced, under a sky of
+// `zenith` and `horizon` radiance and a sun of `sun` (irradiance over pi on a
+// face turned to it): its words' light at those colours, the sun's interpolated.
+GROTTO_FUNCTION vec3 faceCacheDayBounce(uint face, uvec4 day, vec3 zenith, vec3 horizon, vec3 sun) {
+    uint words = day.y + face * GROTTO_DAY_LIGHT_WORDS;
+    vec3 before = faceCacheDecodeLight(faceCacheTexelWord(words + 2u + (day.z & 0xFFFFu)));
+    vec3 after = faceCacheDecodeLight(faceCacheTexelWord(words + 2u + (day.z >> 16u)));
+    return zenith * faceCacheDecodeLight(faceCacheTexelWord(words)) +
+           horizon * faceCacheDecodeLight(faceCacheTexelWord(words + 1u)) + sun * mix(before, after, uintBitsToFloat(day.w));
+}
+// Both: what texel `texel` (k texels a side) receives beside its light word.
+GROTTO_FUNCTION vec3 faceCacheDayLight(uint texel, uint k, uvec4 day, vec3 zenith, vec3 horizon, vec3 sun) {
+    vec2 weights = faceCacheDaySkyWeights(texel, day);
+    return zenith * weights.y + horizon * weights.x + faceCacheDayBounce(texel / (k * k), day, zenith, horizon, sun);
 }
 
 // The day's sun at the taps (a cache baked with it: each texel's bits, one a

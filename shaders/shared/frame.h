@@ -36,8 +36,11 @@ struct FrameUniforms {
     uvec4 daySun;
     vec4 daySunBefore;
     vec4 daySunAfter;
+    // Full light over the day from the face cache (shared/face_cache.h's
+    // faceCacheDayLight's `day`): x 0 without it.
+    uvec4 dayLight;
 };
-GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16 + 16 * GROTTO_SKY_LIGHT_ROWS + 6 * 16);
+GROTTO_STATIC_ASSERT(sizeof(FrameUniforms) == 64 + 10 * 16 + 16 + 16 * GROTTO_SKY_LIGHT_ROWS + 7 * 16);
 
 // G-buffer push constants: one chunk's corner in whole voxels from the camera's
 // voxel, and the camera's place in that voxel. A vertex's position is computed from

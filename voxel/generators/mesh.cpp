@@ -20,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Mesh {
+struct TriangleFile {
     std::vector<openvdb::Vec3s> points;
     std::vector<openvdb::Vec3I> triangles;
 };
@@ -77,13 +77,13 @@ float coordinate(LineReader& r, std::string_view token) {
 }
 
 // Polygons become triangle fans around their first vertex.
-void addPolygon(LineReader& r, Mesh& mesh, const std::vector<uint32_t>& poly) {
+void addPolygon(LineReader& r, TriangleFile& mesh, const std::vector<uint32_t>& poly) {
     if (poly.size() < 3) r.fail("a face needs at least 3 vertices");
     for (size_t i = 1; i + 1 < poly.size(); ++i)
         mesh.triangles.emplace_back(poly[0], poly[i], poly[i + 1]);
 }
 
-void readObj(LineReader& r, Mesh& mesh) {
+void readObj(LineReader& r, TriangleFile& mesh) {
     std::string line;
     std::vector<uint32_t> poly;
     while (r.next(line)) {
@@ -156,7 +156,7 @@ std::vector<PlyElement> readPlyHeader(LineReader& r) {
     r.fail("PLY header ends without 'end_header'");
 }
 
-void readPlyData(LineReader& r, const std::vector<PlyElement>& elements, Mesh& mesh) {
+void readPlyData(LineReader& r, const std::vector<PlyElement>& elements, TriangleFile& mesh) {
     std::string line;
     std::vector<uint32_t> poly;
     for (const PlyElement& e : elements) {
@@ -199,9 +199,9 @@ void readPlyData(LineReader& r, const std::vector<PlyElement>& elements, Mesh& m
     }
 }
 
-Mesh readMesh(const fs::path& file) {
+TriangleFile readMesh(const fs::path& file) {
     LineReader r(file);
-    Mesh mesh;
+    TriangleFile mesh;
     std::string first;
     const std::string ext = lowerExtension(file);
     const bool hasLine = r.next(first);
@@ -222,7 +222,7 @@ Mesh readMesh(const fs::path& file) {
 }  // namespace
 
 openvdb::GridBase::Ptr generateMesh(const GeneratorOptions& options) {
-    Mesh mesh = readMesh(options.meshFile);
+    TriangleFile mesh = readMesh(options.meshFile);
 
     openvdb::Vec3s lo = mesh.points[0], hi = mesh.points[0];
     for (const auto& p : mesh.points) {
