@@ -172,7 +172,7 @@ private:
     // The composite for this frame: while the cache has faces not converged, the
     // one that asks for the faces of the texels it reads.
     CompositePass& composite();
-    void writeTraceConstants(const Camera& camera, uint32_t frameIndex, glm::uvec4 dayLight);  // FrameUniforms::dayLight
+    void writeTraceConstants(const Camera& camera, uint32_t frameIndex, const gpu::FrameUniforms& frame);  // its day words and bits
     // Uploads the objects' grids for rays again when they changed (or were never uploaded).
     void refreshObjectGrids();
     // Ends the command buffer and submits it after `waits`, signalling the timeline's next value.

@@ -65,7 +65,7 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
             previousFrame_ = frameIndex;
         }
     }
-    writeTraceConstants(camera, frameIndex, uniforms.dayLight);  // before the edits are cleared: they restart a soft sun's history
+    writeTraceConstants(camera, frameIndex, uniforms);  // before the edits are cleared: they restart a soft sun's history
     invalidated_.clear();  // edits before this frame; later ones go to the next
     // The frame before (for motion and the temporal plane test); this one's own where there was none.
     if (objects_) {
@@ -84,7 +84,7 @@ void Renderer::refreshObjectGrids() {
     objectGridsVersion_ = version;
 }
 
-void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex, glm::uvec4 dayLight) {
+void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex, const gpu::FrameUniforms& frame) {
     if (!plan_.scene.occupancy) return;
     const double radius = ao_.enabled ? ao_.estimator.radius : 1.0;
     gpu::TraceConstants t = traceConstants(camera, *scene_.occupancy(), scene_.voxelSize, scene_.worldOrigin,
@@ -101,7 +101,8 @@ void Renderer::writeTraceConstants(const Camera& camera, uint32_t frameIndex, gl
         t.skyZenith = glm::vec4(lighting_.skyZenith * lighting_.ambientIntensity, 0.0f);
         t.skyHorizon = glm::vec4(lighting_.skyHorizon * lighting_.ambientIntensity, 0.0f);
         t.sunRadiance = glm::vec4(lighting_.sunColor * lighting_.sunIntensity, 0.0f);
-        t.dayLight = full ? dayLight : glm::uvec4(0u);
+        t.dayLight = full ? frame.dayLight : glm::uvec4(0u);
+        t.daySun = frame.daySun;
     }
     t.sunCosRadius = float(std::cos(glm::radians(0.5 * double(lighting_.sunAngle))));
     t.frameIndex = frameIndex;

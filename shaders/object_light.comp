@@ -104,12 +104,16 @@ vec3 worldFaceLight(vec3 p, VoxelRayHit hit) {
     vec3 local = clamp(p - vec3(hit.voxel - trace.cameraCell.xyz), 0.0, 0.999999);
     uint i = min(uint(local[faceUAxis(dir)] * float(k)), k - 1u), j = min(uint(local[faceVAxis(dir)] * float(k)), k - 1u);
     uvec2 bits = faceCacheTexel(uint(face) * k * k + j * k + i);
-    float sun = faceCacheUnpack(bits).y;
+    // The day's sun: the texel's bits at the positions either side of the hour.
+    uint texel = uint(face) * k * k + j * k + i;
+    float sun = trace.daySun.x != 0u
+                    ? 0.5 * float(bitCount(faceTexels[trace.daySun.x + texel] & ((1u << trace.daySun.y) | (1u << trace.daySun.z))))
+                    : faceCacheUnpack(bits).y;
     float cosSun = max(dot(faceAxisNormal(dir), trace.sunDirection.xyz), 0.0);
     vec3 albedo = palette[2u * (material - 1u)].rgb, emission = palette[2u * (material - 1u) + 1u].rgb;
     vec3 light = faceCacheDecodeLight(bits.y);
     if (trace.dayLight.x != 0u)
-        light += faceCacheDayLight(uint(face) * k * k + j * k + i, k, trace.dayLight, trace.skyZenith.rgb, trace.skyHorizon.rgb,
+        light += faceCacheDayLight(texel, k, trace.dayLight, trace.skyZenith.rgb, trace.skyHorizon.rgb,
                                    trace.sunRadiance.rgb);
     return albedo * (light + trace.sunRadiance.rgb * (cosSun * sun)) + emission;
 }

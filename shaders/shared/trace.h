@@ -85,10 +85,11 @@ struct TraceConstants {
     vec4 skyZenith, skyHorizon;     // rgb: the sky's radiance at the zenith and the horizon
     vec4 sunRadiance;               // rgb: the sun's light on a face turned to it (irradiance / pi)
     uvec4 dayLight;                 // full light over the day: FrameUniforms::dayLight
+    uvec4 daySun;                   // the day's sun from the cache: FrameUniforms::daySun
     GlowFace glow[GROTTO_MAX_GLOW_FACES];
 };
 GROTTO_STATIC_ASSERT(sizeof(TraceConstants) == 2 * 16 + 3 * 16 + 5 * 16 + 16 + 64 + 16 + 16 + 16 +
-                                                   112 * GROTTO_MAX_OBJECTS + 5 * 16 + 64 * GROTTO_MAX_GLOW_FACES);
+                                                   112 * GROTTO_MAX_OBJECTS + 6 * 16 + 64 * GROTTO_MAX_GLOW_FACES);
 
 GROTTO_NAMESPACE_END
 #endif
