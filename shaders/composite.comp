@@ -191,7 +191,7 @@ vec3 shadeCached(ivec2 q, uint surface) {
         // or give it by glowing, added; an object's face, its own light outright.
         vec3 full = open;
         if (surfaceObject(surface) != 0u) full = objectLight ? objectPart.rgb : open;
-        else if (seen) full = max(cachedFullLightAt(cachedTapsAt(q, surfaceFace(surface))) + objectPart.rgb, vec3(0.0));
+        else if (seen) full = max(cachedFullLightAt(cachedTapsAt(q, surfaceFace(surface)), q, surfaceFace(surface)) + objectPart.rgb, vec3(0.0));
         float cosSun = max(dot(normal, frame.sunDirection.xyz), 0.0);
         return materialOf(surface).rgb * (frame.sunRadiance.rgb * (cosSun * sunReach) + mix(open, full, frame.aoStrength.x)) +
                emissionOf(surface);

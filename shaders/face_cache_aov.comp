@@ -46,7 +46,7 @@ void main() {
         bool edge;
         c = faceCacheBlend(t, found, sunRange);
         if (cachedSun) c.y = cachedSunAt(t, c, sunRange, faceAxisNormal(surfaceFace(surface)), edge);
-        if (found && fullLight) light = max(cachedFullLightAt(t) + objectPart.rgb, vec3(0.0));
+        if (found && fullLight) light = max(cachedFullLightAt(t, q, surfaceFace(surface)) + objectPart.rgb, vec3(0.0));
         else if (found && frame.ambient.w >= 0.5)
             light = frame.ambient.rgb * (c.z * frame.skyHorizon.rgb + c.w * frame.skyZenith.rgb);
     } else if (surface != 0u && objectLight && fullLight)

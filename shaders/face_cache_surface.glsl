@@ -46,26 +46,31 @@ float cachedSunAt(FaceCacheTaps t, vec4 c, vec2 sunRange, vec3 normal, out bool 
     return c.y;
 }
 
-// With full light, the light the taps receive at the frame's hour (irradiance
-// over pi): their light words, and with full light over the day the sky's and
-// the sun's light from the day's words, at the hour's colours. The taps share
-// a face or two: each face's words are read once.
-vec3 cachedFullLightAt(FaceCacheTaps t) {
+// With full light, the light the taps `t` of pixel q's world face `face` receive
+// at the frame's hour (irradiance over pi): their light words, and with full
+// light over the day the sky's light from the texels' weights and the bounced
+// light from the faces' words, at the hour's colours. A face keeps one value of
+// each word, so those are blended between the four faces whose centres lie
+// nearest, as the texels are between theirs: no face shows as a tile.
+vec3 cachedFullLightAt(FaceCacheTaps t, ivec2 q, uint face) {
     vec3 light = faceCacheFullLight(t);
     if (frame.dayLight.x == 0u) return light;
     vec3 zenith = frame.ambient.rgb * frame.skyZenith.rgb, horizon = frame.ambient.rgb * frame.skyHorizon.rgb;
-    uint k2 = faceCacheK() * faceCacheK(), lastFace = 0xFFFFFFFFu;
-    vec3 bounce = vec3(0.0), faceBounce = vec3(0.0);
     vec2 weights = vec2(0.0);
     float weight = 0.0;
     for (int c = 0; c < 4; ++c) {
         if (t.weight[c] <= 0.0) continue;
-        uint face = t.texel[c] / k2;
-        if (face != lastFace) faceBounce = faceCacheDayBounce(face, frame.dayLight, zenith, horizon, frame.sunRadiance.rgb);
-        lastFace = face;
         weights += t.weight[c] * faceCacheDaySkyWeights(t.texel[c], frame.dayLight);
-        bounce += t.weight[c] * faceBounce;
         weight += t.weight[c];
     }
-    return weight > 0.0 ? light + (zenith * weights.y + horizon * weights.x + bounce) / weight : light;
+    if (weight <= 0.0) return light;
+    FaceCacheTaps faces = faceCacheTapsAtK(cachedPointAt(q, face), frame.cameraCell.xyz, face, 1);
+    vec3 bounce = vec3(0.0);
+    float faceWeight = 0.0;
+    for (int c = 0; c < 4; ++c) {
+        if (faces.weight[c] <= 0.0) continue;
+        bounce += faces.weight[c] * faceCacheDayBounce(faces.texel[c], frame.dayLight, zenith, horizon, frame.sunRadiance.rgb);
+        faceWeight += faces.weight[c];
+    }
+    return light + (zenith * weights.y + horizon * weights.x) / weight + (faceWeight > 0.0 ? bounce / faceWeight : vec3(0.0));
 }

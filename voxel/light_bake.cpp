@@ -357,9 +357,20 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
                                                     shiftOf(seedOf(m)), baseRays, n, &extraHits[extraStart[m]]);
                 if (guide) guide->takeIn(m, drawn[m], {&extraHits[extraStart[m]], n});
                 sky[m].radiance += more.radiance;
+                sky[m].zenith += more.zenith, sky[m].horizon += more.horizon;
                 setDirect(m);
             }
         });
+    }
+    // With the day's sun the texels' weights are the sky's direct light the
+    // frame reads: they take the extra rays too, and so do the words' sources.
+    if (day && extra > 0) {
+        for (size_t m = 0; m < traced; ++m) {
+            FaceTexel& t = texels[texelOf(m)];
+            const double scale = double(t.samples) / raysOf(m);
+            t.skyHorizon = float(sky[m].horizon * scale), t.skyZenith = float(sky[m].zenith * scale);
+        }
+        sources = daySources(faces, k, texels, *lights.day, [&](size_t f) { return glm::vec3(scene.albedo(f)); });
     }
     if (extra > 0 || guidedRays > 0) converge(), solveDay();
     for (uint64_t n : rays) stats.rays += n;

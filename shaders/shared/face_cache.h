@@ -194,8 +194,9 @@ struct FaceCacheTaps {
 // The taps at point `p` (voxel index units, camera-relative whole voxels removed is
 // fine as long as `origin` restores them: p + origin is the absolute voxel
 // position) on the plane of a face looking `dir`, across coplanar exposed faces.
-GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
-    int k = int(faceCacheK());
+// At k texels a side (faceCacheTaps: the cache's k; 1: the four faces whose
+// centres are nearest, each tap's texel then its face).
+GROTTO_FUNCTION FaceCacheTaps faceCacheTapsAtK(vec3 p, ivec3 origin, uint dir, int k) {
     uint axis = faceAxis(dir), ua = faceUAxis(dir), va = faceVAxis(dir);
     int plane = int(floor(p[axis] + 0.5f)) + origin[axis];
     ivec3 cell = origin;
@@ -258,6 +259,9 @@ GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
         t.texel[c] = t.face[c] < 0 ? 0u : uint(t.face[c]) * uint(k * k) + uint(J - cv * k) * uint(k) + uint(I - cu * k);
     }
     return t;
+}
+GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
+    return faceCacheTapsAtK(p, origin, dir, int(faceCacheK()));
 }
 
 // AO, sun visibility and the two sky weights at point `p` (as faceCacheTaps),
