@@ -134,12 +134,21 @@ void Renderer::setLighting(const voxel::Lighting& given) {
     // Uniforms only, unless passes or targets change or the ambient's source (its light everywhere).
     const bool restarts = passes_.changes(plan) || targets_.changes(plan) || lighting.ambientFrom != lighting_.ambientFrom;
     if (restarts) requireRenderFits(ctx_, plan, "lighting");  // a soft sun's history may not fit
-    // A moved sun stales the histories that hold it: a soft sun's shadow, and the
-    // light objects take with full light (the cache's sun on the faces they see).
-    // Objects' AO and sky weights hold no sun: a day's moving sun keeps them.
-    const bool holdsSun = plan.softShadows || (plan.objectLight && ambientSource(lighting, ao_) == voxel::AmbientSource::Full);
-    if (holdsSun && (lighting.sunDirection != lighting_.sunDirection || lighting.sunAngle != lighting_.sunAngle))
+    // A moved sun stales the histories that hold it: a soft sun's shadow at once;
+    // the light objects take with full light (what the faces they see send back,
+    // the sun's bounce) once the sun has moved kObjectLightSunDegrees since the
+    // history began, so a day's sun, a quarter of a degree a frame along houses'
+    // day, does not restart it every frame. Objects' AO and sky weights hold no
+    // sun: a day's moving sun keeps them.
+    const bool sunMoved = lighting.sunDirection != lighting_.sunDirection || lighting.sunAngle != lighting_.sunAngle;
+    const bool objectLightHoldsSun = plan.objectLight && ambientSource(lighting, ao_) == voxel::AmbientSource::Full;
+    const bool objectLightStale =
+        objectLightHoldsSun && (!historySun_ || glm::dot(glm::normalize(lighting.sunDirection), *historySun_) <
+                                                    std::cos(glm::radians(kObjectLightSunDegrees)));
+    if ((plan.softShadows && sunMoved) || (sunMoved && objectLightStale)) {
         surfaceCamera_.reset();
+        historySun_ = glm::normalize(lighting.sunDirection);
+    }
     given_ = given, lighting_ = lighting;
     if (restarts) restart(plan);
     else plan_ = plan;

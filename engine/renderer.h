@@ -199,6 +199,9 @@ private:
     // cache: the camera and frame index of their last frame (none: the next frame
     // starts afresh). Their images are the targets' (FrameTargets::advanceHistories).
     std::optional<Camera> surfaceCamera_;
+    // The sun when a moved sun last restarted the surface history (setLighting).
+    std::optional<glm::vec3> historySun_;
+    static constexpr float kObjectLightSunDegrees = 5.0f;
     uint32_t surfaceFrame_ = 0;
     // Objects: their poses now and at the last frame rendered (with its camera),
     // and their normal tables (bound to the composite in every world).

@@ -141,13 +141,19 @@ std::vector<double> relativeErrors(const Baked& baked, const std::vector<glm::dv
 
 double quantile(const std::vector<double>& sorted, double q) { return sorted[size_t(q * double(sorted.size() - 1))]; }
 
+// The room's bake for the day, made once for the tests that start from it.
+const Baked& roomsDay() {
+    static const Baked day = bakeDay(dayRoom());
+    return day;
+}
+
 TEST(DayLight, AnyHoursLightIsTheLightOfTheSunHeldThere) {
     // At a bounce position the day's light is the held sun's but for the two
     // bakes' own noise (they draw toward other faces, and a held sun's texels
     // see it over their whole square); between two it is interpolated. Without
     // the sun's bounce the faces would be off by 36-47% (median).
     const World room = dayRoom();
-    const Baked day = bakeDay(room);
+    const Baked& day = roomsDay();
     const std::vector<dvec3> directions = daySunDirections(kPath);
     const dvec3 radiance(2.0, 1.8, 1.5);
     struct Hour {
@@ -155,7 +161,7 @@ TEST(DayLight, AnyHoursLightIsTheLightOfTheSunHeldThere) {
         double median, high;  // the most the faces' median and 95th percentile errors may be
     };
     std::vector<Hour> hours = {{dayBouncePosition(8), 0.02, 0.06}, {11, 0.03, 0.08}, {20, 0.03, 0.08}};
-    hours.resize(size_t(grotto::test::underSanitizers(3, 2)));  // each held bake takes seconds there
+    hours.resize(size_t(grotto::test::underSanitizers(3, 1)));  // each held bake takes seconds there
     for (const Hour& h : hours) {
         const Baked held = bakeHeld(room, directions[h.position], radiance);
         const std::vector<double> errors =
@@ -174,7 +180,7 @@ TEST(DayLight, AnEditLightsTheWordsAgainAsAFreshBakeWould) {
     // walls it lit darken at every hour the sun stood over it. Then the edited
     // cache's faces, as LiveFaceCache edits them, against a fresh bake's.
     World room = dayRoom();
-    Baked day = bakeDay(room);
+    Baked day = roomsDay();
     BrickTable table(room);
     FaceBakeSettings s;
     s.day = kPath, s.fullLight = true;
