@@ -85,7 +85,7 @@ void addBakeCommand(CLI::App& app) {
                                                .sunAngleDegrees = double(light.sunAngle), .fullLight = fullLight,
                                                .day = day ? std::optional(voxel::sunPathOf(light)) : std::nullopt};
         const voxel::LightSources lights = voxel::lightSources(world.desc().lighting);
-        if (fullLight) voxel::requireLightBakeFits(world, faces.size(), args->texels, {}, voxel::lightBakeChannels(lights));
+        if (fullLight) voxel::requireLightBakeFits(world, faces.size(), args->texels, {}, lights.day.has_value());
         voxel::FaceCacheFile cache{.header = {.key = voxel::faceCacheKey(world, radius, args->texels),
                                               .rays = settings.rays, .sunRays = voxel::sunRaysPerTexel(settings),
                                               .totalFaces = faces.size(), .firstFace = first, .faceCount = count}};

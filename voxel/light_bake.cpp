@@ -26,9 +26,7 @@
 
 namespace grotto::voxel {
 
-uint32_t lightBakeChannels(const LightSources& lights) { return lights.day ? 1 + kDayLightWords : 1; }
-
-uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& s, uint32_t channels) {
+uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& s, bool dayLight) {
     // The hits (the base rays', and extraShare of them more for the noisy texels),
     // the drawn rays' hits and the faces they were drawn toward, the sky's sums,
     // then glow, direct light, light, the next pass's and what each texel sends
@@ -40,14 +38,14 @@ uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& s, uint32_t ch
     // merged by face (counted as a quarter of them: houses keeps a tenth), and
     // each face's words' sources, what it sends and the next pass's (a face of
     // at least 4 texels).
-    const uint64_t day = channels > 1 ? uint64_t(std::ceil(hits) + s.guidedRays) * 8 / 4 +
-                                            (channels * (sizeof(float) + 2 * sizeof(glm::vec3)) + sizeof(glm::vec3)) / 4
-                                      : 0;
+    const uint64_t day = dayLight ? uint64_t(std::ceil(hits) + s.guidedRays) * 8 / 4 +
+                                        (kDayLightWords * (sizeof(float) + 2 * sizeof(glm::vec3)) + sizeof(glm::vec3)) / 4
+                                  : 0;
     return texels * (perTexel + day);
 }
 
-void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& s, uint32_t channels) {
-    if (const uint64_t need = lightBakeBytes(faces * k * k, s, channels); need > budgetRoom(world))
+void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& s, bool dayLight) {
+    if (const uint64_t need = lightBakeBytes(faces * k * k, s, dayLight); need > budgetRoom(world))
         refuseOverBudget(world, "full light's bake of " + std::to_string(faces) + " faces needs " + mibText(need));
 }
 
@@ -94,7 +92,7 @@ LightBakeStats relightFaces(const BrickTable& table, const World& world, std::sp
     const bool day = lights.day && !dayLight.empty();
     if (day && dayLight.size() != faces.size() * kDayLightWords)
         throw Error::internal("relightFaces", "the day's light and faces differ in count");
-    requireLightBakeFits(world, relit.size(), k, s, day ? lightBakeChannels(lights) : 1);
+    requireLightBakeFits(world, relit.size(), k, s, day);
     const LightScene scene(world, faces, k, texels, relit);
     const glm::dvec3 sunDirection = glm::normalize(lights.sunDirection);
     // With the day's sun the rays take a white sky of radiance 1: the sky's two

@@ -57,20 +57,16 @@ struct LightBakeStats {
     uint64_t extraRays = 0;   // of those, cosine rays more where the light was noisy
 };
 
-// The channels a bake of `lights` keeps the light in: one, all of it; with the
-// day's sun (lights.day), 1 + kDayLightWords: the glowing faces' light, then
-// the face's day words (voxel/face_cache.h), each a white source's light.
-uint32_t lightBakeChannels(const LightSources& lights);
-
-// The bytes the bounce passes keep for `texels` texels of `channels` channels:
-// what a bake checks against its memory budget before it starts.
-uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& settings, uint32_t channels = 1);
+// The bytes the bounce passes keep for `texels` texels, with the day's words
+// (`dayLight`: a bake of the day's sun, voxel/face_cache.h) or without: what a
+// bake checks against its memory budget before it starts.
+uint64_t lightBakeBytes(uint64_t texels, const LightBakeSettings& settings, bool dayLight = false);
 
 // The remembered hits grow with the faces: throws grotto::Error (input) naming the
 // world's file when a bake of `faces` faces at k texels a side would not fit its
 // memory budget. For callers to ask before any of the bake's work.
 void requireLightBakeFits(const World& world, uint64_t faces, uint32_t k, const LightBakeSettings& settings,
-                          uint32_t channels = 1);
+                          bool dayLight = false);
 
 // Sets each texel's `light`, and its sky weights from these rays (bakeFaces with
 // fullLight leaves them to this). `faces`: every exposed face of the world

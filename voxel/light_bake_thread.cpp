@@ -40,7 +40,7 @@ void LightBakeThread::run(World world, FaceBakeSettings settings) {
         const uint32_t k = settings.texelsPerSide;
         const LightBakeSettings light;
         const LightSources lights = lightSources(world.desc().lighting);
-        requireLightBakeFits(world, baked.faces.size(), k, light, lightBakeChannels(lights));
+        requireLightBakeFits(world, baked.faces.size(), k, light, lights.day.has_value());
         baked.texels.resize(baked.faces.size() * k * k);
         if (lights.day) baked.dayLight.resize(baked.faces.size() * kDayLightWords);
         auto share = [&](double from, size_t done, size_t total) {

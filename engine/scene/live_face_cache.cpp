@@ -65,7 +65,7 @@ LiveFaceCache LiveFaceCache::bake(GpuScene& scene, const voxel::BrickTable& tabl
     std::vector<voxel::ExposedFace> faces = voxel::exposedFaces(table, world);
     const voxel::LightSources lights = voxel::lightSources(world.desc().lighting);
     if (settings.fullLight)
-        voxel::requireLightBakeFits(world, faces.size(), settings.texelsPerSide, {}, voxel::lightBakeChannels(lights));
+        voxel::requireLightBakeFits(world, faces.size(), settings.texelsPerSide, {}, lights.day.has_value());
     std::vector<voxel::FaceTexel> texels(faces.size() * settings.texelsPerSide * settings.texelsPerSide);
     voxel::bakeFaces(table, world, faces, settings, texels);
     std::vector<glm::vec3> dayLight(settings.fullLight && lights.day ? faces.size() * voxel::kDayLightWords : 0);
