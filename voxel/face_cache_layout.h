@@ -67,7 +67,7 @@ void appendFaceMaterials(FaceCacheArrays& a, std::span<const ExposedFace> faces,
 void appendDaySun(FaceCacheArrays& a, std::span<const FaceTexel> texels);
 // Appends each texel's sky weights, then each face's day words (`dayLight`,
 // kDayLightWords a face in `faces`' order) to a.texels (a.dayLightFirst,
-// a.dayFacesFirst): 4 bytes a texel and 40 a face.
+// a.dayFacesFirst): 4 bytes a texel and 72 a face.
 void appendDayLight(FaceCacheArrays& a, std::span<const FaceTexel> texels, std::span<const glm::vec3> dayLight);
 
 // What layFaceCache's arrays for `faces` at k texels a side take, without laying
