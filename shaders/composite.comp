@@ -164,12 +164,13 @@ vec3 shadeCached(ivec2 q, uint surface) {
     float sunReach = sunlit(q);
     bool seen;     // the surface has AO and sky weights of its own
     vec3 light;    // AO, horizon and zenith weights
+    FaceCacheTaps t, faces;  // a world surface's texels, and with full light over the day its faces
     if (surfaceObject(surface) != 0u) {
         seen = objectLight;
         light = objectPart.xyz;
     } else {
         vec2 sunRange;
-        FaceCacheTaps t = cachedTapsAt(q, surfaceFace(surface));
+        t = cachedTapsAt(q, surfaceFace(surface), faces);
         if (askFaces) askForTaps(q, t, surfaceFace(surface));
         vec4 c = faceCacheBlend(t, seen, sunRange);  // AO, sun, horizon and zenith weights
         // With the cache's sun, the shadow pass holds the objects' alone.
@@ -191,7 +192,7 @@ vec3 shadeCached(ivec2 q, uint surface) {
         // or give it by glowing, added; an object's face, its own light outright.
         vec3 full = open;
         if (surfaceObject(surface) != 0u) full = objectLight ? objectPart.rgb : open;
-        else if (seen) full = max(cachedFullLightAt(cachedTapsAt(q, surfaceFace(surface)), q, surfaceFace(surface)) + objectPart.rgb, vec3(0.0));
+        else if (seen) full = max(cachedFullLightAt(t, faces) + objectPart.rgb, vec3(0.0));
         float cosSun = max(dot(normal, frame.sunDirection.xyz), 0.0);
         return materialOf(surface).rgb * (frame.sunRadiance.rgb * (cosSun * sunReach) + mix(open, full, frame.aoStrength.x)) +
                emissionOf(surface);

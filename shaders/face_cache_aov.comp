@@ -41,12 +41,13 @@ void main() {
     vec4 objectPart = objectLight && surface != 0u ? imageLoad(objectLightImage, q) : vec4(0.0);
     vec3 light = vec3(0.0);
     if (surface != 0u && surfaceObject(surface) == 0u) {
-        FaceCacheTaps t = cachedTapsAt(q, surfaceFace(surface));
+        FaceCacheTaps faces;
+        FaceCacheTaps t = cachedTapsAt(q, surfaceFace(surface), faces);
         vec2 sunRange;
         bool edge;
         c = faceCacheBlend(t, found, sunRange);
         if (cachedSun) c.y = cachedSunAt(t, c, sunRange, faceAxisNormal(surfaceFace(surface)), edge);
-        if (found && fullLight) light = max(cachedFullLightAt(t, q, surfaceFace(surface)) + objectPart.rgb, vec3(0.0));
+        if (found && fullLight) light = max(cachedFullLightAt(t, faces) + objectPart.rgb, vec3(0.0));
         else if (found && frame.ambient.w >= 0.5)
             light = frame.ambient.rgb * (c.z * frame.skyHorizon.rgb + c.w * frame.skyZenith.rgb);
     } else if (surface != 0u && objectLight && fullLight)

@@ -24,6 +24,12 @@ vec3 cachedPointAt(ivec2 q, uint face) {
 FaceCacheTaps cachedTapsAt(ivec2 q, uint face) {
     return faceCacheTaps(cachedPointAt(q, face), frame.cameraCell.xyz, face);
 }
+// ... and, with full light over the day, in `faces` the four faces whose centres
+// lie nearest, whose words cachedFullLightAt blends (one look-up for both).
+FaceCacheTaps cachedTapsAt(ivec2 q, uint face, out FaceCacheTaps faces) {
+    if (frame.dayLight.x == 0u) return cachedTapsAt(q, face);
+    return faceCacheTapsWithFaces(cachedPointAt(q, face), frame.cameraCell.xyz, face, int(faceCacheK()), faces);
+}
 
 
 // The cache's sun visibility at taps `t` of a surface with normal `normal` (c and
@@ -46,13 +52,13 @@ float cachedSunAt(FaceCacheTaps t, vec4 c, vec2 sunRange, vec3 normal, out bool 
     return c.y;
 }
 
-// With full light, the light the taps `t` of pixel q's world face `face` receive
-// at the frame's hour (irradiance over pi): their light words, and with full
-// light over the day the sky's light from the texels' weights and the bounced
-// light from the faces' words, at the hour's colours. A face keeps one value of
+// With full light, the light a world surface's texel taps `t` receive at the
+// frame's hour (irradiance over pi): their light words, and with full light over
+// the day the sky's light from the texels' weights and the bounced light from the
+// words of the faces `faces` (cachedTapsAt's), at the hour's colours. A face keeps one value of
 // each word, so those are blended between the four faces whose centres lie
 // nearest, as the texels are between theirs: no face shows as a tile.
-vec3 cachedFullLightAt(FaceCacheTaps t, ivec2 q, uint face) {
+vec3 cachedFullLightAt(FaceCacheTaps t, FaceCacheTaps faces) {
     vec3 light = faceCacheFullLight(t);
     if (frame.dayLight.x == 0u) return light;
     vec3 zenith = frame.ambient.rgb * frame.skyZenith.rgb, horizon = frame.ambient.rgb * frame.skyHorizon.rgb;
@@ -64,7 +70,6 @@ vec3 cachedFullLightAt(FaceCacheTaps t, ivec2 q, uint face) {
         weight += t.weight[c];
     }
     if (weight <= 0.0) return light;
-    FaceCacheTaps faces = faceCacheTapsAtK(cachedPointAt(q, face), frame.cameraCell.xyz, face, 1);
     vec3 bounce = vec3(0.0);
     float faceWeight = 0.0;
     for (int c = 0; c < 4; ++c) {

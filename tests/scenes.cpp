@@ -20,6 +20,16 @@ voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bo
     return voxel::makeWorld(grid, d);
 }
 
+voxel::World makeVoxelWorld(const std::vector<glm::ivec3>& solid) {
+    openvdb::initialize();
+    auto grid = openvdb::MaskGrid::create();
+    auto acc = grid->getAccessor();
+    for (const glm::ivec3& v : solid) acc.setValueOn(openvdb::Coord(v.x, v.y, v.z));
+    voxel::WorldDesc d;
+    d.materials = voxel::defaultMaterials();
+    return voxel::makeWorld(grid, d);
+}
+
 voxel::CameraDesc lookAt(glm::dvec3 position, glm::dvec3 target, double fov) {
     voxel::CameraDesc c;
     c.position = position;

@@ -15,6 +15,10 @@ voxel::World makeVoxelWorld(glm::ivec3 lo, glm::ivec3 hi, const std::function<bo
                             double voxelSize = 1.0, glm::dvec3 offset = glm::dvec3(0.0),
                             std::vector<voxel::Material> materials = voxel::defaultMaterials());
 
+// A world of exactly the voxels `solid` (unit voxels, material 1): for voxels
+// scattered far apart, where a box's every cell would be asked.
+voxel::World makeVoxelWorld(const std::vector<glm::ivec3>& solid);
+
 // A 49 x 49 floor one voxel thick whose top is the plane y = -0.5, plus `extra`
 // voxels (index y from -1 to 8): the ground the object tests stand things on.
 voxel::World floorWorld(const std::function<bool(int, int, int)>& extra = {});

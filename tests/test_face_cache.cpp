@@ -167,7 +167,7 @@ TEST(FaceCache, PointSunVisibilityIsTheLitShareOfTheTexelsSquare) {
         const glm::dvec3 n = faceNormal(faces[f].dir), centre = texelPoint(faces[f], 1, 0, 0);
         glm::dvec3 u(0.0), v(0.0);
         u[int(gpu::faceUAxis(faces[f].dir))] = 1.0, v[int(gpu::faceVAxis(faces[f].dir))] = 1.0;
-        constexpr int kGrid = 32;
+        constexpr int kGrid = grotto::test::underSanitizers(32, 16);  // points over the face, a side
         int open = 0;
         for (int a = 0; a < kGrid; ++a)
             for (int b = 0; b < kGrid; ++b) {
@@ -316,6 +316,46 @@ TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
             ++read;
         }
         EXPECT_EQ(read, 4000u);
+        gpu::gpuTwin = nullptr;
+    }
+}
+
+// Full light over the day reads a point's texels and the four faces whose centres
+// lie nearest from one look-up: both equal what each look-up alone finds, at
+// random points across faces (near their sides, where neighbours and other
+// bricks come in) and at every texel count the cache takes a side.
+TEST(FaceCache, TheTexelsAndFacesReadTogetherAreEachReadAlone) {
+    std::mt19937 rng(12);
+    const World w = grotto::test::randomWorld(20, 0.3, rng);
+    const std::vector<ExposedFace> faces = exposedFaces(w);
+    for (uint32_t k : {1u, 2u, 3u, 4u}) {
+        const std::vector<FaceTexel> texels(faces.size() * k * k);
+        const FaceCacheArrays arrays = layFaceCache(faces, texels, k);
+        gpu::gpuTwin = &arrays;
+        std::uniform_real_distribution<double> along(0.0, 1.0);
+        size_t across = 0;  // points whose texels lie on more than one face
+        for (int n = 0; n < 4000; ++n) {
+            const ExposedFace& f = faces[rng() % faces.size()];
+            glm::dvec3 p = texelPoint(f, 1, 0, 0);
+            const int ua = int(gpu::faceUAxis(f.dir)), va = int(gpu::faceVAxis(f.dir));
+            p[ua] = f.cell[ua] + along(rng), p[va] = f.cell[va] + along(rng);
+            const glm::ivec3 origin(-7, 3, 11);
+            const glm::vec3 at(p - glm::dvec3(origin));
+            gpu::FaceCacheTaps together;
+            const gpu::FaceCacheTaps t = gpu::faceCacheTapsWithFaces(at, origin, f.dir, int(k), together);
+            const gpu::FaceCacheTaps alone = gpu::faceCacheTapsAtK(at, origin, f.dir, int(k)), faceAlone = gpu::faceCacheTapsAtK(at, origin, f.dir, 1);
+            for (int c = 0; c < 4; ++c) {
+                ASSERT_EQ(t.face[c], alone.face[c]) << "k " << k << " tap " << c;
+                ASSERT_EQ(t.cell[c], alone.cell[c]);
+                ASSERT_EQ(t.texel[c], alone.texel[c]);
+                ASSERT_EQ(t.weight[c], alone.weight[c]);
+                ASSERT_EQ(together.face[c], faceAlone.face[c]);
+                ASSERT_EQ(together.texel[c], faceAlone.texel[c]);
+                ASSERT_EQ(together.weight[c], faceAlone.weight[c]);
+            }
+            across += t.face[0] != t.face[3] || t.face[1] != t.face[2];
+        }
+        if (k > 1) EXPECT_GT(across, 100u) << "k " << k << ": few points near the faces' sides";
         gpu::gpuTwin = nullptr;
     }
 }

@@ -331,15 +331,7 @@ TEST_F(VoxelRays, RaysThroughEdgesAndCornersOfSolidVoxelsAndThinWallsAreBlocked)
                 rays.push_back(r);
                 within.push_back(0.01f);
             }
-    auto less = [](const glm::ivec3& a, const glm::ivec3& b) {
-        return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
-    };
-    std::sort(solid.begin(), solid.end(), less);
-    glm::ivec3 lo(INT32_MAX), hi(INT32_MIN);
-    for (const glm::ivec3& s : solid) lo = glm::min(lo, s), hi = glm::max(hi, s);
-    const voxel::World world = test::makeVoxelWorld(lo, hi, [&](int x, int y, int z) {
-        return std::binary_search(solid.begin(), solid.end(), glm::ivec3(x, y, z), less);
-    });
+    const voxel::World world = test::makeVoxelWorld(solid);
     const GpuOccupancy occupancy(ctx(), world);
     TraceQuery query(ctx());
     const std::vector<Hit> gpu = query.trace(occupancy, rays), cpu = cpuHits(world, rays);

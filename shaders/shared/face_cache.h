@@ -60,6 +60,7 @@ inline int bitCount(uint v) { return std::popcount(v); }
 inline float uintBitsToFloat(uint v) { return std::bit_cast<float>(v); }
 using glm::mix;
 inline int findLSB(int v) { return std::countr_zero(uint(v)); }
+using std::clamp;
 using std::floor;
 using std::max;
 using std::min;
@@ -262,6 +263,32 @@ GROTTO_FUNCTION FaceCacheTaps faceCacheTapsAtK(vec3 p, ivec3 origin, uint dir, i
 }
 GROTTO_FUNCTION FaceCacheTaps faceCacheTaps(vec3 p, ivec3 origin, uint dir) {
     return faceCacheTapsAtK(p, origin, dir, int(faceCacheK()));
+}
+
+// The taps at `p` on the texels (k a side), and in `faces` those on the four faces
+// whose centres are nearest (faceCacheTapsAtK at 1), from one look-up: the texels'
+// cells always lie among the faces' (a texel centre is less than half a voxel from
+// the point, so its cell is the point's or its neighbour towards the nearest
+// face centres), so each texel takes its face from there.
+GROTTO_FUNCTION FaceCacheTaps faceCacheTapsWithFaces(vec3 p, ivec3 origin, uint dir, int k, GROTTO_OUT(FaceCacheTaps) faces) {
+    faces = faceCacheTapsAtK(p, origin, dir, 1);
+    uint ua = faceUAxis(dir), va = faceVAxis(dir);
+    float su = p[ua] * float(k) - 0.5f, sv = p[va] * float(k) - 0.5f;
+    float fu = floor(su), fv = floor(sv);
+    float wu = su - fu, wv = sv - fv;
+    int I0 = int(fu) + origin[ua] * k, J0 = int(fv) + origin[va] * k;
+    FaceCacheTaps t;
+    for (int c = 0; c < 4; ++c) {
+        int I = I0 + (c & 1), J = J0 + (c >> 1);
+        int cu = faceCacheFloorDiv(I, k), cv = faceCacheFloorDiv(J, k);
+        int at = clamp(cu - faces.cell[0][ua], 0, 1) + 2 * clamp(cv - faces.cell[0][va], 0, 1);
+        t.cell[c] = faces.cell[at];
+        t.face[c] = faces.face[at];
+        float w = ((c & 1) != 0 ? wu : 1.0f - wu) * ((c >> 1) != 0 ? wv : 1.0f - wv);
+        t.weight[c] = t.face[c] < 0 ? 0.0f : w;
+        t.texel[c] = t.face[c] < 0 ? 0u : uint(t.face[c]) * uint(k * k) + uint(J - cv * k) * uint(k) + uint(I - cu * k);
+    }
+    return t;
 }
 
 // AO, sun visibility and the two sky weights at point `p` (as faceCacheTaps),
