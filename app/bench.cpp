@@ -16,6 +16,7 @@
 #include "common/atomic_file.h"
 #include "common/elapsed.h"
 #include "grotto/error.h"
+#include "engine/lab/device_floors.h"
 #include "engine/session.h"
 #include "voxel/world.h"
 
@@ -30,11 +31,37 @@
 
 namespace grotto::app {
 
+namespace {
+
+// Each pass's median time against its floor: its declared images (read and
+// written once, whole) at the copy kernel's bandwidth. Passes that read buffers
+// too (the scene, the face cache) move more than that, so their multiple is an
+// upper bound on how far they are from what the hardware allows.
+void reportPassFloors(const DeviceFloors& floors, const std::map<std::string, std::vector<double>>& passMs,
+                      const std::map<std::string, uint64_t>& passBytes, nlohmann::json& j) {
+    j["device_floors"] = {{"copy_gb_per_s", floors.copyBytesPerMs * 1e-6}, {"fma_g_per_s", floors.fmaPerMs * 1e-6}};
+    std::printf("  device floors: a plain copy moves %.1f GB/s (read + written), multiply-adds %.1f G/s\n",
+                floors.copyBytesPerMs * 1e-6, floors.fmaPerMs * 1e-6);
+    for (const auto& [name, times] : passMs) {
+        const auto bytes = passBytes.find(name);
+        if (bytes == passBytes.end() || bytes->second == 0) continue;
+        const double ms = median(times), floorMs = double(bytes->second) / floors.copyBytesPerMs;
+        j["pass_floor"][name] = {{"ms", ms}, {"image_bytes", bytes->second}, {"floor_ms", floorMs}, {"multiple", ms / floorMs}};
+        // Under 1x: the pass reads only part of what it declares (the cache's trace: the texels asked for),
+        // or the timestamps missed its work (lavapipe's, after a barrier: see the top of this file).
+        std::printf("  %-10s %8.3f ms, its images %.1f MB: floor %.3f ms, %.1fx%s\n", name.c_str(), ms,
+                    double(bytes->second) * 1e-6, floorMs, ms / floorMs,
+                    ms < floorMs ? " (under it: part of them read, or its time missed)" : "");
+    }
+}
+
+}  // namespace
+
 void addBenchCommand(CLI::App& app) {
     struct Args {
         std::string world, camera, size = "1280x720", json;
         int frames = 30, warmup = 5;
-        bool edits = false;
+        bool edits = false, floors = false;
         AoFlags ao;
     };
     auto args = std::make_shared<Args>();
@@ -47,6 +74,9 @@ void addBenchCommand(CLI::App& app) {
     cmd->add_option("--json", args->json, "Also write the figures to this JSON file");
     cmd->add_flag("--edits", args->edits,
                   "Also time live edits on the CPU: a voxel, a sphere carve, random voxels against re-meshing the world");
+    cmd->add_flag("--floors", args->floors,
+                  "Also measure the device's copy bandwidth and multiply-add rate, and each pass's time against "
+                  "the least time its declared images can take at that bandwidth");
     addAoFlags(cmd, args->ao);
     cmd->callback([args] {
         const Size size = parseSize(args->size);
@@ -68,6 +98,7 @@ void addBenchCommand(CLI::App& app) {
         const std::optional<voxel::MeshChunkQuads> busiest = busiestChunk(mesh);
         mesh = {};  // the GPU holds the quads now
         std::map<std::string, std::vector<double>> passMs;
+        std::map<std::string, uint64_t> passBytes;  // the same every frame of one plan
         std::vector<double> wallMs, frameGpuMs, chainWallMs, temporalWallMs;
         uint64_t drawn = 0;
         size_t targetBytes = 0;
@@ -88,6 +119,7 @@ void addBenchCommand(CLI::App& app) {
                 if (i < args->warmup) continue;
                 double gpu = 0;
                 for (auto& [name, ms] : f.passMs) passMs[name].push_back(ms), gpu += ms;
+                for (auto& [name, bytes] : f.passBytes) passBytes[name] = bytes;
                 frameGpuMs.push_back(gpu);
                 wallMs.push_back(f.wallMs);
                 drawn = f.quadsDrawn;
@@ -110,6 +142,8 @@ void addBenchCommand(CLI::App& app) {
         std::optional<SceneUpdateCost> update;
         if (busiest) update = measureSceneUpdate(scene, *busiest, 50);
         session.reset();
+        std::optional<DeviceFloors> floors;
+        if (args->floors) floors = measureDeviceFloors(ctx);
         requireNoValidationMessages(ctx);
 
         nlohmann::json j = {
@@ -132,6 +166,7 @@ void addBenchCommand(CLI::App& app) {
             std::printf("  %-10s %8.3f ms GPU\n", name.c_str(), median(v));
         }
         std::printf("  frame      %8.3f ms GPU, %.3f ms wall\n", median(frameGpuMs), median(wallMs));
+        if (floors) reportPassFloors(*floors, passMs, passBytes, j);
         // Differences of two renders: 0 beside their noise when below it, never negative.
         if (!chainWallMs.empty()) {
             const CostDifference chain = costDifference(chainWallMs);

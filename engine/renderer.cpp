@@ -9,10 +9,12 @@
 #include "engine/renderer.h"
 
 #include "grotto/error.h"
+#include "engine/frame/pass_traffic.h"
 #include "engine/frame/render_memory.h"
 #include "shaders/shared/face_trace.h"
 #include "voxel/daylight.h"
 
+#include <algorithm>
 #include <chrono>
 #include <utility>
 
@@ -178,9 +180,19 @@ TargetRef Renderer::aoOutput() const {
     return plan_.temporal ? TargetId::AoHistory : denoisedTarget(ao_.chain.denoisePasses);
 }
 
+void Renderer::countImageBytes(const PassDecl& decl) {
+    std::vector<std::pair<std::string, uint64_t>>& bytes = slot().passBytes;
+    auto at = std::find_if(bytes.begin(), bytes.end(), [&](const auto& p) { return p.first == decl.timestamp; });
+    if (at == bytes.end()) at = bytes.insert(bytes.end(), {decl.timestamp, 0});
+    at->second += declaredImageBytes(decl, targets_);
+}
+
 void Renderer::pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record) {
     targets_.recordBarriers(cmd, decl.uses);
-    if (decl.timestamp) slot().timestamps.begin(cmd, decl.timestamp);
+    if (decl.timestamp) {
+        slot().timestamps.begin(cmd, decl.timestamp);
+        countImageBytes(decl);
+    }
     record();
     if (decl.timestamp) slot().timestamps.end(cmd);
 }
@@ -193,6 +205,7 @@ FrameStats Renderer::render(const Camera& camera, uint32_t frameIndex, FrameCopy
     submitAndWait(slot().cmd);
     stats.wallMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     stats.passMs = slot().timestamps.read();
+    stats.passBytes = slot().passBytes;
     slot().timesUnread = false;
     stats.timelineValue = submitted_;
     lastCamera_ = camera;
@@ -221,8 +234,10 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
     FrameSlot& s = slot();
     waitFor(s.done);  // the frame two before: its slot's buffers are the CPU's again
     std::vector<std::pair<std::string, double>> unread;
-    if (s.timesUnread) unread = s.timestamps.read();
+    std::vector<std::pair<std::string, uint64_t>> unreadBytes;
+    if (s.timesUnread) unread = s.timestamps.read(), unreadBytes = std::move(s.passBytes);
     s.timesUnread = false;
+    s.passBytes.clear();
     writeConstants(camera, frameIndex);
     VkCommandBuffer cmd = beginCommands();
     s.timestamps.reset(cmd);
@@ -240,6 +255,7 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
     scene_.recordUploads(cmd, s.staging);  // edits since the last frame, with their barrier to vertex input
     FrameStats stats = inFlight ? recordGBufferInFlight(cmd, camera) : recordGBuffer(cmd, camera);
     stats.passMs = std::move(unread);
+    stats.passBytes = std::move(unreadBytes);
     if (plan_.cacheTracing)
         pass(cmd, FaceCacheTracePass::declare(), [&] {
             passes_.get<FaceCacheTracePass>().record(cmd, targets_.gbuffer(), {width(), height()}, s.frame, s.traceConstants,
@@ -297,6 +313,7 @@ FrameStats Renderer::recordGBuffer(VkCommandBuffer cmd, const Camera& camera) {
     FrameSlot& s = slot();
     targets_.recordBarriers(cmd, gbuffer.uses);
     s.timestamps.begin(cmd, gbuffer.timestamp);
+    countImageBytes(gbuffer);
     const std::vector<QuadDraw>& early = culling_.begin(scene_, camera, cullingOptions_);
     stats.quadsDrawn = gbufferPass.record(cmd, targets_.gbuffer(), scene_, s.frame, camera, early, true, drawn,
                                             !cullingOptions_.occlusion);
@@ -326,6 +343,7 @@ FrameStats Renderer::recordGBufferInFlight(VkCommandBuffer cmd, const Camera& ca
     FrameSlot& s = slot();
     targets_.recordBarriers(cmd, gbuffer.uses);
     s.timestamps.begin(cmd, gbuffer.timestamp);
+    countImageBytes(gbuffer);
     std::vector<QuadDraw> draws = culling_.begin(scene_, camera, cullingOptions_);
     if (cullingOptions_.occlusion) {
         const std::vector<QuadDraw>& late = culling_.late(reusableTiles(camera));
@@ -378,8 +396,12 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     // With the temporal pass, the final blur is part of it.
     const uint32_t passes = ao_.chain.denoisePasses, blurs = plan_.temporal && passes > 0 ? passes - 1 : passes;
     slot().timestamps.begin(cmd, DenoisePass::kTimestamp);
-    for (uint32_t i = 0; i < blurs; ++i)
-        pass(cmd, DenoisePass::declare(i), [&] { passes_.get<DenoisePass>().record(cmd, ao, passes, i, slot().aoConstants); });
+    for (uint32_t i = 0; i < blurs; ++i) {
+        PassDecl blur = DenoisePass::declare(i);
+        pass(cmd, blur, [&] { passes_.get<DenoisePass>().record(cmd, ao, passes, i, slot().aoConstants); });
+        blur.timestamp = DenoisePass::kTimestamp;  // their images, counted under the time they share
+        countImageBytes(blur);
+    }
     slot().timestamps.end(cmd);
     if (!plan_.temporal) return;
     // Reads the last output, writes this frame's.

@@ -32,6 +32,9 @@ struct FrameStats {
     // GPU time per pass: render()'s own frame; submit()'s, the frame submitted two
     // calls before (when its slot is reused), empty for the first two.
     std::vector<std::pair<std::string, double>> passMs;
+    // The same frame's passes' declared images, in bytes (pass_traffic.h): the
+    // least memory each can move, summed under its passMs name.
+    std::vector<std::pair<std::string, uint64_t>> passBytes;
     double wallMs = 0.0;  // record + submit (+ wait, render())
     uint64_t quadsDrawn = 0;
     CullingStats culling;  // what level of detail and culling left to draw
@@ -157,6 +160,8 @@ private:
     void release();  // frees whatever exists; null handles are skipped
     // Records a pass: the barriers its declaration calls for, then `record` within its timestamp.
     void pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record);
+    // Adds a timed pass's declared images to this frame's FrameStats::passBytes.
+    void countImageBytes(const PassDecl& decl);
     void writeConstants(const Camera& camera, uint32_t frameIndex);  // uniforms and constants of the frame
     VkCommandBuffer beginCommands();  // the slot's, reset and begun
     // Takes the next slot once its last frame has finished and records the frame

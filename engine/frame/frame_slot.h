@@ -29,6 +29,8 @@ struct FrameSlot {
     vk::Buffer staging;  // the scene's staged uploads this frame copies (GpuScene::recordUploads)
     vk::Timestamps timestamps;
     bool timesUnread = false;  // its last frame's pass times have not been handed out yet
+    // The images each timed pass declares, in bytes (pass_traffic.h), by its timestamp's name.
+    std::vector<std::pair<std::string, uint64_t>> passBytes;
     // The depth tiles the frame wrote for occlusion culling, and what they show:
     // the camera, the scene (GpuScene::updates) and the objects' poses as they were.
     HizReadback hiz;

@@ -32,6 +32,8 @@ Image createImage(Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsage
 // supports, else texels x texel size (short of the driver's padding).
 VkDeviceSize imageBytes(const Context& ctx, VkExtent2D extent, VkFormat format, VkImageUsageFlags usage);
 void destroy(Context& ctx, Image& i);
+// The bytes of one texel of `format` (the formats the frame's targets use).
+VkDeviceSize texelBytes(VkFormat format);
 
 // Device-local buffer filled from host data through a staging buffer.
 Buffer uploadBuffer(Context& ctx, const void* data, VkDeviceSize size, VkBufferUsageFlags usage);
