@@ -10,6 +10,7 @@
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 
+#include <cmath>
 #include <set>
 
 namespace grotto::device_floors_test {
@@ -23,8 +24,10 @@ TEST_F(DeviceFloorsTest, TheCopyKernelCopiesEveryWordAndBothRatesAreMeasured) {
     const DeviceFloors floors = measureDeviceFloors(ctx(), 4);
     std::printf("[ measured ] copy %.2f GB/s, multiply-adds %.2f G/s\n", floors.copyBytesPerMs * 1e-6,
                 floors.fmaPerMs * 1e-6);
-    EXPECT_GT(floors.copyBytesPerMs, 1e5);  // over 0.1 GB/s: any device, lavapipe on one core too
-    EXPECT_GT(floors.fmaPerMs, 1e5);
+    // Rates, not targets (bench reports them; a test asserts no speed): measured,
+    // so positive and finite.
+    EXPECT_TRUE(std::isfinite(floors.copyBytesPerMs) && floors.copyBytesPerMs > 0.0);
+    EXPECT_TRUE(std::isfinite(floors.fmaPerMs) && floors.fmaPerMs > 0.0);
 }
 
 TEST_F(DeviceFloorsTest, APassCountsEachImageItDeclaresOnceAndADepthAttachmentTwice) {
