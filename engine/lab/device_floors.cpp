@@ -15,7 +15,7 @@ namespace {
 constexpr uint32_t kWidth = 1024;      // threads a row of the 2D grid
 constexpr uint32_t kRepeats = 8;       // dispatches between the two timestamps
 constexpr int kRuns = 3;               // the best of these
-constexpr uint32_t kFmaThreads = 1u << 18, kFmaRounds = 256;
+constexpr uint32_t kFmaRounds = 256;
 
 // The best of kRuns: each records `dispatch` kRepeats times between two
 // timestamps, a barrier between dispatches.
@@ -49,6 +49,7 @@ DeviceFloors measureDeviceFloors(vk::Context& ctx, uint32_t copyMiB) {
     DeviceFloors floors;
     const uint64_t copyWords = (uint64_t(std::max(copyMiB, 1u)) << 20) / 16;  // 16-byte words, whole rows of kWidth
     const VkDeviceSize bytes = copyWords * 16;
+    const uint32_t fmaThreads = uint32_t(copyWords / 16);  // 2^18 at the default: a GPU's every lane, many times
     // Device-local, as a frame's targets are: a discrete GPU's host-visible
     // memory lies across its bus.
     vk::Buffer source = vk::uploadBuffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, [&](void* to) {
@@ -59,7 +60,7 @@ DeviceFloors measureDeviceFloors(vk::Context& ctx, uint32_t copyMiB) {
     try {
         target = vk::createBuffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false);
         check = vk::createBuffer(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
-        sums = vk::createBuffer(ctx, VkDeviceSize(kFmaThreads) * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+        sums = vk::createBuffer(ctx, VkDeviceSize(fmaThreads) * 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
         {
             ComputePass copy(ctx, "floor_copy.comp", {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                              2 * sizeof(uint32_t));
@@ -84,9 +85,9 @@ DeviceFloors measureDeviceFloors(vk::Context& ctx, uint32_t copyMiB) {
             ComputePass fma(ctx, "floor_fma.comp", {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, 2 * sizeof(uint32_t));
             const uint32_t push[2] = {kFmaRounds, kWidth};
             const double ms = bestMs(ctx, [&](VkCommandBuffer cmd) {
-                fma.dispatch(cmd, {vk::storageBuffer(sums.buffer)}, VkExtent2D{kWidth, kFmaThreads / kWidth}, 8, push);
+                fma.dispatch(cmd, {vk::storageBuffer(sums.buffer)}, VkExtent2D{kWidth, fmaThreads / kWidth}, 8, push);
             });
-            floors.fmaPerMs = double(uint64_t(kFmaThreads) * kFmaRounds * 32 * kRepeats) / ms;  // 8 vec4s a round
+            floors.fmaPerMs = double(uint64_t(fmaThreads) * kFmaRounds * 32 * kRepeats) / ms;  // 8 vec4s a round
         }
     } catch (...) {
         vk::destroy(ctx, source), vk::destroy(ctx, target), vk::destroy(ctx, check), vk::destroy(ctx, sums);
