@@ -181,18 +181,18 @@ TargetRef Renderer::aoOutput() const {
 }
 
 void Renderer::countImageBytes(const PassDecl& decl) {
+    const std::string* timed = slot().timestamps.open();
+    if (!timed) return;
     std::vector<std::pair<std::string, uint64_t>>& bytes = slot().passBytes;
-    auto at = std::find_if(bytes.begin(), bytes.end(), [&](const auto& p) { return p.first == decl.timestamp; });
-    if (at == bytes.end()) at = bytes.insert(bytes.end(), {decl.timestamp, 0});
+    auto at = std::find_if(bytes.begin(), bytes.end(), [&](const auto& p) { return p.first == *timed; });
+    if (at == bytes.end()) at = bytes.insert(bytes.end(), {*timed, 0});
     at->second += declaredImageBytes(decl, targets_);
 }
 
 void Renderer::pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record) {
     targets_.recordBarriers(cmd, decl.uses);
-    if (decl.timestamp) {
-        slot().timestamps.begin(cmd, decl.timestamp);
-        countImageBytes(decl);
-    }
+    if (decl.timestamp) slot().timestamps.begin(cmd, decl.timestamp);
+    countImageBytes(decl);
     record();
     if (decl.timestamp) slot().timestamps.end(cmd);
 }
@@ -396,12 +396,8 @@ void Renderer::recordAo(VkCommandBuffer cmd) {
     // With the temporal pass, the final blur is part of it.
     const uint32_t passes = ao_.chain.denoisePasses, blurs = plan_.temporal && passes > 0 ? passes - 1 : passes;
     slot().timestamps.begin(cmd, DenoisePass::kTimestamp);
-    for (uint32_t i = 0; i < blurs; ++i) {
-        PassDecl blur = DenoisePass::declare(i);
-        pass(cmd, blur, [&] { passes_.get<DenoisePass>().record(cmd, ao, passes, i, slot().aoConstants); });
-        blur.timestamp = DenoisePass::kTimestamp;  // their images, counted under the time they share
-        countImageBytes(blur);
-    }
+    for (uint32_t i = 0; i < blurs; ++i)
+        pass(cmd, DenoisePass::declare(i), [&] { passes_.get<DenoisePass>().record(cmd, ao, passes, i, slot().aoConstants); });
     slot().timestamps.end(cmd);
     if (!plan_.temporal) return;
     // Reads the last output, writes this frame's.

@@ -160,7 +160,9 @@ private:
     void release();  // frees whatever exists; null handles are skipped
     // Records a pass: the barriers its declaration calls for, then `record` within its timestamp.
     void pass(VkCommandBuffer cmd, const PassDecl& decl, const std::function<void()>& record);
-    // Adds a timed pass's declared images to this frame's FrameStats::passBytes.
+    // Adds a pass's declared images to this frame's FrameStats::passBytes, under
+    // the timestamp open around it (its own, or a group's: the denoiser's blurs,
+    // the depth tiles within the G-buffer's); untimed work counts nowhere.
     void countImageBytes(const PassDecl& decl);
     void writeConstants(const Camera& camera, uint32_t frameIndex);  // uniforms and constants of the frame
     VkCommandBuffer beginCommands();  // the slot's, reset and begun

@@ -19,6 +19,7 @@ Timestamps::~Timestamps() { vkDestroyQueryPool(ctx_.device, pool_, nullptr); }
 void Timestamps::reset(VkCommandBuffer cmd) {
     vkCmdResetQueryPool(cmd, pool_, 0, 2 * max_);
     names_.clear();
+    open_ = false;
 }
 
 void Timestamps::begin(VkCommandBuffer cmd, const std::string& pass) {
@@ -26,10 +27,12 @@ void Timestamps::begin(VkCommandBuffer cmd, const std::string& pass) {
     // Stamped once all earlier work is done, so passes never overlap in the figures.
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, 2 * uint32_t(names_.size()));
     names_.push_back(pass);
+    open_ = true;
 }
 
 void Timestamps::end(VkCommandBuffer cmd) {
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, pool_, 2 * uint32_t(names_.size()) - 1);
+    open_ = false;
 }
 
 std::vector<std::pair<std::string, double>> Timestamps::read() {
