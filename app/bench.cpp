@@ -129,7 +129,9 @@ void addBenchCommand(CLI::App& app) {
             if (args->edits && faceCached(ao)) {
                 lampPlaced = timeLampPlaced(*session, camera, args->warmup + args->frames);
                 if (lampPlaced) session->undo();
-                cacheCarve = timeCacheCarve(*session, camera, args->warmup + args->frames + 1000);
+                // Each frame's AO against 64 rays a pixel: within 2 dB of the converged frame's error, and when.
+                cacheCarve = timeCacheCarve(ctx, *session, camera, args->warmup + args->frames + 1000, 64,
+                                            double(ao.estimator.radius));
             }
         }
         const size_t hostBytes = stats.hostBytes + scene.hostBytes();
@@ -198,6 +200,18 @@ void addBenchCommand(CLI::App& app) {
                         "in view is left to trace (the edit's CPU work %.0f ms of it)\n",
                         cacheCarve->ms, cacheCarve->frames, cacheCarve->editMs);
             j["cache_carve"] = {{"ms", cacheCarve->ms}, {"frames", cacheCarve->frames}, {"edit_ms", cacheCarve->editMs}};
+            if (!cacheCarve->converging.empty()) {
+                const CacheCarveFigures::Frame& within = cacheCarve->converging[cacheCarve->within2dB];
+                std::printf("    AO against %u rays a pixel of the carved world, each frame from the edit (read-backs "
+                            "left out):", cacheCarve->referenceSpp);
+                for (const CacheCarveFigures::Frame& c : cacheCarve->converging) std::printf(" %.0f ms %.2f dB,", c.ms, c.psnr);
+                std::printf("\n    within 2 dB of the converged frame after %.0f ms (frame %zu)\n", within.ms,
+                            cacheCarve->within2dB + 1);
+                nlohmann::json frames = nlohmann::json::array();
+                for (const CacheCarveFigures::Frame& c : cacheCarve->converging) frames.push_back({{"ms", c.ms}, {"psnr", c.psnr}});
+                j["cache_carve"]["frames_psnr"] = frames;
+                j["cache_carve"]["within_2db_ms"] = within.ms;
+            }
         }
         if (lampPlaced) {
             std::printf("  face cache after a lamp placed at the view's centre: %.0f ms and %u frames until no face "

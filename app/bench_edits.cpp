@@ -6,6 +6,8 @@
 
 #include "app/options.h"
 #include "common/elapsed.h"
+#include "engine/lab/ao_metrics.h"
+#include "engine/lab/reference_view.h"
 #include "voxel/brick_table.h"
 #include "voxel/daylight.h"
 #include "voxel/face_cache_layout.h"
@@ -138,22 +140,38 @@ EditBenchFigures benchEdits(const voxel::World& source, const EditBenchOptions& 
     return f;
 }
 
-std::optional<CacheCarveFigures> timeCacheCarve(RenderSession& session, const Camera& camera, int frameIndex) {
+std::optional<CacheCarveFigures> timeCacheCarve(vk::Context& ctx, RenderSession& session, const Camera& camera,
+                                                int frameIndex, uint32_t referenceSpp, double radius) {
     const voxel::World& world = session.world();
     const glm::dvec3 forward = -camera.basis[2];
     const std::optional<voxel::RayHit> hit = world.raycast(camera.position, forward, 1e9);
     if (!hit) return std::nullopt;
     const glm::dvec3 centre = camera.position + forward * hit->distance;
     CacheCarveFigures f;
+    f.referenceSpp = referenceSpp;
     const auto t = Clock::now();
     session.apply(voxel::Edit::carveSphere(centre, 8.0 * world.voxelSize()));
     f.editMs = msSince(t);
     Renderer& renderer = session.renderer();
+    double ms = f.editMs;  // the frames' own time: the read-backs are left out
+    std::vector<std::vector<float>> shown;
+    bool converged = false;
     do {
+        const auto frame = Clock::now();
         renderer.render(camera, uint32_t(frameIndex++));
         ++f.frames;
-    } while (!session.faceCacheConverged() && f.frames < 1000);
-    f.ms = msSince(t);
+        converged = session.faceCacheConverged();  // waits for the frame
+        ms += msSince(frame);
+        if (referenceSpp == 0) continue;
+        f.converging.push_back({.ms = ms});
+        shown.push_back(renderer.readback(camera, true).ao);
+    } while (!converged && f.frames < 1000);
+    f.ms = referenceSpp == 0 ? msSince(t) : ms;
+    if (referenceSpp == 0) return f;
+    const ReferenceView ref = referenceView(world, camera, radius, referenceSpp, &ctx, session.posedObjects());
+    for (size_t i = 0; i < shown.size(); ++i) f.converging[i].psnr = aoError(shown[i], ref.ao, ref.surface).psnr;
+    const double last = f.converging.back().psnr;
+    while (f.converging[f.within2dB].psnr < last - 2.0) ++f.within2dB;
     return f;
 }
 

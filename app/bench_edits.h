@@ -55,9 +55,21 @@ struct CacheCarveFigures {
     double ms = 0;      // from the edit until that frame has finished
     double editMs = 0;  // of it, the edit itself (world, mesh, cache re-listed)
     uint32_t frames = 0;
+    // With a reference (timeCacheCarve's referenceSpp): each frame's AO against rays
+    // of the carved world, with the time from the edit until that frame finished
+    // (the read-backs left out), and the first frame within 2 dB of the last.
+    struct Frame {
+        double ms = 0, psnr = 0;
+    };
+    std::vector<Frame> converging;
+    uint32_t referenceSpp = 0;
+    size_t within2dB = 0;  // index into `converging`
 };
 // Nothing when the centre ray meets no voxel. `frameIndex`: the next frame's.
-std::optional<CacheCarveFigures> timeCacheCarve(RenderSession& session, const Camera& camera, int frameIndex);
+// `referenceSpp` > 0: each frame's AO is read back and measured against that
+// many rays a pixel of radius `radius` (world units), traced once the frames end.
+std::optional<CacheCarveFigures> timeCacheCarve(vk::Context& ctx, RenderSession& session, const Camera& camera,
+                                                int frameIndex, uint32_t referenceSpp = 0, double radius = 0);
 // A voxel of the world's brightest glowing material placed in front of what the
 // centre ray meets: with full light, the edit lights again every face it moved.
 // Nothing when the world has no glowing material or the ray meets no voxel.
