@@ -46,7 +46,8 @@ SceneFacts Renderer::sceneFacts() const {
     SceneFacts facts{.occupancy = scene_.occupancy() != nullptr, .objects = objects_ != nullptr,
                      .movingObjects = objects_ && objects_->moving};
     if (const GpuFaceCache* cache = scene_.faceCache())
-        facts.faceCache = {cache->sun().direction, cache->sun().angleDegrees, cache->sun().day};
+        facts.faceCache = {cache->sun().direction, cache->sun().angleDegrees, cache->sun().day, cache->sky().fullLight,
+                           cache->dayLightFirst() != 0};
     return facts;
 }
 

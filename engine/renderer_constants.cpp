@@ -22,12 +22,12 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
         // What the cache's light words hold decides how the composite reads them:
         // a world switched to full light over a sky-light cache keeps the sky's
         // light, and a full-light cache has no sky weights to give.
-        if (plan_.faceCache && uniforms.ambient.w >= 0.5f) uniforms.ambient.w = cache.sky().fullLight ? 2.0f : 1.0f;
+        if (plan_.faceCache && uniforms.ambient.w >= 0.5f) uniforms.ambient.w = plan_.cacheFullLight ? 2.0f : 1.0f;
         const CameraVoxel v = cameraVoxel(camera, scene_.voxelSize, scene_.worldOrigin);
         uniforms.cameraCell = glm::ivec4(v.cell, int32_t(frameIndex & 0x7fffffffu));
         uniforms.cameraFraction = glm::vec4(v.fraction, float(1.0 / scene_.voxelSize));
         // The day's sun from the cache: the positions either side of the hour.
-        if (plan_.cachedSun && cache.sun().day) {
+        if (plan_.daySun) {
             const voxel::SunPath& path = *cache.sun().day;
             const int count = int(voxel::kDaySunPositions);
             const voxel::SunPositionSpan span = voxel::sunPositionSpan(path, double(given_.timeOfDay), count);
@@ -39,7 +39,7 @@ void Renderer::writeConstants(const Camera& camera, uint32_t frameIndex) {
             uniforms.daySunAfter = glm::vec4(glm::vec3(voxel::sunDirectionAt(path, voxel::sunPositionHour(path, int(after), count))), 0.0f);
         }
         // Full light over the day: the bounce positions either side of the hour.
-        if (uniforms.ambient.w >= 1.5f && cache.dayLightFirst() && cache.sun().day) {
+        if (plan_.cacheDayLight) {
             const voxel::SunPositionSpan at =
                 voxel::sunPositionSpan(*cache.sun().day, double(given_.timeOfDay), int(voxel::kDaySunPositions));
             const voxel::DayBounceSpan b = voxel::dayBounceSpan(at.before + at.toward);

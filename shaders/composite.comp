@@ -24,9 +24,17 @@ layout(constant_id = 5) const bool cachedSun = false;  // cache: world surfaces 
 layout(constant_id = 6) const bool objectLight = false;  // cache: objects' AO and sky light (object_light.comp)
 layout(constant_id = 7) const bool shadowEdges = false;  // the cache's sun: list its edges' pixels (shadow_edge.comp)
 // Cache, while faces have not converged: ask for the faces of the texels read, for
-// the next frame's tracer. A separate pipeline: a CPU device runs a branch's code
+// the next frame's tracer, and read none at level 0. A separate pipeline: a CPU device runs a branch's code
 // whether or not any pixel takes it, so a bake's frames leave it out.
 layout(constant_id = 8) const bool askFaces = false;
+// Cache: how its light words are read (the frame plan's cacheFullLight,
+// cacheDayLight, daySun). Constants, not the frame's uniforms: a CPU device runs
+// a branch on a uniform's value whether or not any pixel takes it.
+layout(constant_id = 9) const bool fullLight = false;
+layout(constant_id = 10) const bool dayLight = false;
+layout(constant_id = 11) const bool daySun = false;
+#define GROTTO_CACHE_READS_DAY_LIGHT dayLight
+#define GROTTO_CACHE_READS_DAY_SUN daySun
 // The group's side, set by CompositePass: lavapipe runs 16x16 groups of single
 // pixels faster, 8x8 groups of 2x2 blocks (docs/benchmarks.md).
 layout(local_size_x_id = 1, local_size_y_id = 2) in;
@@ -171,7 +179,10 @@ vec3 shadeCached(ivec2 q, uint surface) {
     } else {
         vec2 sunRange;
         t = cachedTapsAt(q, surfaceFace(surface), faces);
-        if (askFaces) askForTaps(q, t, surfaceFace(surface));
+        if (askFaces) {
+            askForTaps(q, t, surfaceFace(surface));
+            dropUntraced(t);
+        }
         vec4 c = faceCacheBlend(t, seen, sunRange);  // AO, sun, horizon and zenith weights
         // With the cache's sun, the shadow pass holds the objects' alone.
         float cosSun = dot(normal, frame.sunDirection.xyz);
@@ -185,7 +196,7 @@ vec3 shadeCached(ivec2 q, uint surface) {
     }
     vec3 ambient = open;
     float aoShare = 1.0;
-    if (frame.ambient.w >= 1.5) {
+    if (fullLight) {
         // Full light: the light every bounce brought, occlusion and bounces
         // already in it, so neither AO nor the multi-bounce fit applies.
         // With objects (object_light.comp): the light they take from a world face

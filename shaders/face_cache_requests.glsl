@@ -1,7 +1,8 @@
 // Asking the face cache's tracer for a face (shared/face_trace.h): the includer
 // defines GROTTO_FACE_REQUEST_BINDING, where the levels, request bits, queue and
 // header buffers sit, one after another (GpuFaceCache::withRequestBindings).
-layout(set = 0, binding = GROTTO_FACE_REQUEST_BINDING, std430) readonly buffer FaceLevels { uint faceLevels[]; };
+#define GROTTO_FACE_LEVELS_BINDING GROTTO_FACE_REQUEST_BINDING
+#include "face_cache_levels.glsl"
 layout(set = 0, binding = GROTTO_FACE_REQUEST_BINDING + 1, std430) buffer FaceRequested { uint faceRequested[]; };
 layout(set = 0, binding = GROTTO_FACE_REQUEST_BINDING + 2, std430) writeonly buffer FaceQueue { uvec4 faceQueue[]; };
 layout(set = 0, binding = GROTTO_FACE_REQUEST_BINDING + 3, std430) buffer FaceHeader { uint faceHeader[]; };
@@ -10,7 +11,7 @@ layout(set = 0, binding = GROTTO_FACE_REQUEST_BINDING + 3, std430) buffer FaceHe
 // listed already: once each, level 0 in the first list, levels 1 and 2 in the second.
 void requestFace(int face, ivec3 cell, uint dir) {
     uint f = uint(face);
-    uint level = (faceLevels[f >> 4u] >> ((f & 15u) * 2u)) & 3u;
+    uint level = faceLevel(face);
     if (level == GROTTO_FACE_LEVEL_CONVERGED) return;
     uint bit = 1u << (f & 31u);
     if ((faceRequested[f >> 5u] & bit) != 0u || (atomicOr(faceRequested[f >> 5u], bit) & bit) != 0u) return;

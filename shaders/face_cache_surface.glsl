@@ -1,6 +1,13 @@
 // The face cache read at a full-resolution pixel's world surface. The includer
 // declares `depthBuffer` (full-res D32, reverse-Z), the frame uniforms as `frame`
-// (shared/frame.h) and the cache (face_cache.glsl).
+// (shared/frame.h) and the cache (face_cache.glsl). It may define what the frame
+// reads as constants (the composite's pipelines); else the uniforms say.
+#ifndef GROTTO_CACHE_READS_DAY_LIGHT
+#define GROTTO_CACHE_READS_DAY_LIGHT (frame.dayLight.x != 0u)
+#endif
+#ifndef GROTTO_CACHE_READS_DAY_SUN
+#define GROTTO_CACHE_READS_DAY_SUN (frame.daySun.x != 0u)
+#endif
 
 // Where the pixel's view ray meets the voxel plane of world face `face` (0..5), in
 // voxels from the camera's voxel (frame.cameraCell): the depth only picks the
@@ -27,7 +34,7 @@ FaceCacheTaps cachedTapsAt(ivec2 q, uint face) {
 // ... and, with full light over the day, in `faces` the four faces whose centres
 // lie nearest, whose words cachedFullLightAt blends (one look-up for both).
 FaceCacheTaps cachedTapsAt(ivec2 q, uint face, out FaceCacheTaps faces) {
-    if (frame.dayLight.x == 0u) return cachedTapsAt(q, face);
+    if (!GROTTO_CACHE_READS_DAY_LIGHT) return cachedTapsAt(q, face);
     return faceCacheTapsWithFaces(cachedPointAt(q, face), frame.cameraCell.xyz, face, int(faceCacheK()), faces);
 }
 
@@ -40,7 +47,7 @@ FaceCacheTaps cachedTapsAt(ivec2 q, uint face, out FaceCacheTaps faces) {
 // disagreeing by over a quarter: a penumbra narrower than the texels apart; the
 // day's positions or texels disagreeing).
 float cachedSunAt(FaceCacheTaps t, vec4 c, vec2 sunRange, vec3 normal, out bool edge) {
-    if (frame.daySun.x != 0u) {
+    if (GROTTO_CACHE_READS_DAY_SUN) {
         // A position behind the face reads dark, as the face is then: where the
         // sun crosses the face's plane between the two, they disagree.
         float sun = faceCacheDaySun(t, frame.daySun.x, (1u << frame.daySun.y) | (1u << frame.daySun.z), edge);
@@ -60,7 +67,7 @@ float cachedSunAt(FaceCacheTaps t, vec4 c, vec2 sunRange, vec3 normal, out bool 
 // nearest, as the texels are between theirs: no face shows as a tile.
 vec3 cachedFullLightAt(FaceCacheTaps t, FaceCacheTaps faces) {
     vec3 light = faceCacheFullLight(t);
-    if (frame.dayLight.x == 0u) return light;
+    if (!GROTTO_CACHE_READS_DAY_LIGHT) return light;
     vec3 zenith = frame.ambient.rgb * frame.skyZenith.rgb, horizon = frame.ambient.rgb * frame.skyHorizon.rgb;
     vec2 weights = vec2(0.0);
     float weight = 0.0;

@@ -51,6 +51,9 @@ FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const 
     p.softShadows = p.tracedShadows && lighting.sunAngle > 0.0f;
     p.shadowEdges = p.cachedSun;
     p.daySun = p.cachedSun && scene.faceCache->day;
+    p.cacheFullLight = p.faceCache && scene.faceCache && scene.faceCache->fullLight &&
+                       ambientSource(lighting, ao) != voxel::AmbientSource::Color;
+    p.cacheDayLight = p.cacheFullLight && scene.faceCache->dayLight && scene.faceCache->day;
 
     p.objectRays = p.tracedShadows || p.objectLight || (p.chain && tracesVoxels(ao.method));
     p.surfaceHistory = p.softShadows || p.objectLight;
@@ -61,10 +64,14 @@ FramePlan planWorldFrame(const voxel::WorldDesc& desc, uint32_t width, uint32_t 
                          bool objects, const FrameRequest& request) {
     SceneFacts scene{.occupancy = true};
     const voxel::Lighting light = voxel::lightingInEffect(desc.lighting);
-    if (faceCached(ao))
+    if (faceCached(ao)) {
+        // The bake the world's lighting asks for: full light where its ambient is.
+        const bool day = desc.lighting.sunFrom == voxel::SunSource::Day;
+        const bool full = desc.lighting.ambientFrom == voxel::AmbientSource::Full;
         scene.faceCache = SceneFacts::CacheSun{light.sunDirection, light.sunAngle,
-                                               desc.lighting.sunFrom == voxel::SunSource::Day
-                                                   ? std::optional(voxel::sunPathOf(desc.lighting)) : std::nullopt};
+                                               day ? std::optional(voxel::sunPathOf(desc.lighting)) : std::nullopt, full,
+                                               full && day};
+    }
     scene.objects = objects && !desc.objects.empty();
     scene.movingObjects = scene.objects && std::any_of(desc.objects.begin(), desc.objects.end(), [](const auto& o) { return o.moves(); });
     return planFrame(width, height, ao, desc.lighting, scene, request);

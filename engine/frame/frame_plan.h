@@ -23,6 +23,8 @@ struct SceneFacts {
         glm::vec3 direction{0.0f, 1.0f, 0.0f};
         float angleDegrees = 0.0f;
         std::optional<voxel::SunPath> day;  // baked for the day's sun along this path instead
+        bool fullLight = false;  // its light words hold full light, not the sky's weights
+        bool dayLight = false;   // with full light over the day: each face's words for the sun's positions
     };
     std::optional<CacheSun> faceCache;
     bool objects = false;        // the caller's objects (drawn, even an empty list that may grow)
@@ -57,6 +59,11 @@ struct FramePlan {
     bool shadowEdges = false;    // exact sun rays on the cache's shadow edges
     bool daySun = false;         // with the cache's sun, the day's: its positions' disagreements sweep
                                  // areas as the sun rises and sets, so the edge list holds every pixel
+    // How the composite reads the cache's light words. Each is a pipeline of its
+    // own: a CPU device runs a branch any pixel of a group takes, and a branch on
+    // a uniform too, so what a frame does not read would cost it all the same.
+    bool cacheFullLight = false;  // full light (the world's ambient not a constant colour, the cache's words full light)
+    bool cacheDayLight = false;   // with it, over the day: the sky's weights and the faces' bounce words
     // Objects.
     bool objects = false;
     bool movingObjects = false;

@@ -28,7 +28,8 @@ std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
 CompositeShape CompositePass::shapeFor(const FramePlan& plan, bool askFaces) {
     return {.withAo = plan.chain, .withShadow = plan.tracedShadows, .withBentNormals = plan.bentNormals,
             .faceCache = plan.faceCache, .cachedSun = plan.cachedSun, .objectLight = plan.objectLight,
-            .shadowEdges = plan.shadowEdges, .askFaces = askFaces};
+            .shadowEdges = plan.shadowEdges, .askFaces = askFaces, .fullLight = plan.cacheFullLight,
+            .dayLight = plan.cacheDayLight, .daySun = plan.daySun};
 }
 
 CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
@@ -37,7 +38,8 @@ CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
       pass_(ctx, shape.faceCache ? "composite_cache.comp" : "composite.comp", bindings(shape), 0,
             {shape.withAo ? 1u : 0u, group(shape), group(shape), shape.withShadow ? 1u : 0u,
              shape.withBentNormals ? 1u : 0u, shape.cachedSun ? 1u : 0u, shape.objectLight ? 1u : 0u,
-             shape.shadowEdges ? 1u : 0u, shape.askFaces ? 1u : 0u}) {}
+             shape.shadowEdges ? 1u : 0u, shape.askFaces ? 1u : 0u, shape.fullLight ? 1u : 0u,
+             shape.dayLight ? 1u : 0u, shape.daySun ? 1u : 0u}) {}
 
 void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& color, const Inputs& in) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;

@@ -29,6 +29,9 @@ struct CompositeShape {
     bool objectLight = false;      // with it: objects' AO and sky light from the object light pass
     bool shadowEdges = false;      // with the cache's sun: its shadow edges' pixels listed (shadow_edge_pass.h)
     bool askFaces = false;         // with it, while faces have not converged: the texels' faces asked for
+    bool fullLight = false;        // with it: the plan's cacheFullLight, cacheDayLight and daySun
+    bool dayLight = false;
+    bool daySun = false;
     bool operator==(const CompositeShape&) const = default;
 };
 

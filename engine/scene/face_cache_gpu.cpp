@@ -76,6 +76,16 @@ std::vector<vk::Binding> GpuFaceCache::withBindings(std::vector<vk::Binding> own
     return own;
 }
 
+std::vector<VkDescriptorType> GpuFaceCache::withLevelsBinding(std::vector<VkDescriptorType> own) {
+    own.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
+    return own;
+}
+
+std::vector<vk::Binding> GpuFaceCache::withLevelsBinding(std::vector<vk::Binding> own) const {
+    own.push_back(vk::storageBuffer(levels_.buffer));
+    return own;
+}
+
 std::vector<VkDescriptorType> GpuFaceCache::withRequestBindings(std::vector<VkDescriptorType> own) {
     own.insert(own.end(), 4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     return own;

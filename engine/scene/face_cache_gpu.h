@@ -72,6 +72,10 @@ public:
     static std::vector<VkDescriptorType> withBindings(std::vector<VkDescriptorType> own);
     std::vector<vk::Binding> withBindings(std::vector<vk::Binding> own) const;
 
+    // Appends the levels' buffer (shaders/face_cache_levels.glsl) to a pass's own.
+    static std::vector<VkDescriptorType> withLevelsBinding(std::vector<VkDescriptorType> own);
+    std::vector<vk::Binding> withLevelsBinding(std::vector<vk::Binding> own) const;
+
     // Appends the buffers a pass that asks for faces binds (levels, request bits,
     // queue, header: shaders/face_cache_requests.glsl) to a pass's own.
     static std::vector<VkDescriptorType> withRequestBindings(std::vector<VkDescriptorType> own);
