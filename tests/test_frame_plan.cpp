@@ -57,6 +57,34 @@ TEST(FramePlan, TheCachesOwnSunGivesTheWorldsShadowsAndItsEdges) {
     EXPECT_NE(CompositePass::key(plan), CompositePass::key(moved));
 }
 
+// How the composite reads the cache's light words is the plan's, and each way is
+// a composite of its own: full light where the cache holds it and the ambient is
+// not a constant colour, its day words only with the day's sun.
+TEST(FramePlan, TheCachesLightWordsPickTheCompositesRead) {
+    voxel::Lighting lighting;
+    lighting.ambientFrom = voxel::AmbientSource::Full;
+    SceneFacts skyCache = cached(lighting);
+    const FramePlan sky = planFrame(8, 8, method("cache"), lighting, skyCache);
+    EXPECT_FALSE(sky.cacheFullLight || sky.cacheDayLight);  // a sky-light bake keeps the sky's weights
+    SceneFacts fullCache = skyCache;
+    fullCache.faceCache->fullLight = true;
+    fullCache.faceCache->dayLight = true;  // words for a day, but baked for one sun
+    const FramePlan full = planFrame(8, 8, method("cache"), lighting, fullCache);
+    EXPECT_TRUE(full.cacheFullLight);
+    EXPECT_FALSE(full.cacheDayLight);
+    EXPECT_NE(CompositePass::key(sky), CompositePass::key(full));
+    SceneFacts dayCache = fullCache;
+    dayCache.faceCache->day = voxel::sunPathOf(lighting);
+    const FramePlan day = planFrame(8, 8, method("cache"), lighting, dayCache);
+    EXPECT_TRUE(day.cacheFullLight && day.cacheDayLight);
+    EXPECT_NE(CompositePass::key(full), CompositePass::key(day));
+    // A constant ambient colour reads no light words; nor does a frame without the cache.
+    voxel::Lighting colour = lighting;
+    colour.ambientFrom = voxel::AmbientSource::Color;
+    EXPECT_FALSE(planFrame(8, 8, method("cache"), colour, dayCache).cacheFullLight);
+    EXPECT_FALSE(planFrame(8, 8, method("gtao"), lighting, dayCache).cacheFullLight);
+}
+
 TEST(FramePlan, ASoftSunKeepsAHistoryWhereItIsTraced) {
     voxel::Lighting lighting;
     lighting.sunAngle = 1.0f;
