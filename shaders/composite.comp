@@ -24,8 +24,9 @@ layout(constant_id = 5) const bool cachedSun = false;  // cache: world surfaces 
 layout(constant_id = 6) const bool objectLight = false;  // cache: objects' AO and sky light (object_light.comp)
 layout(constant_id = 7) const bool shadowEdges = false;  // the cache's sun: list its edges' pixels (shadow_edge.comp)
 // Cache, while faces have not converged: ask for the faces of the texels read, for
-// the next frame's tracer, and read none at level 0. A separate pipeline: a CPU device runs a branch's code
-// whether or not any pixel takes it, so a bake's frames leave it out.
+// the next frame's tracer, and read none at level 0. A separate pipeline: a CPU
+// device runs a branch's code whether or not any pixel takes it, so a bake's
+// frames leave it out.
 layout(constant_id = 8) const bool askFaces = false;
 // Cache: how its light words are read (the frame plan's cacheFullLight,
 // cacheDayLight, daySun). Constants, not the frame's uniforms: a CPU device runs

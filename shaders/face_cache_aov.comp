@@ -29,7 +29,6 @@ layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D lightOut;
 #define GROTTO_FACE_CACHE_BINDING 7
 #include "face_cache.glsl"
 #include "face_cache_surface.glsl"
-#include "shared/face_trace.h"
 // The faces' levels: taps on faces never traced are left out, as the composite leaves them.
 #define GROTTO_FACE_LEVELS_BINDING 10
 #include "face_cache_levels.glsl"
