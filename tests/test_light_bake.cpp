@@ -38,8 +38,9 @@ struct Baked {
     std::vector<FaceTexel> texels;
     LightBakeStats stats;
 };
-Baked bake(const World& world, const LightSources& lights, uint32_t k = 3, LightBakeSettings ls = {}) {
-    const BrickTable table(world);
+// The faces with what bakeFaces gives their texels (AO, sky, the sun's bits): all
+// the light bake starts from.
+Baked unlit(const BrickTable& table, const World& world, const LightSources& lights, uint32_t k) {
     Baked b;
     b.faces = exposedFaces(table, world);
     b.texels.resize(b.faces.size() * k * k);
@@ -47,6 +48,11 @@ Baked bake(const World& world, const LightSources& lights, uint32_t k = 3, Light
     s.texelsPerSide = k;
     s.sunDirection = lights.sunDirection;
     bakeFaces(table, world, b.faces, s, b.texels);
+    return b;
+}
+Baked bake(const World& world, const LightSources& lights, uint32_t k = 3, LightBakeSettings ls = {}) {
+    const BrickTable table(world);
+    Baked b = unlit(table, world, lights, k);
     b.stats = bakeLight(table, world, b.faces, k, lights, ls, b.texels);
     return b;
 }
@@ -181,11 +187,14 @@ void expectGuidedRaysTakeOutTheBlotches(const std::function<bool(glm::ivec3)>& o
         if (open({x, y, z})) return 0;
         return x == 0 || y == 0 || z == 0 || x == size.x - 1 || y == size.y - 1 || z == size.z - 1 ? 1 : 0;
     });
-    const Baked guided = bake(room, lights);
+    // Both bakes start from the same faces' bake; their light's rays differ.
+    const BrickTable table(room);
+    Baked guided = unlit(table, room, lights, 3), cosine = guided;
+    guided.stats = bakeLight(table, room, guided.faces, 3, lights, {}, guided.texels);
     LightBakeSettings cosineOnly;
     cosineOnly.rays += cosineOnly.guidedRays;
     cosineOnly.guidedRays = 0;
-    const Baked cosine = bake(room, lights, 3, cosineOnly);
+    cosine.stats = bakeLight(table, room, cosine.faces, 3, lights, cosineOnly, cosine.texels);
 
     std::vector<dvec3> points, normals;
     std::vector<size_t> which;

@@ -49,8 +49,8 @@ constexpr double kOutlier = 0.25;
 // The last of `frames` frames of rooms/table at 160x90 with a sun `angle` degrees
 // wide, the camera stepping `step` world units to its right each frame (ending at
 // the table camera), against the CPU's visible fraction of the disc. The CPU's rays
-// take most of the time; under the sanitizers every 3rd surface pixel is compared
-// (3 is prime to the width: a diagonal pattern, not whole columns).
+// take most of the time; under the sanitizers every 7th surface pixel is compared
+// (7 is prime to the width: a diagonal pattern, not whole columns).
 SoftSunError softSunError(vk::Context& ctx, float angle, uint32_t frames, double step) {
     const voxel::World world = voxel::World::load(test::worldsDir() / "rooms.json");
     auto scene = uploadScene(ctx, world);
@@ -81,7 +81,7 @@ SoftSunError softSunError(vk::Context& ctx, float angle, uint32_t frames, double
     test::SunRays rays(world);
     SoftSunError e;
     e.points = pts.points.size();
-    for (size_t k = 0; k < pts.points.size(); k += size_t(test::underSanitizers(1, 3))) {
+    for (size_t k = 0; k < pts.points.size(); k += size_t(test::underSanitizers(1, 7))) {
         const glm::dvec3 &p = pts.points[k], &n = pts.normals[k];
         int open = 0;
         for (const glm::dvec3& d : disc) open += glm::dot(n, d) > 0.0 && !rays.blocked(p, n, d);
@@ -104,7 +104,7 @@ TEST_F(SoftSun, StillCameraConvergesToTheVisibleFractionOfTheDisc) {
     const SoftSunError e = softSunError(ctx(), 8.0f, 64, 0.0);
     EXPECT_GT(e.points, size_t(160 * 90) / 2);
     EXPECT_GT(double(e.penumbra), 0.03 * double(e.compared));  // a real penumbra to get right
-    EXPECT_LT(e.meanAbs, 0.01);  // measured 0.004 (every 3rd pixel: 0.004)
+    EXPECT_LT(e.meanAbs, 0.01);  // measured 0.004 (every 7th pixel: 0.004)
     EXPECT_LE(double(e.outliers), 0.001 * double(e.compared));
 }
 
@@ -114,7 +114,7 @@ TEST_F(SoftSun, HistoryFollowsTheSurfaceAsTheCameraMoves) {
     // 6% of points beyond kOutlier, when tried).
     const SoftSunError e = softSunError(ctx(), 8.0f, 64, 0.02);
     EXPECT_GT(double(e.penumbra), 0.03 * double(e.compared));
-    EXPECT_LT(e.meanAbs, 0.012);  // measured 0.0057 (every 3rd pixel: 0.0057, 3 or 4 of 4800 beyond)
+    EXPECT_LT(e.meanAbs, 0.012);  // measured 0.0057, 10 of 14400 beyond (every 7th pixel: 0.0056, 1 of 2058)
     EXPECT_LE(double(e.outliers), 0.002 * double(e.compared));
 }
 

@@ -209,17 +209,29 @@ TEST_F(Occupancy, EditsStagedThroughALiveSceneKeepGpuAndCpuInStep) {
         }
     };
     auto check = [&](const char* what, GpuScene* pending) {
+        // Each cell once (the edits' boxes overlap): a box's cells that lie in an
+        // earlier box of the list are that box's. Sorting a million cells to find
+        // the repeats took the sanitizers several seconds a check.
+        std::vector<voxel::IndexBox> boxes;
+        for (const voxel::IndexBox& b : touched) boxes.push_back(grown(b, 2));
+        auto contains = [](const voxel::IndexBox& b, const glm::ivec3& c) {
+            return glm::all(glm::greaterThanEqual(c, b.min)) && glm::all(glm::lessThanEqual(c, b.max));
+        };
         std::vector<glm::ivec3> cells;
-        for (const voxel::IndexBox& b : touched) appendBox(cells, grown(b, 2));
-        // Each cell once (the edits' boxes overlap), sorted as one integer each: the
-        // sanitizers' unoptimised test code sorts that several times faster.
-        constexpr int kBias = 1 << 20;  // every edit lies within +-2^20 voxels
-        std::vector<uint64_t> keys;
-        for (const glm::ivec3& c : cells) keys.push_back(uint64_t(c.x + kBias) << 42 | uint64_t(c.y + kBias) << 21 | uint64_t(c.z + kBias));
-        std::sort(keys.begin(), keys.end());
-        keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
-        cells.clear();
-        for (uint64_t k : keys) cells.push_back(glm::ivec3(int(k >> 42), int(k >> 21 & 0x1FFFFF), int(k & 0x1FFFFF)) - kBias);
+        for (size_t i = 0; i < boxes.size(); ++i) {
+            const voxel::IndexBox& b = boxes[i];
+            std::vector<voxel::IndexBox> earlier;  // those that overlap this one
+            for (size_t j = 0; j < i; ++j)
+                if (glm::all(glm::lessThanEqual(boxes[j].min, b.max)) && glm::all(glm::lessThanEqual(b.min, boxes[j].max)))
+                    earlier.push_back(boxes[j]);
+            for (int z = b.min.z; z <= b.max.z; ++z)
+                for (int y = b.min.y; y <= b.max.y; ++y)
+                    for (int x = b.min.x; x <= b.max.x; ++x) {
+                        const glm::ivec3 c(x, y, z);
+                        if (std::none_of(earlier.begin(), earlier.end(), [&](const voxel::IndexBox& e) { return contains(e, c); }))
+                            cells.push_back(c);
+                    }
+        }
         const Agreement a = compare(w, cells, query.solid(*scene.gpu().occupancy(), cells, pending), what);
         EXPECT_EQ(a.mismatches, 0u) << what;
     };
