@@ -53,6 +53,35 @@ std::vector<ExposedFace> exposedFaces(const BrickTable& table, const World& worl
     return faces;
 }
 
+std::vector<ExposedFace> exposedFacesAfterEdit(const BrickTable& table, const World& world,
+                                               const std::vector<ExposedFace>& before, const IndexBox& changed) {
+    if (changed.empty()) return before;
+    const glm::ivec3 lo = changed.min - 1, hi = changed.max + 1;
+    const IndexBox near{lo, hi};
+    // A box holding more cells than the world's bricks do: the world's own list.
+    const glm::dvec3 extent = glm::dvec3(hi - lo) + 1.0;
+    if (extent.x * extent.y * extent.z > 512.0 * double(world.bricks().size()) + 4096.0) return exposedFaces(table, world);
+    std::vector<ExposedFace> fresh;  // listed in order: x, then y, then z, then direction
+    for (int x = lo.x; x <= hi.x; ++x)
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int z = lo.z; z <= hi.z; ++z) {
+                const glm::ivec3 cell(x, y, z);
+                if (!solidAt(table, cell)) continue;
+                for (uint8_t d = 0; d < 6; ++d)
+                    if (!solidAt(table, cell + kStep[d])) fresh.push_back({cell, d});
+            }
+    std::vector<ExposedFace> now;
+    now.reserve(before.size() + fresh.size());
+    auto kept = fresh.begin();
+    for (const ExposedFace& f : before) {
+        if (near.contains(f.cell)) continue;
+        while (kept != fresh.end() && *kept < f) now.push_back(*kept++);
+        now.push_back(f);
+    }
+    now.insert(now.end(), kept, fresh.end());
+    return now;
+}
+
 ExposedFaceCount countExposedFaces(const World& world) {
     // A brick's word x holds its voxels (x, y, z) at bit y * 8 + z, as in the grid.
     struct KeyHash {

@@ -71,6 +71,12 @@ inline bool operator<(const ExposedFace& a, const ExposedFace& b) {
 // Every exposed face of the world, in that order whatever the grid's own.
 std::vector<ExposedFace> exposedFaces(const World& world);
 std::vector<ExposedFace> exposedFaces(const BrickTable& table, const World& world);
+// The same list after an edit of the voxels in `changed`, from `before` (the list
+// before it): a face depends only on its cell and the cell it looks into, so
+// those of cells more than a voxel outside the box are kept and only the cells
+// within one voxel of it are listed again.
+std::vector<ExposedFace> exposedFacesAfterEdit(const BrickTable& table, const World& world,
+                                               const std::vector<ExposedFace>& before, const IndexBox& changed);
 
 // How many there are, and how many 8^3 bricks hold one, without listing them:
 // whole rows of voxels at a time (for `info`).

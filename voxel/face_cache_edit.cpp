@@ -32,34 +32,44 @@ double distanceToBox(glm::dvec3 p, glm::dvec3 lo, glm::dvec3 hi) {
 
 }  // namespace
 
-StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed, const FaceBakeSettings& s,
-                          double voxelSize, std::span<const glm::dvec3> daySun) {
-    StaleParts stale;
-    if (changed.empty()) return stale;
-    const glm::dvec3 lo(changed.min), hi(glm::dvec3(changed.max) + 1.0);
-    const double slack = 1e-3 + s.epsilon;  // rays start a hair in front of the face
-    stale.ao = distanceToBox(point, lo, hi) <= s.radius / voxelSize + slack;
+StaleRule::StaleRule(const IndexBox& changed, const FaceBakeSettings& s, double voxelSize,
+                     std::span<const glm::dvec3> daySun)
+    : empty_(changed.empty()),
+      lo_(changed.min),
+      hi_(glm::dvec3(changed.max) + 1.0),
+      centre_(0.5 * (lo_ + hi_)),
+      sun_(glm::normalize(s.sunDirection)),
+      slack_(1e-3 + s.epsilon),  // rays start a hair in front of the face
+      aoReach_(s.radius / voxelSize + slack_),
+      halfDiagonal_(glm::length(hi_ - lo_) * 0.5),
+      tanHalfAngle_(std::tan(glm::radians(0.5 * s.sunAngleDegrees))),
+      texelHalf_(0.5 / std::max(s.texelsPerSide, 1u)),
+      daySun_(daySunPositions(s) != 0) {
+    if (daySun_) daySunDirections_ = daySun.empty() ? daySunDirections(*s.day) : std::vector<glm::dvec3>(daySun.begin(), daySun.end());
+}
 
-    const glm::dvec3 sun = glm::normalize(s.sunDirection);
-    const glm::dvec3 centre = 0.5 * (lo + hi);
-    const double reach = glm::length(hi - lo) * 0.5 + glm::length(centre - point);  // farther than any box point
+StaleParts StaleRule::at(glm::dvec3 point, uint8_t dir) const {
+    StaleParts stale;
+    if (empty_) return stale;
+    stale.ao = distanceToBox(point, lo_, hi_) <= aoReach_;
+
+    const double d = glm::length(centre_ - point);
+    const double reach = halfDiagonal_ + d;  // farther than any box point
     // The disc's spread over the distance, and the texel's square: its sun rays
     // start up to half a texel from its centre along each of the face's axes.
-    const double spread = std::tan(glm::radians(0.5 * s.sunAngleDegrees)) * reach + 0.5 / std::max(s.texelsPerSide, 1u) + slack;
+    const double spread = tanHalfAngle_ * reach + texelHalf_ + slack_;
     glm::dvec3 normal(0.0);
     normal[dir >> 1] = (dir & 1) == 0 ? 1.0 : -1.0;
-    if (daySunPositions(s)) {
+    if (daySun_) {
         // One ray a position from the texel's centre (face_bake.h).
-        std::vector<glm::dvec3> found;
-        if (daySun.empty()) found = daySunDirections(*s.day), daySun = found;
-        for (const glm::dvec3& d : daySun)
-            stale.sun = stale.sun || (glm::dot(d, normal) > 0.0 && rayMeetsBox(point, d, lo - slack, hi + slack));
+        for (const glm::dvec3& toward : daySunDirections_)
+            stale.sun = stale.sun || (glm::dot(toward, normal) > 0.0 && rayMeetsBox(point, toward, lo_ - slack_, hi_ + slack_));
     } else {
-        stale.sun = rayMeetsBox(point, sun, lo - spread, hi + spread);
+        stale.sun = rayMeetsBox(point, sun_, lo_ - spread, hi_ + spread);
     }
 
-    const double r = glm::length(hi - lo) * 0.5, d = glm::length(centre - point);
-    if (glm::dot(centre - point, normal) > -r) {  // some of the box in front of the face
+    const double r = halfDiagonal_;
+    if (glm::dot(centre_ - point, normal) > -r) {  // some of the box in front of the face
         const bool near = d <= r || (r * r) / (d * d) > kSkyStaleShare;
         stale.skyNear = near;
         stale.skyFar = !near;
@@ -67,26 +77,31 @@ StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed
     return stale;
 }
 
+StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed, const FaceBakeSettings& s,
+                          double voxelSize, std::span<const glm::dvec3> daySun) {
+    return StaleRule(changed, s, voxelSize, daySun).at(point, dir);
+}
+
 void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox& changed,
                      const FaceBakeSettings& s, std::vector<ExposedFace>& faces, std::vector<FaceTexel>& texels,
                      CacheEditStats* stats, bool traceNow, std::vector<FaceReach>* reach) {
     const uint32_t k = s.texelsPerSide, perFace = k * k;
-    std::vector<ExposedFace> now = exposedFaces(table, world);
+    std::vector<ExposedFace> now = exposedFacesAfterEdit(table, world, faces, changed);
     std::vector<FaceTexel> carried(now.size() * perFace);
     std::vector<uint32_t> retrace;
     uint64_t far = 0;
     if (reach) reach->assign(now.size(), FaceReach::Untouched);
-    const std::vector<glm::dvec3> daySun = daySunPositions(s) ? daySunDirections(*s.day) : std::vector<glm::dvec3>{};
+    const StaleRule rule(changed, s, world.voxelSize());
+    size_t old = 0;  // both lists are in order: walk them together
     for (size_t f = 0; f < now.size(); ++f) {
-        const auto it = std::lower_bound(faces.begin(), faces.end(), now[f]);
-        const bool existed = it != faces.end() && *it == now[f];
+        while (old < faces.size() && faces[old] < now[f]) ++old;
+        const bool existed = old < faces.size() && faces[old] == now[f];
         StaleParts worst;
         for (uint32_t j = 0; j < k && existed; ++j)
             for (uint32_t i = 0; i < k; ++i) {
-                const StaleParts p = staleAfterEdit(texelPoint(now[f], k, i, j), now[f].dir, changed, s, world.voxelSize(), daySun);
+                const StaleParts p = rule.at(texelPoint(now[f], k, i, j), now[f].dir);
                 worst.ao |= p.ao, worst.sun |= p.sun, worst.skyNear |= p.skyNear, worst.skyFar |= p.skyFar;
             }
-        const size_t old = size_t(it - faces.begin());
         if (!existed || worst.now()) {
             retrace.push_back(uint32_t(f));
             const bool skyOnly = existed && !worst.ao && !worst.sun;

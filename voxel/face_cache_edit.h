@@ -43,6 +43,22 @@ struct StaleParts {
 StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed, const FaceBakeSettings& settings,
                           double voxelSize, std::span<const glm::dvec3> daySun = {});
 
+// The same rule with what depends on the edit alone found once, for the texels
+// of every face: the same answers, bit for bit.
+class StaleRule {
+public:
+    StaleRule(const IndexBox& changed, const FaceBakeSettings& settings, double voxelSize,
+              std::span<const glm::dvec3> daySun = {});
+    StaleParts at(glm::dvec3 point, uint8_t dir) const;
+
+private:
+    bool empty_;
+    glm::dvec3 lo_, hi_, centre_, sun_;
+    double slack_, aoReach_, halfDiagonal_, tanHalfAngle_, texelHalf_;
+    bool daySun_;
+    std::vector<glm::dvec3> daySunDirections_;
+};
+
 // The cache of a world after an edit of `changed`: `faces` and `texels` as they
 // were before, replaced by the world's exposed faces now, each texel carried over
 // unless the edit reaches it now (staleAfterEdit), new and reached faces traced

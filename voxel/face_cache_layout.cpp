@@ -9,7 +9,6 @@
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <map>
 #include <tuple>
 
 namespace grotto::voxel {
@@ -80,17 +79,22 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
                              uint32_t texelsPerSide, bool fullLight) {
     const uint32_t perFace = texelsPerSide * texelsPerSide;
     // Each brick's faces by direction and bit: the order the GPU counts them in.
-    struct Entry { uint32_t dir, bit, face; };
-    std::map<glm::ivec3, std::vector<Entry>, BrickLess> bricks;
+    struct Entry {
+        glm::ivec3 brick;
+        uint32_t dir, bit, face;
+    };
+    std::vector<Entry> entries(faces.size());
     for (uint32_t f = 0; f < faces.size(); ++f) {
         const glm::ivec3 c = faces[f].cell;
-        bricks[c >> 3].push_back({faces[f].dir, gpu::occupancyBit(c.x, c.y, c.z), f});
+        entries[f] = {c >> 3, faces[f].dir, gpu::occupancyBit(c.x, c.y, c.z), f};
     }
+    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
+        return std::tie(a.brick.x, a.brick.y, a.brick.z, a.dir, a.bit) < std::tie(b.brick.x, b.brick.y, b.brick.z, b.dir, b.bit);
+    });
     FaceCacheArrays out;
     out.texelsPerSide = texelsPerSide;
     out.faceCount = uint32_t(faces.size());
     out.faceOrder.reserve(faces.size());
-    out.records.reserve(bricks.size() * GROTTO_FACE_RECORD_WORDS);
     out.fullLight = fullLight;
     out.texels.assign(3 * ((texels.size() + 1) / 2), 0u);
     size_t next = 0;  // the next texel's index
@@ -100,22 +104,22 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
         out.texels[pair + 2] |= bits.x << (16 * odd);
         ++next;
     };
-    uint32_t faceIndex = 0;
     std::vector<glm::ivec3> positions;  // record i's brick
-    for (auto& [brick, entries] : bricks) {
-        std::sort(entries.begin(), entries.end(),
-                  [](const Entry& a, const Entry& b) { return std::tie(a.dir, a.bit) < std::tie(b.dir, b.bit); });
+    for (size_t first = 0, end = 0; first < entries.size(); first = end) {
+        const glm::ivec3 brick = entries[first].brick;
+        while (end < entries.size() && entries[end].brick == brick) ++end;
         const size_t base = out.records.size();
         out.records.resize(base + GROTTO_FACE_RECORD_WORDS, 0u);
-        for (uint32_t d = 0; d < 6; ++d) out.records[base + 96 + d] = faceIndex + uint32_t(std::count_if(
-            entries.begin(), entries.end(), [d](const Entry& e) { return e.dir < d; }));
-        for (const Entry& e : entries) {
+        // Each direction's first face: the faces before it, the brick's in earlier directions included.
+        for (uint32_t d = 0; d < 6; ++d) out.records[base + 96 + d] = uint32_t(first);
+        for (size_t n = first; n < end; ++n) {
+            const Entry& e = entries[n];
+            for (uint32_t d = e.dir + 1; d < 6; ++d) ++out.records[base + 96 + d];
             out.records[base + e.dir * 16 + (e.bit >> 5)] |= 1u << (e.bit & 31u);
             if (e.bit < 256) out.records[base + 102 + e.dir / 3] += 1u << (e.dir % 3 * 9);  // in the first half
             out.faceOrder.push_back(e.face);
             for (uint32_t t = 0; t < perFace; ++t) append(packFaceTexel(texels[size_t(e.face) * perFace + t], fullLight));
         }
-        faceIndex += uint32_t(entries.size());
         positions.push_back(brick);
     }
     FaceBrickTable table = layFaceBrickTable(positions);

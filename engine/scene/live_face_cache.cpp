@@ -149,10 +149,11 @@ void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& w
     std::vector<voxel::FaceReach> reach;
     voxel::updateAfterEdit(table, world, changed, settings_, faces_, texels_, stats, false, &reach);
     std::vector<uint8_t> levels(faces_.size(), 0);
+    size_t was = 0;  // both lists are in order: walk them together
     for (size_t f = 0; f < faces_.size(); ++f) {
+        while (was < before.size() && before[was] < faces_[f]) ++was;
         if (reach[f] == voxel::FaceReach::Stale) continue;  // traced again, coarse first, in view from the next frame
-        const auto it = std::lower_bound(before.begin(), before.end(), faces_[f]);
-        const uint8_t old = levels_[size_t(it - before.begin())];
+        const uint8_t old = levels_[was];
         // Only the sky moved: the old texels stand until the budget's rays reach them.
         levels[f] = reach[f] == voxel::FaceReach::Untouched ? old : std::min<uint8_t>(old, 2);
     }
