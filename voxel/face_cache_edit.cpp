@@ -2,6 +2,9 @@
 
 #include "voxel/brick_table.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -88,32 +91,38 @@ void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox
     const uint32_t k = s.texelsPerSide, perFace = k * k;
     std::vector<ExposedFace> now = exposedFacesAfterEdit(table, world, faces, changed);
     std::vector<FaceTexel> carried(now.size() * perFace);
+    std::vector<FaceReach> reached(now.size(), FaceReach::Untouched);
+    const StaleRule rule(changed, s, world.voxelSize());
+    // Each face on its own: in parallel, each range walking both lists (in order) together.
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, now.size(), 4096), [&](const tbb::blocked_range<size_t>& r) {
+        size_t old = size_t(std::lower_bound(faces.begin(), faces.end(), now[r.begin()]) - faces.begin());
+        for (size_t f = r.begin(); f < r.end(); ++f) {
+            while (old < faces.size() && faces[old] < now[f]) ++old;
+            const bool existed = old < faces.size() && faces[old] == now[f];
+            StaleParts worst;
+            for (uint32_t j = 0; j < k && existed; ++j)
+                for (uint32_t i = 0; i < k; ++i) {
+                    const StaleParts p = rule.at(texelPoint(now[f], k, i, j), now[f].dir);
+                    worst.ao |= p.ao, worst.sun |= p.sun, worst.skyNear |= p.skyNear, worst.skyFar |= p.skyFar;
+                }
+            if (!existed || worst.now()) {
+                const bool skyOnly = existed && !worst.ao && !worst.sun;
+                reached[f] = skyOnly ? FaceReach::SkyNear : FaceReach::Stale;
+                if (!existed || traceNow) continue;
+            } else if (worst.skyFar) {
+                reached[f] = FaceReach::SkyFar;
+            }
+            std::copy_n(texels.begin() + ptrdiff_t(old * perFace), perFace, carried.begin() + ptrdiff_t(f * perFace));
+        }
+    });
     std::vector<uint32_t> retrace;
     uint64_t far = 0;
-    if (reach) reach->assign(now.size(), FaceReach::Untouched);
-    const StaleRule rule(changed, s, world.voxelSize());
-    size_t old = 0;  // both lists are in order: walk them together
     for (size_t f = 0; f < now.size(); ++f) {
-        while (old < faces.size() && faces[old] < now[f]) ++old;
-        const bool existed = old < faces.size() && faces[old] == now[f];
-        StaleParts worst;
-        for (uint32_t j = 0; j < k && existed; ++j)
-            for (uint32_t i = 0; i < k; ++i) {
-                const StaleParts p = rule.at(texelPoint(now[f], k, i, j), now[f].dir);
-                worst.ao |= p.ao, worst.sun |= p.sun, worst.skyNear |= p.skyNear, worst.skyFar |= p.skyFar;
-            }
-        if (!existed || worst.now()) {
-            retrace.push_back(uint32_t(f));
-            const bool skyOnly = existed && !worst.ao && !worst.sun;
-            if (reach) (*reach)[f] = skyOnly ? FaceReach::SkyNear : FaceReach::Stale;
-            if (!existed || traceNow) continue;
-        } else if (worst.skyFar) {
-            ++far;
-            if (reach) (*reach)[f] = FaceReach::SkyFar;
-        }
-        std::copy_n(texels.begin() + ptrdiff_t(old * perFace), perFace, carried.begin() + ptrdiff_t(f * perFace));
+        if (reached[f] == FaceReach::Stale || reached[f] == FaceReach::SkyNear) retrace.push_back(uint32_t(f));
+        far += reached[f] == FaceReach::SkyFar;
     }
     if (stats) *stats = {.traced = retrace.size(), .carried = now.size() - retrace.size(), .skyFar = far};
+    if (reach) *reach = std::move(reached);
     if (!traceNow) retrace.clear();  // the stale keep their old texels till the GPU traces them
     std::vector<ExposedFace> redo(retrace.size());
     for (size_t n = 0; n < retrace.size(); ++n) redo[n] = now[retrace[n]];

@@ -6,6 +6,9 @@
 #define GROTTO_FACE_CACHE_LAYOUT_ONLY
 #include "shaders/shared/face_cache.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
@@ -96,14 +99,6 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
     out.faceCount = uint32_t(faces.size());
     out.faceOrder.reserve(faces.size());
     out.fullLight = fullLight;
-    out.texels.assign(3 * ((texels.size() + 1) / 2), 0u);
-    size_t next = 0;  // the next texel's index
-    auto append = [&](glm::uvec2 bits) {
-        const size_t pair = 3 * (next / 2), odd = next % 2;
-        out.texels[pair + odd] = bits.y;
-        out.texels[pair + 2] |= bits.x << (16 * odd);
-        ++next;
-    };
     std::vector<glm::ivec3> positions;  // record i's brick
     for (size_t first = 0, end = 0; first < entries.size(); first = end) {
         const glm::ivec3 brick = entries[first].brick;
@@ -118,10 +113,25 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
             out.records[base + e.dir * 16 + (e.bit >> 5)] |= 1u << (e.bit & 31u);
             if (e.bit < 256) out.records[base + 102 + e.dir / 3] += 1u << (e.dir % 3 * 9);  // in the first half
             out.faceOrder.push_back(e.face);
-            for (uint32_t t = 0; t < perFace; ++t) append(packFaceTexel(texels[size_t(e.face) * perFace + t], fullLight));
         }
         positions.push_back(brick);
     }
+    // The texels in the faces' order, a pair of them to three words; in parallel, a pair at a time.
+    const size_t count = out.faceOrder.size() * perFace;
+    auto packed = [&](size_t texel) {
+        if (texel >= count) return glm::uvec2(0u);
+        const size_t face = out.faceOrder[texel / perFace];
+        return packFaceTexel(texels[face * perFace + texel % perFace], fullLight);
+    };
+    out.texels.assign(3 * ((texels.size() + 1) / 2), 0u);
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, (count + 1) / 2, 4096), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t pair = r.begin(); pair < r.end(); ++pair) {
+            const glm::uvec2 even = packed(2 * pair), odd = packed(2 * pair + 1);
+            out.texels[3 * pair] = even.y;
+            out.texels[3 * pair + 1] = odd.y;
+            out.texels[3 * pair + 2] = even.x | odd.x << 16;
+        }
+    });
     FaceBrickTable table = layFaceBrickTable(positions);
     out.bricks = std::move(table.slots);
     out.records.insert(out.records.begin(), table.seeds.begin(), table.seeds.end());  // the seeds first
