@@ -102,15 +102,18 @@ std::vector<uint32_t> GpuFaceCache::lastHeader() const {
     return words;
 }
 
-GpuFaceCache::Contents GpuFaceCache::read() const {
-    Contents c;
-    const std::vector<uint8_t> texelBytes = vk::readBuffer(ctx_, texels_);
-    c.texelWords.resize(texelBytes.size() / 4);
-    std::memcpy(c.texelWords.data(), texelBytes.data(), c.texelWords.size() * 4);
-    const std::vector<uint8_t> levelBytes = vk::readBuffer(ctx_, levels_);
-    c.levels.resize(faceCount_);
-    for (size_t f = 0; f < faceCount_; ++f) c.levels[f] = (levelBytes[f / 4] >> (2 * (f % 4))) & 3u;
-    return c;
+std::vector<uint8_t> GpuFaceCache::readLevels() const {
+    const std::vector<uint8_t> bytes = vk::readBuffer(ctx_, levels_);
+    std::vector<uint8_t> levels(faceCount_);
+    for (size_t f = 0; f < faceCount_; ++f) levels[f] = (bytes[f / 4] >> (2 * (f % 4))) & 3u;
+    return levels;
+}
+
+std::vector<uint32_t> GpuFaceCache::readTexelWords() const {
+    const std::vector<uint8_t> bytes = vk::readBuffer(ctx_, texels_);
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), words.size() * 4);
+    return words;
 }
 
 }  // namespace grotto

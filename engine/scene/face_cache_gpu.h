@@ -91,13 +91,11 @@ public:
     // The last finished frame's header words (shared/face_trace.h).
     std::vector<uint32_t> lastHeader() const;
 
-    // The texels' packed words and each face's level (in the arrays' face order), as
-    // the GPU holds them now: waits for the device.
-    struct Contents {
-        std::vector<uint32_t> texelWords;
-        std::vector<uint8_t> levels;
-    };
-    Contents read() const;
+    // Each face's level (in the arrays' face order) and the texels' packed words, as
+    // the GPU holds them now: each waits for the device. The levels are a 32nd of
+    // the words' size: read first, they tell whether the words are needed.
+    std::vector<uint8_t> readLevels() const;
+    std::vector<uint32_t> readTexelWords() const;
 
 private:
     vk::Context& ctx_;

@@ -114,20 +114,24 @@ void LiveFaceCache::waitForLight() {
 
 void LiveFaceCache::sync() {
     if (!scene_.faceCache_) return;
-    const GpuFaceCache::Contents gpu = scene_.faceCache_->read();
+    const std::vector<uint8_t> levels = scene_.faceCache_->readLevels();
+    bool traced = false;  // the tracer touched a face since the last sync
+    for (size_t g = 0; g < order_.size() && !traced; ++g) traced = levels[g] != levels_[order_[g]];
+    if (!traced) return;
+    const std::vector<uint32_t> words = scene_.faceCache_->readTexelWords();
     const uint32_t perFace = settings_.texelsPerSide * settings_.texelsPerSide;
     const uint32_t sunRays = voxel::sunRaysPerTexel(settings_);
     for (size_t g = 0; g < order_.size(); ++g) {
         const uint32_t f = order_[g];
-        if (gpu.levels[g] == levels_[f]) continue;  // the tracer did not touch it
-        levels_[f] = gpu.levels[g];
+        if (levels[g] == levels_[f]) continue;  // the tracer did not touch it
+        levels_[f] = levels[g];
         const bool full = levels_[f] >= 2;
         const uint32_t rays = full ? settings_.rays : std::min<uint32_t>(GROTTO_FACE_COARSE_RAYS, settings_.rays);
         const uint32_t sun = full ? sunRays : std::min<uint32_t>(GROTTO_FACE_COARSE_SUN_RAYS, sunRays);
         for (uint32_t t = 0; t < perFace; ++t) {
             voxel::FaceTexel& texel = texels_[size_t(f) * perFace + t];
-            texel = voxel::unpackFaceTexel(voxel::packedTexel(gpu.texelWords, g * perFace + t), rays, sun, settings_.fullLight);
-            if (daySunFirst_) texel.daySun = gpu.texelWords[daySunFirst_ + g * perFace + t], texel.dayPositions = voxel::kDaySunPositions;
+            texel = voxel::unpackFaceTexel(voxel::packedTexel(words, g * perFace + t), rays, sun, settings_.fullLight);
+            if (daySunFirst_) texel.daySun = words[daySunFirst_ + g * perFace + t], texel.dayPositions = voxel::kDaySunPositions;
         }
     }
 }
