@@ -3,7 +3,11 @@
 // The face cache's texels traced on the GPU: one invocation per texel of the faces
 // face_cache_plan.comp took this frame, each tracing the texel's whole sequence of
 // rays (the CPU bake's, voxel/face_bake.cpp) afresh, so a texel traced again
-// continues nothing and needs no sums kept. It writes the texel's packed bits
+// continues nothing and needs no sums kept. A face's first look, at the coarse
+// rays, is one invocation for the whole face: the face traced as one texel (the
+// CPU bake's at one texel a side), its value in each of its texels. A CPU device
+// runs 8 invocations in step, so a quarter of the invocations is a quarter of the
+// time, where a texel's fewer rays would leave the lanes' other work. It writes the texel's packed bits
 // (shared/face_cache.h), with the day's sun its bits for each position, and its
 // face's level. With full light, a texel traced
 // here holds the sky's light alone until the world is baked again.
@@ -38,28 +42,25 @@ bool leaves(VoxelRayStart start, vec3 d) {
     return trace.boundsHi.w != 0 || voxelRay(start, d, kVoxelRayNever, trace.boundsLo.xyz, trace.boundsHi.xyz, true, 16384).t < 0.0;
 }
 
-void main() {
-    uint k = c.texelsPerSide, texels = k * k;
-    uint item = gl_GlobalInvocationID.x, slot = item / texels, t = item % texels;
-    uint empty = header[GROTTO_FACE_TRACED_EMPTY], taken = header[GROTTO_FACE_TRACED_PARTIAL];
-    if (slot >= empty + taken) return;
-    bool first = slot < empty;
-    uvec4 e = first ? queue[slot] : queue[header[GROTTO_FACE_CAPACITY] + slot - empty];
-    bool full = !first || header[GROTTO_FACE_EMPTY_FULL] != 0u;
-    uint rays = full ? c.rays : c.coarseRays, sunRays = full ? c.sunRays : c.coarseSunRays;
-    ivec3 cell = ivec3(e.xyz);
-    uint dir = e.w & 7u, face = e.w >> 3u;
-    uint i = t % k, j = t / k;
-
-    // The texel's centre, a hair in front of the face, in the open voxel there.
-    uint axis = faceAxis(dir), ua = faceUAxis(dir), va = faceVAxis(dir);
+// Texel (i, j)'s centre (of k a side) of the face of `cell` looking `dir`, a hair
+// in front of the face, in the open voxel there.
+VoxelRayStart texelStart(ivec3 cell, uint dir, uint i, uint j, uint k) {
+    uint axis = faceAxis(dir);
     bool positive = facePositive(dir);
     VoxelRayStart start;
     start.voxel = cell;
     start.voxel[axis] += positive ? 1 : -1;
     start.fraction[axis] = positive ? c.epsilon : 1.0 - c.epsilon;
-    start.fraction[ua] = (float(i) + 0.5) / float(k);
-    start.fraction[va] = (float(j) + 0.5) / float(k);
+    start.fraction[faceUAxis(dir)] = (float(i) + 0.5) / float(k);
+    start.fraction[faceVAxis(dir)] = (float(j) + 0.5) / float(k);
+    return start;
+}
+
+// Texel (i, j) of k a side of the face of `cell` looking `dir`, traced with `rays`
+// and `sunRays`: its AO and sun half, and its light word.
+uvec2 traceTexel(ivec3 cell, uint dir, uint i, uint j, uint k, uint rays, uint sunRays) {
+    uint ua = faceUAxis(dir), va = faceVAxis(dir);
+    VoxelRayStart start = texelStart(cell, dir, i, j, k);
     vec3 n = faceAxisNormal(dir), t1, t2;
     texelTangents(n, t1, t2);
 
@@ -104,16 +105,46 @@ void main() {
     uint light = c.skyZenith.w > 0.5
                      ? faceCacheEncodeLight((horizon * c.skyHorizon.rgb + zenith * c.skyZenith.rgb) / samples)
                      : packHalf2x16(vec2(horizon, zenith) / samples);
-    storeTexel(face * texels + t, aoSun, light);
-    // The day's positions, from the centre, at every level: a sun seen once is
-    // seen exact, and where these bits disagree the frame traces per pixel.
-    if (c.dayPositions > 0u) {
-        uint bits = 0u;
-        for (uint m = 0u; m < c.dayPositions; ++m) {
-            vec3 d = dayPositions[m].xyz;
-            if (dot(d, n) > 0.0 && leaves(start, d)) bits |= 1u << m;
+    return uvec2(aoSun, light);
+}
+
+// The day's positions, from texel (i, j)'s centre, at every level: a sun seen
+// once is seen exact, and where these bits disagree the frame traces per pixel.
+void traceDaySun(ivec3 cell, uint dir, uint i, uint j, uint k, uint texel) {
+    VoxelRayStart start = texelStart(cell, dir, i, j, k);
+    vec3 n = faceAxisNormal(dir);
+    uint bits = 0u;
+    for (uint m = 0u; m < c.dayPositions; ++m) {
+        vec3 d = dayPositions[m].xyz;
+        if (dot(d, n) > 0.0 && leaves(start, d)) bits |= 1u << m;
+    }
+    faceTexels[c.daySunFirst + texel] = bits;
+}
+
+void main() {
+    uint k = c.texelsPerSide, texels = k * k;
+    uint empty = header[GROTTO_FACE_TRACED_EMPTY], taken = header[GROTTO_FACE_TRACED_PARTIAL];
+    bool coarse = header[GROTTO_FACE_EMPTY_FULL] == 0u;
+    // The first list's faces at the coarse rays take an invocation each, the rest one a texel.
+    uint item = gl_GlobalInvocationID.x, wholeFaces = coarse ? empty : 0u;
+    uint slot = item < wholeFaces ? item : wholeFaces + (item - wholeFaces) / texels;
+    uint t = item < wholeFaces ? 0u : (item - wholeFaces) % texels;
+    if (slot >= empty + taken) return;
+    bool first = slot < empty, full = !first || !coarse;
+    uvec4 e = first ? queue[slot] : queue[header[GROTTO_FACE_CAPACITY] + slot - empty];
+    ivec3 cell = ivec3(e.xyz);
+    uint dir = e.w & 7u, face = e.w >> 3u;
+    if (full) {
+        uint i = t % k, j = t / k;
+        uvec2 bits = traceTexel(cell, dir, i, j, k, c.rays, c.sunRays);
+        storeTexel(face * texels + t, bits.x, bits.y);
+        if (c.dayPositions > 0u) traceDaySun(cell, dir, i, j, k, face * texels + t);
+    } else {
+        uvec2 bits = traceTexel(cell, dir, 0u, 0u, 1u, c.coarseRays, c.coarseSunRays);
+        for (uint u = 0u; u < texels; ++u) {
+            storeTexel(face * texels + u, bits.x, bits.y);
+            if (c.dayPositions > 0u) traceDaySun(cell, dir, u % k, u / k, k, face * texels + u);
         }
-        faceTexels[c.daySunFirst + face * texels + t] = bits;
     }
     if (t == 0u) {
         uint shiftBits = (face & 15u) * 2u;

@@ -145,21 +145,59 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     EXPECT_EQ(plan[GROTTO_FACE_TRACED_EMPTY], beside);
     const bool besideFull = plan[GROTTO_FACE_EMPTY_FULL] != 0;
     EXPECT_EQ(besideFull, beside * perFace <= budget);
-    const uint32_t full = std::min<uint32_t>(uint32_t(underPixels), (budget - beside * (besideFull ? perFace : coarse)) / perFace);
+    // Beside faces it cannot afford at the full rays, the frame traces them alone.
+    const uint32_t full = besideFull ? std::min<uint32_t>(uint32_t(underPixels), (budget - beside * perFace) / perFace) : 0;
     EXPECT_EQ(plan[GROTTO_FACE_TRACED_PARTIAL], full);
     EXPECT_EQ(count(GROTTO_FACE_LEVEL_CONVERGED), full + (besideFull ? beside : 0));
     EXPECT_EQ(count(1), underPixels + (besideFull ? 0 : beside) - full);
-    // The coarse texels: 8 rays each, the same sequence's first.
-    std::vector<voxel::FaceTexel> cpu(cache.texels().size());
+    // Beside faces the budget cannot trace at the full rays, though at the coarse
+    // it could with rays to spare: the frame traces them alone, and the faces
+    // partly traced wait for the next frame.
+    {
+        LiveScene again(ctx(), voxel::World(world));
+        again.progressiveFaceCache(settings);
+        Renderer cold(ctx(), again.gpu(), softSun(world), cacheAo(world, 1.5, 1), 96, 72);
+        cold.render(camera, 0);
+        const uint32_t tight = beside * coarse + perFace;
+        ASSERT_GT(beside * perFace, tight);
+        Renderer next(ctx(), again.gpu(), softSun(world), cacheAo(world, 1.5, tight), 96, 72);
+        next.render(camera, 1);
+        const std::vector<uint32_t> h = again.gpu().faceCache()->lastHeader();
+        ASSERT_EQ(h[GROTTO_FACE_TRACED_EMPTY], beside);
+        ASSERT_GT(h[GROTTO_FACE_QUEUE_PARTIAL], 0u);
+        EXPECT_EQ(h[GROTTO_FACE_EMPTY_FULL], 0u);
+        EXPECT_EQ(h[GROTTO_FACE_TRACED_PARTIAL], 0u);
+    }
+    // The coarse texels: the face traced as one texel with 8 rays, the same
+    // sequence's first, in each of its texels.
     voxel::FaceBakeSettings coarseSettings = settings;
     coarseSettings.rays = GROTTO_FACE_COARSE_RAYS, coarseSettings.sunRays = GROTTO_FACE_COARSE_SUN_RAYS;
-    voxel::bakeFaces(scene.bricks(), world, cache.faces(), coarseSettings, cpu);
+    coarseSettings.texelsPerSide = 1;
+    std::vector<voxel::FaceTexel> whole(cache.faces().size()), cpu(cache.texels().size());
+    voxel::bakeFaces(scene.bricks(), world, cache.faces(), coarseSettings, whole);
+    for (size_t t = 0; t < cpu.size(); ++t) cpu[t] = whole[t / (kK * kK)];
     std::vector<uint8_t> coarseOnly(cache.levels().begin(), cache.levels().end());
     for (uint8_t& l : coarseOnly) l = l == 1 ? GROTTO_FACE_LEVEL_CONVERGED : 0;
     const Agreement a = compare(cache.texels(), cpu, coarseOnly);
     EXPECT_LT(double(a.differing), 0.01 * double(a.compared));
+    // A carve in view: its first frame gives the faces it reached their first look
+    // alone, though the budget has room for them at the full rays, and the faces
+    // partly traced wait for the next frame.
+    scene.apply(voxel::Edit::carveSphere(world.origin() + glm::dvec3(3.2, 0.4, 2.9), 1.2));
+    renderer.render(camera, 2);
+    const std::vector<uint32_t> carved = scene.gpu().faceCache()->lastHeader();
+    const uint32_t reached = carved[GROTTO_FACE_TRACED_EMPTY];
+    std::printf("after the carve: %u faces new or reached in view, %u partly traced asked for\n", reached,
+                carved[GROTTO_FACE_QUEUE_PARTIAL]);
+    ASSERT_GT(reached, 0u);
+    ASSERT_GT(carved[GROTTO_FACE_QUEUE_PARTIAL], 0u);
+    ASSERT_LE(reached * perFace, budget);
+    EXPECT_EQ(carved[GROTTO_FACE_EMPTY_FULL], 0u);
+    EXPECT_EQ(carved[GROTTO_FACE_TRACED_PARTIAL], 0u);
+    EXPECT_EQ(scene.gpu().faceCache()->lastHeader()[GROTTO_FACE_DISPATCH],
+              (reached + GROTTO_FACE_TRACE_GROUP - 1) / GROTTO_FACE_TRACE_GROUP);  // an invocation a face
     // On until a frame finds nothing in view left: every face traced converges.
-    int frame = 2;
+    int frame = 3;
     for (; frame < 400; ++frame) {
         renderer.render(camera, uint32_t(frame));
         const std::vector<uint32_t> h = scene.gpu().faceCache()->lastHeader();

@@ -31,6 +31,8 @@ FaceCacheTracePass::FaceCacheTracePass(vk::Context& ctx)
 void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, VkExtent2D size, const vk::Buffer& frame,
                                 const vk::Buffer& traceConstants, const GpuOccupancy& occupancy,
                                 const GpuFaceCache& cache, uint32_t budget) {
+    if (cache.afterEdit() && cache.id() != traced_) budget = 0;
+    traced_ = cache.id();
     const FaceCacheRays& s = cache.rays();
     const GpuFaceCache::Sun& sun = cache.sun();
     const bool pointSun = !(sun.angleDegrees > 0.0f);

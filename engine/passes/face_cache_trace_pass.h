@@ -6,6 +6,9 @@
 // rays (face_cache_trace.comp), before the composite reads them. A face never
 // traced gets a coarse look at once, whatever the budget, so no surface in view
 // shows a placeholder; the budget then converges them, least converged first.
+// The first frame after an edit gives the faces it reached in view their first
+// look alone (the budget is 0 for it), so an edit shows in a frame of its own
+// cost, not the budget's, and the budget refines from the next.
 // Once every face has converged the passes do (almost) nothing. Reads the G-buffer's depth and surface
 // ids, the frame uniforms, the trace constants and the occupancy; writes the
 // cache's texels and levels.
@@ -37,6 +40,7 @@ public:
 private:
     vk::Context& ctx_;
     ComputePass gate_, request_, plan_, trace_;
+    uint64_t traced_ = 0;  // the GpuFaceCache::id this pass traced last
 };
 
 }  // namespace grotto

@@ -4,6 +4,7 @@
 #include "shaders/shared/face_trace.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cstring>
 
 namespace grotto {
@@ -15,13 +16,17 @@ constexpr VkBufferUsageFlags kCacheBufferUsage = VK_BUFFER_USAGE_STORAGE_BUFFER_
 uint32_t capacityFor(uint32_t faces, uint32_t k) {
     return std::min({faces, 65536u, 65535u * GROTTO_FACE_TRACE_GROUP / (2u * std::max(k * k, 1u))});
 }
+uint64_t nextId() {
+    static std::atomic<uint64_t> last{0};
+    return ++last;
+}
 }  // namespace
 
 GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Sun sun, FaceCacheRays rays,
                            std::span<const uint8_t> levels, FaceCacheSky sky)
     : ctx_(ctx), table_(a.table), texelsPerSide_(a.texelsPerSide), faceCount_(a.faceCount), materialsFirst_(a.materialsFirst),
       daySunFirst_(a.daySunFirst), dayLightFirst_(a.dayLightFirst), dayFacesFirst_(a.dayFacesFirst),
-      sun_(sun), rays_(rays), sky_(sky) {
+      sun_(sun), rays_(rays), sky_(sky), id_(nextId()) {
     const uint32_t capacity = capacityFor(a.faceCount, a.texelsPerSide);  // the queue's, kept in its header
     // Empty arrays (a world with no faces) still bind: one zero word each.
     const uint32_t zero[4] = {};

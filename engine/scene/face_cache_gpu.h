@@ -58,6 +58,13 @@ public:
     const Sun& sun() const { return sun_; }
     const FaceCacheSky& sky() const { return sky_; }
     const FaceCacheRays& rays() const { return rays_; }
+    // This copy, among all copies made in the process: a pass tells a new one from
+    // the one it traced last frame, even at the same address.
+    uint64_t id() const { return id_; }
+    // Made by an edit: its first frame gives the faces the edit reached in view
+    // their first look alone (face_cache_trace_pass.h).
+    bool afterEdit() const { return afterEdit_; }
+    void setAfterEdit() { afterEdit_ = true; }
     // The cache's own arrays and levels (what `info` and `bench` report); the
     // tracer's queue and request bits come on top.
     size_t gpuBytes() const { return size_t(bricks_.size + records_.size + texels_.size + levels_.size); }
@@ -104,6 +111,8 @@ private:
     Sun sun_;
     FaceCacheRays rays_;
     FaceCacheSky sky_;
+    uint64_t id_;
+    bool afterEdit_ = false;
 };
 
 }  // namespace grotto

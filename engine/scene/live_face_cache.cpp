@@ -162,7 +162,7 @@ void LiveFaceCache::edited(const voxel::BrickTable& table, const voxel::World& w
         levels[f] = reach[f] == voxel::FaceReach::Untouched ? old : std::min<uint8_t>(old, 2);
     }
     levels_ = std::move(levels);
-    upload(world);
+    upload(world, true);
 }
 
 void LiveFaceCache::editWithFullLight(const voxel::BrickTable& table, const voxel::World& world,
@@ -177,10 +177,10 @@ void LiveFaceCache::editWithFullLight(const voxel::BrickTable& table, const voxe
     glowing_ = voxel::glowingFaces(world, faces_);
     if (stats) stats->relit = relit.faces;
     levelsFromTexels();
-    upload(world);
+    upload(world, true);
 }
 
-void LiveFaceCache::upload(const voxel::World& world) {
+void LiveFaceCache::upload(const voxel::World& world, bool afterEdit) {
     voxel::FaceCacheArrays arrays = voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight);
     // With full light, what objects read of the light world faces send.
     if (settings_.fullLight) voxel::appendFaceMaterials(arrays, faces_, world);
@@ -194,6 +194,7 @@ void LiveFaceCache::upload(const voxel::World& world) {
                           voxel::daySunPositions(settings_) ? settings_.day : std::nullopt},
         FaceCacheRays{settings_.rays, voxel::sunRaysPerTexel(settings_), float(settings_.radius / voxelSize_)}, gpuLevels,
         FaceCacheSky{settings_.fullLight, glm::vec3(settings_.skyZenith), glm::vec3(settings_.skyHorizon)});
+    if (afterEdit) gpu->setAfterEdit();
     vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still read the old copy
     scene_.faceCache_ = std::move(gpu);
     order_ = arrays.faceOrder;

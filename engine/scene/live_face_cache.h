@@ -83,7 +83,8 @@ public:
     size_t unconverged() const;
 
 private:
-    void upload(const voxel::World& world);  // replaces the scene's GPU copy
+    // Replaces the scene's GPU copy; `afterEdit`: an edit's (GpuFaceCache::afterEdit).
+    void upload(const voxel::World& world, bool afterEdit = false);
     void levelsFromTexels();  // each face's level from its texels' rays
     // An edit with full light: traced here, and the faces whose light moved lit again.
     void editWithFullLight(const voxel::BrickTable& table, const voxel::World& world, const IndexBox& changed,
