@@ -320,6 +320,43 @@ TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
     }
 }
 
+// The layout sorts bricks by a 64-bit key of their place from the least brick,
+// 21 bits an axis; a world far from the origin keeps to it, and one wider than
+// 2^24 voxels compares the bricks themselves: either way each face is found at
+// one place, with its own texels.
+TEST(FaceCache, TheLayoutFindsEveryFaceFarFromTheOriginAndInAWorldWiderThanItsKey) {
+    std::mt19937 rng(21);
+    const World w = grotto::test::randomWorld(12, 0.3, rng);
+    const std::vector<ExposedFace> faces = exposedFaces(w);
+    const std::vector<FaceTexel> texels = grotto::test::bakeAll(w, faces, {.texelsPerSide = 1, .rays = 16, .sunRays = 1});
+    for (const bool wide : {false, true}) {
+        // Far: every face moved 2^26 voxels down x; wide: those in the upper half of y moved back up 2^27.
+        std::vector<std::pair<ExposedFace, FaceTexel>> moved;
+        for (size_t f = 0; f < faces.size(); ++f) {
+            ExposedFace m = faces[f];
+            m.cell.x -= 1 << 26;
+            if (wide && m.cell.y >= 6) m.cell.x += 1 << 27;
+            moved.push_back({m, texels[f]});
+        }
+        std::sort(moved.begin(), moved.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::vector<ExposedFace> listed;
+        std::vector<FaceTexel> theirs;
+        for (const auto& [face, texel] : moved) listed.push_back(face), theirs.push_back(texel);
+        const FaceCacheArrays arrays = layFaceCache(listed, theirs, 1);
+        gpu::gpuTwin = &arrays;
+        std::vector<int> seen(listed.size(), 0);
+        for (size_t f = 0; f < listed.size(); ++f) {
+            const int g = gpu::faceCacheFace(listed[f].cell, listed[f].dir);
+            ASSERT_GE(g, 0) << "wide " << wide << " face " << f;
+            ++seen[size_t(g)];
+            EXPECT_EQ(arrays.faceOrder[size_t(g)], f);
+            EXPECT_EQ(gpu::faceCacheTexel(uint32_t(g)), packFaceTexel(theirs[f]));
+        }
+        EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; })) << "each face at one index";
+        gpu::gpuTwin = nullptr;
+    }
+}
+
 // Full light over the day reads a point's texels and the four faces whose centres
 // lie nearest from one look-up: both equal what each look-up alone finds, at
 // random points across faces (near their sides, where neighbours and other

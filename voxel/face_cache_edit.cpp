@@ -90,7 +90,13 @@ void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox
                      CacheEditStats* stats, bool traceNow, std::vector<FaceReach>* reach) {
     const uint32_t k = s.texelsPerSide, perFace = k * k;
     std::vector<ExposedFace> now = exposedFacesAfterEdit(table, world, faces, changed);
-    std::vector<FaceTexel> carried(now.size() * perFace);
+    // The lists differ only near the edit: between a common head and tail, one
+    // stretch of each. The texels change in place there alone (a world's texels
+    // are tens of megabytes: a fresh copy an edit cost more than the rest of it).
+    size_t head = 0, oldTail = faces.size(), newTail = now.size();
+    while (head < oldTail && head < newTail && faces[head] == now[head]) ++head;
+    while (oldTail > head && newTail > head && faces[oldTail - 1] == now[newTail - 1]) --oldTail, --newTail;
+    std::vector<FaceTexel> middle((newTail - head) * perFace);  // the new stretch's, carried or empty
     std::vector<FaceReach> reached(now.size(), FaceReach::Untouched);
     const StaleRule rule(changed, s, world.voxelSize());
     // Each face on its own: in parallel, each range walking both lists (in order) together.
@@ -108,13 +114,23 @@ void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox
             if (!existed || worst.now()) {
                 const bool skyOnly = existed && !worst.ao && !worst.sun;
                 reached[f] = skyOnly ? FaceReach::SkyNear : FaceReach::Stale;
-                if (!existed || traceNow) continue;
             } else if (worst.skyFar) {
                 reached[f] = FaceReach::SkyFar;
             }
-            std::copy_n(texels.begin() + ptrdiff_t(old * perFace), perFace, carried.begin() + ptrdiff_t(f * perFace));
+            if (existed && f >= head && f < newTail)
+                std::copy_n(texels.begin() + ptrdiff_t(old * perFace), perFace, middle.begin() + ptrdiff_t((f - head) * perFace));
         }
     });
+    // The tail moved to its new place, the new stretch put in.
+    const size_t oldSize = texels.size();
+    if (newTail > oldTail) {
+        texels.resize(now.size() * perFace);
+        std::move_backward(texels.begin() + ptrdiff_t(oldTail * perFace), texels.begin() + ptrdiff_t(oldSize), texels.end());
+    } else if (newTail < oldTail) {
+        std::move(texels.begin() + ptrdiff_t(oldTail * perFace), texels.end(), texels.begin() + ptrdiff_t(newTail * perFace));
+        texels.resize(now.size() * perFace);
+    }
+    std::copy(middle.begin(), middle.end(), texels.begin() + ptrdiff_t(head * perFace));
     std::vector<uint32_t> retrace;
     uint64_t far = 0;
     for (size_t f = 0; f < now.size(); ++f) {
@@ -123,15 +139,14 @@ void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox
     }
     if (stats) *stats = {.traced = retrace.size(), .carried = now.size() - retrace.size(), .skyFar = far};
     if (reach) *reach = std::move(reached);
-    if (!traceNow) retrace.clear();  // the stale keep their old texels till the GPU traces them
+    faces = std::move(now);
+    if (!traceNow) return;  // the stale keep their old texels till the GPU traces them
     std::vector<ExposedFace> redo(retrace.size());
-    for (size_t n = 0; n < retrace.size(); ++n) redo[n] = now[retrace[n]];
+    for (size_t n = 0; n < retrace.size(); ++n) redo[n] = faces[retrace[n]];
     std::vector<FaceTexel> traced(redo.size() * perFace);
     bakeFaces(table, world, redo, s, traced);
     for (size_t n = 0; n < retrace.size(); ++n)
-        std::copy_n(traced.begin() + ptrdiff_t(n * perFace), perFace, carried.begin() + ptrdiff_t(size_t(retrace[n]) * perFace));
-    faces = std::move(now);
-    texels = std::move(carried);
+        std::copy_n(traced.begin() + ptrdiff_t(n * perFace), perFace, texels.begin() + ptrdiff_t(size_t(retrace[n]) * perFace));
 }
 
 }  // namespace grotto::voxel

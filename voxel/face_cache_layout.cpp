@@ -6,8 +6,10 @@
 #define GROTTO_FACE_CACHE_LAYOUT_ONLY
 #include "shaders/shared/face_cache.h"
 
+#include <glm/gtc/type_precision.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 #include <algorithm>
 #include <bit>
@@ -79,20 +81,38 @@ size_t faceCacheGpuBytes(const ExposedFaceCount& count, uint32_t texelsPerSide, 
 }
 
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
-                             uint32_t texelsPerSide, bool fullLight) {
+                             uint32_t texelsPerSide, bool fullLight, std::vector<uint32_t> storage) {
     const uint32_t perFace = texelsPerSide * texelsPerSide;
-    // Each brick's faces by direction and bit: the order the GPU counts them in.
+    // Each brick's faces by direction and bit: the order the GPU counts them in,
+    // sorted in parallel on the brick as one 64-bit key (x, y, z from the least
+    // brick, 21 bits each) and the direction and bit as another; a world wider
+    // than 2^24 voxels compares the bricks themselves.
     struct Entry {
-        glm::ivec3 brick;
-        uint32_t dir, bit, face;
+        uint64_t brick;
+        uint32_t dirBit, face;
     };
-    std::vector<Entry> entries(faces.size());
-    for (uint32_t f = 0; f < faces.size(); ++f) {
-        const glm::ivec3 c = faces[f].cell;
-        entries[f] = {c >> 3, faces[f].dir, gpu::occupancyBit(c.x, c.y, c.z), f};
+    glm::ivec3 least(0), most(0);
+    for (size_t f = 0; f < faces.size(); ++f) {
+        const glm::ivec3 b = faces[f].cell >> 3;
+        least = f ? glm::min(least, b) : b, most = f ? glm::max(most, b) : b;
     }
-    std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) {
-        return std::tie(a.brick.x, a.brick.y, a.brick.z, a.dir, a.bit) < std::tie(b.brick.x, b.brick.y, b.brick.z, b.dir, b.bit);
+    const glm::i64vec3 span = glm::i64vec3(most) - glm::i64vec3(least);
+    const bool wide = span.x >= (1 << 21) || span.y >= (1 << 21) || span.z >= (1 << 21);
+    std::vector<Entry> entries(faces.size());
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, faces.size(), 16384), [&](const tbb::blocked_range<size_t>& r) {
+        for (size_t f = r.begin(); f < r.end(); ++f) {
+            const glm::ivec3 c = faces[f].cell;
+            const glm::u64vec3 b = glm::u64vec3(glm::i64vec3(c >> 3) - glm::i64vec3(least));
+            entries[f] = {wide ? 0 : b.x << 42 | b.y << 21 | b.z, faces[f].dir << 9 | gpu::occupancyBit(c.x, c.y, c.z),
+                          uint32_t(f)};
+        }
+    });
+    tbb::parallel_sort(entries.begin(), entries.end(), [&](const Entry& a, const Entry& b) {
+        if (wide) {
+            const glm::ivec3 ba = faces[a.face].cell >> 3, bb = faces[b.face].cell >> 3;
+            if (ba != bb) return BrickLess{}(ba, bb);
+        }
+        return a.brick != b.brick ? a.brick < b.brick : a.dirBit < b.dirBit;
     });
     FaceCacheArrays out;
     out.texelsPerSide = texelsPerSide;
@@ -101,18 +121,18 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
     out.fullLight = fullLight;
     std::vector<glm::ivec3> positions;  // record i's brick
     for (size_t first = 0, end = 0; first < entries.size(); first = end) {
-        const glm::ivec3 brick = entries[first].brick;
-        while (end < entries.size() && entries[end].brick == brick) ++end;
+        const glm::ivec3 brick = faces[entries[first].face].cell >> 3;
+        while (end < entries.size() && faces[entries[end].face].cell >> 3 == brick) ++end;
         const size_t base = out.records.size();
         out.records.resize(base + GROTTO_FACE_RECORD_WORDS, 0u);
         // Each direction's first face: the faces before it, the brick's in earlier directions included.
         for (uint32_t d = 0; d < 6; ++d) out.records[base + 96 + d] = uint32_t(first);
         for (size_t n = first; n < end; ++n) {
-            const Entry& e = entries[n];
-            for (uint32_t d = e.dir + 1; d < 6; ++d) ++out.records[base + 96 + d];
-            out.records[base + e.dir * 16 + (e.bit >> 5)] |= 1u << (e.bit & 31u);
-            if (e.bit < 256) out.records[base + 102 + e.dir / 3] += 1u << (e.dir % 3 * 9);  // in the first half
-            out.faceOrder.push_back(e.face);
+            const uint32_t dir = entries[n].dirBit >> 9, bit = entries[n].dirBit & 511u;
+            for (uint32_t d = dir + 1; d < 6; ++d) ++out.records[base + 96 + d];
+            out.records[base + dir * 16 + (bit >> 5)] |= 1u << (bit & 31u);
+            if (bit < 256) out.records[base + 102 + dir / 3] += 1u << (dir % 3 * 9);  // in the first half
+            out.faceOrder.push_back(entries[n].face);
         }
         positions.push_back(brick);
     }
@@ -123,7 +143,9 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
         const size_t face = out.faceOrder[texel / perFace];
         return packFaceTexel(texels[face * perFace + texel % perFace], fullLight);
     };
-    out.texels.assign(3 * ((texels.size() + 1) / 2), 0u);
+    // Every word is written below: the storage's old words need no clearing.
+    out.texels = std::move(storage);
+    out.texels.resize(3 * ((texels.size() + 1) / 2));
     tbb::parallel_for(tbb::blocked_range<size_t>(0, (count + 1) / 2, 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t pair = r.begin(); pair < r.end(); ++pair) {
             const glm::uvec2 even = packed(2 * pair), odd = packed(2 * pair + 1);

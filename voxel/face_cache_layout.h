@@ -51,8 +51,10 @@ inline constexpr double kFaceTexelStep[4] = {1.0 / 255, 1.0 / 255, 1.0 / 2048, 1
 inline constexpr double kFaceLightStep = 1.0 / 512;
 
 // `faces` as exposedFaces lists them, `texels` k x k per face in that order.
+// `storage`: memory the texel words may take (a live cache's last layout's): a
+// fresh array of tens of megabytes costs an edit more than filling it.
 FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const FaceTexel> texels,
-                             uint32_t texelsPerSide, bool fullLight = false);
+                             uint32_t texelsPerSide, bool fullLight = false, std::vector<uint32_t> storage = {});
 
 // Texel `texel`'s bits in packed words laid out as FaceCacheArrays::texels.
 glm::uvec2 packedTexel(std::span<const uint32_t> words, size_t texel);

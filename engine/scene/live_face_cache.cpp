@@ -181,7 +181,8 @@ void LiveFaceCache::editWithFullLight(const voxel::BrickTable& table, const voxe
 }
 
 void LiveFaceCache::upload(const voxel::World& world, bool afterEdit) {
-    voxel::FaceCacheArrays arrays = voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight);
+    voxel::FaceCacheArrays arrays =
+        voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight, std::move(wordStorage_));
     // With full light, what objects read of the light world faces send.
     if (settings_.fullLight) voxel::appendFaceMaterials(arrays, faces_, world);
     if (voxel::daySunPositions(settings_)) voxel::appendDaySun(arrays, texels_);
@@ -197,8 +198,9 @@ void LiveFaceCache::upload(const voxel::World& world, bool afterEdit) {
     if (afterEdit) gpu->setAfterEdit();
     vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still read the old copy
     scene_.faceCache_ = std::move(gpu);
-    order_ = arrays.faceOrder;
+    order_ = std::move(arrays.faceOrder);
     daySunFirst_ = arrays.daySunFirst;
+    wordStorage_ = std::move(arrays.texels);
 }
 
 }  // namespace grotto

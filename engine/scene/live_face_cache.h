@@ -97,6 +97,7 @@ private:
     std::vector<uint8_t> levels_;  // per face
     std::vector<uint32_t> order_;  // the GPU's face g is faces_[order_[g]]
     uint32_t daySunFirst_ = 0;     // where the GPU's texel words hold the day's sun bits (0: none)
+    std::vector<uint32_t> wordStorage_;  // the last layout's texel words, whose memory the next takes
     std::vector<voxel::GlowingFace> glowing_;  // with full light: the faces that glow, as of the last edit
     voxel::FaceBakeSettings settings_;
     double voxelSize_;
