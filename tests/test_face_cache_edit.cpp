@@ -98,6 +98,46 @@ TEST(FaceCache, AnEditRetracesWhatItCanReachAndTouchesNothingElse) {
                                     .sunDirection = glm::normalize(glm::dvec3(0.3, 0.9, -0.2)), .sunAngleDegrees = 4.0});
 }
 
+// A face judged whole from its centre is judged as its texels are, one by one:
+// random faces of a world 64 voxels wide, random boxes inside it and beyond, for
+// a point sun and discs of several sizes, AO radii from a tenth of a voxel to 12
+// voxels and 1 to 4 texels a side. Most faces are settled from the centre.
+TEST(FaceCache, AFaceJudgedWholeIsJudgedAsItsTexels) {
+    std::mt19937 rng(31);
+    const World w = grotto::test::randomWorld(64, 0.05, rng);
+    const std::vector<ExposedFace> faces = exposedFaces(w);
+    std::uniform_int_distribution<int> at(-8, 71), extent(0, 6);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    size_t judged = 0, settled = 0;
+    for (int e = 0; e < 24; ++e) {
+        const glm::ivec3 lo(at(rng), at(rng), at(rng));
+        const IndexBox box{lo, lo + glm::ivec3(extent(rng), extent(rng), extent(rng))};
+        const FaceBakeSettings s{.radius = e % 3 == 0 ? 0.1 : e % 3 == 1 ? 2.0 : 12.0,
+                                 .texelsPerSide = uint32_t(1 + e % 4),
+                                 .sunDirection = glm::normalize(glm::dvec3(unit(rng), 0.2 + std::abs(unit(rng)), unit(rng))),
+                                 .sunAngleDegrees = e % 4 == 0 ? 0.0 : e % 4 == 1 ? 0.5 : e % 4 == 2 ? 4.0 : 30.0};
+        const StaleRule rule(box, s, w.voxelSize());
+        for (size_t f = e; f < faces.size(); f += 7) {
+            const StaleParts whole = rule.worstOnFace(faces[f], s.texelsPerSide);
+            StaleParts each;
+            for (uint32_t j = 0; j < s.texelsPerSide; ++j)
+                for (uint32_t i = 0; i < s.texelsPerSide; ++i) {
+                    const StaleParts p = rule.at(texelPoint(faces[f], s.texelsPerSide, i, j), faces[f].dir);
+                    each.ao |= p.ao, each.sun |= p.sun, each.skyNear |= p.skyNear, each.skyFar |= p.skyFar;
+                }
+            ASSERT_EQ(whole.ao, each.ao) << "edit " << e << " face " << f;
+            ASSERT_EQ(whole.sun, each.sun) << "edit " << e << " face " << f;
+            ASSERT_EQ(whole.skyNear, each.skyNear) << "edit " << e << " face " << f;
+            ASSERT_EQ(whole.skyFar, each.skyFar) << "edit " << e << " face " << f;
+            ++judged;
+            settled += !each.ao && !each.sun && !each.skyNear;
+        }
+    }
+    std::printf("%zu faces judged, %zu with nothing to trace again\n", judged, settled);
+    EXPECT_GT(settled, judged / 2);
+    EXPECT_LT(settled, judged);
+}
+
 // The day's sun: the box swept along the whole day's path.
 TEST(FaceCache, AnEditRetracesTheDaysSunAlongTheBoxSweptOverTheDay) {
     checkEditsRetraceWhatTheyReach({.radius = 2.0, .texelsPerSide = 2, .rays = 12, .day = SunPath{48.0, 172.0, 20.0}},

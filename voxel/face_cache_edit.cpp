@@ -80,6 +80,42 @@ StaleParts StaleRule::at(glm::dvec3 point, uint8_t dir) const {
     return stale;
 }
 
+StaleParts StaleRule::worstOnFace(const ExposedFace& face, uint32_t k) const {
+    StaleParts worst;
+    auto eachTexel = [&] {
+        for (uint32_t j = 0; j < k; ++j)
+            for (uint32_t i = 0; i < k; ++i) {
+                const StaleParts p = at(texelPoint(face, k, i, j), face.dir);
+                worst.ao |= p.ao, worst.sun |= p.sun, worst.skyNear |= p.skyNear, worst.skyFar |= p.skyFar;
+            }
+        return worst;
+    };
+    if (empty_ || daySun_) return eachTexel();
+    // The texels' points lie within `rho` of the face's centre, on its plane (and
+    // a little more, so rounding never decides).
+    const glm::dvec3 c = texelPoint(face, 1, 0, 0);
+    const double rho = std::sqrt(2.0) * (0.5 - 0.5 / double(std::max(k, 1u))) + 1e-6;
+    // AO: the distance to the box moves by at most rho.
+    if (distanceToBox(c, lo_, hi_) - rho <= aoReach_) return eachTexel();
+    // Sun: a ray from a texel that meets the box grown by its spread is a ray
+    // from the centre that meets it grown by rho more; the spread grows with the
+    // distance, at most rho more than the centre's.
+    const double d = glm::length(centre_ - c);
+    const double spread = tanHalfAngle_ * (halfDiagonal_ + d + rho) + texelHalf_ + slack_ + rho;
+    if (rayMeetsBox(c, sun_, lo_ - spread, hi_ + spread)) return eachTexel();
+    // Sky: whether the box lies in front is the plane's, the same for every
+    // texel; far only where every texel is farther than the centre less rho.
+    glm::dvec3 normal(0.0);
+    normal[face.dir >> 1] = (face.dir & 1) == 0 ? 1.0 : -1.0;
+    const double r = halfDiagonal_;
+    if (glm::dot(centre_ - c, normal) > -r) {
+        const double nearest = d - rho;
+        if (nearest <= r || (r * r) / (nearest * nearest) > kSkyStaleShare) return eachTexel();
+        worst.skyFar = true;
+    }
+    return worst;
+}
+
 StaleParts staleAfterEdit(glm::dvec3 point, uint8_t dir, const IndexBox& changed, const FaceBakeSettings& s,
                           double voxelSize, std::span<const glm::dvec3> daySun) {
     return StaleRule(changed, s, voxelSize, daySun).at(point, dir);
@@ -105,12 +141,7 @@ void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox
         for (size_t f = r.begin(); f < r.end(); ++f) {
             while (old < faces.size() && faces[old] < now[f]) ++old;
             const bool existed = old < faces.size() && faces[old] == now[f];
-            StaleParts worst;
-            for (uint32_t j = 0; j < k && existed; ++j)
-                for (uint32_t i = 0; i < k; ++i) {
-                    const StaleParts p = rule.at(texelPoint(now[f], k, i, j), now[f].dir);
-                    worst.ao |= p.ao, worst.sun |= p.sun, worst.skyNear |= p.skyNear, worst.skyFar |= p.skyFar;
-                }
+            const StaleParts worst = existed ? rule.worstOnFace(now[f], k) : StaleParts{};
             if (!existed || worst.now()) {
                 const bool skyOnly = existed && !worst.ao && !worst.sun;
                 reached[f] = skyOnly ? FaceReach::SkyNear : FaceReach::Stale;
@@ -124,7 +155,9 @@ void updateAfterEdit(const BrickTable& table, const World& world, const IndexBox
     // The tail moved to its new place, the new stretch put in.
     const size_t oldSize = texels.size();
     if (newTail > oldTail) {
-        texels.resize(now.size() * perFace);
+        const size_t size = now.size() * perFace;
+        if (texels.capacity() < size) texels.reserve(size + size / 8);  // room for the next edit's faces
+        texels.resize(size);
         std::move_backward(texels.begin() + ptrdiff_t(oldTail * perFace), texels.begin() + ptrdiff_t(oldSize), texels.end());
     } else if (newTail < oldTail) {
         std::move(texels.begin() + ptrdiff_t(oldTail * perFace), texels.end(), texels.begin() + ptrdiff_t(newTail * perFace));

@@ -50,6 +50,11 @@ public:
     StaleRule(const IndexBox& changed, const FaceBakeSettings& settings, double voxelSize,
               std::span<const glm::dvec3> daySun = {});
     StaleParts at(glm::dvec3 point, uint8_t dir) const;
+    // Each part stale on any of `face`'s k x k texels (`at` at each texel's point),
+    // found from the face's centre alone where that settles it for every texel:
+    // the texels lie within a known distance of it, and an edit is far from most
+    // faces of a world.
+    StaleParts worstOnFace(const ExposedFace& face, uint32_t k) const;
 
 private:
     bool empty_;

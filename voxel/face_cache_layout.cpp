@@ -145,7 +145,9 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
     };
     // Every word is written below: the storage's old words need no clearing.
     out.texels = std::move(storage);
-    out.texels.resize(3 * ((texels.size() + 1) / 2));
+    const size_t words = 3 * ((texels.size() + 1) / 2);
+    if (out.texels.capacity() < words) out.texels.reserve(words + words / 8);  // room for the next edit's faces
+    out.texels.resize(words);
     tbb::parallel_for(tbb::blocked_range<size_t>(0, (count + 1) / 2, 4096), [&](const tbb::blocked_range<size_t>& r) {
         for (size_t pair = r.begin(); pair < r.end(); ++pair) {
             const glm::uvec2 even = packed(2 * pair), odd = packed(2 * pair + 1);

@@ -34,6 +34,9 @@ LiveFaceCache::LiveFaceCache(GpuScene& scene, const voxel::World& world, std::ve
     : scene_(scene), faces_(std::move(faces)), texels_(std::move(texels)), dayLight_(std::move(dayLight)), settings_(settings),
       voxelSize_(world.voxelSize()) {
     if (settings_.fullLight) glowing_ = voxel::glowingFaces(world, faces_);
+    // Room for edits to add faces in place (voxel::updateAfterEdit): a fresh copy
+    // of tens of megabytes would cost an edit more than the rest of its work.
+    texels_.reserve(texels_.size() + texels_.size() / 8);
     levelsFromTexels();
     upload(world);
 }
