@@ -1,6 +1,7 @@
 // The `mkworld` generators: deterministic, built the way their comments say, and
 // clear errors for bad input.
 #include "grotto/error.h"
+#include "tests/test_util.h"
 #include "voxel/generators.h"
 #include "voxel/solid.h"
 
@@ -240,9 +241,13 @@ TEST(Generators, GeneratedSizeBoundsWhatIsMade) {
         const char* kind;
         int size;
     };
+    // Under the sanitizers caves at 64 only: its 256 was most of the test's time
+    // there (the noise over 64 times the volume), and its bound's tightness is
+    // checked by the release build; every other case as before.
     for (const Case c : {Case{"rooms", 64}, Case{"rooms", 256}, Case{"caves", 64}, Case{"caves", 256}, Case{"thin", 64},
                          Case{"thin", 256}, Case{"city", 256}, Case{"city", 1024}, Case{"sphere", 64}, Case{"sphere", 256},
                          Case{"mesh", 64}, Case{"houses", 64}, Case{"houses", 256}, Case{"mine", 64}, Case{"mine", 128}}) {
+        if (grotto::test::kAddressSanitizer && std::string(c.kind) == "caves" && c.size > 64) continue;
         SCOPED_TRACE(std::string(c.kind) + " " + std::to_string(c.size));
         GeneratorOptions o = sized(c.size);
         if (std::string(c.kind) == "mesh") o.meshFile = dir.write("cube.obj", kCubeObj);

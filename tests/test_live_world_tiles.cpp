@@ -3,6 +3,7 @@
 #include "grotto/error.h"
 #include "tests/live_world_checks.h"
 #include "tests/live_world_model.h"
+#include "tests/test_util.h"
 #include "voxel/generators.h"
 #include "voxel/reference_ao.h"
 #include "voxel/solid.h"
@@ -48,7 +49,11 @@ TEST(LiveWorld, LargeFillsAreTilesAndUndoExactly) {
 // fill's surface, every face of it once.
 TEST(LiveWorld, MeshOfALargeFillIsItsSurface) {
     World w = slabWorld();  // the slab lies inside the fill
-    const IndexBox box{{-37, -5, -3}, {218, 250, 252}};  // 256^3, off brick and chunk boundaries
+    // 256^3 (128^3 under the sanitizers, where meshing the surface's chunks was
+    // the time: still 4 chunks a side, 18 of them inside), off brick and chunk
+    // boundaries.
+    const int side = grotto::test::underSanitizers(256, 128);
+    const IndexBox box{{-37, -5, -3}, glm::ivec3(-37, -5, -3) + (side - 1)};
     w.apply(Edit::fillBox(box, 2));
     const Mesh mesh = w.mesh();
     uint64_t twiceArea = 0;  // of each convex quad or triangle: half the cross product of its diagonals
@@ -56,7 +61,14 @@ TEST(LiveWorld, MeshOfALargeFillIsItsSurface) {
         const glm::dvec3 d = glm::abs(glm::cross(glm::dvec3(q.corner(2) - q.corner(0)), glm::dvec3(q.corner(3) - q.corner(1))));
         twiceArea += uint64_t(d.x + d.y + d.z);  // one axis is non-zero: the face's normal
     }
-    EXPECT_EQ(twiceArea, 2 * 6ull * 256 * 256);
+    EXPECT_EQ(twiceArea, 2 * 6ull * uint64_t(side) * uint64_t(side));
+    size_t insideChunks = 0;  // chunks wholly inside the fill, whose bricks say they have no faces
+    for (int z = -64; z <= 256; z += 32)
+        for (int y = -64; y <= 256; y += 32)
+            for (int x = -64; x <= 256; x += 32)
+                insideChunks += glm::all(glm::greaterThan(glm::ivec3(x, y, z), box.min)) &&
+                                glm::all(glm::lessThan(glm::ivec3(x, y, z) + 31, box.max));
+    EXPECT_GE(insideChunks, 18u) << "the test needs chunks inside the fill";
     for (const MeshChunk& c : mesh.chunks) {  // only chunks on the surface hold quads
         const glm::ivec3 lo = c.origin, hi = c.origin + 31;
         const bool inside = glm::all(glm::greaterThan(lo, box.min)) && glm::all(glm::lessThan(hi, box.max));
@@ -91,13 +103,17 @@ TEST(LiveWorld, FillsAndCarvesAcrossTilesMatchTheModel) {
 // A sphere's inside becomes tiles: only the bricks its surface crosses are leaves.
 TEST(LiveWorld, LargeSphereIsTilesInsideLeavesOnItsSurface) {
     World w = slabWorld();
-    const double r = 200.0;  // voxels; the world's voxels are half a unit
-    const glm::dvec3 c = centreOf(w, {0, 400, 0});
+    // Voxels; the world's voxels are half a unit. Under the sanitizers 100, not
+    // 200: the voxels of its surface's bricks, set one at a time, were the time;
+    // its inside is still over 5,000 bricks of tiles.
+    const int ri = grotto::test::underSanitizers(200, 100);
+    const double r = ri;
+    const glm::dvec3 c = centreOf(w, {0, 2 * ri, 0});
     const EditResult e = w.apply(Edit::fillSphere(c, r * w.voxelSize(), 3));
     uint64_t inside = 0;  // voxel centres within the radius, counted by hand
-    for (int x = -201; x <= 201; ++x)
-        for (int y = -201; y <= 201; ++y)
-            for (int z = -201; z <= 201; ++z) inside += double(x) * x + double(y) * y + double(z) * z <= r * r;
+    for (int x = -ri - 1; x <= ri + 1; ++x)
+        for (int y = -ri - 1; y <= ri + 1; ++y)
+            for (int z = -ri - 1; z <= ri + 1; ++z) inside += double(x) * x + double(y) * y + double(z) * z <= r * r;
     EXPECT_EQ(e.changed, inside);
     const double pi = 3.14159265358979, d = 8.0 * std::sqrt(3.0);
     const double surfaceBricks = 4.0 / 3.0 * pi * (std::pow(r + d, 3) - std::pow(r - d, 3)) / 512.0;
