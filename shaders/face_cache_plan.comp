@@ -17,7 +17,7 @@ void main() {
     uint capacity = header[GROTTO_FACE_CAPACITY];
     uint empty = min(header[GROTTO_FACE_QUEUE_EMPTY], capacity);
     uint partial = min(header[GROTTO_FACE_QUEUE_PARTIAL], capacity);
-    uint full = texels * (c.rays + c.sunRays), coarse = texels * (c.coarseRays + c.coarseSunRays);
+    uint full = texels * (c.rays + c.sunRays);
     // In 64 bits' worth of float: a budget of billions of rays must not wrap.
     bool emptyFull = float(empty) * float(full) <= float(c.budget);
     float left = emptyFull ? max(float(c.budget) - float(empty) * float(full), 0.0) : 0.0;

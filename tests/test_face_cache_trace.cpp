@@ -121,7 +121,7 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
     const voxel::FaceBakeSettings settings = traceSettings(world);
     scene.progressiveFaceCache(settings);
     const uint32_t perFace = kK * kK * (settings.rays + settings.sunRays);
-    const uint32_t coarse = kK * kK * (GROTTO_FACE_COARSE_RAYS + GROTTO_FACE_COARSE_SUN_RAYS);
+    const uint32_t coarse = GROTTO_FACE_COARSE_RAYS + GROTTO_FACE_COARSE_SUN_RAYS;  // a face's, traced as one texel
     const Camera camera = viewOf(world);
     LiveFaceCache& cache = *scene.faceCache();
     auto count = [&](uint8_t level) { return size_t(std::count(cache.levels().begin(), cache.levels().end(), level)); };
@@ -168,7 +168,7 @@ TEST_F(FaceCacheTrace, NewFacesGetCoarseRaysAtOnceAndTheBudgetConvergesTheRest) 
         EXPECT_EQ(h[GROTTO_FACE_EMPTY_FULL], 0u);
         EXPECT_EQ(h[GROTTO_FACE_TRACED_PARTIAL], 0u);
     }
-    // The coarse texels: the face traced as one texel with 8 rays, the same
+    // The coarse texels: the face traced as one texel with the coarse rays, the same
     // sequence's first, in each of its texels.
     voxel::FaceBakeSettings coarseSettings = settings;
     coarseSettings.rays = GROTTO_FACE_COARSE_RAYS, coarseSettings.sunRays = GROTTO_FACE_COARSE_SUN_RAYS;

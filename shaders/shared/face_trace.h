@@ -18,10 +18,11 @@
 #include "common.h"
 
 #define GROTTO_FACE_LEVEL_CONVERGED 3u
-// The rays a face never traced gets at first, in the frame it comes into view:
-// an estimate about as good as screen-space AO's (docs/face-cache.md).
-#define GROTTO_FACE_COARSE_RAYS 8u
-#define GROTTO_FACE_COARSE_SUN_RAYS 2u
+// The rays a face never traced gets at first, in the frame it comes into view, the
+// face traced as one texel (face_cache_trace.comp): an estimate better than
+// GTAO high's converged AO (docs/face-cache.md).
+#define GROTTO_FACE_COARSE_RAYS 16u
+#define GROTTO_FACE_COARSE_SUN_RAYS 4u
 #define GROTTO_FACE_QUEUE_EMPTY 0u    // faces at level 0 asked for (may pass capacity)
 #define GROTTO_FACE_QUEUE_PARTIAL 1u  // faces at levels 1 and 2 asked for
 #define GROTTO_FACE_TRACED_EMPTY 2u   // of the first list, traced this frame
