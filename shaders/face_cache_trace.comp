@@ -3,14 +3,14 @@
 // The face cache's texels traced on the GPU: one invocation per texel of the faces
 // face_cache_plan.comp took this frame, each tracing the texel's whole sequence of
 // rays (the CPU bake's, voxel/face_bake.cpp) afresh, so a texel traced again
-// continues nothing and needs no sums kept. A face's first look, at the coarse
-// rays, is one invocation for the whole face: the face traced as one texel (the
-// CPU bake's at one texel a side), its value in each of its texels. A CPU device
-// runs 8 invocations in step, so a quarter of the invocations is a quarter of the
-// time, where a texel's fewer rays would leave the lanes' other work. It writes the texel's packed bits
+// continues nothing and needs no sums kept. It writes the texel's packed bits
 // (shared/face_cache.h), with the day's sun its bits for each position, and its
-// face's level. With full light, a texel traced
-// here holds the sky's light alone until the world is baked again.
+// face's level. With full light, a texel traced here holds the sky's light alone
+// until the world is baked again. A face's first look, with the coarse rays, is
+// one invocation for the whole face: the face traced as one texel (the CPU bake's
+// at one texel a side), its value in each of its texels. A CPU device runs 8
+// invocations in step, so a quarter of the invocations is a quarter of the time,
+// where fewer rays a texel would have left each lane its seed and set-up.
 #include "shared/face_trace.h"
 #include "shared/quad.h"
 #define GROTTO_FACE_CACHE_LAYOUT_ONLY  // its texel encodings alone
