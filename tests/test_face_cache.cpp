@@ -477,33 +477,5 @@ TEST(FaceCache, CountingEqualsListing) {
     }
 }
 
-// An edit's faces listed again near it alone (what a live cache does each edit)
-// are the world's listed afresh, across fills, carves, spheres and paints
-// inside, across and outside the world, and a box larger than the world.
-TEST(FaceCache, TheFacesAfterAnEditAreTheWorldsListedAfresh) {
-    std::mt19937 rng(71);
-    for (double density : {0.1, 0.5, 0.9}) {
-        World w = grotto::test::randomWorld(20, density, rng);
-        std::vector<ExposedFace> faces = exposedFaces(w);
-        std::uniform_int_distribution<int> at(-4, 22), size(0, 6), op(0, 4);
-        for (int e = 0; e < 30; ++e) {
-            const glm::ivec3 lo(at(rng), at(rng), at(rng));
-            const IndexBox box{lo, lo + glm::ivec3(size(rng), size(rng), size(rng))};
-            const glm::dvec3 centre = w.origin() + (glm::dvec3(lo) + 0.5) * w.voxelSize();
-            const int o = e == 29 ? 5 : op(rng);
-            const Edit edit = o == 0   ? Edit::fillBox(box, 1)
-                              : o == 1 ? Edit::carveBox(box)
-                              : o == 2 ? Edit::carveSphere(centre, 3.5 * w.voxelSize())
-                              : o == 3 ? Edit::fillSphere(centre, 2.5 * w.voxelSize(), 1)
-                              : o == 4 ? Edit{.op = Edit::Op::Paint, .box = box, .material = 1}
-                                       : Edit::carveBox({{-30, -30, -30}, {50, 50, 50}});  // the whole world
-            const EditResult r = w.apply(edit);
-            faces = exposedFacesAfterEdit(BrickTable(w), w, faces, r.voxels);
-            ASSERT_EQ(faces, exposedFaces(w)) << "density " << density << ", edit " << e << " (op " << o << ")";
-        }
-        EXPECT_TRUE(faces.empty());
-    }
-}
-
 }  // namespace
 }  // namespace grotto::voxel
