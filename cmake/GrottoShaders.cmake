@@ -1,6 +1,7 @@
 # Compiles GLSL to SPIR-V at build time and builds it into the library `target`. glslangValidator writes a depfile, so a
 # change to any included header under shaders/shared/ rebuilds the shaders using it. An entry NAME=SOURCE:MACRO
-# builds SOURCE a second time as NAME with MACRO defined (a variant that keeps the plain build as it is).
+# builds SOURCE a second time as NAME with MACRO defined (a variant that keeps the plain build as it is);
+# MACRO+MACRO defines both.
 function(grotto_add_shaders target)
   set(outputs)
   foreach(entry IN LISTS ARGN)
@@ -8,7 +9,10 @@ function(grotto_add_shaders target)
     if(entry MATCHES "^([^=]+)=([^:]+):(.+)$")
       set(name ${CMAKE_MATCH_1})
       set(src ${CMAKE_MATCH_2})
-      set(defines -D${CMAKE_MATCH_3})
+      string(REPLACE "+" ";" macros ${CMAKE_MATCH_3})
+      foreach(macro IN LISTS macros)
+        list(APPEND defines -D${macro})
+      endforeach()
     else()
       set(src ${entry})
       get_filename_component(name ${src} NAME)

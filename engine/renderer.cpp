@@ -16,6 +16,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdlib>
+#include <string_view>
 #include <utility>
 
 namespace grotto {
@@ -45,9 +47,13 @@ Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const voxel::Lighting& lig
 SceneFacts Renderer::sceneFacts() const {
     SceneFacts facts{.occupancy = scene_.occupancy() != nullptr, .objects = objects_ != nullptr,
                      .movingObjects = objects_ && objects_->moving};
-    if (const GpuFaceCache* cache = scene_.faceCache())
+    if (const GpuFaceCache* cache = scene_.faceCache()) {
         facts.faceCache = {cache->sun().direction, cache->sun().angleDegrees, cache->sun().day, cache->sky().fullLight,
                            cache->dayLightFirst() != 0};
+        // GROTTO_CACHE_READ=chain: the chain of look-ups instead (A/B measurements, tests).
+        const char* read = std::getenv("GROTTO_CACHE_READ");
+        facts.faceAtlas = scene_.faceAtlasCurrent() && !(read && std::string_view(read) == "chain");
+    }
     return facts;
 }
 
@@ -283,7 +289,8 @@ FrameStats Renderer::recordFrame(const Camera& camera, uint32_t frameIndex, Fram
                                 .gtaoConstants = s.aoConstants, .objectUniforms = s.objectUniforms,
                                 .shadow = image(TargetId::Shadow), .bentNormals = image(TargetId::AoBentNormal),
                                 .faceCache = scene_.faceCache(), .objectLight = &image(TargetId::ObjectLight),
-                                .shadowEdges = plan_.shadowEdges ? &passes_.get<ShadowEdgePass>().edges() : nullptr});
+                                .shadowEdges = plan_.shadowEdges ? &passes_.get<ShadowEdgePass>().edges() : nullptr,
+                                .atlasRecord = &targets_.gbuffer().atlasRecord, .atlasCells = &scene_.faceAtlasCells()});
     });
     if (plan_.shadowEdges)
         pass(cmd, ShadowEdgePass::declare(), [&] {

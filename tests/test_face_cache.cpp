@@ -12,18 +12,7 @@
 #include "voxel/face_cache_layout.h"
 #include "voxel/face_cache_lookup.h"
 
-// The GPU's read of the cache, compiled as C++ over the laid-out arrays.
-namespace grotto::gpu {
-namespace {
-thread_local const voxel::FaceCacheArrays* gpuTwin = nullptr;
-}
-inline glm::uvec4 faceCacheBrickEntry(uint32_t slot) { return gpuTwin->bricks[slot]; }
-inline uint32_t faceCacheRecordWord(uint32_t word) { return gpuTwin->records[word]; }
-inline uint32_t faceCacheTexelWord(uint32_t word) { return gpuTwin->texels[word]; }
-inline uint32_t faceCacheTable() { return gpuTwin->table; }
-inline uint32_t faceCacheK() { return gpuTwin->texelsPerSide; }
-}  // namespace grotto::gpu
-#include "shaders/shared/face_cache.h"
+#include "voxel/face_cache_twin.h"  // the GPU's read of the cache, compiled as C++ over the laid-out arrays
 #include "shaders/shared/quad.h"
 #include "voxel/reference_ao.h"
 
@@ -279,7 +268,7 @@ TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
         const std::vector<FaceTexel> texels = grotto::test::bakeAll(w, faces, {.texelsPerSide = k, .rays = 16, .sunRays = 1});
         const FaceCacheArrays arrays = layFaceCache(faces, texels, k);
         EXPECT_EQ(faceCacheGpuBytes(faces, k), arrays.bytes());
-        gpu::gpuTwin = &arrays;
+        gpu::faceCacheTwin = &arrays;
         const FaceCacheLookup lookup(faces, texels, k);
         std::vector<int> seen(faces.size(), 0);
         for (int z = -1; z <= 20; ++z)
@@ -316,7 +305,7 @@ TEST(FaceCache, TheGpuLayoutReadsAsTheCpuLookup) {
             ++read;
         }
         EXPECT_EQ(read, 4000u);
-        gpu::gpuTwin = nullptr;
+        gpu::faceCacheTwin = nullptr;
     }
 }
 
@@ -343,7 +332,7 @@ TEST(FaceCache, TheLayoutFindsEveryFaceFarFromTheOriginAndInAWorldWiderThanItsKe
         std::vector<FaceTexel> theirs;
         for (const auto& [face, texel] : moved) listed.push_back(face), theirs.push_back(texel);
         const FaceCacheArrays arrays = layFaceCache(listed, theirs, 1);
-        gpu::gpuTwin = &arrays;
+        gpu::faceCacheTwin = &arrays;
         std::vector<int> seen(listed.size(), 0);
         for (size_t f = 0; f < listed.size(); ++f) {
             const int g = gpu::faceCacheFace(listed[f].cell, listed[f].dir);
@@ -353,7 +342,7 @@ TEST(FaceCache, TheLayoutFindsEveryFaceFarFromTheOriginAndInAWorldWiderThanItsKe
             EXPECT_EQ(gpu::faceCacheTexel(uint32_t(g)), packFaceTexel(theirs[f]));
         }
         EXPECT_TRUE(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; })) << "each face at one index";
-        gpu::gpuTwin = nullptr;
+        gpu::faceCacheTwin = nullptr;
     }
 }
 
@@ -368,7 +357,7 @@ TEST(FaceCache, TheTexelsAndFacesReadTogetherAreEachReadAlone) {
     for (uint32_t k : {1u, 2u, 3u, 4u}) {
         const std::vector<FaceTexel> texels(faces.size() * k * k);
         const FaceCacheArrays arrays = layFaceCache(faces, texels, k);
-        gpu::gpuTwin = &arrays;
+        gpu::faceCacheTwin = &arrays;
         std::uniform_real_distribution<double> along(0.0, 1.0);
         size_t across = 0;  // points whose texels lie on more than one face
         for (int n = 0; n < 4000; ++n) {
@@ -393,7 +382,7 @@ TEST(FaceCache, TheTexelsAndFacesReadTogetherAreEachReadAlone) {
             across += t.face[0] != t.face[3] || t.face[1] != t.face[2];
         }
         if (k > 1) EXPECT_GT(across, 100u) << "k " << k << ": few points near the faces' sides";
-        gpu::gpuTwin = nullptr;
+        gpu::faceCacheTwin = nullptr;
     }
 }
 
@@ -423,7 +412,7 @@ TEST(FaceCache, TheBrickTableFindsEachBrickAndNoOther) {
         arrays.bricks = table.slots;
         arrays.records = table.seeds;
         arrays.table = table.shape;
-        gpu::gpuTwin = &arrays;
+        gpu::faceCacheTwin = &arrays;
         for (size_t i = 0; i < set.size(); ++i) {
             ASSERT_EQ(gpu::faceCacheRecord(set[i]), i + 1) << set[i].x << " " << set[i].y << " " << set[i].z;
             for (int d = 0; d < 6; ++d) {

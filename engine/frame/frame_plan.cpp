@@ -54,6 +54,7 @@ FramePlan planFrame(uint32_t width, uint32_t height, const AoOptions& ao, const 
     p.cacheFullLight = p.faceCache && scene.faceCache && scene.faceCache->fullLight &&
                        ambientSource(lighting, ao) != voxel::AmbientSource::Color;
     p.cacheDayLight = p.cacheFullLight && scene.faceCache->dayLight && scene.faceCache->day;
+    p.faceAtlas = p.faceCache && scene.faceCache && scene.faceAtlas && !p.daySun && !p.cacheDayLight;
 
     p.objectRays = p.tracedShadows || p.objectLight || (p.chain && tracesVoxels(ao.method));
     p.surfaceHistory = p.softShadows || p.objectLight;

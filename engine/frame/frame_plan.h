@@ -27,6 +27,7 @@ struct SceneFacts {
         bool dayLight = false;   // with full light over the day: each face's words for the sun's positions
     };
     std::optional<CacheSun> faceCache;
+    bool faceAtlas = false;      // with it, its atlas is current (engine/scene/face_atlas.h)
     bool objects = false;        // the caller's objects (drawn, even an empty list that may grow)
     bool movingObjects = false;  // some of them move
 };
@@ -64,6 +65,10 @@ struct FramePlan {
     // a uniform too, so what a frame does not read would cost it all the same.
     bool cacheFullLight = false;  // full light (the world's ambient not a constant colour, the cache's words full light)
     bool cacheDayLight = false;   // with it, over the day: the sky's weights and the faces' bounce words
+    // The composite reads the cache through its atlas (the G-buffer writes each
+    // pixel's quad record): the atlas is current and holds what the frame reads
+    // (not the day's sun bits nor the day's words).
+    bool faceAtlas = false;
     // Objects.
     bool objects = false;
     bool movingObjects = false;

@@ -63,6 +63,11 @@ constexpr TargetRow kRows[] = {
     // The light the face cache gave each pixel: only a read-back with AOVs makes it.
     {TargetId::CacheLight, kRgba32f, TargetSize::Frame, kStorage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
      [](const FramePlan& s) { return s.faceCache && s.aoAov; }, false, 1, kGeneral},
+    // Each pixel's quad record in the face cache's atlas (engine/scene/face_atlas.h),
+    // which the G-buffer writes when the composite reads the atlas; the composite
+    // binds it (a placeholder) with the cache whether or not.
+    {TargetId::AtlasRecord, kAtlasRecordFormat, TargetSize::Frame, VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | kRead,
+     [](const FramePlan& s) { return s.faceCache; }, true, 1, kEachFrame},
 };
 
 }  // namespace
@@ -100,6 +105,7 @@ vk::Image& FrameTargets::slot(TargetId id, uint32_t copy) {
     case TargetId::AoHistory: return ao_.history[copy];
     case TargetId::AoFull: return ao_.full;
     case TargetId::CacheLight: return cacheLight_;
+    case TargetId::AtlasRecord: return gbuffer_.atlasRecord;
     }
     throw Error::internal("FrameTargets", "no such target");
 }

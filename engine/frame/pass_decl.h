@@ -10,9 +10,9 @@ namespace grotto {
 
 enum class TargetId {
     Depth, Surface, Motion, Color, Display, Normals, Shadow, ShadowHistory, ObjectLight, ObjectLightHistory,
-    AoDepthAtlas, AoThickness, AoBentNormal, AoRaw, AoSpatial0, AoSpatial1, AoHistory, AoFull, CacheLight,
+    AoDepthAtlas, AoThickness, AoBentNormal, AoRaw, AoSpatial0, AoSpatial1, AoHistory, AoFull, CacheLight, AtlasRecord,
 };
-inline constexpr int kTargetCount = int(TargetId::CacheLight) + 1;
+inline constexpr int kTargetCount = int(TargetId::AtlasRecord) + 1;
 
 // Which image of a history (a target with two copies): the one this frame writes,
 // or the one the frame before wrote. The targets flip them at each frame's start

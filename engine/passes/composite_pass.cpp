@@ -21,7 +21,10 @@ std::vector<VkDescriptorType> bindings(const CompositeShape& s) {
     b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_IMAGE);  // the object light
     b = GpuFaceCache::withBindings(std::move(b));
     b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);  // the shadow edges' list
-    return GpuFaceCache::withRequestBindings(std::move(b));
+    b = GpuFaceCache::withRequestBindings(std::move(b));
+    b.push_back(VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER);  // the atlas: each pixel's quad record
+    b.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);          // and its cells
+    return b;
 }
 }  // namespace
 
@@ -29,7 +32,7 @@ CompositeShape CompositePass::shapeFor(const FramePlan& plan, bool askFaces) {
     return {.withAo = plan.chain, .withShadow = plan.tracedShadows, .withBentNormals = plan.bentNormals,
             .faceCache = plan.faceCache, .cachedSun = plan.cachedSun, .objectLight = plan.objectLight,
             .shadowEdges = plan.shadowEdges, .askFaces = askFaces, .fullLight = plan.cacheFullLight,
-            .dayLight = plan.cacheDayLight, .daySun = plan.daySun};
+            .dayLight = plan.cacheDayLight, .daySun = plan.daySun, .atlas = plan.faceAtlas && !askFaces};
 }
 
 CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
@@ -39,7 +42,7 @@ CompositePass::CompositePass(vk::Context& ctx, const CompositeShape& shape)
             {shape.withAo ? 1u : 0u, group(shape), group(shape), shape.withShadow ? 1u : 0u,
              shape.withBentNormals ? 1u : 0u, shape.cachedSun ? 1u : 0u, shape.objectLight ? 1u : 0u,
              shape.shadowEdges ? 1u : 0u, shape.askFaces ? 1u : 0u, shape.fullLight ? 1u : 0u,
-             shape.dayLight ? 1u : 0u, shape.daySun ? 1u : 0u}) {}
+             shape.dayLight ? 1u : 0u, shape.daySun ? 1u : 0u, shape.atlas ? 1u : 0u}) {}
 
 void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const vk::Image& color, const Inputs& in) {
     const VkImageLayout ro = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
@@ -59,6 +62,11 @@ void CompositePass::record(VkCommandBuffer cmd, const GBufferTargets& g, const v
         // Without edges the binding is never read: any buffer holds its place.
         b.push_back(vk::storageBuffer(in.shadowEdges ? in.shadowEdges->buffer : in.faceCache->header().buffer));
         b = in.faceCache->withRequestBindings(std::move(b));
+        if (shape_.atlas && (!in.atlasRecord || !in.atlasCells))
+            throw Error::internal("CompositePass", "the atlas's read without its records or cells");
+        // Without the atlas neither is read: the G-buffer's surface and the cache's header hold their places.
+        b.push_back(vk::sampledImage(ctx_.pointSampler, shape_.atlas ? in.atlasRecord->view : g.surface.view, ro));
+        b.push_back(vk::storageBuffer(shape_.atlas ? in.atlasCells->buffer : in.faceCache->header().buffer));
     }
     pass_.dispatch(cmd, b, shape_.withAo ? in.aoHalf.extent : color.extent, group(shape_));  // with AO, per AO pixel
 }

@@ -32,6 +32,7 @@ struct CompositeShape {
     bool fullLight = false;        // with it: the plan's cacheFullLight, cacheDayLight and daySun
     bool dayLight = false;
     bool daySun = false;
+    bool atlas = false;            // with it: the texels read through the atlas (FramePlan::faceAtlas)
     bool operator==(const CompositeShape&) const = default;
 };
 
@@ -46,7 +47,8 @@ public:
     static PassDecl declare(TargetRef ao) {
         return {"composite", {{TargetId::Surface, Access::Sampled}, {TargetId::Color, Access::Write}, {ao, Access::Read},
                               {TargetId::Depth, Access::Sampled}, {TargetId::Shadow, Access::Read},
-                              {TargetId::AoBentNormal, Access::Read}, {TargetId::ObjectLight, Access::Read}}};
+                              {TargetId::AoBentNormal, Access::Read}, {TargetId::ObjectLight, Access::Read},
+                              {TargetId::AtlasRecord, Access::Sampled}}};
     }
     // Without AO, `aoHalf` and `gtaoConstants` are placeholders the shader ignores;
     // without shadows, so is `shadow`; without bent normals, so is `bentNormals`.
@@ -62,6 +64,8 @@ public:
         const GpuFaceCache* faceCache = nullptr;
         const vk::Image* objectLight = nullptr;  // with the face cache: the object light pass's (or a placeholder)
         const vk::Buffer* shadowEdges = nullptr;  // with shadowEdges: the list it appends to
+        const vk::Image* atlasRecord = nullptr;   // with the atlas: the G-buffer's records and the scene's cells
+        const vk::Buffer* atlasCells = nullptr;
     };
     void record(VkCommandBuffer cmd, const GBufferTargets& gbuffer, const vk::Image& color, const Inputs& in);
 

@@ -11,9 +11,13 @@
 namespace grotto {
 namespace {
 
-// `motion`: a second attachment, the motion target.
+// The second attachment, if any: the motion target, or the face atlas's records.
+enum class Second { None, Motion, AtlasRecord };
+
 VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, const char* vertex = "gbuffer.vert",
-                          const char* fragment = "gbuffer.frag", bool motion = false) {
+                          const char* fragment = "gbuffer.frag", Second second = Second::None) {
+    const bool motion = second == Second::Motion;
+    const uint32_t attachments = second == Second::None ? 1u : 2u;
     const vk::ShaderModule vs = vk::loadShader(ctx, vertex);
     const vk::ShaderModule fs = vk::loadShader(ctx, fragment);
     VkPipelineShaderStageCreateInfo stages[2] = {
@@ -51,16 +55,17 @@ VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, const char*
     // Identical for both attachments (no independent blend): what a format lacks is not written.
     const VkColorComponentFlags mask = motion ? VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
                                                     VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT
-                                              : VK_COLOR_COMPONENT_R_BIT;
+                                       : second == Second::AtlasRecord ? VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT
+                                                                      : VK_COLOR_COMPONENT_R_BIT;
     const VkPipelineColorBlendAttachmentState blendOff[2] = {{.colorWriteMask = mask}, {.colorWriteMask = mask}};
     VkPipelineColorBlendStateCreateInfo blend{.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO,
-                                              .attachmentCount = motion ? 2u : 1u, .pAttachments = blendOff};
+                                              .attachmentCount = attachments, .pAttachments = blendOff};
     VkDynamicState dynamicStates[2] = {VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
     VkPipelineDynamicStateCreateInfo dynamic{.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO,
                                              .dynamicStateCount = 2, .pDynamicStates = dynamicStates};
-    const VkFormat formats[2] = {kSurfaceFormat, kMotionFormat};
+    const VkFormat formats[2] = {kSurfaceFormat, motion ? kMotionFormat : kAtlasRecordFormat};
     VkPipelineRenderingCreateInfo rendering{.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO,
-                                            .colorAttachmentCount = motion ? 2u : 1u,
+                                            .colorAttachmentCount = attachments,
                                             .pColorAttachmentFormats = formats,
                                             .depthAttachmentFormat = VK_FORMAT_D32_SFLOAT};
     VkGraphicsPipelineCreateInfo ci{.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO,
@@ -86,21 +91,29 @@ VkPipeline createPipeline(vk::Context& ctx, VkPipelineLayout layout, const char*
 PassDecl GBufferPass::declare() const {
     PassDecl d{"gbuffer", {{TargetId::Depth, Access::DepthAttachment}, {TargetId::Surface, Access::ColorAttachment}}};
     if (mode_ == GBufferMode::Motion) d.uses.push_back({TargetId::Motion, Access::ColorAttachment});
+    if (atlas_) d.uses.push_back({TargetId::AtlasRecord, Access::ColorAttachment});
     return d;
 }
 
-GBufferPass::GBufferPass(vk::Context& ctx, GBufferMode mode) : ctx_(ctx), mode_(mode) {
-    setLayout_ = vk::pushDescriptorLayout(ctx, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, VK_SHADER_STAGE_VERTEX_BIT);
+GBufferPass::GBufferPass(vk::Context& ctx, GBufferMode mode, bool atlas) : ctx_(ctx), mode_(mode), atlas_(atlas) {
+    std::vector<VkDescriptorType> bindings = {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER};
+    if (atlas) bindings.push_back(VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);  // the quads' atlas records
+    setLayout_ = vk::pushDescriptorLayout(ctx, bindings, VK_SHADER_STAGE_VERTEX_BIT);
+    const Second record = atlas ? Second::AtlasRecord : Second::None;
     try {  // a shader that fails to load must not leak the layouts
         layout_ = vk::pipelineLayout(ctx, setLayout_, sizeof(gpu::ChunkPush), VK_SHADER_STAGE_VERTEX_BIT);
-        if (mode != GBufferMode::Motion) pipeline_ = createPipeline(ctx, layout_);
+        if (mode != GBufferMode::Motion)
+            pipeline_ = atlas ? createPipeline(ctx, layout_, "gbuffer_atlas.vert", "gbuffer_atlas.frag", record)
+                              : createPipeline(ctx, layout_);
         if (mode != GBufferMode::World) {
             objectSetLayout_ = vk::pushDescriptorLayout(ctx, {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
                                                         VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT);
             objectLayout_ = vk::pipelineLayout(ctx, objectSetLayout_, sizeof(gpu::ObjectPush), VK_SHADER_STAGE_VERTEX_BIT);
             const bool motion = mode == GBufferMode::Motion;
+            // Objects have no records: theirs read (0, 0), and the composite reads no cache on them.
             objectPipeline_ = createPipeline(ctx, objectLayout_, motion ? "gbuffer_object.vert" : "gbuffer_still.vert",
-                                             motion ? "gbuffer_motion.frag" : "gbuffer.frag", motion);
+                                             motion ? "gbuffer_motion.frag" : atlas ? "gbuffer_object_atlas.frag" : "gbuffer.frag",
+                                             motion ? Second::Motion : record);
         }
     } catch (...) {
         release();
@@ -158,11 +171,12 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
     };
     VkRenderingAttachmentInfo color[2] = {attachment(t.surface, {}), {}};  // 0 = sky
     if (motion) color[1] = attachment(t.motion, {});                       // sky: no motion
+    if (atlas_) color[1] = attachment(t.atlasRecord, {});                  // sky: no record
     VkRenderingAttachmentInfo depth = attachment(t.depth, {.depthStencil = {0.0f, 0}});
     VkRenderingInfo info{.sType = VK_STRUCTURE_TYPE_RENDERING_INFO,
                          .renderArea = {{0, 0}, extent},
                          .layerCount = 1,
-                         .colorAttachmentCount = motion ? 2u : 1u,
+                         .colorAttachmentCount = motion || atlas_ ? 2u : 1u,
                          .pColorAttachments = color,
                          .pDepthAttachment = &depth};
     ctx_.cmdBeginRendering(cmd, &info);
@@ -172,7 +186,11 @@ uint64_t GBufferPass::record(VkCommandBuffer cmd, const GBufferTargets& t, const
     vkCmdSetScissor(cmd, 0, 1, &scissor);
     auto bind = [&](VkPipeline pipeline, VkPipelineLayout layout, const GpuScene& s) {
         vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-        vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, {vk::uniformBuffer(frame.buffer)});
+        if (atlas_ && layout == layout_)
+            vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout,
+                             {vk::uniformBuffer(frame.buffer), vk::storageBuffer(s.faceAtlasRecords().buffer)});
+        else
+            vk::pushBindings(ctx_, cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, layout, {vk::uniformBuffer(frame.buffer)});
         const VkDeviceSize zero = 0;
         vkCmdBindVertexBuffers(cmd, 0, 1, &s.vertices.buffer, &zero);
         vkCmdBindIndexBuffer(cmd, s.indices.buffer, 0, VK_INDEX_TYPE_UINT32);

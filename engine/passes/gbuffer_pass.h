@@ -27,9 +27,11 @@ struct GBufferTargets {
     vk::Image depth;
     vk::Image surface;  // R16_UINT, see packSurface in shaders/shared/quad.h
     vk::Image motion;   // RGBA32F where objects move (else none): previous pixel - current, previous view depth
+    vk::Image atlasRecord;  // RG32UI with the face cache (a placeholder without): the pixel's quad's atlas record
 };
 
 inline constexpr VkFormat kMotionFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+inline constexpr VkFormat kAtlasRecordFormat = VK_FORMAT_R32G32_UINT;
 
 // What the pass needs to draw a scene's objects: their meshes and poses, and for
 // motion the previous frame's camera and poses (the current ones where none).
@@ -47,10 +49,12 @@ enum class GBufferMode {
 
 class GBufferPass {
 public:
-    explicit GBufferPass(vk::Context& ctx, GBufferMode mode = GBufferMode::World);
+    // `atlas`: the world's quads write their face atlas records too (FramePlan::faceAtlas; never with Motion).
+    explicit GBufferPass(vk::Context& ctx, GBufferMode mode = GBufferMode::World, bool atlas = false);
     static bool runs(const FramePlan&) { return true; }
     static auto key(const FramePlan& plan) {
-        return std::tuple(plan.motion ? GBufferMode::Motion : plan.objects ? GBufferMode::Objects : GBufferMode::World);
+        return std::tuple(plan.motion ? GBufferMode::Motion : plan.objects ? GBufferMode::Objects : GBufferMode::World,
+                          plan.faceAtlas && !plan.motion);
     }
     ~GBufferPass();
 
@@ -71,6 +75,7 @@ private:
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     GBufferMode mode_;
+    bool atlas_;
     VkDescriptorSetLayout objectSetLayout_ = VK_NULL_HANDLE;  // the frame, seen by the fragment stage too
     VkPipelineLayout objectLayout_ = VK_NULL_HANDLE;
     VkPipeline objectPipeline_ = VK_NULL_HANDLE;  // Objects: objects only; Motion: every chunk

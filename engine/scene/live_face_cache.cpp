@@ -201,6 +201,15 @@ void LiveFaceCache::upload(const voxel::World& world, bool afterEdit) {
     if (afterEdit) gpu->setAfterEdit();
     vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still read the old copy
     scene_.faceCache_ = std::move(gpu);
+    // The atlas holds texels as they are now: what the GPU's tracer changes later
+    // is not in it, so it is filled only when that tracer has nothing to trace.
+    const bool converged = std::all_of(levels_.begin(), levels_.end(), [](uint8_t l) {
+        return (l & 3u) == GROTTO_FACE_LEVEL_CONVERGED;
+    });
+    if (converged)
+        scene_.fillFaceAtlas(arrays);
+    else
+        scene_.staleFaceAtlas();
     order_ = std::move(arrays.faceOrder);
     daySunFirst_ = arrays.daySunFirst;
     wordStorage_ = std::move(arrays.texels);

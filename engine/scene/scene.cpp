@@ -1,5 +1,6 @@
 #include "engine/scene/scene.h"
 
+#include "engine/scene/face_atlas.h"
 #include "engine/scene/scene_memory.h"
 
 #include "grotto/error.h"
@@ -174,6 +175,13 @@ GpuChunk placeChunk(const voxel::MeshChunkQuads& c, const GpuScene& scene, uint3
         g.levels.push_back(placeLevel(l.faceCount, l.quads, first, vertices + 4 * size_t(first - slotFirst), lo, hi));
         first += uint32_t(l.quads.size());
     }
+    // Every level's quads' boxes, in the order their vertices were written.
+    g.atlasBoxes.resize(first - slotFirst);
+    for (size_t q = 0; q < g.atlasBoxes.size(); ++q) {
+        voxel::MeshQuad quad;
+        std::copy_n(vertices + 4 * q, 4, quad.corners.begin());
+        g.atlasBoxes[q] = packAtlasBox(quad);
+    }
     g.lo = glm::vec3(lo) * float(scene.voxelSize);
     g.hi = glm::vec3(hi) * float(scene.voxelSize);
     return g;
@@ -321,6 +329,7 @@ const GpuChunk* GpuScene::findChunk(glm::ivec3 index) const {
 
 void GpuScene::updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std::span<const glm::ivec3> removed) {
     ++updates;
+    atlasCurrent_ = false;  // its records and cells: until the next fill
     auto find = [&](glm::ivec3 index) {
         return std::lower_bound(chunks.begin(), chunks.end(), index,
                                 [](const GpuChunk& c, const glm::ivec3& i) { return indexLess(c.index, i); });
@@ -333,6 +342,7 @@ void GpuScene::updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std
     auto remove = [&](glm::ivec3 index) {
         const auto it = find(index);
         if (it == chunks.end() || it->index != index) return;
+        if (atlasLayout_) atlasLayout_->remove(index);
         freeSlot(*it);
         quadCount -= it->exact().quads();
         chunks.erase(it);
@@ -378,6 +388,7 @@ void GpuScene::updateChunks(std::span<const voxel::MeshChunkQuads> replaced, std
         uploads.write(vertices, first * kQuadBytes, words.data(), n * kQuadBytes);
         staged += n * kQuadBytes;
         quadCount += q.quads.size();
+        if (atlasLayout_) atlasLayout_->place(g.index, g.atlasBoxes);
         if (known) {
             quadCount -= it->exact().quads();
             *it = g;
@@ -406,6 +417,8 @@ void GpuScene::recordUploads(VkCommandBuffer cmd, vk::Buffer& staging) {
 
 GpuScene::~GpuScene() {
     occupancy_.reset();
+    vk::destroy(ctx, atlasRecords_);
+    vk::destroy(ctx, atlasCells_);
     vk::destroy(ctx, vertices);
     vk::destroy(ctx, indices);
     vk::destroy(ctx, palette);

@@ -1,6 +1,7 @@
 #pragma once
 // The GPU copy of a voxel world: quads, chunk table and material palette.
 // scene.cpp is the one bridge between voxel/ and engine/vk/.
+#include "engine/scene/face_atlas.h"
 #include "engine/scene/face_cache_gpu.h"
 #include "engine/scene/occupancy.h"
 #include "engine/scene/quad_slots.h"
@@ -44,6 +45,7 @@ struct GpuChunk {
     // laid out one after another in the chunk's slot.
     std::vector<GpuLevel> levels;
     glm::ivec3 index{0};          // voxel index of its corner: the key updates find it by
+    std::vector<uint32_t> atlasBoxes;  // its quads' boxes at every level (face_atlas.h), in vertex order
     uint32_t slotFirst = 0, slotQuads = 0;  // the range of the vertex buffer it owns, in quads
     const GpuLevel& exact() const { return levels.front(); }
 };
@@ -103,8 +105,24 @@ public:
 
     size_t gpuBytes() const {
         return size_t(vertices.size + indices.size + palette.size) +
-               (occupancy_ ? occupancy_->gpuBytes() : 0) + (faceCache_ ? faceCache_->gpuBytes() : 0);
+               (occupancy_ ? occupancy_->gpuBytes() : 0) + (faceCache_ ? faceCache_->gpuBytes() : 0) + faceAtlasBytes();
     }
+
+    // The face cache laid out for reading (face_atlas.h), written by LiveFaceCache
+    // with the cache. layFaceAtlas places every chunk's regions at k texels a side
+    // (kept across edits: updateChunks re-places the chunks it rewrites);
+    // fillFaceAtlas writes each quad's record, parallel to the vertex
+    // buffer, and the cells from the cache's arrays, on every core (no frame may be
+    // in flight). The atlas is current from a fill until the geometry changes or
+    // staleFaceAtlas; only a current one is read.
+    void layFaceAtlas(uint32_t texelsPerSide);
+    void fillFaceAtlas(const voxel::FaceCacheArrays& arrays);
+    void staleFaceAtlas() { atlasCurrent_ = false; }
+    bool faceAtlasCurrent() const { return atlasCurrent_; }
+    const vk::Buffer& faceAtlasRecords() const { return atlasRecords_; }  // uvec2 a vertex-buffer quad
+    const vk::Buffer& faceAtlasCells() const { return atlasCells_; }      // uvec2 a cell
+    const FaceAtlasLayout* faceAtlasLayout() const { return atlasLayout_.get(); }
+    size_t faceAtlasBytes() const { return size_t(atlasRecords_.size + atlasCells_.size); }
     size_t hostBytes() const;
 
 private:
@@ -113,6 +131,9 @@ private:
     friend class LiveFaceCache;  // writes faceCache_ alone
     std::unique_ptr<GpuOccupancy> occupancy_;
     std::unique_ptr<GpuFaceCache> faceCache_;
+    std::unique_ptr<FaceAtlasLayout> atlasLayout_;
+    vk::Buffer atlasRecords_, atlasCells_;
+    bool atlasCurrent_ = false;
 };
 
 // From chunks as a voxel::LiveMesh keeps them (with their coarser levels, if any).

@@ -51,7 +51,8 @@ VkDeviceSize texelBytes(VkFormat format) {
     case VK_FORMAT_R16_UINT: return 2;
     case VK_FORMAT_R32_SFLOAT:
     case VK_FORMAT_D32_SFLOAT: return 4;
-    case VK_FORMAT_R16G16B16A16_SFLOAT: return 8;
+    case VK_FORMAT_R16G16B16A16_SFLOAT:
+    case VK_FORMAT_R32G32_UINT: return 8;
     case VK_FORMAT_R32G32B32A32_SFLOAT:
     case VK_FORMAT_R32G32B32A32_UINT: return 16;
     default: throw Error::internal("vk::texelBytes", "no texel size for format " + std::to_string(int(format)));
