@@ -1,0 +1,142 @@
+// The face cache read through its atlas (engine/scene/face_atlas.h), with
+// validation on:
+//  - on every shipped world, the frame read through the atlas is the frame read
+//    through the chain of look-ups, pixel for pixel, within 1/255 of the colour
+//    (the taps are the same texels: seamless wherever the chain was, quad borders
+//    and levels of detail included);
+//  - after random carves and fills, the atlas laid out chunk by chunk (regions
+//    kept, moved or freed) reads as one laid out afresh for the edited world, and
+//    its regions never overlap.
+#include "engine/renderer.h"
+#include "engine/scene/face_atlas.h"
+#include "engine/scene/live_scene.h"
+#include "tests/gpu_fixture.h"
+#include "tests/scenes.h"
+#include "tests/test_util.h"
+
+#include <cstdlib>
+#include <filesystem>
+#include <random>
+
+namespace grotto {
+namespace {
+
+using FaceAtlas = test::GpuTest;
+
+// A cheap bake: the read's equality does not depend on the rays, only on the texels.
+voxel::FaceBakeSettings atlasTestSettings(const voxel::World& world) {
+    voxel::FaceBakeSettings s = worldBakeSettings(world, 2.0 * world.voxelSize());
+    s.rays = 2, s.sunRays = 1, s.day = std::nullopt;
+    return s;
+}
+
+AoOptions atlasTestAo(const voxel::World& world) {
+    AoOptions ao = aoOptionsFor(world.desc().ao, world.voxelSize(), "test");
+    ao.method = AoMethod::Cache;
+    return ao;
+}
+
+// The colour of one frame, read through the atlas or, with `chain`, through the chain.
+std::vector<float> atlasTestColour(vk::Context& ctx, GpuScene& scene, const voxel::World& world, const Camera& camera,
+                               bool chain, uint32_t w, uint32_t h) {
+    if (chain) setenv("GROTTO_CACHE_READ", "chain", 1);
+    Renderer renderer(ctx, scene, world.desc().lighting, atlasTestAo(world), w, h);
+    renderer.render(camera);
+    unsetenv("GROTTO_CACHE_READ");
+    EXPECT_EQ(renderer.plan().faceAtlas, !chain);
+    return renderer.readback(camera, false).color;
+}
+
+// The largest difference between two colours, relative to the brighter (at least 1).
+double atlasTestDifference(const std::vector<float>& a, const std::vector<float>& b) {
+    double worst = 0.0;
+    for (size_t i = 0; i < a.size(); ++i)
+        worst = std::max(worst, std::abs(double(a[i]) - b[i]) / std::max({1.0, double(a[i]), double(b[i])}));
+    return worst;
+}
+
+TEST_F(FaceAtlas, EveryShippedWorldReadsThroughItAsThroughTheChain) {
+    const uint32_t w = 96, h = 54;
+    size_t worlds = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(test::worldsDir())) {
+        // The worlds (not their camera paths, which name no grid).
+        if (entry.path().extension() != ".json" || test::fileBytes(entry.path()).find("\"grid\"") == std::string::npos) continue;
+        // Under the sanitizers two worlds: each costs a bake and the frames.
+        const std::string stem = entry.path().stem().string();
+        if (test::underSanitizers(0, 1) && stem != "rooms" && stem != "thin") continue;
+        SCOPED_TRACE(entry.path().filename().string());
+        const voxel::World world = voxel::World::load(entry.path());
+        LiveScene scene(ctx(), voxel::World(world));
+        scene.bakeFaceCache(atlasTestSettings(world));
+        // One storage buffer must hold it: where it cannot (the caves, on lavapipe), the chain reads.
+        const uint64_t limit = ctx().properties.limits.maxStorageBufferRange;
+        if (scene.gpu().faceAtlasLayout()->capacity() * 8 > limit) {
+            EXPECT_FALSE(scene.gpu().faceAtlasCurrent());
+            continue;
+        }
+        ASSERT_TRUE(scene.gpu().faceAtlasCurrent());
+        const Camera camera = makeCamera(world.camera("", double(w) / h), w, h);
+        const std::vector<float> atlas = atlasTestColour(ctx(), scene.gpu(), world, camera, false, w, h);
+        const std::vector<float> chain = atlasTestColour(ctx(), scene.gpu(), world, camera, true, w, h);
+        EXPECT_LE(atlasTestDifference(atlas, chain), 1.0 / 255.0);
+        ++worlds;
+    }
+    EXPECT_GE(worlds, size_t(test::underSanitizers(6, 1)));
+}
+
+TEST_F(FaceAtlas, AfterRandomEditsItReadsAsOneLaidOutAfresh) {
+    // Rolling ground with pillars, over two chunks' width and far from the origin.
+    voxel::World world = test::makeVoxelWorld(
+        {-20, 0, -20}, {44, 14, 44},
+        [](int x, int y, int z) { return y <= 2 + (x * 7 + z * 3) % 4 / 3 || (x % 9 == 0 && z % 7 == 0 && y < 10); }, 1.0,
+        glm::dvec3(512.0, 0.0, -2048.0));
+    LiveScene edited(ctx(), voxel::World(world));
+    const voxel::FaceBakeSettings settings = atlasTestSettings(world);
+    edited.bakeFaceCache(settings);
+    std::mt19937 random(7);
+    std::uniform_int_distribution<int> along(-18, 40), up(0, 12), size(0, 5);
+    for (int e = 0; e < 24; ++e) {
+        const glm::ivec3 a(along(random), up(random), along(random));
+        const IndexBox box{a, a + glm::ivec3(size(random), size(random), size(random))};
+        if (e % 3 == 2)
+            edited.apply(voxel::Edit::fillBox(box, 1));
+        else
+            edited.apply(voxel::Edit::carveBox(box));
+    }
+    EXPECT_FALSE(edited.gpu().faceAtlasCurrent()) << "the edits' faces are the GPU tracer's until traced";
+    edited.bakeFaceCache(settings);  // every face converged again: the atlas filled in its edited layout
+    ASSERT_TRUE(edited.gpu().faceAtlasCurrent());
+
+    // No two regions share a cell, and each lies within its chunk's range.
+    const FaceAtlasLayout& layout = *edited.gpu().faceAtlasLayout();
+    std::vector<std::pair<uint64_t, uint64_t>> ranges;
+    for (const GpuChunk& c : edited.gpu().chunks) {
+        const FaceAtlasLayout::Chunk* placed = layout.find(c.index);
+        ASSERT_NE(placed, nullptr);
+        ASSERT_EQ(placed->regions.size(), c.atlasBoxes.size());
+        for (size_t q = 0; q < c.atlasBoxes.size(); ++q) {
+            const uint64_t cells = atlasRegionCells(unpackAtlasBox(c.atlasBoxes[q]), layout.texelsPerSide());
+            EXPECT_GE(placed->regions[q], placed->first);
+            EXPECT_LE(placed->regions[q] + cells, placed->first + placed->cells);
+            ranges.emplace_back(placed->regions[q], cells);
+        }
+    }
+    std::sort(ranges.begin(), ranges.end());
+    for (size_t i = 1; i < ranges.size(); ++i) EXPECT_LE(ranges[i - 1].first + ranges[i - 1].second, ranges[i].first);
+
+    LiveScene fresh(ctx(), voxel::World(edited.world()));
+    fresh.bakeFaceCache(settings);
+    // Within a sixteenth and the chunks' spare room of a fresh layout: what edits leave free is reused.
+    EXPECT_LE(layout.capacity(), 2 * fresh.gpu().faceAtlasLayout()->capacity());
+    const uint32_t w = 128, h = 72;
+    const glm::dvec3 o = world.origin();
+    for (const glm::dvec3& eye : {glm::dvec3(-6.0, 16.0, -6.0), glm::dvec3(30.0, 9.0, 40.0)}) {
+        const Camera camera = makeCamera(test::lookAt(o + eye, o + glm::dvec3(12.0, 2.0, 12.0), 70.0), w, h);
+        const std::vector<float> incremental = atlasTestColour(ctx(), edited.gpu(), edited.world(), camera, false, w, h);
+        EXPECT_EQ(incremental, atlasTestColour(ctx(), fresh.gpu(), fresh.world(), camera, false, w, h));
+        EXPECT_LE(atlasTestDifference(incremental, atlasTestColour(ctx(), edited.gpu(), edited.world(), camera, true, w, h)), 1.0 / 255.0);
+    }
+}
+
+}  // namespace
+}  // namespace grotto
