@@ -138,6 +138,9 @@ void addBenchCommand(CLI::App& app) {
         const size_t gpuBytes = scene.gpuBytes();
         const size_t cacheBytes = scene.faceCache() ? scene.faceCache()->gpuBytes() : 0;  // within gpuBytes
         const size_t dayBytes = scene.faceCache() ? scene.faceCache()->daySunBytes() : 0;  // within cacheBytes
+        // The atlas the composite reads (beside the cache, within gpuBytes), and the cells it is laid out over.
+        const size_t atlasBytes = scene.faceAtlasBytes();
+        const uint64_t atlasCells = scene.faceAtlasLayout() ? scene.faceAtlasLayout()->capacity() : 0;
         const size_t dayLightBytes = scene.faceCache() ? scene.faceCache()->dayLightBytes() : 0;  // likewise
         const size_t cachedFaces = session->scene().faceCache() ? session->scene().faceCache()->faces().size() : 0;
         // After the frames and the memory figures, so both see the scene as uploaded.
@@ -158,6 +161,7 @@ void addBenchCommand(CLI::App& app) {
                         {"gpu_scene_bytes", gpuBytes}, {"gpu_target_bytes", targetBytes},
                         {"gpu_face_cache_bytes", cacheBytes}, {"face_cache_faces", cachedFaces},
                         {"gpu_face_cache_day_sun_bytes", dayBytes}, {"gpu_face_cache_day_light_bytes", dayLightBytes},
+                        {"gpu_face_atlas_bytes", atlasBytes}, {"face_atlas_cells", atlasCells},
                         {"world_to_grid_ratio", double(hostBytes + gpuBytes) / double(std::max<size_t>(1, stats.sourceGridBytes))}}}};
         std::printf("%s on %s, %ux%u, median of %d frames after %d warm-up\n", args->world.c_str(),
                     ctx.deviceName().c_str(), size.width, size.height, args->frames, args->warmup);
@@ -189,6 +193,11 @@ void addBenchCommand(CLI::App& app) {
         if (cachedFaces)
             std::printf("  face cache: %zu B GPU (in the world's) for %zu exposed faces, %.1f B a face\n", cacheBytes,
                         cachedFaces, double(cacheBytes) / double(cachedFaces));
+        if (cachedFaces && atlasCells)
+            std::printf("    its atlas: %llu cells laid out, %zu B GPU (%.1f B a face)%s\n", (unsigned long long)atlasCells,
+                        atlasBytes, double(atlasBytes) / double(cachedFaces),
+                        scene.faceAtlasCurrent() ? "" : atlasBytes ? ", not current: read through the chain"
+                                                                   : ", not made: read through the chain");
         if (cachedFaces && dayBytes)
             std::printf("    of which the day's sun: %zu B, %.1f B a face\n", dayBytes, double(dayBytes) / double(cachedFaces));
         if (edits) {

@@ -38,6 +38,13 @@ layout(constant_id = 11) const bool daySun = false;
 // pixel's quad has a region: four independent loads instead of the chain of
 // look-ups (FramePlan::faceAtlas: never while asking, nor with the day's words).
 layout(constant_id = 12) const bool atlasRead = false;
+// Cache, after the atlas's pass: the chain's read for the world pixels that pass
+// listed, those whose quad has no region (a coarser level of detail), one
+// invocation each (groups of 64 x 1). A pass of its own over a list, not a branch
+// nor a pass over every pixel that returns early: a CPU device ran the chain's
+// code for every group either way (147 and 204 ms against 74 and 91, rooms and
+// caves at 1280x720).
+layout(constant_id = 13) const bool withoutRegion = false;
 #define GROTTO_CACHE_READS_DAY_LIGHT dayLight
 #define GROTTO_CACHE_READS_DAY_SUN daySun
 // The group's side, set by CompositePass: lavapipe runs 16x16 groups of single
@@ -65,6 +72,9 @@ layout(set = 0, binding = 10, rgba16f) uniform readonly image2D objectLightImage
 // cells (x: the AO and sun half | 1 << 16 where a face lies, y: the light word).
 layout(set = 0, binding = 19) uniform usampler2D atlasRecordTex;
 layout(set = 0, binding = 20, std430) readonly buffer AtlasCells { uvec2 atlasCells[]; };
+// The pixels the chain's pass shades: their count, then its groups (x, y, z), then
+// each pixel, x | y << 16.
+layout(set = 0, binding = 21, std430) buffer ChainList { uint chainHeader[4]; uint chainPixels[]; };
 // A tap read from the atlas names its cell with this bit (the atlas holds fewer than 2^31).
 #define GROTTO_ATLAS_TAP 0x80000000u
 #define GROTTO_FACE_CACHE_TEXEL_FROM(texel) \
@@ -90,9 +100,7 @@ void askForTaps(ivec2 q, FaceCacheTaps t, uint dir) {
 
 // The texels at pixel q's point through the atlas, from its quad's record `r`:
 // the region's four cells around the point, each tap's weight 0 where no face
-// lies, as the chain's taps have them. Every world quad has a region, at every
-// level of detail: a fallback to the chain for some, even a loop no pixel of a
-// group entered, cost lavapipe the chain's time (147 against 74 ms, rooms 1280x720).
+// lies, as the chain's taps have them.
 FaceCacheTaps atlasTapsAt(ivec2 q, uint dir, uvec2 r) {
     vec3 p = cachedPointAt(q, dir);
     int k = int(faceCacheK());
@@ -101,7 +109,7 @@ FaceCacheTaps atlasTapsAt(ivec2 q, uint dir, uvec2 r) {
     float fu = floor(su), fv = floor(sv);
     float wu = su - fu, wv = sv - fv;
     int I0 = int(fu) + frame.cameraCell[ua] * k, J0 = int(fv) + frame.cameraCell[va] * k;
-    uint first = r.y == 0u ? 0u : r.x + uint(I0) + uint(J0) * r.y;  // (0, 0): none, never a world quad's
+    uint first = r.x + uint(I0) + uint(J0) * r.y;
     FaceCacheTaps t;
     for (int c = 0; c < 4; ++c) {
         uint cell = first + uint(c & 1) + uint(c >> 1) * r.y;
@@ -260,8 +268,20 @@ vec3 shadeCached(ivec2 q, uint surface) {
 void main() {
     ivec2 h = ivec2(gl_GlobalInvocationID.xy);
 #ifdef GROTTO_FACE_CACHE
+    if (withoutRegion) {
+        if (gl_GlobalInvocationID.x >= chainHeader[0]) return;
+        uint p = chainPixels[gl_GlobalInvocationID.x];
+        h = ivec2(p & 0xFFFFu, p >> 16u);
+    }
     if (any(greaterThanEqual(uvec2(h), frame.size))) return;
     uint cachedSurface = texelFetch(surfaceTex, h, 0).r;
+    // A world pixel whose quad has no region: listed for the chain's pass.
+    if (atlasRead && cachedSurface != 0u && surfaceObject(cachedSurface) == 0u && texelFetch(atlasRecordTex, h, 0).y == 0u) {
+        uint slot = atomicAdd(chainHeader[0], 1u);
+        chainPixels[slot] = uint(h.x) | (uint(h.y) << 16u);
+        if (slot % 64u == 0u) atomicAdd(chainHeader[1], 1u);
+        return;
+    }
     imageStore(outColor, h, vec4(exposed(cachedSurface == 0u ? sky(h) : shadeCached(h, cachedSurface)), 1.0));
     return;
 #endif

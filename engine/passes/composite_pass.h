@@ -16,6 +16,7 @@
 #include "engine/passes/gbuffer_pass.h"
 #include "engine/scene/face_cache_gpu.h"
 
+#include <optional>
 #include <tuple>
 
 namespace grotto {
@@ -33,12 +34,16 @@ struct CompositeShape {
     bool dayLight = false;
     bool daySun = false;
     bool atlas = false;            // with it: the texels read through the atlas (FramePlan::faceAtlas)
+    uint32_t listPixels = 0;       // with the atlas: the frame's pixels, what the chain's pass may be left
     bool operator==(const CompositeShape&) const = default;
 };
 
 class CompositePass {
 public:
     CompositePass(vk::Context& ctx, const CompositeShape& shape);
+    ~CompositePass();
+    CompositePass(const CompositePass&) = delete;
+    CompositePass& operator=(const CompositePass&) = delete;
     // Every frame has one; while the face cache has faces not converged, AskingCompositePass instead.
     static bool runs(const FramePlan&) { return true; }
     static std::tuple<CompositeShape> key(const FramePlan& plan) { return {shapeFor(plan, false)}; }
@@ -73,6 +78,10 @@ private:
     vk::Context& ctx_;
     CompositeShape shape_;
     ComputePass pass_;
+    // With the atlas: the chain's read of the pixels whose quad has no region (a
+    // coarser level), over the list the atlas's pass appends them to.
+    std::optional<ComputePass> withoutRegion_;
+    vk::Buffer chainList_;
 };
 
 // The composite while the face cache has faces in view not converged: it asks for

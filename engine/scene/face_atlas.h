@@ -1,6 +1,6 @@
 #pragma once
-// The face cache laid out for reading (--ao cache). Each quad the G-buffer draws,
-// at every level of detail, gets a region of atlas cells: the cache's texels over the quad's
+// The face cache laid out for reading (--ao cache). Each quad the G-buffer draws
+// at full detail gets a region of atlas cells: the cache's texels over the quad's
 // box on its plane, k a voxel along the face's U and V, with a one-texel border of
 // what lies beyond the box on the same plane. The G-buffer writes each pixel's
 // quad record (where its region lies, its row length), so the composite reads a
@@ -28,7 +28,7 @@
 
 namespace grotto {
 
-// A quad's box on its plane, chunk-relative: the plane's voxel-corner
+// A full-detail quad's box on its plane, chunk-relative: the plane's voxel-corner
 // coordinate along the face's axis, the box's least U and V corner and its size in faces.
 struct AtlasBox {
     uint32_t dir = 0, plane = 0, u = 0, v = 0, width = 1, height = 1;
@@ -44,7 +44,7 @@ inline uint32_t atlasStride(const AtlasBox& box, uint32_t k) { return k * box.wi
 
 // The record the G-buffer writes for a pixel of that quad (chunk corner `origin`,
 // region from cell `first`): x + I + J * y (mod 2^32) is the cell of absolute
-// texel (I, J) along the face's U and V. y = 0: no region (objects' quads).
+// texel (I, J) along the face's U and V. y = 0: no region (coarser levels, objects).
 glm::uvec2 atlasRecord(glm::ivec3 origin, const AtlasBox& box, uint64_t first, uint32_t k);
 
 // A cell as the composite reads it: x the texel's AO and sun half | 1 << 16 where
@@ -61,7 +61,7 @@ public:
     explicit FaceAtlasLayout(uint32_t k) : k_(k) {}
     uint32_t texelsPerSide() const { return k_; }
 
-    // The chunk at corner `origin` with these quads' boxes (packAtlasBox):
+    // The chunk at corner `origin` with these full-detail quads' boxes (packAtlasBox):
     // kept where it is while its regions fit its range, else moved to a new one.
     void place(glm::ivec3 origin, std::span<const uint32_t> boxes);
     void remove(glm::ivec3 origin);

@@ -175,8 +175,8 @@ GpuChunk placeChunk(const voxel::MeshChunkQuads& c, const GpuScene& scene, uint3
         g.levels.push_back(placeLevel(l.faceCount, l.quads, first, vertices + 4 * size_t(first - slotFirst), lo, hi));
         first += uint32_t(l.quads.size());
     }
-    // Every level's quads' boxes, in the order their vertices were written.
-    g.atlasBoxes.resize(first - slotFirst);
+    // The full-detail quads' boxes, in the order their vertices were written.
+    g.atlasBoxes.resize(c.quads.size());
     for (size_t q = 0; q < g.atlasBoxes.size(); ++q) {
         voxel::MeshQuad quad;
         std::copy_n(vertices + 4 * q, 4, quad.corners.begin());

@@ -24,10 +24,10 @@ void GpuScene::fillFaceAtlas(const voxel::FaceCacheArrays& arrays) {
     vk::destroy(ctx, atlasCells_);
     atlasCurrent_ = false;
     // An atlas one storage buffer cannot hold is not made: the chain reads the cache
-    // (lavapipe's limit is 128 MiB; the caves' atlas with every level of detail is more).
+    // (lavapipe's limit is 128 MiB).
     const uint64_t limit = ctx.properties.limits.maxStorageBufferRange;
     if (atlasLayout_->capacity() * sizeof(glm::uvec2) > limit || slots.capacity() * sizeof(glm::uvec2) > limit) return;
-    // Spare room keeps record (0, 0): no region.
+    // Quads of coarser levels, and spare room, keep record (0, 0): no region.
     atlasRecords_ = vk::uploadBuffer(ctx, std::max<uint64_t>(slots.capacity(), 1) * sizeof(glm::uvec2), usage, [&](void* data) {
         glm::uvec2* records = static_cast<glm::uvec2*>(data);
         std::memset(data, 0, std::max<uint64_t>(slots.capacity(), 1) * sizeof(glm::uvec2));
