@@ -72,8 +72,6 @@ public:
     };
     const Chunk* find(glm::ivec3 origin) const;
     uint64_t capacity() const { return slots_.capacity(); }
-    uint64_t usedCells() const { return slots_.capacity() - slots_.freeQuads(); }
-    size_t chunkCount() const { return chunks_.size(); }
 
 private:
     struct Less {
