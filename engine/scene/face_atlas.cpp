@@ -1,19 +1,54 @@
 #include "engine/scene/face_atlas.h"
 
+#include "grotto/error.h"
 #include "voxel/face_cache_twin.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace grotto {
 
-uint32_t packAtlasBox(const voxel::MeshQuad& quad) {
-    const uint32_t dir = quad.face();
-    const uint32_t axis = gpu::faceAxis(dir), ua = gpu::faceUAxis(dir), va = gpu::faceVAxis(dir);
-    glm::ivec3 lo = quad.corner(0), hi = lo;
-    for (int i = 1; i < 4; ++i) lo = glm::min(lo, quad.corner(i)), hi = glm::max(hi, quad.corner(i));
-    const uint32_t width = uint32_t(std::max(hi[int(ua)] - lo[int(ua)], 1)), height = uint32_t(std::max(hi[int(va)] - lo[int(va)], 1));
-    return uint32_t(lo[int(axis)]) | uint32_t(lo[int(ua)]) << 6 | uint32_t(lo[int(va)]) << 11 | (width - 1) << 16 |
-           (height - 1) << 21 | dir << 26;
+uint32_t packAtlasBox(const gpu::PackedQuad& rect) {
+    const uint32_t dir = gpu::quadFace(rect.bits), axis = gpu::faceAxis(dir);
+    const uint32_t plane = gpu::quadCoord(rect.bits, axis) + (gpu::facePositive(dir) ? 1u : 0u);
+    return plane | gpu::quadCoord(rect.bits, gpu::faceUAxis(dir)) << 6 | gpu::quadCoord(rect.bits, gpu::faceVAxis(dir)) << 11 |
+           (gpu::quadWidth(rect.bits) - 1) << 16 | (gpu::quadHeight(rect.bits) - 1) << 21 | dir << 26;
+}
+
+namespace {
+// A face of a chunk: its voxel (chunk-relative) and direction, in one word.
+uint32_t faceKey(glm::ivec3 cell, uint32_t dir) {
+    return uint32_t(cell.x) | uint32_t(cell.y) << 5 | uint32_t(cell.z) << 10 | dir << 15;
+}
+}  // namespace
+
+std::vector<uint32_t> atlasRectsOf(std::span<const gpu::PackedQuad> rects, std::span<const uint32_t> corners) {
+    // Every face of each rectangle (they cover each face once), then each quad's
+    // least corner's face: a quad lies within its rectangle.
+    std::unordered_map<uint32_t, uint32_t> rectOf;
+    for (uint32_t r = 0; r < rects.size(); ++r) {
+        const uint32_t bits = rects[r].bits, dir = gpu::quadFace(bits);
+        glm::ivec3 cell(int(gpu::quadCoord(bits, 0)), int(gpu::quadCoord(bits, 1)), int(gpu::quadCoord(bits, 2)));
+        const int u = cell[int(gpu::faceUAxis(dir))], v = cell[int(gpu::faceVAxis(dir))];
+        for (uint32_t b = 0; b < gpu::quadHeight(bits); ++b)
+            for (uint32_t a = 0; a < gpu::quadWidth(bits); ++a) {
+                cell[int(gpu::faceUAxis(dir))] = u + int(a), cell[int(gpu::faceVAxis(dir))] = v + int(b);
+                rectOf[faceKey(cell, dir)] = r;
+            }
+    }
+    std::vector<uint32_t> of(corners.size() / 4);
+    for (size_t q = 0; q < of.size(); ++q) {
+        voxel::MeshQuad quad;
+        std::copy_n(corners.begin() + 4 * std::ptrdiff_t(q), 4, quad.corners.begin());
+        const uint32_t dir = quad.face(), axis = gpu::faceAxis(dir);
+        glm::ivec3 lo = quad.corner(0);
+        for (int i = 1; i < 4; ++i) lo = glm::min(lo, quad.corner(i));
+        if (gpu::facePositive(dir)) lo[int(axis)] -= 1;  // the voxel behind the plane
+        const auto it = rectOf.find(faceKey(lo, dir));
+        if (it == rectOf.end()) throw Error::internal("atlasRectsOf", "a quad outside every rectangle");
+        of[q] = it->second;
+    }
+    return of;
 }
 
 AtlasBox unpackAtlasBox(uint32_t w) {

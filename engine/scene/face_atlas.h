@@ -1,7 +1,8 @@
 #pragma once
-// The face cache laid out for reading (--ao cache). Each quad the G-buffer draws
-// at full detail gets a region of atlas cells: the cache's texels over the quad's
-// box on its plane, k a voxel along the face's U and V, with a one-texel border of
+// The face cache laid out for reading (--ao cache). Each greedy rectangle of the
+// full-detail mesh gets a region of atlas cells, which the quads cut from it to
+// meet their neighbours (voxel/watertight.h) share: the cache's texels over the
+// rectangle on its plane, k a voxel along the face's U and V, with a one-texel border of
 // what lies beyond the box on the same plane. The G-buffer writes each pixel's
 // quad record (where its region lies, its row length), so the composite reads a
 // pixel's four texels as four independent loads instead of through the cache's
@@ -22,27 +23,30 @@
 #include <glm/vec3.hpp>
 
 #include <map>
+#include <cstdint>
 #include <span>
 #include <tuple>
 #include <vector>
 
 namespace grotto {
 
-// A full-detail quad's box on its plane, chunk-relative: the plane's voxel-corner
+// A greedy rectangle's box on its plane, chunk-relative: the plane's voxel-corner
 // coordinate along the face's axis, the box's least U and V corner and its size in faces.
 struct AtlasBox {
     uint32_t dir = 0, plane = 0, u = 0, v = 0, width = 1, height = 1;
 };
-// One word a quad (the host keeps it per chunk): plane 0-5, u 6-10, v 11-15,
+// One word a rectangle (the host keeps it per chunk): plane 0-5, u 6-10, v 11-15,
 // width - 1 16-20, height - 1 21-25, dir 26-28.
-uint32_t packAtlasBox(const voxel::MeshQuad& quad);
+uint32_t packAtlasBox(const gpu::PackedQuad& rect);
 AtlasBox unpackAtlasBox(uint32_t word);
+// The rectangle of `rects` each quad (4 packed corners each, as drawn) was cut from.
+std::vector<uint32_t> atlasRectsOf(std::span<const gpu::PackedQuad> rects, std::span<const uint32_t> corners);
 
 // The cells of a box's region at k texels a side, and its rows' length.
 uint64_t atlasRegionCells(const AtlasBox& box, uint32_t k);
 inline uint32_t atlasStride(const AtlasBox& box, uint32_t k) { return k * box.width + 2; }
 
-// The record the G-buffer writes for a pixel of that quad (chunk corner `origin`,
+// The record the G-buffer writes for a pixel of a quad of that rectangle (chunk corner `origin`,
 // region from cell `first`): x + I + J * y (mod 2^32) is the cell of absolute
 // texel (I, J) along the face's U and V. y = 0: no region (coarser levels, objects).
 glm::uvec2 atlasRecord(glm::ivec3 origin, const AtlasBox& box, uint64_t first, uint32_t k);
@@ -61,7 +65,7 @@ public:
     explicit FaceAtlasLayout(uint32_t k) : k_(k) {}
     uint32_t texelsPerSide() const { return k_; }
 
-    // The chunk at corner `origin` with these full-detail quads' boxes (packAtlasBox):
+    // The chunk at corner `origin` with these rectangles' boxes (packAtlasBox):
     // kept where it is while its regions fit its range, else moved to a new one.
     void place(glm::ivec3 origin, std::span<const uint32_t> boxes);
     void remove(glm::ivec3 origin);

@@ -175,12 +175,12 @@ GpuChunk placeChunk(const voxel::MeshChunkQuads& c, const GpuScene& scene, uint3
         g.levels.push_back(placeLevel(l.faceCount, l.quads, first, vertices + 4 * size_t(first - slotFirst), lo, hi));
         first += uint32_t(l.quads.size());
     }
-    // The full-detail quads' boxes, in the order their vertices were written.
-    g.atlasBoxes.resize(c.quads.size());
-    for (size_t q = 0; q < g.atlasBoxes.size(); ++q) {
-        voxel::MeshQuad quad;
-        std::copy_n(vertices + 4 * q, 4, quad.corners.begin());
-        g.atlasBoxes[q] = packAtlasBox(quad);
+    // The full-detail rectangles' boxes, and each full-detail quad's (in the order
+    // its vertices were written). A mesh without its rectangles has no atlas.
+    if (!c.rects.empty()) {
+        g.atlasBoxes.reserve(c.rects.size());
+        for (const gpu::PackedQuad& r : c.rects) g.atlasBoxes.push_back(packAtlasBox(r));
+        g.atlasRectOf = atlasRectsOf(c.rects, {vertices, 4 * c.quads.size()});
     }
     g.lo = glm::vec3(lo) * float(scene.voxelSize);
     g.hi = glm::vec3(hi) * float(scene.voxelSize);

@@ -45,7 +45,8 @@ struct GpuChunk {
     // laid out one after another in the chunk's slot.
     std::vector<GpuLevel> levels;
     glm::ivec3 index{0};          // voxel index of its corner: the key updates find it by
-    std::vector<uint32_t> atlasBoxes;  // its full-detail quads' boxes (face_atlas.h), in vertex order
+    std::vector<uint32_t> atlasBoxes;   // its full-detail greedy rectangles' boxes (face_atlas.h)
+    std::vector<uint32_t> atlasRectOf;  // each full-detail quad's rectangle, in vertex order
     uint32_t slotFirst = 0, slotQuads = 0;  // the range of the vertex buffer it owns, in quads
     const GpuLevel& exact() const { return levels.front(); }
 };

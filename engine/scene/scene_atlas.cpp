@@ -33,8 +33,10 @@ void GpuScene::fillFaceAtlas(const voxel::FaceCacheArrays& arrays) {
         std::memset(data, 0, std::max<uint64_t>(slots.capacity(), 1) * sizeof(glm::uvec2));
         for (const GpuChunk& c : chunks) {
             const FaceAtlasLayout::Chunk* placed = atlasLayout_->find(c.index);
-            for (size_t q = 0; placed && q < c.atlasBoxes.size(); ++q)
-                records[c.slotFirst + q] = atlasRecord(c.index, unpackAtlasBox(c.atlasBoxes[q]), placed->regions[q], k);
+            for (size_t q = 0; placed && q < c.atlasRectOf.size(); ++q) {
+                const uint32_t r = c.atlasRectOf[q];
+                records[c.slotFirst + q] = atlasRecord(c.index, unpackAtlasBox(c.atlasBoxes[r]), placed->regions[r], k);
+            }
         }
     });
     atlasCells_ = vk::uploadBuffer(ctx, std::max<uint64_t>(atlasLayout_->capacity(), 2) * sizeof(glm::uvec2), usage, [&](void* data) {
