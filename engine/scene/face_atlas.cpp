@@ -4,7 +4,7 @@
 #include "voxel/face_cache_twin.h"
 
 #include <algorithm>
-#include <unordered_map>
+#include <cstdint>
 
 namespace grotto {
 
@@ -24,18 +24,22 @@ uint32_t faceKey(glm::ivec3 cell, uint32_t dir) {
 
 std::vector<uint32_t> atlasRectsOf(std::span<const gpu::PackedQuad> rects, std::span<const uint32_t> corners) {
     // Every face of each rectangle (they cover each face once), then each quad's
-    // least corner's face: a quad lies within its rectangle.
-    std::unordered_map<uint32_t, uint32_t> rectOf;
-    for (uint32_t r = 0; r < rects.size(); ++r) {
-        const uint32_t bits = rects[r].bits, dir = gpu::quadFace(bits);
-        glm::ivec3 cell(int(gpu::quadCoord(bits, 0)), int(gpu::quadCoord(bits, 1)), int(gpu::quadCoord(bits, 2)));
-        const int u = cell[int(gpu::faceUAxis(dir))], v = cell[int(gpu::faceVAxis(dir))];
-        for (uint32_t b = 0; b < gpu::quadHeight(bits); ++b)
-            for (uint32_t a = 0; a < gpu::quadWidth(bits); ++a) {
-                cell[int(gpu::faceUAxis(dir))] = u + int(a), cell[int(gpu::faceVAxis(dir))] = v + int(b);
-                rectOf[faceKey(cell, dir)] = r;
-            }
-    }
+    // least corner's face: a quad lies within its rectangle. One table a thread,
+    // every face a chunk may have, left empty again after each chunk.
+    thread_local std::vector<uint32_t> rectOf(size_t(6) << 15, UINT32_MAX);
+    auto eachFace = [&](auto&& visit) {
+        for (uint32_t r = 0; r < rects.size(); ++r) {
+            const uint32_t bits = rects[r].bits, dir = gpu::quadFace(bits);
+            glm::ivec3 cell(int(gpu::quadCoord(bits, 0)), int(gpu::quadCoord(bits, 1)), int(gpu::quadCoord(bits, 2)));
+            const int ua = int(gpu::faceUAxis(dir)), va = int(gpu::faceVAxis(dir)), u = cell[ua], v = cell[va];
+            for (uint32_t b = 0; b < gpu::quadHeight(bits); ++b)
+                for (uint32_t a = 0; a < gpu::quadWidth(bits); ++a) {
+                    cell[ua] = u + int(a), cell[va] = v + int(b);
+                    visit(faceKey(cell, dir), r);
+                }
+        }
+    };
+    eachFace([&](uint32_t key, uint32_t r) { rectOf[key] = r; });
     std::vector<uint32_t> of(corners.size() / 4);
     for (size_t q = 0; q < of.size(); ++q) {
         voxel::MeshQuad quad;
@@ -44,10 +48,11 @@ std::vector<uint32_t> atlasRectsOf(std::span<const gpu::PackedQuad> rects, std::
         glm::ivec3 lo = quad.corner(0);
         for (int i = 1; i < 4; ++i) lo = glm::min(lo, quad.corner(i));
         if (gpu::facePositive(dir)) lo[int(axis)] -= 1;  // the voxel behind the plane
-        const auto it = rectOf.find(faceKey(lo, dir));
-        if (it == rectOf.end()) throw Error::internal("atlasRectsOf", "a quad outside every rectangle");
-        of[q] = it->second;
+        of[q] = rectOf[faceKey(lo, dir)];
     }
+    eachFace([&](uint32_t key, uint32_t) { rectOf[key] = UINT32_MAX; });
+    if (std::find(of.begin(), of.end(), UINT32_MAX) != of.end())
+        throw Error::internal("atlasRectsOf", "a quad outside every rectangle");
     return of;
 }
 

@@ -204,8 +204,10 @@ uint32_t GpuLevel::quads() const { return quadsOf(faceCount); }
 
 size_t GpuScene::hostBytes() const {
     size_t n = chunks.size() * sizeof(GpuChunk);
-    for (const GpuChunk& c : chunks)
+    for (const GpuChunk& c : chunks) {
         for (const GpuLevel& l : c.levels) n += sizeof(GpuLevel) + l.clusters.size() * sizeof(QuadCluster);
+        n += (c.atlasBoxes.capacity() + c.atlasRectOf.capacity()) * sizeof(uint32_t);
+    }
     return n + uploads.pendingBytes() + (occupancy_ ? occupancy_->hostBytes() : 0);
 }
 
@@ -250,6 +252,8 @@ size_t sceneHostBytes(std::span<const voxel::MeshChunkQuads> chunks) {
     for (const voxel::MeshChunkQuads& c : chunks) {
         if (c.quads.empty()) continue;
         n += voxel::heapBytes(std::bit_ceil(1 + c.coarser.size()) * sizeof(GpuLevel)) + level(c.faceCount, c.quads);
+        // The face atlas's rectangles and each quad's (GpuChunk::atlasBoxes, atlasRectOf).
+        if (!c.rects.empty()) n += voxel::heapBytes(c.rects.size() * 4) + voxel::heapBytes(c.quads.size() * 4);
         for (const voxel::MeshLevel& l : c.coarser) n += level(l.faceCount, l.quads);
     }
     return n;
