@@ -105,6 +105,9 @@ void addInfoCommand(CLI::App& app) {
                         "for the day's sun %zu more (%.1f a face), with full light over the day %zu more (%.1f a face)\n",
                         (unsigned long long)faces.faces, voxel::kDefaultBakeTexels, voxel::kDefaultBakeTexels, bytes,
                         double(bytes) * perFace, day, double(day) * perFace, dayLight, double(dayLight) * perFace);
+            // The atlas the composite reads it through, beside it (engine/scene/face_atlas.h).
+            const size_t atlas = faceAtlasBufferBytes(chunks, voxel::kDefaultBakeTexels);
+            std::printf("face atlas     %zu bytes on the GPU beside it (%.1f a face)\n", atlas, double(atlas) * perFace);
         }
         if (b.empty())
             std::printf("bounds         empty\n");

@@ -221,6 +221,17 @@ size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks) {
 
 size_t sceneBufferBytes(const voxel::Mesh& mesh) { return sceneBufferBytes(meshChunks(mesh)); }
 
+size_t faceAtlasBufferBytes(std::span<const voxel::MeshChunkQuads> chunks, uint32_t texelsPerSide) {
+    FaceAtlasLayout layout(texelsPerSide);
+    std::vector<uint32_t> boxes;
+    for (const voxel::MeshChunkQuads& c : chunks) {
+        boxes.clear();
+        for (const gpu::PackedQuad& r : c.rects) boxes.push_back(packAtlasBox(r));
+        layout.place(c.origin, boxes);
+    }
+    return (layout.capacity() + bufferQuads(slotTotal(chunks))) * sizeof(glm::uvec2);  // cells, and a record a quad
+}
+
 namespace {
 
 uint64_t levelClusters(const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads) {

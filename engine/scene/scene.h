@@ -155,6 +155,9 @@ std::unique_ptr<GpuScene> uploadScene(vk::Context& ctx, std::span<const voxel::M
 // spare room, before allocator rounding), without a device: for `grotto info`.
 size_t sceneBufferBytes(std::span<const voxel::MeshChunkQuads> chunks);
 size_t sceneBufferBytes(const voxel::Mesh& mesh);
+// What the face cache's atlas at k texels a side would allocate for these chunks
+// (GpuScene::fillFaceAtlas: its cells and its records), without a device: for `grotto info`.
+size_t faceAtlasBufferBytes(std::span<const voxel::MeshChunkQuads> chunks, uint32_t texelsPerSide);
 // A level's clusters of each face, as uploadScene makes them: one for each block its quads lie in.
 std::array<uint32_t, 6> faceClusters(const std::array<uint32_t, 6>& faceCount, std::span<const voxel::MeshQuad> quads);
 // What uploadScene keeps in host memory beside them (the chunks, their levels and
