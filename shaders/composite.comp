@@ -75,10 +75,6 @@ layout(set = 0, binding = 20, std430) readonly buffer AtlasCells { uvec2 atlasCe
 // The pixels the chain's pass shades: their count, then its groups (x, y, z), then
 // each pixel, x | y << 16.
 layout(set = 0, binding = 21, std430) buffer ChainList { uint chainHeader[4]; uint chainPixels[]; };
-// A tap read from the atlas names its cell with this bit (the atlas holds fewer than 2^31).
-#define GROTTO_ATLAS_TAP 0x80000000u
-#define GROTTO_FACE_CACHE_TEXEL_FROM(texel) \
-    if (atlasRead && ((texel) & GROTTO_ATLAS_TAP) != 0u) return atlasCells[(texel) & ~GROTTO_ATLAS_TAP] & uvec2(0xFFFFu, ~0u);
 #define GROTTO_FACE_CACHE_BINDING 11
 #include "face_cache.glsl"
 #include "shared/face_trace.h"
@@ -98,10 +94,18 @@ void askForTaps(ivec2 q, FaceCacheTaps t, uint dir) {
         if (t.weight[c] > 0.0) requestFace(t.face[c], t.cell[c], dir);
 }
 
-// The texels at pixel q's point through the atlas, from its quad's record `r`:
-// the region's four cells around the point, each tap's weight 0 where no face
-// lies, as the chain's taps have them.
-FaceCacheTaps atlasTapsAt(ivec2 q, uint dir, uvec2 r) {
+// The cache's light at pixel q through the atlas, from its quad's record `r`: the
+// region's four cells around the point, each loaded once and unconditionally (a
+// region's border cells lie inside it), blended as faceCacheBlend and
+// faceCacheFullLight blend the chain's taps: missing faces reweighted away.
+// A branch per cell, or a second load of each, cost lavapipe a fifth of the pass.
+struct AtlasLight {
+    vec4 c;         // AO, sun, horizon and zenith weights (faceCacheBlend's)
+    vec2 sunRange;  // the least and the most sun visibility among the cells read
+    vec3 full;      // with full light, the cells' light
+    bool seen;      // some cell has a face
+};
+AtlasLight atlasLightAt(ivec2 q, uint dir, uvec2 r) {
     vec3 p = cachedPointAt(q, dir);
     int k = int(faceCacheK());
     uint ua = faceUAxis(dir), va = faceVAxis(dir);
@@ -110,16 +114,26 @@ FaceCacheTaps atlasTapsAt(ivec2 q, uint dir, uvec2 r) {
     float wu = su - fu, wv = sv - fv;
     int I0 = int(fu) + frame.cameraCell[ua] * k, J0 = int(fv) + frame.cameraCell[va] * k;
     uint first = r.x + uint(I0) + uint(J0) * r.y;
-    FaceCacheTaps t;
+    vec4 sum = vec4(0.0);
+    vec3 full = vec3(0.0);
+    float weight = 0.0;
+    vec2 range = vec2(1.0, 0.0);
     for (int c = 0; c < 4; ++c) {
-        uint cell = first + uint(c & 1) + uint(c >> 1) * r.y;
-        bool there = (atlasCells[cell].x & 0x10000u) != 0u;
-        t.face[c] = there ? 0 : -1;
-        t.cell[c] = ivec3(0);
-        t.texel[c] = cell | GROTTO_ATLAS_TAP;
-        t.weight[c] = there ? ((c & 1) != 0 ? wu : 1.0 - wu) * ((c >> 1) != 0 ? wv : 1.0 - wv) : 0.0;
+        uvec2 bits = atlasCells[first + uint(c & 1) + uint(c >> 1) * r.y];
+        bool there = (bits.x & 0x10000u) != 0u;
+        float w = there ? ((c & 1) != 0 ? wu : 1.0 - wu) * ((c >> 1) != 0 ? wv : 1.0 - wv) : 0.0;
+        vec4 v = faceCacheUnpack(uvec2(bits.x & 0xFFFFu, bits.y));
+        sum += w > 0.0 ? w * v : vec4(0.0);  // a light word's halfs may be NaN under full light
+        if (fullLight) full += w * faceCacheDecodeLight(bits.y);
+        weight += w;
+        range = w > 0.0 ? vec2(min(range.x, v.y), max(range.y, v.y)) : range;
     }
-    return t;
+    AtlasLight a;
+    a.seen = weight > 0.0;
+    a.c = a.seen ? sum / weight : vec4(1.0, 1.0, 0.0, 0.0);
+    a.sunRange = range;
+    a.full = a.seen ? full / weight : vec3(0.0);
+    return a;
 }
 
 // Lists pixel q for an exact sun ray (shadow_edge.comp): lit with sun visibility
@@ -220,18 +234,24 @@ vec3 shadeCached(ivec2 q, uint surface) {
     bool seen;     // the surface has AO and sky weights of its own
     vec3 light;    // AO, horizon and zenith weights
     FaceCacheTaps t, faces;  // a world surface's texels, and with full light over the day its faces
+    vec3 atlasFull = vec3(0.0);  // with full light through the atlas, its cells' light
     if (surfaceObject(surface) != 0u) {
         seen = objectLight;
         light = objectPart.xyz;
     } else {
         vec2 sunRange;
-        if (atlasRead) t = atlasTapsAt(q, surfaceFace(surface), texelFetch(atlasRecordTex, q, 0).xy);
-        else t = cachedTapsAt(q, surfaceFace(surface), faces);
-        if (askFaces) {
-            askForTaps(q, t, surfaceFace(surface));
-            dropUntraced(t);
+        vec4 c;  // AO, sun, horizon and zenith weights
+        if (atlasRead) {
+            AtlasLight a = atlasLightAt(q, surfaceFace(surface), texelFetch(atlasRecordTex, q, 0).xy);
+            c = a.c, seen = a.seen, sunRange = a.sunRange, atlasFull = a.full;
+        } else {
+            t = cachedTapsAt(q, surfaceFace(surface), faces);
+            if (askFaces) {
+                askForTaps(q, t, surfaceFace(surface));
+                dropUntraced(t);
+            }
+            c = faceCacheBlend(t, seen, sunRange);
         }
-        vec4 c = faceCacheBlend(t, seen, sunRange);  // AO, sun, horizon and zenith weights
         // With the cache's sun, the shadow pass holds the objects' alone.
         float cosSun = dot(normal, frame.sunDirection.xyz);
         bool edge = false;
@@ -251,7 +271,7 @@ vec3 shadeCached(ivec2 q, uint surface) {
         // or give it by glowing, added; an object's face, its own light outright.
         vec3 full = open;
         if (surfaceObject(surface) != 0u) full = objectLight ? objectPart.rgb : open;
-        else if (seen) full = max(cachedFullLightAt(t, faces) + objectPart.rgb, vec3(0.0));
+        else if (seen) full = max((atlasRead ? atlasFull : cachedFullLightAt(t, faces)) + objectPart.rgb, vec3(0.0));
         float cosSun = max(dot(normal, frame.sunDirection.xyz), 0.0);
         return materialOf(surface).rgb * (frame.sunRadiance.rgb * (cosSun * sunReach) + mix(open, full, frame.aoStrength.x)) +
                emissionOf(surface);

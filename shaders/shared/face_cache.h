@@ -170,13 +170,8 @@ GROTTO_FUNCTION int faceCacheFace(ivec3 cell, uint dir) {
 // Floor division by k > 0.
 GROTTO_FUNCTION int faceCacheFloorDiv(int i, int k) { return i >= 0 ? i / k : -((-i + k - 1) / k); }
 
-// Texel `texel`: x its AO and sun half (16 bits), y its light word. An includer
-// may define GROTTO_FACE_CACHE_TEXEL_FROM(texel) to read some texels elsewhere
-// (the composite's atlas taps: composite.comp).
+// Texel `texel`: x its AO and sun half (16 bits), y its light word.
 GROTTO_FUNCTION uvec2 faceCacheTexel(uint texel) {
-#ifdef GROTTO_FACE_CACHE_TEXEL_FROM
-    GROTTO_FACE_CACHE_TEXEL_FROM(texel)
-#endif
     uint pair = 3u * (texel >> 1u), odd = texel & 1u;
     return uvec2((faceCacheTexelWord(pair + 2u) >> (16u * odd)) & 0xFFFFu, faceCacheTexelWord(pair + odd));
 }
