@@ -80,6 +80,13 @@ public:
     // own (LiveFaceCache::progressive): taken here once it has finished, for the
     // frames that follow. Call between frames. True when it was taken.
     bool takeBakedLight() { return scene_->takeBakedLight(); }
+    // Between frames, what the frames read brought up to date: that light, and the
+    // face atlas once the GPU's tracer has converged every face (an edit's, in view
+    // or not). True when either changed.
+    bool catchUp() {
+        const bool light = takeBakedLight();
+        return scene_->catchUpFaceAtlas() || light;
+    }
     // Waits for that bake and takes it: for frames that must not depend on how
     // fast it ran (a viewer's script).
     void waitForLight();

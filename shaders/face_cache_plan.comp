@@ -22,7 +22,7 @@ void main() {
     bool emptyFull = float(empty) * float(full) <= float(c.budget);
     float left = emptyFull ? max(float(c.budget) - float(empty) * float(full), 0.0) : 0.0;
     uint taken = uint(min(float(partial), floor(left / float(full))));
-    header[GROTTO_FACE_ASKED] = header[GROTTO_FACE_QUEUE_EMPTY] + header[GROTTO_FACE_QUEUE_PARTIAL];
+    header[GROTTO_FACE_ASKED] = header[GROTTO_FACE_QUEUE_EMPTY] + header[GROTTO_FACE_QUEUE_PARTIAL] - header[GROTTO_FACE_BACKLOG_ADDED];
     header[GROTTO_FACE_TRACED_EMPTY] = empty;
     header[GROTTO_FACE_TRACED_PARTIAL] = taken;
     header[GROTTO_FACE_EMPTY_FULL] = emptyFull ? 1u : 0u;

@@ -9,7 +9,10 @@
 //    its regions never overlap.
 #include "engine/renderer.h"
 #include "engine/scene/face_atlas.h"
+#include "engine/scene/face_cache_gpu.h"
+#include "engine/scene/live_face_cache.h"
 #include "engine/scene/live_scene.h"
+#include "shaders/shared/face_trace.h"
 #include "tests/gpu_fixture.h"
 #include "tests/scenes.h"
 #include "tests/test_util.h"
@@ -143,6 +146,42 @@ TEST_F(FaceAtlas, AfterRandomEditsItReadsAsOneLaidOutAfresh) {
         EXPECT_EQ(incremental, atlasTestColour(onFresh, camera, false));
         EXPECT_LE(atlasTestDifference(incremental, atlasTestColour(onEdited, camera, true)), 1.0 / 255.0);
     }
+}
+
+// A carve out of view: its faces are traced in the frames that find nothing in
+// view to trace (the tracer's backlog), and once none is left the atlas is filled
+// again between frames and read, as the chain reads, where the carve is.
+TEST_F(FaceAtlas, AfterACarveOutOfViewTheTracerCatchesItUp) {
+    voxel::World world = test::makeVoxelWorld(
+        {-20, 0, -20}, {44, 14, 44},
+        [](int x, int y, int z) { return y <= 2 + (x * 7 + z * 3) % 4 / 3 || (x % 9 == 0 && z % 7 == 0 && y < 10); }, 1.0,
+        glm::dvec3(512.0, 0.0, -2048.0));
+    LiveScene scene(ctx(), voxel::World(world));
+    scene.bakeFaceCache(atlasTestSettings(world));
+    const glm::dvec3 o = world.origin();
+    const uint32_t w = 96, h = 54;
+    const Camera away = makeCamera(test::lookAt(o + glm::dvec3(30.0, 9.0, 40.0), o + glm::dvec3(44.0, 2.0, 44.0), 60.0), w, h);
+    const Camera there = makeCamera(test::lookAt(o + glm::dvec3(2.0, 10.0, 4.0), o + glm::dvec3(-10.0, 2.0, -10.0), 70.0), w, h);
+    Renderer renderer(ctx(), scene.gpu(), world.desc().lighting, atlasTestAo(world), w, h);
+    renderer.render(away, 0);
+    scene.apply(voxel::Edit::carveSphere(o + glm::dvec3(-10.0, 2.5, -10.0), 3.0));
+    ASSERT_FALSE(scene.gpu().faceAtlasCurrent());
+    const size_t reached = scene.faceCache()->unconverged();
+    ASSERT_GT(reached, 20u);
+    bool outOfView = false;  // a frame found nothing in view to trace, with faces left
+    uint32_t frame = 1;
+    for (; frame < 24 && !scene.catchUpFaceAtlas(); ++frame) {
+        renderer.render(away, frame);
+        const std::vector<uint32_t> header = scene.gpu().faceCache()->lastHeader();
+        outOfView |= header[GROTTO_FACE_ASKED] == 0 && header[GROTTO_FACE_UNCONVERGED] > 0;
+    }
+    std::printf("%zu faces reached; %u frames until the atlas was filled again\n", reached, frame);
+    EXPECT_TRUE(outOfView);
+    ASSERT_TRUE(scene.gpu().faceAtlasCurrent());
+    EXPECT_EQ(scene.faceCache()->unconverged(), 0u);
+    EXPECT_FALSE(scene.catchUpFaceAtlas());  // once
+    const std::vector<float> atlas = atlasTestColour(renderer, there, false);
+    EXPECT_LE(atlasTestDifference(atlas, atlasTestColour(renderer, there, true)), 1.0 / 255.0);
 }
 
 }  // namespace

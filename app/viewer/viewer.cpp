@@ -93,7 +93,7 @@ void Viewer::run() {
         // The world's full light, baked on its own thread (no --bake): a script's
         // frames wait for it, so that they do not depend on how fast it ran.
         if (script_) session_->waitForLight();
-        else session_->takeBakedLight();
+        session_->catchUp();
         const LiveFaceCache* cache = session_->scene().faceCache();
         panel_.lightBaked = cache ? cache->lightBaked() : 1.0;
         if (cache && cache->lightError() && panel_.message.empty())

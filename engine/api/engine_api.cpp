@@ -325,7 +325,7 @@ RenderedFrame Engine::renderPath(double seconds) {
 
 RenderedFrame Engine::Impl::render(const Camera& camera, const FrameSync* sync) {
     Renderer& renderer = session->renderer();
-    session->takeBakedLight();  // the world's full light, once its thread has baked it
+    session->catchUp();  // the world's full light, once its thread has baked it; the face atlas, once traced
     renderer.setDisplayImage(true);  // what the game shows
     renderer.setNormalsImage(true);  // what it composites with
     // Consecutive indices: the history accumulates.

@@ -24,6 +24,7 @@ FaceCacheTracePass::FaceCacheTracePass(vk::Context& ctx)
       request_(ctx, "face_cache_request.comp",
                GpuFaceCache::withRequestBindings(
                    GpuFaceCache::withBindings({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kSampled, kSampled}))),
+      backlog_(ctx, "face_cache_backlog.comp", GpuFaceCache::withRequestBindings(std::vector<VkDescriptorType>{kBuffer})),
       plan_(ctx, "face_cache_plan.comp", {kBuffer}, sizeof(gpu::FaceTraceConstants)),
       trace_(ctx, "face_cache_trace.comp", withTraceBindings({kBuffer, kBuffer, kBuffer, kBuffer, kBuffer}),
              sizeof(gpu::FaceTraceConstants)) {}
@@ -64,6 +65,9 @@ void FaceCacheTracePass::record(VkCommandBuffer cmd, const GBufferTargets& g, Vk
                                   {vk::uniformBuffer(frame.buffer), vk::sampledImage(ctx_.pointSampler, g.depth.view, ro),
                                    vk::sampledImage(ctx_.pointSampler, g.surface.view, ro)})),
                               cache.header().buffer, GROTTO_FACE_REQUEST_DISPATCH * sizeof(uint32_t));
+    computeToCompute(cmd);
+    backlog_.dispatchIndirect(cmd, cache.withRequestBindings(std::vector<vk::Binding>{vk::storageBuffer(cache.backlog().buffer)}),
+                              cache.header().buffer, GROTTO_FACE_BACKLOG_DISPATCH * sizeof(uint32_t));
     computeToCompute(cmd);
     plan_.dispatch(cmd, {vk::storageBuffer(cache.header().buffer)}, {1, 1}, 1, &c);
     barrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_ACCESS_SHADER_WRITE_BIT,

@@ -9,6 +9,8 @@
 // The first frame after an edit gives the faces it reached in view their first
 // look alone (the budget is 0 for it), so an edit shows in a frame of its own
 // cost, not the budget's, and the budget refines from the next.
+// After a frame with nothing in view left to trace, the budget goes to the
+// backlog: the faces out of view not converged (shared/face_trace.h).
 // Once every face has converged the passes do (almost) nothing. Reads the G-buffer's depth and surface
 // ids, the frame uniforms, the trace constants and the occupancy; writes the
 // cache's texels and levels.
@@ -39,7 +41,7 @@ public:
 
 private:
     vk::Context& ctx_;
-    ComputePass gate_, request_, plan_, trace_;
+    ComputePass gate_, request_, backlog_, plan_, trace_;
     uint64_t traced_ = 0;  // the GpuFaceCache::id this pass traced last
 };
 

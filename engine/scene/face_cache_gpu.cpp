@@ -23,7 +23,7 @@ uint64_t nextId() {
 }  // namespace
 
 GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Sun sun, FaceCacheRays rays,
-                           std::span<const uint8_t> levels, FaceCacheSky sky)
+                           std::span<const uint8_t> levels, FaceCacheSky sky, std::span<const glm::uvec4> backlog)
     : ctx_(ctx), table_(a.table), texelsPerSide_(a.texelsPerSide), faceCount_(a.faceCount), materialsFirst_(a.materialsFirst),
       daySunFirst_(a.daySunFirst), dayLightFirst_(a.dayLightFirst), dayFacesFirst_(a.dayFacesFirst),
       sun_(sun), rays_(rays), sky_(sky), id_(nextId()) {
@@ -47,6 +47,7 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
         levels_ = upload(levelWords.data(), levelWords.size() * sizeof(uint32_t));
         requested_ = upload(requested.data(), requested.size() * sizeof(uint32_t));
         queue_ = upload(queue.data(), queue.size() * sizeof(glm::uvec4));
+        backlog_ = upload(backlog.data(), backlog.size_bytes());
         dayPositions_ = upload(positions.data(), positions.size() * sizeof(glm::vec4));
         header_ = vk::createBuffer(ctx, GROTTO_FACE_HEADER_WORDS * sizeof(uint32_t),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT |
@@ -55,17 +56,18 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
         std::memset(header_.mapped(), 0, header_.size);
         uint32_t* header = static_cast<uint32_t*>(header_.mapped());
         header[GROTTO_FACE_CAPACITY] = capacity;
+        header[GROTTO_FACE_BACKLOG] = uint32_t(backlog.size());
         header[GROTTO_FACE_UNCONVERGED] = levels.empty() ? 0u : uint32_t(std::count_if(levels.begin(), levels.end(), [](uint8_t l) {
             return (l & 3u) != GROTTO_FACE_LEVEL_CONVERGED;
         }));
     } catch (...) {
-        for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_, &dayPositions_}) vk::destroy(ctx_, *b);
+        for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &backlog_, &header_, &dayPositions_}) vk::destroy(ctx_, *b);
         throw;
     }
 }
 
 GpuFaceCache::~GpuFaceCache() {
-    for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &header_, &dayPositions_})
+    for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &backlog_, &header_, &dayPositions_})
         vk::destroy(ctx_, *b);
 }
 

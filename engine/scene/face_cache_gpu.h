@@ -37,13 +37,20 @@ struct FaceCacheRays {
     float radiusVoxels = 4.0f;  // AO's R
 };
 
+// Face g (in the arrays' face order) of `cell`, looking `dir`, as the tracer's
+// queue and backlog list it.
+inline glm::uvec4 faceBacklogEntry(glm::ivec3 cell, uint32_t dir, uint32_t g) {
+    return glm::uvec4(glm::uvec3(cell), dir | (g << 3));
+}
+
 class GpuFaceCache {
 public:
     using Sun = FaceCacheSun;
     // `levels`: each face's (shared/face_trace.h), in the arrays' face order
-    // (FaceCacheArrays::faceOrder); empty: all converged.
+    // (FaceCacheArrays::faceOrder); empty: all converged. `backlog`: the faces not
+    // converged, as the tracer's queue lists them (faceBacklogEntry), in view or not.
     GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& arrays, Sun sun = {}, FaceCacheRays rays = {},
-                 std::span<const uint8_t> levels = {}, FaceCacheSky sky = {});
+                 std::span<const uint8_t> levels = {}, FaceCacheSky sky = {}, std::span<const glm::uvec4> backlog = {});
     ~GpuFaceCache();
     GpuFaceCache(const GpuFaceCache&) = delete;
     GpuFaceCache& operator=(const GpuFaceCache&) = delete;
@@ -66,7 +73,7 @@ public:
     bool afterEdit() const { return afterEdit_; }
     void setAfterEdit() { afterEdit_ = true; }
     // The cache's own arrays and levels (what `info` and `bench` report); the
-    // tracer's queue and request bits come on top.
+    // tracer's queue, backlog and request bits come on top.
     size_t gpuBytes() const { return size_t(bricks_.size + records_.size + texels_.size + levels_.size); }
     // Of those, the day's sun bits' (0 without).
     size_t daySunBytes() const { return daySunFirst_ ? size_t(faceCount_) * texelsPerSide_ * texelsPerSide_ * 4 : 0; }
@@ -94,6 +101,7 @@ public:
     const vk::Buffer& levels() const { return levels_; }
     const vk::Buffer& requested() const { return requested_; }
     const vk::Buffer& queue() const { return queue_; }
+    const vk::Buffer& backlog() const { return backlog_; }
     const vk::Buffer& header() const { return header_; }  // host-visible
     // The last finished frame's header words (shared/face_trace.h).
     std::vector<uint32_t> lastHeader() const;
@@ -106,7 +114,7 @@ public:
 
 private:
     vk::Context& ctx_;
-    vk::Buffer bricks_, records_, texels_, levels_, requested_, queue_, header_, dayPositions_;
+    vk::Buffer bricks_, records_, texels_, levels_, requested_, queue_, backlog_, header_, dayPositions_;
     uint32_t table_, texelsPerSide_, faceCount_, materialsFirst_, daySunFirst_, dayLightFirst_, dayFacesFirst_;
     Sun sun_;
     FaceCacheRays rays_;

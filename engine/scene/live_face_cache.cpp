@@ -191,28 +191,45 @@ void LiveFaceCache::upload(const voxel::World& world, bool afterEdit) {
     if (voxel::daySunPositions(settings_)) voxel::appendDaySun(arrays, texels_);
     if (!dayLight_.empty()) voxel::appendDayLight(arrays, texels_, dayLight_);
     std::vector<uint8_t> gpuLevels(arrays.faceOrder.size());
-    for (size_t g = 0; g < gpuLevels.size(); ++g) gpuLevels[g] = levels_[arrays.faceOrder[g]];
+    std::vector<glm::uvec4> backlog;  // the faces not converged, for the tracer to reach in view or not
+    for (size_t g = 0; g < gpuLevels.size(); ++g) {
+        gpuLevels[g] = levels_[arrays.faceOrder[g]];
+        const voxel::ExposedFace& face = faces_[arrays.faceOrder[g]];
+        if ((gpuLevels[g] & 3u) != GROTTO_FACE_LEVEL_CONVERGED) backlog.push_back(faceBacklogEntry(face.cell, face.dir, uint32_t(g)));
+    }
     auto gpu = std::make_unique<GpuFaceCache>(
         scene_.ctx, arrays,
         GpuFaceCache::Sun{glm::vec3(settings_.sunDirection), float(settings_.sunAngleDegrees),
                           voxel::daySunPositions(settings_) ? settings_.day : std::nullopt},
         FaceCacheRays{settings_.rays, voxel::sunRaysPerTexel(settings_), float(settings_.radius / voxelSize_)}, gpuLevels,
-        FaceCacheSky{settings_.fullLight, glm::vec3(settings_.skyZenith), glm::vec3(settings_.skyHorizon)});
+        FaceCacheSky{settings_.fullLight, glm::vec3(settings_.skyZenith), glm::vec3(settings_.skyHorizon)}, backlog);
     if (afterEdit) gpu->setAfterEdit();
     vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still read the old copy
     scene_.faceCache_ = std::move(gpu);
     // The atlas holds texels as they are now: what the GPU's tracer changes later
-    // is not in it, so it is filled only when that tracer has nothing to trace.
-    const bool converged = std::all_of(levels_.begin(), levels_.end(), [](uint8_t l) {
-        return (l & 3u) == GROTTO_FACE_LEVEL_CONVERGED;
-    });
-    if (converged)
-        scene_.fillFaceAtlas(arrays);
-    else
+    // is not in it, so it is filled only when that tracer has nothing to trace
+    // (here, or once it has traced the backlog: catchUpAtlas).
+    atlasBehind_ = !backlog.empty();
+    if (atlasBehind_)
         scene_.staleFaceAtlas();
+    else
+        scene_.fillFaceAtlas(arrays);
     order_ = std::move(arrays.faceOrder);
     daySunFirst_ = arrays.daySunFirst;
     wordStorage_ = std::move(arrays.texels);
+}
+
+bool LiveFaceCache::catchUpAtlas() {
+    // The header as the last frame to finish left it: no face left anywhere.
+    if (!atlasBehind_ || lightBake_ || !scene_.faceCache_ || scene_.faceCache_->lastHeader()[GROTTO_FACE_UNCONVERGED] != 0)
+        return false;
+    atlasBehind_ = false;
+    sync();
+    voxel::FaceCacheArrays arrays =
+        voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight, std::move(wordStorage_));
+    scene_.fillFaceAtlas(arrays);
+    wordStorage_ = std::move(arrays.texels);
+    return true;
 }
 
 }  // namespace grotto

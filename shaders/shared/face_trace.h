@@ -12,7 +12,12 @@
 // face index << 3), level 0 first at [0, capacity), levels 1 and 2 at
 // [capacity, 2 capacity). The faces are asked for by the request pass, for the
 // face under each pixel, and by the composite of the frame before, for every
-// texel it read that had not converged. The header's words:
+// texel it read that had not converged. The backlog: every face not converged
+// when the cache's GPU copy was made (uvec4s as the queue's), in view or not. A
+// frame after one that found nothing in view to trace takes the next window of
+// it, as many faces as the budget traces at the full rays, so the faces an edit
+// reached out of view, and a cache begun untraced, converge too (and the face
+// atlas is filled again: LiveFaceCache::catchUpAtlas). The header's words:
 #ifndef GROTTO_SHARED_FACE_TRACE_H
 #define GROTTO_SHARED_FACE_TRACE_H
 #include "common.h"
@@ -30,10 +35,17 @@
 #define GROTTO_FACE_EMPTY_FULL 4u     // 1: the first list got the full rays, 0: the coarse
 #define GROTTO_FACE_DISPATCH 5u       // three words: the trace's indirect dispatch
 #define GROTTO_FACE_CAPACITY 8u       // the lists' length, set once
-#define GROTTO_FACE_ASKED 9u          // faces asked for in all, this frame (for the host)
+#define GROTTO_FACE_ASKED 9u          // faces asked for in view, this frame (for the host; the backlog's not counted)
 #define GROTTO_FACE_UNCONVERGED 10u   // faces not at level 3, anywhere: none, and nothing is asked
 #define GROTTO_FACE_REQUEST_DISPATCH 11u  // three words: the request pass's dispatch (none when all converged)
-#define GROTTO_FACE_HEADER_WORDS 16u
+#define GROTTO_FACE_BACKLOG 14u      // faces in the backlog, set once
+#define GROTTO_FACE_BACKLOG_NEXT 15u // where its next window starts
+#define GROTTO_FACE_BACKLOG_DISPATCH 16u  // three words: the backlog pass's dispatch (none but when idle)
+#define GROTTO_FACE_BACKLOG_START 19u     // this frame's window: its first entry ...
+#define GROTTO_FACE_BACKLOG_TAKEN 20u     // ... and its length
+#define GROTTO_FACE_BACKLOG_ADDED 21u     // of that window, the faces listed (not converged, not asked in view)
+#define GROTTO_FACE_FRAMES 22u       // frames traced since the copy was made, up to 2 (the backlog waits for one)
+#define GROTTO_FACE_HEADER_WORDS 24u
 #define GROTTO_FACE_TRACE_GROUP 64u
 // The shadow edge list (shadow_edge.comp): its header's words, then the pixels.
 #define GROTTO_EDGE_COUNT 0u     // pixels listed this frame (may pass capacity)
