@@ -60,6 +60,14 @@ double atlasTestDifference(const std::vector<float>& a, const std::vector<float>
     return worst;
 }
 
+// Rolling ground with pillars, over two chunks' width and far from the origin.
+voxel::World atlasTestWorld() {
+    return test::makeVoxelWorld(
+        {-20, 0, -20}, {44, 14, 44},
+        [](int x, int y, int z) { return y <= 2 + (x * 7 + z * 3) % 4 / 3 || (x % 9 == 0 && z % 7 == 0 && y < 10); }, 1.0,
+        glm::dvec3(512.0, 0.0, -2048.0));
+}
+
 TEST_F(FaceAtlas, EveryShippedWorldReadsThroughItAsThroughTheChain) {
     const uint32_t w = 96, h = 54;
     size_t worlds = 0;
@@ -93,11 +101,7 @@ TEST_F(FaceAtlas, EveryShippedWorldReadsThroughItAsThroughTheChain) {
 }
 
 TEST_F(FaceAtlas, AfterRandomEditsItReadsAsOneLaidOutAfresh) {
-    // Rolling ground with pillars, over two chunks' width and far from the origin.
-    voxel::World world = test::makeVoxelWorld(
-        {-20, 0, -20}, {44, 14, 44},
-        [](int x, int y, int z) { return y <= 2 + (x * 7 + z * 3) % 4 / 3 || (x % 9 == 0 && z % 7 == 0 && y < 10); }, 1.0,
-        glm::dvec3(512.0, 0.0, -2048.0));
+    voxel::World world = atlasTestWorld();
     LiveScene edited(ctx(), voxel::World(world));
     const voxel::FaceBakeSettings settings = atlasTestSettings(world);
     edited.bakeFaceCache(settings);
@@ -152,10 +156,7 @@ TEST_F(FaceAtlas, AfterRandomEditsItReadsAsOneLaidOutAfresh) {
 // view to trace (the tracer's backlog), and once none is left the atlas is filled
 // again between frames and read, as the chain reads, where the carve is.
 TEST_F(FaceAtlas, AfterACarveOutOfViewTheTracerCatchesItUp) {
-    voxel::World world = test::makeVoxelWorld(
-        {-20, 0, -20}, {44, 14, 44},
-        [](int x, int y, int z) { return y <= 2 + (x * 7 + z * 3) % 4 / 3 || (x % 9 == 0 && z % 7 == 0 && y < 10); }, 1.0,
-        glm::dvec3(512.0, 0.0, -2048.0));
+    const voxel::World world = atlasTestWorld();
     LiveScene scene(ctx(), voxel::World(world));
     scene.bakeFaceCache(atlasTestSettings(world));
     const glm::dvec3 o = world.origin();

@@ -122,7 +122,7 @@ FaceCacheArrays layFaceCache(std::span<const ExposedFace> faces, std::span<const
     std::vector<glm::ivec3> positions;  // record i's brick
     for (size_t first = 0, end = 0; first < entries.size(); first = end) {
         const glm::ivec3 brick = faces[entries[first].face].cell >> 3;
-        while (end < entries.size() && faces[entries[end].face].cell >> 3 == brick) ++end;
+        while (end < entries.size() && (faces[entries[end].face].cell >> 3) == brick) ++end;
         const size_t base = out.records.size();
         out.records.resize(base + GROTTO_FACE_RECORD_WORDS, 0u);
         // Each direction's first face: the faces before it, the brick's in earlier directions included.
