@@ -227,6 +227,7 @@ bool LiveFaceCache::catchUpAtlas() {
     sync();
     voxel::FaceCacheArrays arrays =
         voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight, std::move(wordStorage_));
+    vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still bind the atlas's old buffers
     scene_.fillFaceAtlas(arrays);
     wordStorage_ = std::move(arrays.texels);
     return true;
