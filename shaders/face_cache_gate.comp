@@ -4,7 +4,7 @@
 // converged, none once all have (a bake loaded, nothing edited since). And the
 // backlog's (shared/face_trace.h): after a frame that found nothing in view to
 // trace, and whose composite asked for nothing, its next window of faces, as
-// many as the budget traces at the full rays.
+// many as its share of the budget traces at the full rays.
 #include "shared/face_trace.h"
 
 layout(local_size_x = 1) in;
@@ -21,7 +21,8 @@ void main() {
     bool idle = header[GROTTO_FACE_FRAMES] > 0u &&
                 header[GROTTO_FACE_ASKED] + header[GROTTO_FACE_QUEUE_EMPTY] + header[GROTTO_FACE_QUEUE_PARTIAL] == 0u;
     uint perFace = c.texelsPerSide * c.texelsPerSide * (c.rays + c.sunRays);
-    uint window = any && idle && backlog > 0u ? min(min(c.budget / max(perFace, 1u), header[GROTTO_FACE_CAPACITY]), backlog) : 0u;
+    uint share = c.budget / GROTTO_FACE_BACKLOG_SHARE;
+    uint window = any && idle && backlog > 0u ? min(min(share / max(perFace, 1u), header[GROTTO_FACE_CAPACITY]), backlog) : 0u;
     uint start = header[GROTTO_FACE_BACKLOG_NEXT];
     header[GROTTO_FACE_BACKLOG_START] = start;
     header[GROTTO_FACE_BACKLOG_TAKEN] = window;

@@ -15,7 +15,7 @@
 // texel it read that had not converged. The backlog: every face not converged
 // when the cache's GPU copy was made (uvec4s as the queue's), in view or not. A
 // frame after one that found nothing in view to trace takes the next window of
-// it, as many faces as the budget traces at the full rays, so the faces an edit
+// it, as many faces as a quarter of the budget traces at the full rays, so the faces an edit
 // reached out of view, and a cache begun untraced, converge too (and the face
 // atlas is filled again: LiveFaceCache::catchUpAtlas). The header's words:
 #ifndef GROTTO_SHARED_FACE_TRACE_H
@@ -46,6 +46,11 @@
 #define GROTTO_FACE_BACKLOG_ADDED 21u     // of that window, the faces listed (not converged, not asked in view)
 #define GROTTO_FACE_FRAMES 22u       // frames traced since the copy was made, up to 2 (the backlog waits for one)
 #define GROTTO_FACE_HEADER_WORDS 24u
+// The backlog's share of a frame's budget, as a divisor: a still view's frames
+// cost a quarter of a converging frame's rays more while the rest of the world
+// converges (a progressive caves at 960x540: 1.03 s a frame at the whole budget,
+// against 0.22 s with no backlog).
+#define GROTTO_FACE_BACKLOG_SHARE 4u
 #define GROTTO_FACE_TRACE_GROUP 64u
 // The shadow edge list (shadow_edge.comp): its header's words, then the pixels.
 #define GROTTO_EDGE_COUNT 0u     // pixels listed this frame (may pass capacity)
