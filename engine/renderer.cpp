@@ -78,8 +78,11 @@ void Renderer::planAovs() {
 }
 
 CompositePass& Renderer::composite() {
-    // The header's count, as the last frame to finish left it.
-    if (plan_.cacheTracing && scene_.faceCache()->lastHeader()[GROTTO_FACE_UNCONVERGED] != 0)
+    // The header's count, as the last frame to finish left it: faces never traced
+    // since their edit, whose taps the asking composite drops and asks for. Faces
+    // whose sky light alone is left to refresh are the request pass's and the
+    // backlog's, and the frame may read through the atlas meanwhile.
+    if (plan_.cacheTracing && scene_.faceCache()->lastHeader()[GROTTO_FACE_ROUGH] != 0)
         return passes_.get<AskingCompositePass>();
     return passes_.get<CompositePass>();
 }

@@ -148,8 +148,9 @@ void main() {
     }
     if (t == 0u) {
         uint shiftBits = (face & 15u) * 2u;
-        atomicAnd(levels[face >> 4u], ~(3u << shiftBits));
+        uint was = (atomicAnd(levels[face >> 4u], ~(3u << shiftBits)) >> shiftBits) & 3u;
         atomicOr(levels[face >> 4u], (full ? GROTTO_FACE_LEVEL_CONVERGED : 1u) << shiftBits);
         if (full) atomicAdd(header[GROTTO_FACE_UNCONVERGED], uint(-1));  // it was not, or it would not be listed
+        if (full && was < 2u) atomicAdd(header[GROTTO_FACE_ROUGH], uint(-1));
     }
 }

@@ -57,9 +57,10 @@ GpuFaceCache::GpuFaceCache(vk::Context& ctx, const voxel::FaceCacheArrays& a, Su
         uint32_t* header = static_cast<uint32_t*>(header_.mapped());
         header[GROTTO_FACE_CAPACITY] = capacity;
         header[GROTTO_FACE_BACKLOG] = uint32_t(backlog.size());
-        header[GROTTO_FACE_UNCONVERGED] = levels.empty() ? 0u : uint32_t(std::count_if(levels.begin(), levels.end(), [](uint8_t l) {
+        header[GROTTO_FACE_UNCONVERGED] = uint32_t(std::count_if(levels.begin(), levels.end(), [](uint8_t l) {
             return (l & 3u) != GROTTO_FACE_LEVEL_CONVERGED;
         }));
+        header[GROTTO_FACE_ROUGH] = uint32_t(std::count_if(levels.begin(), levels.end(), [](uint8_t l) { return (l & 3u) < 2u; }));
     } catch (...) {
         for (vk::Buffer* b : {&bricks_, &records_, &texels_, &levels_, &requested_, &queue_, &backlog_, &header_, &dayPositions_}) vk::destroy(ctx_, *b);
         throw;

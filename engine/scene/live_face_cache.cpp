@@ -191,12 +191,19 @@ void LiveFaceCache::upload(const voxel::World& world, bool afterEdit) {
     if (voxel::daySunPositions(settings_)) voxel::appendDaySun(arrays, texels_);
     if (!dayLight_.empty()) voxel::appendDayLight(arrays, texels_, dayLight_);
     std::vector<uint8_t> gpuLevels(arrays.faceOrder.size());
-    std::vector<glm::uvec4> backlog;  // the faces not converged, for the tracer to reach in view or not
-    for (size_t g = 0; g < gpuLevels.size(); ++g) {
-        gpuLevels[g] = levels_[arrays.faceOrder[g]];
-        const voxel::ExposedFace& face = faces_[arrays.faceOrder[g]];
-        if ((gpuLevels[g] & 3u) != GROTTO_FACE_LEVEL_CONVERGED) backlog.push_back(faceBacklogEntry(face.cell, face.dir, uint32_t(g)));
-    }
+    for (size_t g = 0; g < gpuLevels.size(); ++g) gpuLevels[g] = levels_[arrays.faceOrder[g]];
+    // The faces not converged, for the tracer to reach in view or not: those never
+    // traced since their edit first (levels 0 and 1), then those whose sky alone is left.
+    std::vector<glm::uvec4> backlog;
+    size_t rough = 0;
+    for (uint8_t from : {0, 2})
+        for (size_t g = 0; g < gpuLevels.size(); ++g) {
+            const uint8_t level = gpuLevels[g] & 3u;
+            if (level == GROTTO_FACE_LEVEL_CONVERGED || (level < 2) != (from == 0)) continue;
+            const voxel::ExposedFace& face = faces_[arrays.faceOrder[g]];
+            backlog.push_back(faceBacklogEntry(face.cell, face.dir, uint32_t(g)));
+            rough += from == 0;
+        }
     auto gpu = std::make_unique<GpuFaceCache>(
         scene_.ctx, arrays,
         GpuFaceCache::Sun{glm::vec3(settings_.sunDirection), float(settings_.sunAngleDegrees),
@@ -207,10 +214,11 @@ void LiveFaceCache::upload(const voxel::World& world, bool afterEdit) {
     vkDeviceWaitIdle(scene_.ctx.device);  // no frame in flight may still read the old copy
     scene_.faceCache_ = std::move(gpu);
     // The atlas holds texels as they are now: what the GPU's tracer changes later
-    // is not in it, so it is filled only when that tracer has nothing to trace
-    // (here, or once it has traced the backlog: catchUpAtlas).
-    atlasBehind_ = !backlog.empty();
-    if (atlasBehind_)
+    // is not in it. It is filled once no face is left that was never traced since
+    // its edit (here, or when the tracer has traced them: catchUpAtlas), and again
+    // once the faces whose sky alone was left have converged too.
+    atlasWaits_ = rough ? AtlasWaits::Rough : backlog.empty() ? AtlasWaits::Nothing : AtlasWaits::Converged;
+    if (rough)
         scene_.staleFaceAtlas();
     else
         scene_.fillFaceAtlas(arrays);
@@ -220,10 +228,11 @@ void LiveFaceCache::upload(const voxel::World& world, bool afterEdit) {
 }
 
 bool LiveFaceCache::catchUpAtlas() {
-    // The header as the last frame to finish left it: no face left anywhere.
-    if (!atlasBehind_ || lightBake_ || !scene_.faceCache_ || scene_.faceCache_->lastHeader()[GROTTO_FACE_UNCONVERGED] != 0)
-        return false;
-    atlasBehind_ = false;
+    if (atlasWaits_ == AtlasWaits::Nothing || lightBake_ || !scene_.faceCache_) return false;
+    // The header as the last frame to finish left it.
+    const std::vector<uint32_t> header = scene_.faceCache_->lastHeader();
+    if (header[atlasWaits_ == AtlasWaits::Rough ? GROTTO_FACE_ROUGH : GROTTO_FACE_UNCONVERGED] != 0) return false;
+    atlasWaits_ = header[GROTTO_FACE_UNCONVERGED] == 0 ? AtlasWaits::Nothing : AtlasWaits::Converged;
     sync();
     voxel::FaceCacheArrays arrays =
         voxel::layFaceCache(faces_, texels_, settings_.texelsPerSide, settings_.fullLight, std::move(wordStorage_));

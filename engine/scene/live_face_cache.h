@@ -81,10 +81,12 @@ public:
     void sync();
     // Faces not converged, of all.
     size_t unconverged() const;
-    // Once the GPU's tracer has converged every face (those an edit reached, in
-    // view or not, or a cache begun untraced), fills the face atlas again from its
-    // texels (GpuScene::fillFaceAtlas), so the frames read through it; call
-    // between frames. True when it did (a sync and a fill: caves about 0.3 s).
+    // Fills the face atlas again from the GPU's texels (GpuScene::fillFaceAtlas)
+    // once its tracer has traced every face an edit reached, in view or not, or a
+    // cache begun untraced: first when none is left that was never traced since
+    // its edit (the frames read through the atlas from then on), then once those
+    // whose sky light alone was left have converged too. Call between frames.
+    // True when it filled (a sync and a fill: caves 0.43 s).
     bool catchUpAtlas();
 
 private:
@@ -102,7 +104,10 @@ private:
     std::vector<uint8_t> levels_;  // per face
     std::vector<uint32_t> order_;  // the GPU's face g is faces_[order_[g]]
     uint32_t daySunFirst_ = 0;     // where the GPU's texel words hold the day's sun bits (0: none)
-    bool atlasBehind_ = false;     // the GPU's copy was made with faces to trace: the atlas waits for them
+    // What the atlas waits for, the GPU's copy made with faces to trace:
+    // nothing; no face at levels 0 and 1 (GROTTO_FACE_ROUGH); every face converged.
+    enum class AtlasWaits { Nothing, Rough, Converged };
+    AtlasWaits atlasWaits_ = AtlasWaits::Nothing;
     std::vector<uint32_t> wordStorage_;  // the last layout's texel words, whose memory the next takes
     std::vector<voxel::GlowingFace> glowing_;  // with full light: the faces that glow, as of the last edit
     voxel::FaceBakeSettings settings_;

@@ -45,6 +45,7 @@
 #define GROTTO_FACE_BACKLOG_TAKEN 20u     // ... and its length
 #define GROTTO_FACE_BACKLOG_ADDED 21u     // of that window, the faces listed (not converged, not asked in view)
 #define GROTTO_FACE_FRAMES 22u       // frames traced since the copy was made, up to 2 (the backlog waits for one)
+#define GROTTO_FACE_ROUGH 23u        // faces at levels 0 and 1, anywhere: none, and every texel was traced since its edit
 #define GROTTO_FACE_HEADER_WORDS 24u
 // The backlog's share of a frame's budget, as a divisor: a still view's frames
 // cost a quarter of a converging frame's rays more while the rest of the world
