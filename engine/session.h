@@ -81,8 +81,8 @@ public:
     // frames that follow. Call between frames. True when it was taken.
     bool takeBakedLight() { return scene_->takeBakedLight(); }
     // Between frames, what the frames read brought up to date: that light, and the
-    // face atlas once the GPU's tracer has converged every face (an edit's, in view
-    // or not). True when either changed.
+    // face atlas as the GPU's tracer catches up after an edit, in view or not
+    // (LiveFaceCache::catchUpAtlas). True when either changed.
     bool catchUp() {
         const bool light = takeBakedLight();
         return scene_->catchUpFaceAtlas() || light;

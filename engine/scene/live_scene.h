@@ -45,7 +45,7 @@ public:
     // The cache's full light baked on its own thread, once it has finished
     // (LiveFaceCache::takeBakedLight): between frames. True when it was taken.
     bool takeBakedLight() { return faceCache_ && faceCache_->takeBakedLight(bricks(), world_); }
-    // The face atlas filled again once the GPU's tracer has nothing left (LiveFaceCache::catchUpAtlas).
+    // The face atlas filled again as the GPU's tracer catches up after an edit (LiveFaceCache::catchUpAtlas).
     bool catchUpFaceAtlas() { return faceCache_ && faceCache_->catchUpAtlas(); }
     const LiveFaceCache* faceCache() const { return faceCache_ ? &*faceCache_ : nullptr; }
     LiveFaceCache* faceCache() { return faceCache_ ? &*faceCache_ : nullptr; }
