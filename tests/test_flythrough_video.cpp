@@ -230,8 +230,15 @@ TEST_F(FlythroughVideo, AKilledRunTakesItsEncoderWithIt) {
     auto encoders = [&] {  // processes running this test's fake ffmpeg
         int n = 0;
         for (auto& e : fs::directory_iterator("/proc")) {
-            std::ifstream in(e.path() / "cmdline");
-            const std::string line((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            // A process can end between the open and the read; libstdc++'s filebuf
+            // then throws (ESRCH), and such a process is no encoder any more.
+            std::string line;
+            try {
+                std::ifstream in(e.path() / "cmdline");
+                line.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+            } catch (const std::ios_base::failure&) {
+                continue;
+            }
             n += line.find((dir_ / "bin" / "ffmpeg").string()) != std::string::npos;
         }
         return n;
