@@ -90,13 +90,19 @@ void fillAtlasRegion(const voxel::FaceCacheArrays& arrays, glm::ivec3 origin, co
     const int plane = origin[int(axis)] + int(box.plane);
     glm::ivec3 cell(0);
     cell[int(axis)] = gpu::facePositive(box.dir) ? plane - 1 : plane;
+    // The region's voxel columns: the first (the border's) and how many. Each row
+    // of voxels is looked up once (a chain of look-ups each) for its k rows of texels.
+    const int firstU = gpu::faceCacheFloorDiv(t0.x, ik);
+    std::vector<int> faces(size_t(gpu::faceCacheFloorDiv(t0.x + int(stride) - 1, ik) - firstU + 1));
+    int cv = INT32_MIN;
     for (uint32_t b = 0; b < rows; ++b) {
-        const int J = t0.y + int(b), cv = gpu::faceCacheFloorDiv(J, ik);
-        cell[va] = cv;
-        int cu = INT32_MIN, face = -1;
+        const int J = t0.y + int(b);
+        if (gpu::faceCacheFloorDiv(J, ik) != cv) {
+            cv = gpu::faceCacheFloorDiv(J, ik), cell[va] = cv;
+            for (size_t u = 0; u < faces.size(); ++u) cell[ua] = firstU + int(u), faces[u] = gpu::faceCacheFace(cell, box.dir);
+        }
         for (uint32_t a = 0; a < stride; ++a) {
-            const int I = t0.x + int(a), u = gpu::faceCacheFloorDiv(I, ik);
-            if (u != cu) cu = u, cell[ua] = u, face = gpu::faceCacheFace(cell, box.dir);
+            const int I = t0.x + int(a), cu = gpu::faceCacheFloorDiv(I, ik), face = faces[size_t(cu - firstU)];
             glm::uvec2& out = cells[size_t(b) * stride + a];
             if (face < 0) {
                 out = glm::uvec2(0u);
