@@ -1,5 +1,6 @@
 #include "engine/vk/context.h"
 
+#include "engine/vk/cpu_device_heap.h"
 #include "engine/vk/pin_libraries.h"
 
 #include <cstdio>
@@ -165,6 +166,7 @@ void Context::create(const ContextOptions& options) {
     if (options.createSurface) surface = options.createSurface(instance);
     physical = pickDevice(instance, wanted);
     vkGetPhysicalDeviceProperties(physical, &properties);
+    if (properties.deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU) keepHeapForCpuDevice();
 
     uint32_t nq = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(physical, &nq, nullptr);
